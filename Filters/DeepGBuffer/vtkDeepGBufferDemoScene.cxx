@@ -1,0 +1,3 @@
+#include "vtkDeepGBufferDemoScene.h"
+#include "vtkObjectFactory.h"
+vtkStandardNewMacro(vtkDeepGBufferDemoScene);

@@ -1,0 +1,283 @@
+/**
+ * @class   vtkDeepGBufferPass
+ * @brief   Layered deep G-buffer with minimum separation, built in one geometry pass.
+ *
+ * Implements section 2 of Mara, McGuire, Nowrouzezahrai and Luebke, "Deep
+ * G-Buffers for Stable Global Illumination Approximation" (HPG 2016). Put it
+ * on a renderer (`renderer->SetPass(pass)`) and it renders the whole frame:
+ * camera, lights, the opaque props into a k-layer G-buffer, layer 0 resolved
+ * into the renderer's framebuffer (colour and depth, exactly what VTK would
+ * have drawn), then VTK's own translucent, volumetric and overlay steps.
+ *
+ * Layer 0 holds, per pixel, the nearest opaque surface. Layer j > 0 holds the
+ * nearest surface that lies at least MinimumSeparation (dz, world units)
+ * behind layer j - 1. The minimum separation skips local structure (mouldings,
+ * decals, thin panels, coincident duplicate faces) so that layer 1 sees the
+ * radiometrically relevant surface behind it (paper section 2, Figure 2).
+ *
+ * Oracles (paper Listing 2) predict layer j - 1's depth while layer j is built
+ * in the same pass:
+ * - DEPTH_PEEL: two (k) geometry passes, the exact reference (Listing 1).
+ * - PREVIOUS: last frame's layer j - 1 at the same pixel.
+ * - REPROJECT (default): the separation test is done in the previous frame,
+ *   with each prop's previous model matrix and the previous camera.
+ * - PREDICT: camera and prop motion extrapolated from the last two frames.
+ * - DELAY: exact, at the price of one frame of latency for the opaque layers.
+ * All but DEPTH_PEEL submit the geometry ONCE: a geometry shader emits each
+ * triangle to every layer (gl_Layer) of 2D array render targets.
+ *
+ * Props whose primitives a triangle geometry shader cannot route (points,
+ * lines, wireframe, surfaces with edges, mappers with their own geometry
+ * shader) are drawn with the DEPTH_PEEL path inside the same frame, so every
+ * opaque prop appears in every layer. The first frame, and any frame after a
+ * resize or a change of layer count, has no history and uses DEPTH_PEEL.
+ *
+ * Textures, each a GL_TEXTURE_2D_ARRAY of the renderer's viewport size
+ * (layers 0..k-1, plus one oracle layer for PREDICT and DELAY):
+ * | quantity  | format            | bytes/px | content                               |
+ * |-----------|-------------------|----------|---------------------------------------|
+ * | RADIANCE  | RGBA16F           | 8        | direct radiance under VTK's lights    |
+ * | ALBEDO    | RGBA8             | 4        | diffuse albedo after VTK's colouring  |
+ * | NORMAL    | RG8 (Oct16)       | 2        | camera-space normal, paper Table 1    |
+ * | DEPTH     | R32F              | 4        | camera-space distance, 0 = empty      |
+ * | (z-test)  | DEPTH_COMPONENT32F| 4        | hardware depth per layer              |
+ * Reads: nothing but the props. Writes: the renderer's colour and depth.
+ *
+ * Bad input never crashes: a non-finite or negative separation, an
+ * unsupported layer count or an OpenGL without geometry shaders or array
+ * textures is reported once with vtkWarningMacro and replaced by a safe
+ * value (automatic separation, a clamped count, plain VTK rendering).
+ *
+ * @sa vtkRenderStepsPass vtkSSAOPass
+ */
+
+#ifndef vtkDeepGBufferPass_h
+#define vtkDeepGBufferPass_h
+
+#include "vtkDeepGIRenderingModule.h" // for export macro
+#include "vtkOpenGLRenderPass.h"
+
+#include <memory> // for std::unique_ptr
+
+class vtkImageData;
+class vtkOpenGLRenderWindow;
+class vtkRenderPass;
+class vtkRenderer;
+
+class VTKDEEPGIRENDERING_EXPORT vtkDeepGBufferPass : public vtkOpenGLRenderPass
+{
+public:
+  static vtkDeepGBufferPass* New();
+  vtkTypeMacro(vtkDeepGBufferPass, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// The paper's oracles for layer j - 1's depth while layer j is built.
+  enum OracleType
+  {
+    DEPTH_PEEL = 0,
+    PREVIOUS = 1,
+    REPROJECT = 2,
+    PREDICT = 3,
+    DELAY = 4
+  };
+
+  /// The per-layer quantities of the G-buffer.
+  enum Quantity
+  {
+    RADIANCE = 0,
+    ALBEDO = 1,
+    NORMAL = 2,
+    DEPTH = 3,
+    NUMBER_OF_QUANTITIES = 4
+  };
+
+  /// The largest layer count this class supports (the GPU may allow fewer).
+  static constexpr int MAXIMUM_NUMBER_OF_LAYERS = 8;
+
+  ///@{
+  /**
+   * Oracle used to build layers j > 0 (see the class description).
+   * Default REPROJECT.
+   */
+  vtkSetClampMacro(Oracle, int, DEPTH_PEEL, DELAY);
+  vtkGetMacro(Oracle, int);
+  void SetOracleToDepthPeel() { this->SetOracle(DEPTH_PEEL); }
+  void SetOracleToPrevious() { this->SetOracle(PREVIOUS); }
+  void SetOracleToReproject() { this->SetOracle(REPROJECT); }
+  void SetOracleToPredict() { this->SetOracle(PREDICT); }
+  void SetOracleToDelay() { this->SetOracle(DELAY); }
+  static const char* GetOracleAsString(int oracle);
+  /// Parses "DEPTH_PEEL", "PREVIOUS", ... (case-insensitive); -1 if unknown.
+  static int GetOracleFromString(const char* name);
+  ///@}
+
+  ///@{
+  /**
+   * Number of layers k, 1 to MAXIMUM_NUMBER_OF_LAYERS. Default 2.
+   * Values outside the range are clamped with a warning; at render time the
+   * count is also limited by what the GPU's geometry shaders and array
+   * textures allow. PREDICT and DELAY predict one layer; with k > 2 they
+   * fall back to REPROJECT with a warning.
+   */
+  void SetNumberOfLayers(int layers);
+  vtkGetMacro(NumberOfLayers, int);
+  ///@}
+
+  ///@{
+  /**
+   * Minimum separation dz between consecutive layers, in world units.
+   * Setting a value switches AutomaticMinimumSeparation off. NaN and
+   * infinities are rejected with a warning (the previous setting stays);
+   * negative values are clamped to 0 with a warning (dz = 0 is classic depth
+   * peeling). A dz larger than the scene leaves layers j > 0 empty; that is
+   * reported once as a warning.
+   */
+  void SetMinimumSeparation(double dz);
+  vtkGetMacro(MinimumSeparation, double);
+  ///@}
+
+  ///@{
+  /**
+   * When on (default), dz is AutomaticSeparationFraction times the diagonal
+   * of the bounds of the renderer's visible props, so it follows the scene's
+   * scale. The paper uses dz = 0.5 m in scenes about 30-40 m across, i.e.
+   * about 1.5 % of their size; the default fraction is 0.015.
+   */
+  vtkSetMacro(AutomaticMinimumSeparation, bool);
+  vtkGetMacro(AutomaticMinimumSeparation, bool);
+  vtkBooleanMacro(AutomaticMinimumSeparation, bool);
+  vtkSetClampMacro(AutomaticSeparationFraction, double, 0.0, 1.0);
+  vtkGetMacro(AutomaticSeparationFraction, double);
+  ///@}
+
+  /// The dz used by the last rendered frame (world units).
+  vtkGetMacro(EffectiveMinimumSeparation, double);
+
+  /// The layer count used by the last rendered frame (after GPU limits).
+  vtkGetMacro(EffectiveNumberOfLayers, int);
+
+  /// The oracle used by the last frame for its single-pass props; DEPTH_PEEL
+  /// when the frame had no history (first frame, resize).
+  vtkGetMacro(EffectiveOracle, int);
+
+  /// Number of geometry submissions of the opaque props in the last frame
+  /// (1 for the single-pass oracles, k for DEPTH_PEEL).
+  vtkGetMacro(LastGeometryPassCount, int);
+
+  ///@{
+  /**
+   * Debug display: which quantity and which layer the pass shows on screen.
+   * Default RADIANCE of layer 0, i.e. the normal image. DEPTH is shown as
+   * distance normalised to the layer's range, NORMAL as n * 0.5 + 0.5.
+   * Empty pixels keep the renderer's background.
+   */
+  vtkSetClampMacro(DisplayQuantity, int, RADIANCE, DEPTH);
+  vtkGetMacro(DisplayQuantity, int);
+  vtkSetClampMacro(DisplayLayer, int, 0, MAXIMUM_NUMBER_OF_LAYERS - 1);
+  vtkGetMacro(DisplayLayer, int);
+  static const char* GetQuantityAsString(int quantity);
+  ///@}
+
+  /**
+   * Copies the layers of the last frame rendered for `renderer` (the first
+   * renderer the pass rendered if null) into `output`: one point-data array
+   * per quantity per layer, named "Radiance_j" (RGBA float), "Albedo_j" (RGB
+   * float), "Normal_j" (decoded camera-space normal, float), "Depth_j"
+   * (camera-space distance, float, 0 where empty) and "Valid_j" (unsigned
+   * char, 1 where layer j has a surface). Field data "MinimumSeparation",
+   * "NumberOfLayers" and "Oracle" describe the frame. The render window's
+   * context must be current (it is right after Render()). Returns false with
+   * an error when there is nothing to capture.
+   */
+  bool CaptureLayers(vtkImageData* output, vtkRenderer* renderer = nullptr);
+
+  ///@{
+  /**
+   * Access for passes that consume the G-buffer: binds the GL_TEXTURE_2D_ARRAY
+   * of a quantity of the last frame rendered for `renderer` to a free texture
+   * unit and returns the unit (-1 if there is none). Release the unit with
+   * DeactivateTexture. GetTextureHandle gives the raw OpenGL name (0 if none).
+   */
+  int ActivateTexture(vtkRenderer* renderer, int quantity);
+  void DeactivateTexture(vtkRenderer* renderer, int quantity);
+  unsigned int GetTextureHandle(vtkRenderer* renderer, int quantity);
+  ///@}
+
+  /**
+   * Builds the G-buffer layers for the renderer of `s` without drawing into
+   * the renderer's framebuffer. Render() calls it; composite passes call it
+   * to get the layers and then draw their own result. Returns false (after
+   * drawing the opaque props the plain way) when the G-buffer is unsupported.
+   */
+  bool RenderLayers(const vtkRenderState* s);
+
+  /**
+   * Draws the displayed quantity (layer 0 radiance by default) and that
+   * layer's depth into the framebuffer and viewport bound for the renderer.
+   */
+  void ResolveToFramebuffer(const vtkRenderState* s);
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  ///@{
+  /// The steps drawn after the opaque layers. Defaults: vtkTranslucentPass,
+  /// vtkVolumetricPass, vtkOverlayPass. Set to null to skip a step.
+  void SetTranslucentPass(vtkRenderPass* pass);
+  vtkGetObjectMacro(TranslucentPass, vtkRenderPass);
+  void SetVolumetricPass(vtkRenderPass* pass);
+  vtkGetObjectMacro(VolumetricPass, vtkRenderPass);
+  void SetOverlayPass(vtkRenderPass* pass);
+  vtkGetObjectMacro(OverlayPass, vtkRenderPass);
+  ///@}
+
+  ///@{
+  /**
+   * Octahedral normal encoding with 8 bits per component (Oct16, Cigolle et
+   * al. 2014, the paper's Table 1), the same arithmetic as the GLSL used by
+   * the G-buffer. Encode writes two bytes; Decode reads them back into a unit
+   * vector.
+   */
+  static void EncodeOct16(const double normal[3], unsigned char encoded[2]);
+  static void DecodeOct16(const unsigned char encoded[2], double normal[3]);
+  ///@}
+
+  // vtkOpenGLRenderPass hooks: shader replacements and per-draw uniforms.
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+  vtkMTimeType GetShaderStageMTime() override;
+
+protected:
+  vtkDeepGBufferPass();
+  ~vtkDeepGBufferPass() override;
+
+  int Oracle = REPROJECT;
+  int NumberOfLayers = 2;
+  double MinimumSeparation = 0.0;
+  bool AutomaticMinimumSeparation = true;
+  double AutomaticSeparationFraction = 0.015;
+  int DisplayQuantity = RADIANCE;
+  int DisplayLayer = 0;
+
+  double EffectiveMinimumSeparation = 0.0;
+  int EffectiveNumberOfLayers = 0;
+  int EffectiveOracle = DEPTH_PEEL;
+  int LastGeometryPassCount = 0;
+
+  vtkRenderPass* TranslucentPass = nullptr;
+  vtkRenderPass* VolumetricPass = nullptr;
+  vtkRenderPass* OverlayPass = nullptr;
+
+private:
+  vtkDeepGBufferPass(const vtkDeepGBufferPass&) = delete;
+  void operator=(const vtkDeepGBufferPass&) = delete;
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif
