@@ -1,29 +1,1484 @@
 #include "vtkDeepGBufferPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkIntArray.h"
+#include "vtkLightsPass.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOverlayPass.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkProp.h"
+#include "vtkProperty.h"
+#include "vtkRenderState.h"
+#include "vtkShaderProgram.h"
+#include "vtkShaderProperty.h"
+#include "vtkStringArray.h"
+#include "vtkTextureUnitManager.h"
+#include "vtkTranslucentPass.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkVolumetricPass.h"
+#include "vtkWeakPointer.h"
+#include "vtk_glew.h"
+
+#include "vtkDeepGBufferCommon.h"
+#include "vtkDeepGBufferGS.h"
+#include "vtkDeepGBufferResolveFS.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
 vtkStandardNewMacro(vtkDeepGBufferPass);
-class vtkDeepGBufferPass::vtkInternals {};
-vtkDeepGBufferPass::vtkDeepGBufferPass() : Internals(new vtkInternals) {}
-vtkDeepGBufferPass::~vtkDeepGBufferPass() = default;
-void vtkDeepGBufferPass::PrintSelf(ostream& os, vtkIndent indent) { this->Superclass::PrintSelf(os, indent); }
-const char* vtkDeepGBufferPass::GetOracleAsString(int) { return "REPROJECT"; }
-int vtkDeepGBufferPass::GetOracleFromString(const char*) { return 2; }
-void vtkDeepGBufferPass::SetNumberOfLayers(int l) { this->NumberOfLayers = l; }
-void vtkDeepGBufferPass::SetMinimumSeparation(double d) { this->MinimumSeparation = d; }
-const char* vtkDeepGBufferPass::GetQuantityAsString(int) { return ""; }
-bool vtkDeepGBufferPass::CaptureLayers(vtkImageData*, vtkRenderer*) { return false; }
-int vtkDeepGBufferPass::ActivateTexture(vtkRenderer*, int) { return -1; }
-void vtkDeepGBufferPass::DeactivateTexture(vtkRenderer*, int) {}
-unsigned int vtkDeepGBufferPass::GetTextureHandle(vtkRenderer*, int) { return 0; }
-bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState*) { return false; }
-void vtkDeepGBufferPass::ResolveToFramebuffer(const vtkRenderState*) {}
-void vtkDeepGBufferPass::Render(const vtkRenderState*) {}
-void vtkDeepGBufferPass::ReleaseGraphicsResources(vtkWindow*) {}
-void vtkDeepGBufferPass::SetTranslucentPass(vtkRenderPass*) {}
-void vtkDeepGBufferPass::SetVolumetricPass(vtkRenderPass*) {}
-void vtkDeepGBufferPass::SetOverlayPass(vtkRenderPass*) {}
-void vtkDeepGBufferPass::EncodeOct16(const double[3], unsigned char[2]) {}
-void vtkDeepGBufferPass::DecodeOct16(const unsigned char[2], double[3]) {}
-bool vtkDeepGBufferPass::PreReplaceShaderValues(std::string&, std::string&, std::string&, vtkAbstractMapper*, vtkProp*) { return true; }
-bool vtkDeepGBufferPass::PostReplaceShaderValues(std::string&, std::string&, std::string&, vtkAbstractMapper*, vtkProp*) { return true; }
-bool vtkDeepGBufferPass::SetShaderParameters(vtkShaderProgram*, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*) { return true; }
-vtkMTimeType vtkDeepGBufferPass::GetShaderStageMTime() { return 0; }
+
+namespace
+{
+using Matrix = std::array<double, 16>; // row-major, column vectors (VTK convention)
+
+Matrix ToArray(vtkMatrix4x4* m)
+{
+  Matrix a;
+  std::copy(&m->Element[0][0], &m->Element[0][0] + 16, a.begin());
+  return a;
+}
+
+Matrix Multiply(const Matrix& a, const Matrix& b)
+{
+  Matrix c;
+  vtkMatrix4x4::Multiply4x4(a.data(), b.data(), c.data());
+  return c;
+}
+
+Matrix Invert(const Matrix& a)
+{
+  Matrix c;
+  vtkMatrix4x4::Invert(a.data(), c.data());
+  return c;
+}
+
+Matrix Identity()
+{
+  Matrix a{};
+  a[0] = a[5] = a[10] = a[15] = 1.0;
+  return a;
+}
+
+// Constant-velocity extrapolation of a rigid transform: T(t+1) = T(t) T(t-1)^-1 T(t).
+Matrix Extrapolate(const Matrix& previous, const Matrix& current)
+{
+  return Multiply(Multiply(current, Invert(previous)), current);
+}
+
+// GLSL mat4 uniforms are column-major.
+std::array<float, 16> ToColumnMajor(const Matrix& a)
+{
+  std::array<float, 16> f;
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      f[c * 4 + r] = static_cast<float>(a[r * 4 + c]);
+    }
+  }
+  return f;
+}
+
+// (P22, P23, P32, P33): what deepDistanceFromClip needs of a projection.
+std::array<float, 4> ProjectionDepthRows(const Matrix& projection)
+{
+  return { static_cast<float>(projection[10]), static_cast<float>(projection[11]),
+    static_cast<float>(projection[14]), static_cast<float>(projection[15]) };
+}
+
+// Which separation test the fragment shader applies to layers j > 0.
+enum TestMode
+{
+  TEST_NONE = 0,       // layer 0, or the oracle layer
+  TEST_SAME_PIXEL = 1, // DEPTH_PEEL, PREVIOUS, PREDICT, DELAY
+  TEST_REPROJECTED = 2 // REPROJECT: the test is done in the previous frame
+};
+
+const char* const OracleNames[] = { "DEPTH_PEEL", "PREVIOUS", "REPROJECT", "PREDICT", "DELAY" };
+const char* const QuantityNames[] = { "RADIANCE", "ALBEDO", "NORMAL", "DEPTH" };
+
+// Internal formats of the quantities, in the order of the Quantity enum.
+const GLenum QuantityInternalFormats[] = { GL_RGBA16F, GL_RGBA8, GL_RG8, GL_R32F };
+const GLenum QuantityFormats[] = { GL_RGBA, GL_RGBA, GL_RG, GL_RED };
+const GLenum QuantityTypes[] = { GL_HALF_FLOAT, GL_UNSIGNED_BYTE, GL_UNSIGNED_BYTE, GL_FLOAT };
+
+// Upper bound of the number of floats a VTK polydata vertex shader passes on
+// per vertex (position, normal, colour, texture coordinates, clip distances,
+// picking); used to keep the geometry shader's output within the GPU limit.
+constexpr int MaximumVaryingComponentsPerVertex = 48;
+}
+
+//------------------------------------------------------------------------------
+// The G-buffer of one renderer: its textures, framebuffers and the history
+// that the single-pass oracles read. Keyed by renderer so that several
+// renderers (or viewports) never read each other's history.
+struct vtkDeepGBufferRendererState
+{
+  vtkWeakPointer<vtkRenderer> Renderer;
+
+  int Width = 0;
+  int Height = 0;
+  int Slots = 0;        // array layers: k, plus one oracle layer for PREDICT/DELAY
+  int HistoryLayers = 0; // max(1, k - 1)
+  GLuint Textures[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES] = { 0, 0, 0, 0 };
+  GLuint DepthTexture = 0;
+  GLuint HistoryTexture = 0; // R32F array: the oracle's distances of the previous frame
+  GLuint LayeredFramebuffer = 0;
+  std::vector<GLuint> LayerFramebuffers; // one per layer, for mappers without the routing GS
+
+  // History for the oracles.
+  unsigned long long FrameIndex = 0;
+  bool HistoryValid = false;
+  bool HistoryIsPredicted = false; // PREDICT/DELAY store their oracle layer
+  int HistoryNumberOfLayers = 0;
+  bool HasPreviousCamera = false;
+  Matrix View = Identity(), Projection = Identity();
+  Matrix PreviousView = Identity(), PreviousProjection = Identity();
+
+  struct PropHistory
+  {
+    Matrix Model = Identity();
+    Matrix PreviousModel = Identity();
+    unsigned long long Frame = 0;
+    unsigned long long PreviousFrame = 0;
+    std::array<float, 16> OtherFromCurrentClip;
+  };
+  std::map<vtkProp*, PropHistory> Props;
+  std::map<vtkProp*, vtkWeakPointer<vtkProp>> PropLiveness;
+
+  // What the last frame rendered, for capture and display.
+  int RenderedLayers = 0;
+  double ClippingRange[2] = { 0.0, 1.0 };
+  double MinimumSeparation = 0.0;
+  int Oracle = vtkDeepGBufferPass::DEPTH_PEEL;
+
+  void ReleaseTextures()
+  {
+    for (GLuint& t : this->Textures)
+    {
+      if (t)
+      {
+        glDeleteTextures(1, &t);
+        t = 0;
+      }
+    }
+    for (GLuint* t : { &this->DepthTexture, &this->HistoryTexture })
+    {
+      if (*t)
+      {
+        glDeleteTextures(1, t);
+        *t = 0;
+      }
+    }
+    if (this->LayeredFramebuffer)
+    {
+      glDeleteFramebuffers(1, &this->LayeredFramebuffer);
+      this->LayeredFramebuffer = 0;
+    }
+    if (!this->LayerFramebuffers.empty())
+    {
+      glDeleteFramebuffers(
+        static_cast<GLsizei>(this->LayerFramebuffers.size()), this->LayerFramebuffers.data());
+      this->LayerFramebuffers.clear();
+    }
+    this->Width = this->Height = this->Slots = this->HistoryLayers = 0;
+    this->HistoryValid = false;
+  }
+};
+
+//------------------------------------------------------------------------------
+class vtkDeepGBufferPass::vtkInternals
+{
+public:
+  std::map<vtkRenderer*, std::unique_ptr<vtkDeepGBufferRendererState>> States;
+  vtkDeepGBufferRendererState* Current = nullptr; // state of the renderer being drawn
+  vtkRenderer* FirstRenderer = nullptr;
+
+  // Per-frame drawing parameters read by SetShaderParameters.
+  int EmitMask = 1;
+  int OtherClipLayerMask = 0;
+  int TargetLayer = 0;
+  int TestMode = TEST_NONE;
+  int OracleLayerIndex = -1;
+  int HistoryUnit = -1;
+  int Oracle = REPROJECT;
+  float MinimumSeparation = 0.0f;
+  std::array<float, 4> ProjectionZ{}, OtherProjectionZ{};
+  std::array<float, 16> InverseProjection{};
+  std::array<float, 2> ViewportSize{};
+  Matrix OtherView = Identity(), OtherProjection = Identity();
+  bool OtherUsesPreviousFrame = false;
+  bool OtherIsPrediction = false;
+
+  // Which props the geometry shader routes this frame; a change rebuilds the shaders.
+  std::map<vtkProp*, bool> RoutedProps;
+  bool IsRouted(vtkProp* prop) const
+  {
+    auto it = this->RoutedProps.find(prop);
+    return it != this->RoutedProps.end() && it->second;
+  }
+  int GeometryShaderSlots = 0;
+  vtkTimeStamp ShaderStageTime;
+
+  // Capabilities of the current context.
+  vtkOpenGLRenderWindow* CheckedWindow = nullptr;
+  bool Supported = false;
+  int MaximumSlots = 1;
+  bool Warned[8] = { false, false, false, false, false, false, false, false };
+
+  vtkOpenGLQuadHelper* ResolveQuad = nullptr;
+
+  vtkLightsPass* LightsPass = nullptr;
+
+  void WarnOnce(vtkDeepGBufferPass* self, int which, const std::string& message)
+  {
+    if (!this->Warned[which])
+    {
+      this->Warned[which] = true;
+      vtkWarningWithObjectMacro(self, << message);
+    }
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkDeepGBufferPass::vtkDeepGBufferPass()
+  : Internals(new vtkInternals)
+{
+  this->Internals->LightsPass = vtkLightsPass::New();
+  this->TranslucentPass = vtkTranslucentPass::New();
+  this->VolumetricPass = vtkVolumetricPass::New();
+  this->OverlayPass = vtkOverlayPass::New();
+  this->Internals->ShaderStageTime.Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkDeepGBufferPass::~vtkDeepGBufferPass()
+{
+  if (this->Internals->ResolveQuad || !this->Internals->States.empty())
+  {
+    vtkWarningMacro("Destroyed without ReleaseGraphicsResources(); OpenGL objects are leaked "
+                    "unless the context was destroyed first.");
+  }
+  delete this->Internals->ResolveQuad;
+  this->Internals->LightsPass->Delete();
+  this->SetTranslucentPass(nullptr);
+  this->SetVolumetricPass(nullptr);
+  this->SetOverlayPass(nullptr);
+}
+
+vtkCxxSetObjectMacro(vtkDeepGBufferPass, TranslucentPass, vtkRenderPass);
+vtkCxxSetObjectMacro(vtkDeepGBufferPass, VolumetricPass, vtkRenderPass);
+vtkCxxSetObjectMacro(vtkDeepGBufferPass, OverlayPass, vtkRenderPass);
+
+//------------------------------------------------------------------------------
+void vtkDeepGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Oracle: " << GetOracleAsString(this->Oracle) << "\n";
+  os << indent << "NumberOfLayers: " << this->NumberOfLayers << "\n";
+  os << indent << "MinimumSeparation: " << this->MinimumSeparation << "\n";
+  os << indent << "AutomaticMinimumSeparation: " << this->AutomaticMinimumSeparation << "\n";
+  os << indent << "AutomaticSeparationFraction: " << this->AutomaticSeparationFraction << "\n";
+  os << indent << "EffectiveMinimumSeparation: " << this->EffectiveMinimumSeparation << "\n";
+  os << indent << "EffectiveNumberOfLayers: " << this->EffectiveNumberOfLayers << "\n";
+  os << indent << "EffectiveOracle: " << GetOracleAsString(this->EffectiveOracle) << "\n";
+  os << indent << "LastGeometryPassCount: " << this->LastGeometryPassCount << "\n";
+  os << indent << "DisplayQuantity: " << GetQuantityAsString(this->DisplayQuantity) << "\n";
+  os << indent << "DisplayLayer: " << this->DisplayLayer << "\n";
+  os << indent << "TranslucentPass: " << this->TranslucentPass << "\n";
+  os << indent << "VolumetricPass: " << this->VolumetricPass << "\n";
+  os << indent << "OverlayPass: " << this->OverlayPass << "\n";
+}
+
+//------------------------------------------------------------------------------
+const char* vtkDeepGBufferPass::GetOracleAsString(int oracle)
+{
+  return (oracle >= DEPTH_PEEL && oracle <= DELAY) ? OracleNames[oracle] : "UNKNOWN";
+}
+
+int vtkDeepGBufferPass::GetOracleFromString(const char* name)
+{
+  if (!name)
+  {
+    return -1;
+  }
+  std::string upper(name);
+  std::transform(upper.begin(), upper.end(), upper.begin(),
+    [](unsigned char c) { return c == '-' ? '_' : static_cast<char>(std::toupper(c)); });
+  for (int i = DEPTH_PEEL; i <= DELAY; ++i)
+  {
+    if (upper == OracleNames[i])
+    {
+      return i;
+    }
+  }
+  return -1;
+}
+
+const char* vtkDeepGBufferPass::GetQuantityAsString(int quantity)
+{
+  return (quantity >= RADIANCE && quantity <= DEPTH) ? QuantityNames[quantity] : "UNKNOWN";
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGBufferPass::SetNumberOfLayers(int layers)
+{
+  int clamped = std::min(std::max(layers, 1), static_cast<int>(MAXIMUM_NUMBER_OF_LAYERS));
+  if (clamped != layers)
+  {
+    vtkWarningMacro("NumberOfLayers " << layers << " is outside [1, " << MAXIMUM_NUMBER_OF_LAYERS
+                                      << "]; using " << clamped << ".");
+  }
+  if (clamped != this->NumberOfLayers)
+  {
+    this->NumberOfLayers = clamped;
+    this->Modified();
+  }
+}
+
+void vtkDeepGBufferPass::SetMinimumSeparation(double dz)
+{
+  if (!std::isfinite(dz))
+  {
+    vtkWarningMacro("MinimumSeparation must be finite (got " << dz << "); keeping "
+                                                              << (this->AutomaticMinimumSeparation
+                                                                     ? "the automatic value"
+                                                                     : "the previous value")
+                                                              << ".");
+    return;
+  }
+  if (dz < 0.0)
+  {
+    vtkWarningMacro("MinimumSeparation must not be negative (got " << dz << "); using 0.");
+    dz = 0.0;
+  }
+  if (dz != this->MinimumSeparation || this->AutomaticMinimumSeparation)
+  {
+    this->MinimumSeparation = dz;
+    this->AutomaticMinimumSeparation = false;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGBufferPass::EncodeOct16(const double normal[3], unsigned char encoded[2])
+{
+  double l1 = std::abs(normal[0]) + std::abs(normal[1]) + std::abs(normal[2]);
+  if (!(l1 > 0.0))
+  {
+    encoded[0] = encoded[1] = 127;
+    return;
+  }
+  double p[2] = { normal[0] / l1, normal[1] / l1 };
+  if (normal[2] < 0.0)
+  {
+    double q[2] = { (1.0 - std::abs(p[1])) * (p[0] >= 0.0 ? 1.0 : -1.0),
+      (1.0 - std::abs(p[0])) * (p[1] >= 0.0 ? 1.0 : -1.0) };
+    p[0] = q[0];
+    p[1] = q[1];
+  }
+  for (int i = 0; i < 2; ++i)
+  {
+    double c = std::min(std::max(p[i], -1.0), 1.0);
+    encoded[i] = static_cast<unsigned char>(std::floor(c * 127.0 + 0.5) + 127.0);
+  }
+}
+
+void vtkDeepGBufferPass::DecodeOct16(const unsigned char encoded[2], double normal[3])
+{
+  double p[2] = { (encoded[0] - 127.0) / 127.0, (encoded[1] - 127.0) / 127.0 };
+  normal[0] = p[0];
+  normal[1] = p[1];
+  normal[2] = 1.0 - std::abs(p[0]) - std::abs(p[1]);
+  if (normal[2] < 0.0)
+  {
+    normal[0] = (1.0 - std::abs(p[1])) * (p[0] >= 0.0 ? 1.0 : -1.0);
+    normal[1] = (1.0 - std::abs(p[0])) * (p[1] >= 0.0 ? 1.0 : -1.0);
+  }
+  vtkMath::Normalize(normal);
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// Whether a triangle geometry shader can route every primitive this prop's
+// mapper draws. Decided from the prop alone, so that the decision made
+// before drawing and the one made while the mapper builds its shaders agree.
+bool IsRoutable(vtkProp* prop)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  if (!actor || !actor->GetMapper() ||
+    std::string(actor->GetMapper()->GetClassName()) != "vtkOpenGLPolyDataMapper")
+  {
+    return false;
+  }
+  vtkProperty* property = actor->GetProperty();
+  if (property->GetRepresentation() != VTK_SURFACE || property->GetEdgeVisibility() ||
+    property->GetVertexVisibility())
+  {
+    return false;
+  }
+  if (actor->GetShaderProperty() && actor->GetShaderProperty()->HasGeometryShaderCode())
+  {
+    return false;
+  }
+  vtkPolyData* input = vtkPolyDataMapper::SafeDownCast(actor->GetMapper())->GetInput();
+  return input && input->GetNumberOfVerts() == 0 && input->GetNumberOfLines() == 0;
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
+  std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper* mapper,
+  vtkProp* prop)
+{
+  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
+  {
+    return true;
+  }
+  vtkInternals& in = *this->Internals;
+  const bool routed =
+    in.GeometryShaderSlots > 1 && geometryShader.empty() && in.IsRouted(prop);
+
+  // Vertex shader: the position of this vertex in the other frame's clip
+  // space (previous frame for REPROJECT/DELAY, predicted next frame for PREDICT).
+  vtkShaderProgram::Substitute(vertexShader, "//VTK::Camera::Dec",
+    "//VTK::Camera::Dec\n"
+    "uniform mat4 deepOtherFromCurrentClip;\n"
+    "uniform int deepVertexUsesOtherClip;\n"
+    "out vec4 deepOtherClipVSOutput;\n",
+    false);
+  vtkShaderProgram::Substitute(vertexShader, "//VTK::PositionVC::Impl",
+    "//VTK::PositionVC::Impl\n"
+    "  deepOtherClipVSOutput = deepOtherFromCurrentClip * gl_Position;\n"
+    "  if (deepVertexUsesOtherClip != 0) { gl_Position = deepOtherClipVSOutput; }\n",
+    false);
+
+  if (routed)
+  {
+    std::string gs = vtkDeepGBufferGS;
+    vtkShaderProgram::Substitute(
+      gs, "DEEP_GBUFFER_MAX_VERTICES", std::to_string(3 * in.GeometryShaderSlots));
+    vtkShaderProgram::Substitute(
+      gs, "DEEP_GBUFFER_LAYER_SLOTS", std::to_string(in.GeometryShaderSlots));
+    geometryShader = gs;
+  }
+
+  // Fragment shader: the minimum-separation test of Listing 1 line 13 and
+  // Listing 2 line 22, placed before VTK's colouring and lighting.
+  std::string declarations = "//VTK::DepthPeeling::Dec\n"
+                             "uniform int deepTestMode;\n"
+                             "uniform int deepTargetLayer;\n"
+                             "uniform int deepOracleLayerIndex;\n"
+                             "uniform int deepOtherClipLayerMask;\n"
+                             "uniform float deepMinimumSeparation;\n"
+                             "uniform vec4 deepProjectionZ;\n"
+                             "uniform vec4 deepOtherProjectionZ;\n"
+                             "uniform mat4 deepInverseProjection;\n"
+                             "uniform vec2 deepViewportSize;\n"
+                             "uniform sampler2DArray deepHistoryDistance;\n"
+                             "in vec4 deepOtherClipVSOutput;\n";
+  if (routed)
+  {
+    declarations += "flat in int deepLayerVSOutput;\n";
+  }
+  declarations += vtkDeepGBufferCommon;
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::DepthPeeling::Dec", declarations, false);
+
+  std::string test = "//VTK::DepthPeeling::PreColor\n";
+  test += routed ? "  int deepLayer = deepLayerVSOutput;\n" : "  int deepLayer = deepTargetLayer;\n";
+  test +=
+    "  bool deepLayerUsesOtherClip = (deepOtherClipLayerMask & (1 << deepLayer)) != 0;\n"
+    "  float deepDistance = deepDistanceFromFragCoord(gl_FragCoord,\n"
+    "    deepLayerUsesOtherClip ? deepOtherProjectionZ : deepProjectionZ);\n"
+    "  if (deepLayer == deepOracleLayerIndex)\n"
+    "  {\n"
+    "    gl_FragData[1] = vec4(0.0);\n"
+    "    gl_FragData[2] = vec4(0.0);\n"
+    "    gl_FragData[3] = vec4(deepDistance, 0.0, 0.0, 1.0);\n"
+    "    return;\n"
+    "  }\n"
+    "  if (deepLayer > 0 && deepTestMode != 0)\n"
+    "  {\n"
+    "    vec2 deepTestPixel = gl_FragCoord.xy;\n"
+    "    float deepTestDistance = deepDistance;\n"
+    "    if (deepTestMode == 2)\n"
+    "    {\n"
+    "      vec4 previousClip = deepOtherClipVSOutput;\n"
+    "      if (previousClip.w <= 0.0) { discard; }\n"
+    "      deepTestPixel = (previousClip.xy / previousClip.w * 0.5 + 0.5) * deepViewportSize;\n"
+    "      deepTestDistance = deepDistanceFromClip(previousClip, deepOtherProjectionZ);\n"
+    "    }\n"
+    "    ivec2 deepTexel = ivec2(floor(deepTestPixel));\n"
+    "    if (any(lessThan(deepTexel, ivec2(0))) ||\n"
+    "      any(greaterThanEqual(deepTexel, ivec2(deepViewportSize)))) { discard; }\n"
+    "    float deepOracle =\n"
+    "      texelFetch(deepHistoryDistance, ivec3(deepTexel, deepLayer - 1), 0).r;\n"
+    "    if (deepOracle <= 0.0 || !(deepTestDistance > deepOracle + deepMinimumSeparation))\n"
+    "    {\n"
+    "      discard;\n"
+    "    }\n"
+    "  }\n";
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::DepthPeeling::PreColor", test, false);
+
+  // The G-buffer outputs go after texturing, where VTK's albedo is final.
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::TCoord::Impl",
+    "//VTK::TCoord::Impl\n"
+    "  //VTK::DeepGBuffer::Impl\n",
+    false);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGBufferPass::PostReplaceShaderValues(std::string& vtkNotUsed(vertexShader),
+  std::string& vtkNotUsed(geometryShader), std::string& fragmentShader,
+  vtkAbstractMapper* mapper, vtkProp* vtkNotUsed(prop))
+{
+  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
+  {
+    return true;
+  }
+  const bool pbr = fragmentShader.find("vec3 albedo") != std::string::npos;
+  const bool textured = fragmentShader.find("vec4 tcolor ") != std::string::npos;
+  const bool shadingNormal =
+    fragmentShader.find("vec3 normalVCVSOutput") != std::string::npos;
+
+  std::string albedo = pbr ? "albedo" : "diffuseColor";
+  if (textured && !pbr)
+  {
+    albedo += " * tcolor.rgb";
+  }
+  std::string normal = "normalize(normalVCVSOutput)";
+  if (!shadingNormal)
+  {
+    // Unlit props have no shading normal: use the geometric normal of the
+    // position reconstructed from the depth, facing the camera.
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::UniformFlow::Impl",
+      "//VTK::UniformFlow::Impl\n"
+      "  vec4 deepNdc = vec4(gl_FragCoord.xy / deepViewportSize * 2.0 - 1.0,\n"
+      "    2.0 * gl_FragCoord.z - 1.0, 1.0);\n"
+      "  vec4 deepPositionVC = deepInverseProjection * deepNdc;\n"
+      "  deepPositionVC /= deepPositionVC.w;\n"
+      "  vec3 deepGeometricNormal = normalize(cross(dFdx(deepPositionVC.xyz),\n"
+      "    dFdy(deepPositionVC.xyz)));\n"
+      "  if (dot(deepGeometricNormal, deepInverseProjection[3][3] != 0.0 ?\n"
+      "    vec3(0.0, 0.0, -1.0) : deepPositionVC.xyz) > 0.0)\n"
+      "  { deepGeometricNormal = -deepGeometricNormal; }\n",
+      false);
+    normal = "deepGeometricNormal";
+  }
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::DeepGBuffer::Impl",
+    "gl_FragData[1] = vec4(clamp(" + albedo +
+      ", 0.0, 1.0), 1.0);\n"
+      "  gl_FragData[2] = vec4(deepEncodeOct16(" +
+      normal +
+      "), 0.0, 1.0);\n"
+      "  gl_FragData[3] = vec4(deepDistance, 0.0, 0.0, 1.0);\n",
+    false);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkDeepGBufferPass::GetShaderStageMTime()
+{
+  return this->Internals->ShaderStageTime.GetMTime();
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGBufferPass::SetShaderParameters(vtkShaderProgram* program,
+  vtkAbstractMapper* mapper, vtkProp* prop, vtkOpenGLVertexArrayObject* vtkNotUsed(VAO))
+{
+  vtkInternals& in = *this->Internals;
+  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) || !in.Current ||
+    !program->IsUniformUsed("deepOtherFromCurrentClip"))
+  {
+    return true;
+  }
+  vtkDeepGBufferRendererState& state = *in.Current;
+
+  // The other frame's clip position of this prop's vertices:
+  // other = P_o V_o M_o (P V M)^-1 applied to the current clip position, so
+  // VTK's own model-to-clip matrix (with its coordinate shift) is reused.
+  auto& history = state.Props[prop];
+  if (history.Frame != state.FrameIndex)
+  {
+    vtkProp3D* prop3D = vtkProp3D::SafeDownCast(prop);
+    Matrix model = prop3D ? ToArray(prop3D->GetMatrix()) : Identity();
+    history.PreviousModel = history.Model;
+    history.PreviousFrame = history.Frame;
+    history.Model = model;
+    history.Frame = state.FrameIndex;
+    state.PropLiveness[prop] = prop;
+
+    Matrix otherModel = model;
+    if (history.PreviousFrame + 1 == state.FrameIndex && history.PreviousFrame != 0)
+    {
+      if (in.OtherUsesPreviousFrame)
+      {
+        otherModel = history.PreviousModel;
+      }
+      else if (in.OtherIsPrediction)
+      {
+        otherModel = Extrapolate(history.PreviousModel, model);
+      }
+    }
+    Matrix current = Multiply(Multiply(state.Projection, state.View), model);
+    Matrix other = Multiply(Multiply(in.OtherProjection, in.OtherView), otherModel);
+    history.OtherFromCurrentClip = ToColumnMajor(Multiply(other, Invert(current)));
+  }
+
+  // Uniforms the compiler removed (e.g. the routing ones without a geometry
+  // shader) are skipped.
+  auto setInt = [program](const char* name, int value) {
+    if (program->IsUniformUsed(name))
+    {
+      program->SetUniformi(name, value);
+    }
+  };
+  auto setVec = [program](const char* name, const float* value, int size) {
+    if (program->IsUniformUsed(name))
+    {
+      size == 2 ? program->SetUniform2f(name, value) : program->SetUniform4f(name, value);
+    }
+  };
+  auto setMatrix = [program](const char* name, const float* value) {
+    if (program->IsUniformUsed(name))
+    {
+      program->SetUniformMatrix4x4(name, const_cast<float*>(value));
+    }
+  };
+  // Shaders with the routing geometry shader choose positions per layer
+  // there; the others swap in the vertex shader for the layer they draw.
+  const bool routedProgram = program->IsUniformUsed("deepEmitMask");
+  setMatrix("deepOtherFromCurrentClip", history.OtherFromCurrentClip.data());
+  setInt("deepVertexUsesOtherClip",
+    routedProgram ? 0 : (in.OtherClipLayerMask >> in.TargetLayer) & 1);
+  setInt("deepEmitMask", in.EmitMask);
+  setInt("deepOtherClipLayerMask", in.OtherClipLayerMask);
+  setInt("deepTestMode", in.TestMode);
+  setInt("deepTargetLayer", in.TargetLayer);
+  setInt("deepOracleLayerIndex", in.OracleLayerIndex);
+  if (program->IsUniformUsed("deepMinimumSeparation"))
+  {
+    program->SetUniformf("deepMinimumSeparation", in.MinimumSeparation);
+  }
+  setVec("deepProjectionZ", in.ProjectionZ.data(), 4);
+  setVec("deepOtherProjectionZ", in.OtherProjectionZ.data(), 4);
+  setMatrix("deepInverseProjection", in.InverseProjection.data());
+  setVec("deepViewportSize", in.ViewportSize.data(), 2);
+  setInt("deepHistoryDistance", in.HistoryUnit);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+GLuint NewArrayTexture(GLenum internalFormat, GLenum format, GLenum type, int w, int h, int layers)
+{
+  GLuint texture = 0;
+  glGenTextures(1, &texture);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, texture);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BASE_LEVEL, 0);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
+  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, internalFormat, w, h, layers, 0, format, type, nullptr);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  return texture;
+}
+}
+
+//------------------------------------------------------------------------------
+// Allocates (or keeps) the textures and framebuffers of a renderer's
+// G-buffer. Returns false if the framebuffer is incomplete.
+static bool AllocateTargets(vtkDeepGBufferRendererState& state, vtkOpenGLState* ostate, int width,
+  int height, int slots, int historyLayers)
+{
+  if (state.Width == width && state.Height == height && state.Slots == slots &&
+    state.HistoryLayers == historyLayers && state.LayeredFramebuffer)
+  {
+    return true;
+  }
+  state.ReleaseTextures();
+  state.Width = width;
+  state.Height = height;
+  state.Slots = slots;
+  state.HistoryLayers = historyLayers;
+  for (int q = 0; q < vtkDeepGBufferPass::NUMBER_OF_QUANTITIES; ++q)
+  {
+    state.Textures[q] = NewArrayTexture(
+      QuantityInternalFormats[q], QuantityFormats[q], QuantityTypes[q], width, height, slots);
+  }
+  state.DepthTexture = NewArrayTexture(
+    GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT, width, height, slots);
+  state.HistoryTexture = NewArrayTexture(GL_R32F, GL_RED, GL_FLOAT, width, height, historyLayers);
+
+  ostate->PushFramebufferBindings();
+  bool complete = true;
+  // The draw buffers are framebuffer state, set once here with raw GL:
+  // vtkOpenGLState caches them across framebuffers, so setting them through
+  // it after a bind may be skipped.
+  const GLenum drawBuffers[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES] = { GL_COLOR_ATTACHMENT0,
+    GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3 };
+  auto attach = [&](GLuint framebuffer, int layer) {
+    ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glDrawBuffers(vtkDeepGBufferPass::NUMBER_OF_QUANTITIES, drawBuffers);
+    for (int q = 0; q < vtkDeepGBufferPass::NUMBER_OF_QUANTITIES; ++q)
+    {
+      if (layer < 0)
+      {
+        glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + q, state.Textures[q], 0);
+      }
+      else
+      {
+        glFramebufferTextureLayer(
+          GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + q, state.Textures[q], 0, layer);
+      }
+    }
+    if (layer < 0)
+    {
+      glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, state.DepthTexture, 0);
+    }
+    else
+    {
+      glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, state.DepthTexture, 0, layer);
+    }
+    complete = complete &&
+      glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  };
+  glGenFramebuffers(1, &state.LayeredFramebuffer);
+  attach(state.LayeredFramebuffer, -1);
+  state.LayerFramebuffers.resize(slots);
+  glGenFramebuffers(slots, state.LayerFramebuffers.data());
+  for (int j = 0; j < slots; ++j)
+  {
+    attach(state.LayerFramebuffers[j], j);
+  }
+  ostate->PopFramebufferBindings();
+  state.HistoryValid = false;
+  return complete;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// Binds a framebuffer of the G-buffer (its four draw buffers are set at allocation).
+void BindTarget(vtkOpenGLState* ostate, GLuint framebuffer)
+{
+  ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+}
+
+// Copies layer `from` of the distance texture into layer `to` of the history.
+void CopyDistanceLayer(vtkDeepGBufferRendererState& state, int from, int to)
+{
+  glCopyImageSubData(state.Textures[vtkDeepGBufferPass::DEPTH], GL_TEXTURE_2D_ARRAY, 0, 0, 0, from,
+    state.HistoryTexture, GL_TEXTURE_2D_ARRAY, 0, 0, 0, to, state.Width, state.Height, 1);
+}
+}
+
+//------------------------------------------------------------------------------
+// Checks once per context what the G-buffer needs: geometry shaders and
+// array textures (OpenGL 3.2), glCopyImageSubData (4.3 or ARB_copy_image),
+// four draw buffers, and how many layers a geometry shader can emit.
+static bool CheckSupport(vtkOpenGLRenderWindow* window, int& maximumSlots, std::string& why)
+{
+  int major = 0, minor = 0;
+  window->GetOpenGLVersion(major, minor);
+  if (major * 10 + minor < 32)
+  {
+    why = "OpenGL " + std::to_string(major) + "." + std::to_string(minor) +
+      " has no geometry shaders or array textures (3.2 is required)";
+    return false;
+  }
+  if (!(GLEW_VERSION_4_3 || GLEW_ARB_copy_image))
+  {
+    why = "glCopyImageSubData (OpenGL 4.3 or ARB_copy_image) is not available";
+    return false;
+  }
+  GLint drawBuffers = 0, attachments = 0, arrayLayers = 0, gsVertices = 0, gsComponents = 0;
+  glGetIntegerv(GL_MAX_DRAW_BUFFERS, &drawBuffers);
+  glGetIntegerv(GL_MAX_COLOR_ATTACHMENTS, &attachments);
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &arrayLayers);
+  glGetIntegerv(GL_MAX_GEOMETRY_OUTPUT_VERTICES, &gsVertices);
+  glGetIntegerv(GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS, &gsComponents);
+  if (drawBuffers < vtkDeepGBufferPass::NUMBER_OF_QUANTITIES ||
+    attachments < vtkDeepGBufferPass::NUMBER_OF_QUANTITIES)
+  {
+    why = "fewer than 4 draw buffers";
+    return false;
+  }
+  maximumSlots = std::min({ static_cast<int>(arrayLayers), static_cast<int>(gsVertices) / 3,
+    static_cast<int>(gsComponents) / (3 * MaximumVaryingComponentsPerVertex),
+    vtkDeepGBufferPass::MAXIMUM_NUMBER_OF_LAYERS + 1 });
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
+{
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLRenderer* renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  vtkOpenGLRenderWindow* window =
+    vtkOpenGLRenderWindow::SafeDownCast(renderer ? renderer->GetRenderWindow() : nullptr);
+  if (!window)
+  {
+    vtkErrorMacro("vtkDeepGBufferPass needs an OpenGL renderer and render window.");
+    return false;
+  }
+  vtkOpenGLState* ostate = window->GetState();
+
+  auto renderPlain = [&]() {
+    for (int i = 0; i < s->GetPropArrayCount(); ++i)
+    {
+      s->GetPropArray()[i]->RenderOpaqueGeometry(renderer);
+    }
+  };
+
+  if (in.CheckedWindow != window)
+  {
+    std::string why;
+    in.CheckedWindow = window;
+    in.Supported = CheckSupport(window, in.MaximumSlots, why);
+    if (!in.Supported)
+    {
+      vtkWarningMacro("The deep G-buffer is not supported by this OpenGL ("
+        << why << "); rendering without it.");
+    }
+  }
+  // Hardware picking draws ids into VTK's own buffers: leave it alone.
+  if (!in.Supported || renderer->GetSelector())
+  {
+    renderPlain();
+    return false;
+  }
+
+  int size[2] = { 0, 0 };
+  s->GetWindowSize(size);
+  const int width = size[0], height = size[1];
+  if (width < 1 || height < 1)
+  {
+    return false;
+  }
+
+  // Effective parameters of this frame.
+  int oracle = this->Oracle;
+  int layers = this->NumberOfLayers;
+  const bool predictsLayer = oracle == PREDICT || oracle == DELAY;
+  if (predictsLayer && layers > 2)
+  {
+    in.WarnOnce(this, 0,
+      std::string(GetOracleAsString(oracle)) +
+        " predicts one layer; with more than 2 layers REPROJECT is used.");
+    oracle = REPROJECT;
+  }
+  int oracleSlots = (oracle == PREDICT || oracle == DELAY) ? 1 : 0;
+  if (layers + oracleSlots > in.MaximumSlots)
+  {
+    in.WarnOnce(this, 1,
+      "This GPU's geometry shaders allow " + std::to_string(in.MaximumSlots - oracleSlots) +
+        " layers; NumberOfLayers is limited to that.");
+    layers = std::max(1, in.MaximumSlots - oracleSlots);
+  }
+  const int slots = layers + oracleSlots;
+  const bool singlePass = layers > 1 && oracle != DEPTH_PEEL;
+
+  double bounds[6];
+  renderer->ComputeVisiblePropBounds(bounds);
+  double diagonal = 0.0;
+  if (vtkMath::AreBoundsInitialized(bounds))
+  {
+    const double extent[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
+    diagonal = vtkMath::Norm(extent);
+  }
+  double dz = this->AutomaticMinimumSeparation ? this->AutomaticSeparationFraction * diagonal
+                                               : this->MinimumSeparation;
+  if (layers > 1 && diagonal > 0.0 && dz > diagonal)
+  {
+    in.WarnOnce(this, 2,
+      "MinimumSeparation " + std::to_string(dz) + " exceeds the scene's size " +
+        std::to_string(diagonal) + ": layers beyond the first will be empty.");
+  }
+
+  // The renderer's state and targets.
+  auto& slot = in.States[renderer];
+  if (!slot)
+  {
+    slot.reset(new vtkDeepGBufferRendererState);
+    slot->Renderer = renderer;
+  }
+  if (!in.FirstRenderer || !in.States.count(in.FirstRenderer))
+  {
+    in.FirstRenderer = renderer;
+  }
+  vtkDeepGBufferRendererState& state = *slot;
+  vtkOpenGLClearErrorMacro();
+  if (!AllocateTargets(state, ostate, width, height, slots, std::max(1, layers - 1)))
+  {
+    in.WarnOnce(this, 3, "The deep G-buffer's framebuffer is incomplete; rendering without it.");
+    state.ReleaseTextures();
+    renderPlain();
+    return false;
+  }
+  state.FrameIndex++;
+
+  // Cameras of this frame and of the other frame the oracle needs.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  double aspect = static_cast<double>(width) / height;
+  state.PreviousView = state.View;
+  state.PreviousProjection = state.Projection;
+  state.View = ToArray(camera->GetModelViewTransformMatrix());
+  state.Projection = ToArray(camera->GetProjectionTransformMatrix(aspect, -1, 1));
+  const bool hadPreviousCamera = state.HasPreviousCamera;
+  state.HasPreviousCamera = true;
+  camera->GetClippingRange(state.ClippingRange);
+
+  in.OtherUsesPreviousFrame = (oracle == REPROJECT || oracle == DELAY) && hadPreviousCamera;
+  in.OtherIsPrediction = oracle == PREDICT && hadPreviousCamera;
+  in.OtherView = state.View;
+  in.OtherProjection = state.Projection;
+  if (in.OtherUsesPreviousFrame)
+  {
+    in.OtherView = state.PreviousView;
+    in.OtherProjection = state.PreviousProjection;
+  }
+  else if (in.OtherIsPrediction)
+  {
+    in.OtherView = Extrapolate(state.PreviousView, state.View);
+  }
+  in.ProjectionZ = ProjectionDepthRows(state.Projection);
+  in.OtherProjectionZ = ProjectionDepthRows(in.OtherProjection);
+  in.InverseProjection = ToColumnMajor(Invert(state.Projection));
+  in.ViewportSize = { static_cast<float>(width), static_cast<float>(height) };
+  in.MinimumSeparation = static_cast<float>(dz);
+  in.Oracle = oracle;
+
+  // The history is usable if it was written by the previous frame with the
+  // same layout and the meaning this oracle expects.
+  const bool historyUsable = state.HistoryValid && hadPreviousCamera &&
+    state.HistoryNumberOfLayers == layers && state.HistoryIsPredicted == (oracleSlots == 1);
+
+  // Classify props; a change of routing or layout rebuilds the shaders.
+  std::vector<vtkProp*> routedProps, otherProps;
+  std::map<vtkProp*, bool> routed;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    bool r = singlePass && IsRoutable(prop);
+    routed[prop] = r;
+    (r ? routedProps : otherProps).push_back(prop);
+  }
+  const int geometryShaderSlots = singlePass ? slots : 0;
+  if (routed != in.RoutedProps || geometryShaderSlots != in.GeometryShaderSlots)
+  {
+    in.RoutedProps = routed;
+    in.GeometryShaderSlots = geometryShaderSlots;
+    in.ShaderStageTime.Modified();
+  }
+
+  // Bind the history for the separation tests.
+  vtkTextureUnitManager* units = window->GetTextureUnitManager();
+  in.HistoryUnit = units->Allocate();
+  if (in.HistoryUnit < 0)
+  {
+    vtkErrorMacro("No free texture unit for the deep G-buffer.");
+    renderPlain();
+    return false;
+  }
+  ostate->vtkglActiveTexture(GL_TEXTURE0 + in.HistoryUnit);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, state.HistoryTexture);
+
+  ostate->PushFramebufferBindings();
+  vtkOpenGLState::ScopedglViewport savedViewport(ostate);
+  vtkOpenGLState::ScopedglScissor savedScissor(ostate);
+  vtkOpenGLState::ScopedglClearColor savedClearColor(ostate);
+  vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
+  ostate->vtkglViewport(0, 0, width, height);
+  ostate->vtkglScissor(0, 0, width, height);
+  ostate->vtkglDepthMask(GL_TRUE);
+
+  // Clear every layer: distance 0 marks an empty pixel.
+  BindTarget(ostate, state.LayeredFramebuffer);
+  const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+  for (int q = 0; q < NUMBER_OF_QUANTITIES; ++q)
+  {
+    glClearBufferfv(GL_COLOR, q, zero);
+  }
+  const float farDepth = 1.0f;
+  glClearBufferfv(GL_DEPTH, 0, &farDepth);
+
+  this->PreRender(s);
+  in.Current = &state;
+  in.OracleLayerIndex = oracleSlots ? layers : -1;
+  const int allOracleMask = oracleSlots ? (1 << layers) : 0;
+  // DELAY rasterises the displayed layers at the previous frame's
+  // positions; its oracle layer at the current ones (Listing 2, lines 3-6).
+  const int delayedLayersMask = (oracle == DELAY) ? ((1 << layers) - 1) : 0;
+  const int predictedLayerMask = (oracle == PREDICT) ? allOracleMask : 0;
+  in.OtherClipLayerMask = delayedLayersMask | predictedLayerMask;
+
+  auto draw = [&](const std::vector<vtkProp*>& props) {
+    for (vtkProp* prop : props)
+    {
+      prop->RenderOpaqueGeometry(renderer);
+    }
+  };
+
+  int geometryPasses = 0;
+  bool routedDone = false;
+  bool peeled = false;
+  if (!routedProps.empty() && historyUsable)
+  {
+    // Paper Listing 2: one submission fills every layer.
+    BindTarget(ostate, state.LayeredFramebuffer);
+    in.EmitMask = (1 << slots) - 1;
+    in.TargetLayer = 0;
+    in.TestMode = oracle == REPROJECT ? TEST_REPROJECTED : TEST_SAME_PIXEL;
+    draw(routedProps);
+    routedDone = true;
+    geometryPasses = 1;
+  }
+
+  // Paper Listing 1: one submission per layer, each tested against the
+  // layer before it in this frame, for whatever the single pass did not draw.
+  const std::vector<vtkProp*>& peeledRouted = routedDone ? std::vector<vtkProp*>() : routedProps;
+  for (int j = 0; j < layers; ++j)
+  {
+    if (peeledRouted.empty() && otherProps.empty())
+    {
+      break;
+    }
+    peeled = true;
+    if (j > 0)
+    {
+      CopyDistanceLayer(state, j - 1, j - 1);
+    }
+    in.TestMode = j > 0 ? TEST_SAME_PIXEL : TEST_NONE;
+    if (!peeledRouted.empty())
+    {
+      BindTarget(ostate, state.LayeredFramebuffer);
+      in.EmitMask = (1 << j) | (j == 0 ? allOracleMask : 0);
+      in.TargetLayer = 0;
+      draw(peeledRouted);
+    }
+    if (!otherProps.empty())
+    {
+      BindTarget(ostate, state.LayerFramebuffers[j]);
+      in.EmitMask = 1 << j;
+      in.TargetLayer = j;
+      draw(otherProps);
+    }
+    ++geometryPasses;
+  }
+
+  // History for the next frame (Listing 2 reads Z_{t-1}).
+  if (oracleSlots)
+  {
+    CopyDistanceLayer(state, layers, 0);
+  }
+  else if (!peeled)
+  {
+    // Peeling copied each layer before drawing the next; a single pass did not.
+    for (int j = 0; j + 1 < layers; ++j)
+    {
+      CopyDistanceLayer(state, j, j);
+    }
+  }
+  state.HistoryValid = true;
+  state.HistoryIsPredicted = oracleSlots == 1;
+  state.HistoryNumberOfLayers = layers;
+
+  in.Current = nullptr;
+  this->PostRender(s);
+  ostate->PopFramebufferBindings();
+  ostate->vtkglActiveTexture(GL_TEXTURE0 + in.HistoryUnit);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  units->Free(in.HistoryUnit);
+  in.HistoryUnit = -1;
+
+  // Forget props that no longer exist.
+  for (auto it = state.PropLiveness.begin(); it != state.PropLiveness.end();)
+  {
+    if (!it->second)
+    {
+      state.Props.erase(it->first);
+      it = state.PropLiveness.erase(it);
+    }
+    else
+    {
+      ++it;
+    }
+  }
+
+  state.RenderedLayers = layers;
+  state.MinimumSeparation = dz;
+  state.Oracle = routedDone ? oracle : DEPTH_PEEL;
+  this->EffectiveMinimumSeparation = dz;
+  this->EffectiveNumberOfLayers = layers;
+  this->EffectiveOracle = state.Oracle;
+  this->LastGeometryPassCount = geometryPasses;
+  vtkOpenGLCheckErrorMacro("failed after building the deep G-buffer");
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGBufferPass::ResolveToFramebuffer(const vtkRenderState* s)
+{
+  vtkInternals& in = *this->Internals;
+  vtkRenderer* renderer = s->GetRenderer();
+  auto it = in.States.find(renderer);
+  if (it == in.States.end() || !it->second->LayeredFramebuffer)
+  {
+    return;
+  }
+  vtkDeepGBufferRendererState& state = *it->second;
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  vtkOpenGLState* ostate = window->GetState();
+
+  if (!in.ResolveQuad)
+  {
+    std::string fs = vtkDeepGBufferResolveFS;
+    vtkShaderProgram::Substitute(fs, "//VTK::DeepGBuffer::Common", vtkDeepGBufferCommon);
+    in.ResolveQuad = new vtkOpenGLQuadHelper(
+      window, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), "");
+  }
+  else
+  {
+    window->GetShaderCache()->ReadyShaderProgram(in.ResolveQuad->Program);
+  }
+  vtkShaderProgram* program = in.ResolveQuad->Program;
+  if (!program || !program->GetCompiled())
+  {
+    vtkErrorMacro("The deep G-buffer resolve shader failed to compile.");
+    return;
+  }
+
+  vtkTextureUnitManager* units = window->GetTextureUnitManager();
+  const GLuint textures[5] = { state.Textures[RADIANCE], state.Textures[ALBEDO],
+    state.Textures[NORMAL], state.Textures[DEPTH], state.DepthTexture };
+  const char* names[5] = { "deepRadiance", "deepAlbedo", "deepNormal", "deepDistance",
+    "deepHardwareDepth" };
+  int boundUnits[5];
+  for (int i = 0; i < 5; ++i)
+  {
+    boundUnits[i] = units->Allocate();
+    ostate->vtkglActiveTexture(GL_TEXTURE0 + boundUnits[i]);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, textures[i]);
+    program->SetUniformi(names[i], boundUnits[i]);
+  }
+  const int layer = std::min(this->DisplayLayer, state.RenderedLayers - 1);
+  program->SetUniformi("deepLayer", layer);
+  program->SetUniformi("deepQuantity", this->DisplayQuantity);
+  float range[2] = { static_cast<float>(state.ClippingRange[0]),
+    static_cast<float>(state.ClippingRange[1]) };
+  program->SetUniform2f("deepDistanceRange", range);
+
+  vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthFunc depthFunc(ostate);
+  vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(GL_TRUE);
+  in.ResolveQuad->Render();
+
+  for (int i = 0; i < 5; ++i)
+  {
+    ostate->vtkglActiveTexture(GL_TEXTURE0 + boundUnits[i]);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    units->Free(boundUnits[i]);
+  }
+  vtkOpenGLCheckErrorMacro("failed after resolving the deep G-buffer");
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGBufferPass::Render(const vtkRenderState* s)
+{
+  vtkOpenGLClearErrorMacro();
+  this->NumberOfRenderedProps = 0;
+  vtkRenderer* renderer = s->GetRenderer();
+
+  // Camera and clear, as vtkCameraPass does, then the steps of
+  // vtkRenderStepsPass with the opaque step replaced by the G-buffer.
+  vtkOpenGLRenderer* oren = vtkOpenGLRenderer::SafeDownCast(renderer);
+  if (!oren)
+  {
+    vtkErrorMacro("vtkDeepGBufferPass needs a vtkOpenGLRenderer.");
+    return;
+  }
+  if (!renderer->IsActiveCameraCreated())
+  {
+    renderer->GetActiveCamera();
+    renderer->ResetCamera();
+  }
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  window->MakeCurrent();
+  vtkOpenGLState* ostate = window->GetState();
+  int origin[2] = { 0, 0 };
+  int size[2];
+  if (vtkOpenGLFramebufferObject* fbo =
+        vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer()))
+  {
+    fbo->GetLastSize(size);
+  }
+  else
+  {
+    oren->GetTiledSizeAndOrigin(size, size + 1, origin, origin + 1);
+  }
+  vtkOpenGLState::ScopedglViewport savedViewport(ostate);
+  vtkOpenGLState::ScopedglScissor savedScissor(ostate);
+  vtkOpenGLState::ScopedglEnableDisable savedScissorTest(ostate, GL_SCISSOR_TEST);
+  ostate->vtkglViewport(origin[0], origin[1], size[0], size[1]);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
+  ostate->vtkglScissor(origin[0], origin[1], size[0], size[1]);
+  if (window->GetErase() && renderer->GetErase())
+  {
+    renderer->Clear();
+  }
+  this->Internals->LightsPass->Render(s);
+
+  if (this->RenderLayers(s))
+  {
+    this->ResolveToFramebuffer(s);
+  }
+  this->NumberOfRenderedProps += s->GetPropArrayCount();
+
+  for (vtkRenderPass* step : { this->TranslucentPass, this->VolumetricPass, this->OverlayPass })
+  {
+    if (step)
+    {
+      step->Render(s);
+      this->NumberOfRenderedProps += step->GetNumberOfRenderedProps();
+    }
+  }
+  vtkOpenGLCheckErrorMacro("failed after vtkDeepGBufferPass::Render");
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGBufferPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  vtkInternals& in = *this->Internals;
+  for (auto& entry : in.States)
+  {
+    entry.second->ReleaseTextures();
+  }
+  in.States.clear();
+  in.FirstRenderer = nullptr;
+  if (in.ResolveQuad)
+  {
+    in.ResolveQuad->ReleaseGraphicsResources(w);
+    delete in.ResolveQuad;
+    in.ResolveQuad = nullptr;
+  }
+  in.CheckedWindow = nullptr;
+  in.LightsPass->ReleaseGraphicsResources(w);
+  for (vtkRenderPass* step : { this->TranslucentPass, this->VolumetricPass, this->OverlayPass })
+  {
+    if (step)
+    {
+      step->ReleaseGraphicsResources(w);
+    }
+  }
+  this->Superclass::ReleaseGraphicsResources(w);
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+vtkDeepGBufferRendererState* FindState(
+  std::map<vtkRenderer*, std::unique_ptr<vtkDeepGBufferRendererState>>& states,
+  vtkRenderer* renderer, vtkRenderer* first)
+{
+  auto it = states.find(renderer ? renderer : first);
+  return (it == states.end() || !it->second->LayeredFramebuffer) ? nullptr : it->second.get();
+}
+}
+
+unsigned int vtkDeepGBufferPass::GetTextureHandle(vtkRenderer* renderer, int quantity)
+{
+  vtkDeepGBufferRendererState* state =
+    FindState(this->Internals->States, renderer, this->Internals->FirstRenderer);
+  if (!state || quantity < 0 || quantity >= NUMBER_OF_QUANTITIES)
+  {
+    return 0;
+  }
+  return state->Textures[quantity];
+}
+
+int vtkDeepGBufferPass::ActivateTexture(vtkRenderer* renderer, int quantity)
+{
+  GLuint handle = this->GetTextureHandle(renderer, quantity);
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(
+    renderer ? renderer->GetRenderWindow() : nullptr);
+  if (!handle || !window)
+  {
+    return -1;
+  }
+  int unit = window->GetTextureUnitManager()->Allocate();
+  if (unit >= 0)
+  {
+    window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, handle);
+  }
+  return unit;
+}
+
+void vtkDeepGBufferPass::DeactivateTexture(vtkRenderer* renderer, int quantity)
+{
+  GLuint handle = this->GetTextureHandle(renderer, quantity);
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(
+    renderer ? renderer->GetRenderWindow() : nullptr);
+  if (!handle || !window)
+  {
+    return;
+  }
+  vtkTextureUnitManager* units = window->GetTextureUnitManager();
+  for (int unit = 0; unit < units->GetNumberOfTextureUnits(); ++unit)
+  {
+    if (!units->IsAllocated(unit))
+    {
+      continue;
+    }
+    window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + unit);
+    GLint bound = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &bound);
+    if (static_cast<GLuint>(bound) == handle)
+    {
+      glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+      units->Free(unit);
+      return;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGBufferPass::CaptureLayers(vtkImageData* output, vtkRenderer* renderer)
+{
+  vtkDeepGBufferRendererState* state =
+    FindState(this->Internals->States, renderer, this->Internals->FirstRenderer);
+  if (!output || !state || !state->Renderer)
+  {
+    vtkErrorMacro("CaptureLayers: no deep G-buffer has been rendered for this renderer.");
+    return false;
+  }
+  vtkOpenGLRenderWindow* window =
+    vtkOpenGLRenderWindow::SafeDownCast(state->Renderer->GetRenderWindow());
+  window->MakeCurrent();
+  vtkOpenGLState* ostate = window->GetState();
+  vtkOpenGLClearErrorMacro();
+
+  const int w = state->Width, h = state->Height, layers = state->RenderedLayers;
+  const size_t pixels = static_cast<size_t>(w) * h;
+  const size_t slotPixels = pixels * state->Slots;
+  std::vector<float> radiance(slotPixels * 4), distance(slotPixels);
+  std::vector<unsigned char> albedo(slotPixels * 4), normal(slotPixels * 2);
+
+  ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+  vtkOpenGLState::ScopedglActiveTexture savedUnit(ostate);
+  GLint previous = 0;
+  glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &previous);
+  auto download = [&](GLuint texture, GLenum format, GLenum type, void* data) {
+    glBindTexture(GL_TEXTURE_2D_ARRAY, texture);
+    glGetTexImage(GL_TEXTURE_2D_ARRAY, 0, format, type, data);
+  };
+  download(state->Textures[RADIANCE], GL_RGBA, GL_FLOAT, radiance.data());
+  download(state->Textures[ALBEDO], GL_RGBA, GL_UNSIGNED_BYTE, albedo.data());
+  download(state->Textures[NORMAL], GL_RG, GL_UNSIGNED_BYTE, normal.data());
+  download(state->Textures[DEPTH], GL_RED, GL_FLOAT, distance.data());
+  glBindTexture(GL_TEXTURE_2D_ARRAY, previous);
+  ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
+
+  output->Initialize();
+  output->SetDimensions(w, h, 1);
+  output->SetSpacing(1.0, 1.0, 1.0);
+  output->SetOrigin(0.0, 0.0, 0.0);
+  vtkPointData* pd = output->GetPointData();
+  for (int j = 0; j < layers; ++j)
+  {
+    const std::string suffix = "_" + std::to_string(j);
+    vtkNew<vtkFloatArray> rad, alb, nrm, dist;
+    vtkNew<vtkUnsignedCharArray> valid;
+    rad->SetName(("Radiance" + suffix).c_str());
+    rad->SetNumberOfComponents(4);
+    rad->SetNumberOfTuples(pixels);
+    alb->SetName(("Albedo" + suffix).c_str());
+    alb->SetNumberOfComponents(3);
+    alb->SetNumberOfTuples(pixels);
+    nrm->SetName(("Normal" + suffix).c_str());
+    nrm->SetNumberOfComponents(3);
+    nrm->SetNumberOfTuples(pixels);
+    dist->SetName(("Depth" + suffix).c_str());
+    dist->SetNumberOfTuples(pixels);
+    valid->SetName(("Valid" + suffix).c_str());
+    valid->SetNumberOfTuples(pixels);
+    const size_t base = pixels * j;
+    for (size_t p = 0; p < pixels; ++p)
+    {
+      const size_t q = base + p;
+      const bool isValid = distance[q] > 0.0f;
+      valid->SetValue(p, isValid ? 1 : 0);
+      dist->SetValue(p, isValid ? distance[q] : 0.0f);
+      for (int c = 0; c < 4; ++c)
+      {
+        rad->SetTypedComponent(p, c, isValid ? radiance[4 * q + c] : 0.0f);
+      }
+      double n[3] = { 0.0, 0.0, 0.0 };
+      if (isValid)
+      {
+        DecodeOct16(&normal[2 * q], n);
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        alb->SetTypedComponent(p, c, isValid ? albedo[4 * q + c] / 255.0f : 0.0f);
+        nrm->SetTypedComponent(p, c, static_cast<float>(n[c]));
+      }
+    }
+    pd->AddArray(rad);
+    pd->AddArray(alb);
+    pd->AddArray(nrm);
+    pd->AddArray(dist);
+    pd->AddArray(valid);
+  }
+  vtkNew<vtkDoubleArray> separation;
+  separation->SetName("MinimumSeparation");
+  separation->InsertNextValue(state->MinimumSeparation);
+  vtkNew<vtkIntArray> layerCount;
+  layerCount->SetName("NumberOfLayers");
+  layerCount->InsertNextValue(layers);
+  vtkNew<vtkStringArray> oracleName;
+  oracleName->SetName("Oracle");
+  oracleName->InsertNextValue(GetOracleAsString(state->Oracle));
+  output->GetFieldData()->AddArray(separation);
+  output->GetFieldData()->AddArray(layerCount);
+  output->GetFieldData()->AddArray(oracleName);
+  vtkOpenGLCheckErrorMacro("failed after capturing the deep G-buffer");
+  return true;
+}

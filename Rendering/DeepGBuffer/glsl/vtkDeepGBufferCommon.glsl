@@ -1,1 +1,56 @@
-// placeholder
+//=========================================================================
+// Shared GLSL for the deep G-buffer passes. Substituted once into every
+// shader that packs, unpacks or reconstructs G-buffer values.
+//=========================================================================
+
+// Octahedral normal encoding with 8 bits per component: "Oct16" in the
+// paper's Table 1 (Cigolle et al., JCGT 2014). The octahedron coordinate
+// p in [-1, 1]^2 is quantised to 255 symmetric levels k = round(127 p) + 127,
+// stored as k / 255 in an 8-bit unsigned normalised target, so that p = 0
+// (the axes) is exact.
+vec2 deepSignNotZero(vec2 v)
+{
+  return vec2(v.x >= 0.0 ? 1.0 : -1.0, v.y >= 0.0 ? 1.0 : -1.0);
+}
+
+vec2 deepEncodeOct16(vec3 n)
+{
+  vec2 p = n.xy * (1.0 / (abs(n.x) + abs(n.y) + abs(n.z)));
+  if (n.z < 0.0)
+  {
+    p = (1.0 - abs(p.yx)) * deepSignNotZero(p);
+  }
+  return (floor(clamp(p, -1.0, 1.0) * 127.0 + 0.5) + 127.0) / 255.0;
+}
+
+vec3 deepDecodeOct16(vec2 encoded)
+{
+  vec2 p = (floor(encoded * 255.0 + 0.5) - 127.0) / 127.0;
+  vec3 n = vec3(p, 1.0 - abs(p.x) - abs(p.y));
+  if (n.z < 0.0)
+  {
+    n.xy = (1.0 - abs(n.yx)) * deepSignNotZero(n.xy);
+  }
+  return normalize(n);
+}
+
+// Camera-space distance (positive in front of the camera) from clip-space
+// coordinates. projZ holds the projection's third and fourth rows as
+// (P22, P23, P32, P33): perspective has clip.w = P32 z + P33 with P32 = -1,
+// parallel projection has clip.w = 1 and clip.z = P22 z + P23.
+float deepDistanceFromClip(vec4 clip, vec4 projZ)
+{
+  if (projZ.z != 0.0)
+  {
+    return -(clip.w - projZ.w) / projZ.z;
+  }
+  return -(clip.z / clip.w - projZ.y) / projZ.x;
+}
+
+// The same for the fragment being shaded: gl_FragCoord.w is 1 / clip.w and
+// gl_FragCoord.z is the window depth in [0, 1].
+float deepDistanceFromFragCoord(vec4 fragCoord, vec4 projZ)
+{
+  float clipW = 1.0 / fragCoord.w;
+  return deepDistanceFromClip(vec4(0.0, 0.0, (2.0 * fragCoord.z - 1.0) * clipW, clipW), projZ);
+}

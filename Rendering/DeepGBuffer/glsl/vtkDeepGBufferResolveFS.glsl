@@ -1,1 +1,54 @@
-// placeholder
+//VTK::System::Dec
+
+//=========================================================================
+// Draws one quantity of one deep G-buffer layer into the renderer's
+// framebuffer, with that layer's hardware depth, so that VTK's translucent,
+// volume and overlay steps composite against it. Empty pixels are discarded
+// and keep the renderer's background.
+//=========================================================================
+
+in vec2 texCoord;
+
+uniform sampler2DArray deepRadiance;
+uniform sampler2DArray deepAlbedo;
+uniform sampler2DArray deepNormal;
+uniform sampler2DArray deepDistance;
+uniform sampler2DArray deepHardwareDepth;
+uniform int deepLayer;
+uniform int deepQuantity; // vtkDeepGBufferPass::Quantity
+uniform vec2 deepDistanceRange;
+
+//VTK::DeepGBuffer::Common
+
+//VTK::Output::Dec
+
+void main()
+{
+  ivec2 size = textureSize(deepDistance, 0).xy;
+  ivec3 texel = ivec3(min(ivec2(texCoord * vec2(size)), size - 1), deepLayer);
+  float distance = texelFetch(deepDistance, texel, 0).r;
+  if (distance <= 0.0)
+  {
+    discard;
+  }
+  vec4 color;
+  if (deepQuantity == 0)
+  {
+    color = texelFetch(deepRadiance, texel, 0);
+  }
+  else if (deepQuantity == 1)
+  {
+    color = vec4(texelFetch(deepAlbedo, texel, 0).rgb, 1.0);
+  }
+  else if (deepQuantity == 2)
+  {
+    color = vec4(deepDecodeOct16(texelFetch(deepNormal, texel, 0).rg) * 0.5 + 0.5, 1.0);
+  }
+  else
+  {
+    float t = (distance - deepDistanceRange.x) / max(deepDistanceRange.y - deepDistanceRange.x, 1e-30);
+    color = vec4(vec3(clamp(t, 0.0, 1.0)), 1.0);
+  }
+  gl_FragData[0] = color;
+  gl_FragDepth = texelFetch(deepHardwareDepth, texel, 0).r;
+}
