@@ -1,0 +1,233 @@
+// Oct16 normal encoding (paper Table 1): the angular error of an
+// encode/decode round trip is bounded over the whole sphere, for the C++
+// codec and for the GLSL encoder that the G-buffer shaders use.
+//
+// The bound: 255 symmetric levels per octahedron coordinate (step 1/127)
+// give a worst case of 0.954 degrees over 2M directions; we require
+// max < 1.0 degree and mean < 0.35 degree.
+
+#include "vtkDeepGBufferPass.h"
+
+#include "vtkDeepGBufferCommon.h" // the GLSL under test
+
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+namespace
+{
+constexpr double MaximumErrorDegrees = 1.0;
+constexpr double MeanErrorDegrees = 0.35;
+
+// Direction of texel (x, y) of a size x size latitude-longitude grid, the
+// same arithmetic as the GLSL below (which runs in single precision).
+void GridDirection(int x, int y, int size, double d[3])
+{
+  const double theta = vtkMath::Pi() * (y + 0.5) / size;
+  const double phi = 2.0 * vtkMath::Pi() * (x + 0.5) / size;
+  d[0] = std::sin(theta) * std::cos(phi);
+  d[1] = std::sin(theta) * std::sin(phi);
+  d[2] = std::cos(theta);
+}
+
+// Direction i of n on a Fibonacci sphere: near-uniform coverage, both poles.
+void FibonacciDirection(int i, int n, double d[3])
+{
+  const double z = 1.0 - 2.0 * (i + 0.5) / n;
+  const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+  const double phi = (i + 0.5) * vtkMath::Pi() * (3.0 - std::sqrt(5.0));
+  d[0] = r * std::cos(phi);
+  d[1] = r * std::sin(phi);
+  d[2] = z;
+}
+
+double AngleDegrees(const double a[3], const double b[3])
+{
+  return vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(a, b));
+}
+
+bool CheckStatistics(const char* what, double maximum, double sum, int count)
+{
+  const double mean = sum / count;
+  std::printf("%s: %d directions, max error %.4f deg, mean %.4f deg\n", what, count, maximum, mean);
+  if (!(maximum < MaximumErrorDegrees) || !(mean < MeanErrorDegrees))
+  {
+    std::printf("%s: error bound exceeded (max < %.2f, mean < %.2f required)\n", what,
+      MaximumErrorDegrees, MeanErrorDegrees);
+    return false;
+  }
+  return true;
+}
+
+bool TestCpuCodec()
+{
+  const int n = 1000000;
+  double maximum = 0.0, sum = 0.0;
+  for (int i = 0; i < n; ++i)
+  {
+    double d[3], r[3];
+    unsigned char e[2];
+    FibonacciDirection(i, n, d);
+    vtkDeepGBufferPass::EncodeOct16(d, e);
+    vtkDeepGBufferPass::DecodeOct16(e, r);
+    const double err = AngleDegrees(d, r);
+    maximum = std::max(maximum, err);
+    sum += err;
+  }
+  // The axes are exact by construction.
+  const double axes[6][3] = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 },
+    { 0, 0, -1 } };
+  for (const auto& axis : axes)
+  {
+    unsigned char e[2];
+    double r[3];
+    vtkDeepGBufferPass::EncodeOct16(axis, e);
+    vtkDeepGBufferPass::DecodeOct16(e, r);
+    if (AngleDegrees(axis, r) > 1e-9)
+    {
+      std::printf("axis (%g %g %g) is not exact\n", axis[0], axis[1], axis[2]);
+      return false;
+    }
+  }
+  return CheckStatistics("C++ codec", maximum, sum, n);
+}
+
+// Encodes a latitude-longitude grid of directions with the shaders' GLSL into an RG8 target,
+// reads the bytes back and decodes them with the C++ codec.
+bool TestGlslEncoder()
+{
+  const int size = 512;
+  const int n = size * size;
+  vtkNew<vtkRenderer> renderer;
+  vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetOffScreenRendering(1);
+  window->SetSize(16, 16);
+  window->AddRenderer(renderer);
+  window->Render();
+  vtkOpenGLRenderWindow* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (!glWindow)
+  {
+    std::printf("no OpenGL render window\n");
+    return false;
+  }
+  glWindow->MakeCurrent();
+
+  vtkNew<vtkTextureObject> target;
+  target->SetContext(glWindow);
+  target->SetInternalFormat(GL_RG8);
+  target->SetFormat(GL_RG);
+  target->SetDataType(GL_UNSIGNED_BYTE);
+  target->Allocate2D(size, size, 2, VTK_UNSIGNED_CHAR);
+
+  vtkNew<vtkOpenGLFramebufferObject> fbo;
+  fbo->SetContext(glWindow);
+  vtkOpenGLState* ostate = glWindow->GetState();
+  ostate->PushFramebufferBindings();
+  fbo->Bind();
+  fbo->AddColorAttachment(0, target);
+  fbo->ActivateDrawBuffers(1);
+  vtkOpenGLState::ScopedglViewport savedViewport(ostate);
+  vtkOpenGLState::ScopedglScissor savedScissor(ostate);
+  ostate->vtkglViewport(0, 0, size, size);
+  ostate->vtkglScissor(0, 0, size, size);
+
+  std::string fs = "//VTK::System::Dec\n"
+                   "in vec2 texCoord;\n"
+                   "uniform int width;\n";
+  fs += vtkDeepGBufferCommon;
+  fs += "//VTK::Output::Dec\n"
+        "void main()\n"
+        "{\n"
+        "  vec2 angles = floor(texCoord * float(width)) + 0.5;\n"
+        "  float theta = 3.14159265358979 * angles.y / float(width);\n"
+        "  float phi = 6.28318530717959 * angles.x / float(width);\n"
+        "  vec3 d = vec3(sin(theta) * cos(phi), sin(theta) * sin(phi), cos(theta));\n"
+        "  gl_FragData[0] = vec4(deepEncodeOct16(d), 0.0, 1.0);\n"
+        "}\n";
+  bool ok = true;
+  {
+    vtkOpenGLQuadHelper quad(
+      glWindow, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), "");
+    if (!quad.Program || !quad.Program->GetCompiled())
+    {
+      std::printf("the encoder shader did not compile\n");
+      ok = false;
+    }
+    else
+    {
+      glWindow->GetShaderCache()->ReadyShaderProgram(quad.Program);
+      quad.Program->SetUniformi("width", size);
+      ostate->vtkglDisable(GL_BLEND);
+      ostate->vtkglDisable(GL_DEPTH_TEST);
+      quad.Render();
+    }
+    quad.ReleaseGraphicsResources(glWindow);
+  }
+  std::vector<unsigned char> bytes(2 * n);
+  if (ok)
+  {
+    ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+    target->Bind();
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RG, GL_UNSIGNED_BYTE, bytes.data());
+    ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
+  }
+  fbo->UnBind();
+  ostate->PopFramebufferBindings();
+  target->ReleaseGraphicsResources(glWindow);
+  fbo->ReleaseGraphicsResources(glWindow);
+  if (!ok)
+  {
+    return false;
+  }
+
+  // The GPU evaluates the direction in single precision; compare the decoded
+  // normal against the double-precision direction, and the bytes against
+  // the C++ encoder (ties may round differently: at most one level apart).
+  double maximum = 0.0, sum = 0.0;
+  int byteMismatches = 0;
+  for (int i = 0; i < n; ++i)
+  {
+    double d[3], r[3];
+    GridDirection(i % size, i / size, size, d);
+    vtkDeepGBufferPass::DecodeOct16(&bytes[2 * i], r);
+    const double err = AngleDegrees(d, r);
+    maximum = std::max(maximum, err);
+    sum += err;
+    unsigned char e[2];
+    vtkDeepGBufferPass::EncodeOct16(d, e);
+    for (int c = 0; c < 2; ++c)
+    {
+      if (std::abs(int(e[c]) - int(bytes[2 * i + c])) > 1)
+      {
+        ++byteMismatches;
+      }
+    }
+  }
+  if (byteMismatches)
+  {
+    std::printf("GLSL and C++ encoders differ by more than one level on %d values\n", byteMismatches);
+    return false;
+  }
+  return CheckStatistics("GLSL encoder", maximum, sum, n);
+}
+}
+
+int TestDeepGBufferOct16(int, char*[])
+{
+  bool ok = TestCpuCodec();
+  ok = TestGlslEncoder() && ok;
+  return ok ? 0 : 1;
+}
