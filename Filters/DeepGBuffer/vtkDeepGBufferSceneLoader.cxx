@@ -1,0 +1,1224 @@
+#include "vtkDeepGBufferSceneLoader.h"
+
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkAlgorithm.h"
+#include "vtkAppendPolyData.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCleanPolyData.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkExecutive.h"
+#include "vtkFlyingEdges3D.h"
+#include "vtkImageData.h"
+#include "vtkImageReader2.h"
+#include "vtkIntArray.h"
+#include "vtkLight.h"
+#include "vtkMath.h"
+#include "vtkMetaImageReader.h"
+#include "vtkNew.h"
+#include "vtkNrrdReader.h"
+#include "vtkOBJImporter.h"
+#include "vtkOBJReader.h"
+#include "vtkObjectFactory.h"
+#include "vtkPLYReader.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkPolyDataReader.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSTLReader.h"
+#include "vtkStringArray.h"
+#include "vtkTriangleFilter.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkVolume16Reader.h"
+#include "vtkXMLImageDataReader.h"
+#include "vtkXMLPolyDataReader.h"
+
+#include <vtksys/Directory.hxx>
+#include <vtksys/FStream.hxx>
+#include <vtksys/SystemTools.hxx>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkDeepGBufferSceneLoader);
+
+namespace
+{
+struct Part
+{
+  std::string Name;
+  double Color[3];
+  vtkSmartPointer<vtkPolyData> PolyData;
+};
+
+// Collects the error messages of a reader instead of printing them, so that
+// the loader reports one clear error of its own.
+class ErrorCollector : public vtkCommand
+{
+public:
+  static ErrorCollector* New() { return new ErrorCollector; }
+  void Execute(vtkObject*, unsigned long, void* callData) override
+  {
+    std::string message = callData ? static_cast<const char*>(callData) : "";
+    // Keep the text after "ERROR: In FILE, line N\n".
+    const size_t newline = message.find('\n');
+    if (message.compare(0, 6, "ERROR:") == 0 && newline != std::string::npos)
+    {
+      message = message.substr(newline + 1);
+    }
+    while (!message.empty() && std::isspace(static_cast<unsigned char>(message.back())))
+    {
+      message.pop_back();
+    }
+    if (!message.empty())
+    {
+      this->Messages += (this->Messages.empty() ? "" : "; ") + message;
+    }
+  }
+  void Watch(vtkObject* object) { object->AddObserver(vtkCommand::ErrorEvent, this); }
+  std::string Messages;
+};
+
+std::string Lower(std::string s)
+{
+  std::transform(s.begin(), s.end(), s.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+std::string Extension(const std::string& path)
+{
+  return Lower(vtksys::SystemTools::GetFilenameLastExtension(path));
+}
+
+bool IsVolumeExtension(const std::string& ext)
+{
+  return ext == ".vti" || ext == ".mhd" || ext == ".mha" || ext == ".nhdr" || ext == ".nrrd";
+}
+
+bool IsRegularFile(const std::string& path)
+{
+  return vtksys::SystemTools::FileExists(path, true);
+}
+
+std::string Trim(const std::string& s)
+{
+  const size_t b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string::npos)
+  {
+    return std::string();
+  }
+  const size_t e = s.find_last_not_of(" \t\r\n");
+  return s.substr(b, e - b + 1);
+}
+
+// Formats `number` into a NRRD file pattern holding exactly one %d / %i
+// conversion with optional '0' flag and width ("quarter.%d", "slice%03d.raw").
+// The pattern comes from a file, so it is never handed to printf.
+bool FormatPattern(const std::string& pattern, long number, std::string& result)
+{
+  result.clear();
+  int conversions = 0;
+  for (size_t i = 0; i < pattern.size(); ++i)
+  {
+    if (pattern[i] != '%')
+    {
+      result += pattern[i];
+      continue;
+    }
+    if (i + 1 < pattern.size() && pattern[i + 1] == '%')
+    {
+      result += '%';
+      ++i;
+      continue;
+    }
+    size_t j = i + 1;
+    bool zero = false;
+    if (j < pattern.size() && pattern[j] == '0')
+    {
+      zero = true;
+      ++j;
+    }
+    int width = 0;
+    while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) &&
+      width < 100)
+    {
+      width = 10 * width + (pattern[j] - '0');
+      ++j;
+    }
+    if (j >= pattern.size() || (pattern[j] != 'd' && pattern[j] != 'i') || ++conversions > 1)
+    {
+      return false;
+    }
+    std::string digits = std::to_string(number < 0 ? -number : number);
+    const size_t sign = number < 0 ? 1 : 0;
+    if (digits.size() + sign < static_cast<size_t>(width))
+    {
+      const size_t pad = width - digits.size() - sign;
+      digits = zero ? std::string(pad, '0') + digits : digits;
+      result += zero ? "" : std::string(pad, ' ');
+    }
+    result += (number < 0 ? "-" : "") + digits;
+    i = j;
+  }
+  return conversions == 1;
+}
+
+// Parses "(x,y,z)" into three numbers.
+bool ParseVector(const std::string& text, double v[3])
+{
+  std::string s = text;
+  for (char& c : s)
+  {
+    if (c == '(' || c == ')' || c == ',')
+    {
+      c = ' ';
+    }
+  }
+  std::istringstream in(s);
+  return static_cast<bool>(in >> v[0] >> v[1] >> v[2]);
+}
+
+int NrrdScalarType(const std::string& type)
+{
+  const std::string t = Lower(type);
+  if (t == "short" || t == "short int" || t == "signed short" || t == "signed short int" ||
+    t == "int16" || t == "int16_t")
+  {
+    return VTK_SHORT;
+  }
+  if (t == "ushort" || t == "unsigned short" || t == "unsigned short int" || t == "uint16" ||
+    t == "uint16_t")
+  {
+    return VTK_UNSIGNED_SHORT;
+  }
+  if (t == "uchar" || t == "unsigned char" || t == "uint8" || t == "uint8_t")
+  {
+    return VTK_UNSIGNED_CHAR;
+  }
+  if (t == "signed char" || t == "int8" || t == "int8_t")
+  {
+    return VTK_SIGNED_CHAR;
+  }
+  if (t == "int" || t == "signed int" || t == "int32" || t == "int32_t")
+  {
+    return VTK_INT;
+  }
+  if (t == "uint" || t == "unsigned int" || t == "uint32" || t == "uint32_t")
+  {
+    return VTK_UNSIGNED_INT;
+  }
+  if (t == "float")
+  {
+    return VTK_FLOAT;
+  }
+  if (t == "double")
+  {
+    return VTK_DOUBLE;
+  }
+  return -1;
+}
+} // anonymous namespace
+
+class vtkDeepGBufferSceneLoader::vtkInternals
+{
+public:
+  std::vector<Part> Parts;
+  vtkSmartPointer<vtkPolyData> Scene;
+};
+
+//------------------------------------------------------------------------------
+vtkDeepGBufferSceneLoader::vtkDeepGBufferSceneLoader()
+  : Internals(new vtkInternals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkDeepGBufferSceneLoader::~vtkDeepGBufferSceneLoader() = default;
+
+//------------------------------------------------------------------------------
+void vtkDeepGBufferSceneLoader::Clear()
+{
+  this->Internals->Parts.clear();
+  this->Internals->Scene = nullptr;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGBufferSceneLoader::IsVolumePath(const char* path)
+{
+  if (!path || !*path)
+  {
+    return false;
+  }
+  const std::string p = path;
+  if (IsVolumeExtension(Extension(p)) || vtksys::SystemTools::FileIsDirectory(p))
+  {
+    return true;
+  }
+  // A slice-series prefix.
+  return !vtksys::SystemTools::FileExists(p) &&
+    (IsRegularFile(p + ".nhdr") || IsRegularFile(p + ".1"));
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGBufferSceneLoader::Load(const char* path)
+{
+  if (!path || !*path)
+  {
+    vtkErrorMacro("Load: no file name given");
+    return false;
+  }
+  if (IsVolumePath(path))
+  {
+    return this->LoadVolume(path, this->IsoValue);
+  }
+  return this->LoadMesh(path);
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGBufferSceneLoader::LoadMesh(const char* fileName)
+{
+  if (!fileName || !*fileName)
+  {
+    vtkErrorMacro("LoadMesh: no file name given");
+    return false;
+  }
+  const std::string path = fileName;
+  if (!vtksys::SystemTools::FileExists(path))
+  {
+    vtkErrorMacro("Mesh file not found: " << path);
+    return false;
+  }
+  if (!IsRegularFile(path))
+  {
+    vtkErrorMacro("Not a mesh file (a directory?): " << path);
+    return false;
+  }
+  const std::string ext = Extension(path);
+  if (ext == ".obj")
+  {
+    return this->LoadOBJ(fileName);
+  }
+
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (ext == ".ply")
+  {
+    auto r = vtkSmartPointer<vtkPLYReader>::New();
+    r->SetFileName(fileName);
+    reader = r;
+  }
+  else if (ext == ".stl")
+  {
+    auto r = vtkSmartPointer<vtkSTLReader>::New();
+    r->SetFileName(fileName);
+    reader = r;
+  }
+  else if (ext == ".vtp")
+  {
+    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    r->SetFileName(fileName);
+    reader = r;
+  }
+  else if (ext == ".vtk")
+  {
+    auto r = vtkSmartPointer<vtkPolyDataReader>::New();
+    r->SetFileName(fileName);
+    if (!r->IsFilePolyData())
+    {
+      vtkErrorMacro("Legacy VTK file " << path << " does not hold polydata");
+      return false;
+    }
+    reader = r;
+  }
+  else if (IsVolumeExtension(ext))
+  {
+    vtkErrorMacro(
+      "" << path << " is a volume; load it with LoadVolume (or Load) and an iso-value");
+    return false;
+  }
+  else
+  {
+    vtkErrorMacro("Unknown mesh file extension \""
+      << ext << "\" of " << path << " (known: .ply .obj .vtp .vtk .stl)");
+    return false;
+  }
+
+  vtkNew<ErrorCollector> errors;
+  errors->Watch(reader);
+  errors->Watch(reader->GetExecutive());
+  reader->Update();
+  vtkPolyData* output = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!errors->Messages.empty() || !output)
+  {
+    vtkErrorMacro("Cannot read mesh " << path << ": "
+                                      << (errors->Messages.empty() ? std::string("no output")
+                                                                   : errors->Messages));
+    return false;
+  }
+  vtkSmartPointer<vtkPolyData> mesh = this->PrepareMesh(output, fileName);
+  if (!mesh)
+  {
+    return false;
+  }
+  return this->AddPart(
+    mesh, vtksys::SystemTools::GetFilenameName(path).c_str(), this->DefaultColor);
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGBufferSceneLoader::LoadOBJ(const char* fileName)
+{
+  const std::string path = fileName;
+  const std::string dir = vtksys::SystemTools::GetFilenamePath(path);
+  const std::string base = vtksys::SystemTools::GetFilenameName(path);
+  auto inDir = [&](const std::string& name) { return dir.empty() ? name : dir + "/" + name; };
+
+  // The MTL file: the OBJ's own mtllib (vtkOBJImporter ignores it), else the
+  // importer's defaults NAME.obj.mtl and NAME.mtl.
+  std::string mtl;
+  {
+    vtksys::ifstream in(path.c_str());
+    std::string line;
+    while (mtl.empty() && std::getline(in, line))
+    {
+      const std::string t = Trim(line);
+      if (t.compare(0, 7, "mtllib ") == 0 || t.compare(0, 7, "mtllib\t") == 0)
+      {
+        const std::string candidate = inDir(Trim(t.substr(7)));
+        if (IsRegularFile(candidate))
+        {
+          mtl = candidate;
+        }
+      }
+    }
+  }
+  if (mtl.empty())
+  {
+    for (const std::string& candidate :
+      { path + ".mtl", inDir(vtksys::SystemTools::GetFilenameWithoutLastExtension(base) + ".mtl") })
+    {
+      if (IsRegularFile(candidate))
+      {
+        mtl = candidate;
+        break;
+      }
+    }
+  }
+
+  if (mtl.empty())
+  {
+    // Geometry only.
+    vtkNew<vtkOBJReader> reader;
+    reader->SetFileName(fileName);
+    vtkNew<ErrorCollector> errors;
+    errors->Watch(reader);
+    errors->Watch(reader->GetExecutive());
+    reader->Update();
+    if (!errors->Messages.empty())
+    {
+      vtkErrorMacro("Cannot read OBJ " << path << ": " << errors->Messages);
+      return false;
+    }
+    vtkSmartPointer<vtkPolyData> mesh = this->PrepareMesh(reader->GetOutput(), fileName);
+    return mesh && this->AddPart(mesh, base.c_str(), this->DefaultColor);
+  }
+
+  // With materials: the importer fills a renderer that is never rendered;
+  // only each actor's geometry and diffuse colour (Kd) are kept.
+  vtkNew<vtkRenderWindow> window;
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  vtkNew<vtkOBJImporter> importer;
+  importer->SetFileName(fileName);
+  importer->SetFileNameMTL(mtl.c_str());
+  importer->SetTexturePath(dir.empty() ? "." : dir.c_str());
+  importer->SetRenderWindow(window);
+  vtkNew<ErrorCollector> errors;
+  errors->Watch(importer);
+  importer->Update();
+
+  std::vector<Part> parts;
+  vtkActorCollection* actors = renderer->GetActors();
+  actors->InitTraversal();
+  int index = 0;
+  for (vtkActor* actor = actors->GetNextActor(); actor; actor = actors->GetNextActor(), ++index)
+  {
+    vtkPolyDataMapper* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
+    vtkPolyData* input = mapper ? mapper->GetInput() : nullptr;
+    if (!input || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+    {
+      continue; // the importer's default part, unused
+    }
+    // "data output 3 with material named leftWall texture file ..."
+    std::string name = base;
+    const std::string description = importer->GetOutputDescription(index);
+    const std::string key = "material named ";
+    const size_t start = description.find(key);
+    if (start != std::string::npos)
+    {
+      const size_t b = start + key.size();
+      const size_t e = description.find(" texture file", b);
+      name += ":" + description.substr(b, e == std::string::npos ? e : e - b);
+    }
+    vtkSmartPointer<vtkPolyData> mesh = this->PrepareMesh(input, (path + " " + name).c_str());
+    if (!mesh)
+    {
+      continue; // e.g. a part made of lines only; PrepareMesh reported it
+    }
+    Part part;
+    part.Name = name;
+    actor->GetProperty()->GetDiffuseColor(part.Color);
+    part.PolyData = mesh;
+    parts.push_back(part);
+  }
+  if (parts.empty())
+  {
+    vtkErrorMacro("Cannot read OBJ " << path << " (materials " << mtl << "): "
+                                     << (errors->Messages.empty()
+                                            ? std::string("no surface triangles")
+                                            : errors->Messages));
+    return false;
+  }
+  if (!errors->Messages.empty())
+  {
+    vtkWarningMacro("OBJ " << path << " loaded with problems: " << errors->Messages);
+  }
+  for (const Part& part : parts)
+  {
+    this->AddPart(part.PolyData, part.Name.c_str(), part.Color);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> vtkDeepGBufferSceneLoader::PrepareMesh(
+  vtkPolyData* input, const char* what)
+{
+  if (!input || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+  {
+    vtkErrorMacro("" << what << " has no polygons (empty mesh, or points/lines only)");
+    return nullptr;
+  }
+  // Drop unused points without merging any (coincident duplicates stay, as
+  // in the data), then triangles only.
+  vtkNew<vtkCleanPolyData> clean;
+  clean->SetInputData(input);
+  clean->PointMergingOff();
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(clean->GetOutputPort());
+  triangles->PassVertsOff();
+  triangles->PassLinesOff();
+  triangles->Update();
+  vtkPolyData* tri = triangles->GetOutput();
+  if (tri->GetNumberOfPolys() == 0)
+  {
+    vtkErrorMacro("" << what << " has no non-degenerate triangles");
+    return nullptr;
+  }
+
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(tri->GetPoints());
+  mesh->SetPolys(tri->GetPolys());
+  vtkDataArray* normals = tri->GetPointData()->GetNormals();
+  if (normals && normals->GetNumberOfComponents() == 3)
+  {
+    mesh->GetPointData()->SetNormals(normals);
+  }
+  else if (this->ComputeNormals)
+  {
+    vtkNew<vtkPolyDataNormals> computer;
+    computer->SetInputData(mesh);
+    computer->SetFeatureAngle(this->FeatureAngle);
+    computer->SplittingOn();
+    computer->ConsistencyOn();
+    computer->AutoOrientNormalsOff();
+    computer->ComputePointNormalsOn();
+    computer->ComputeCellNormalsOff();
+    computer->Update();
+    auto withNormals = vtkSmartPointer<vtkPolyData>::New();
+    withNormals->ShallowCopy(computer->GetOutput());
+    return withNormals;
+  }
+  return mesh;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGBufferSceneLoader::AddPart(vtkPolyData* mesh, const char* name, const double color[3])
+{
+  Part part;
+  part.Name = name ? name : "";
+  for (int i = 0; i < 3; ++i)
+  {
+    part.Color[i] = color[i];
+  }
+  part.PolyData = mesh;
+  this->Internals->Parts.push_back(part);
+  this->Internals->Scene = nullptr;
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGBufferSceneLoader::LoadVolume(const char* path, double isoValue)
+{
+  if (!path || !*path)
+  {
+    vtkErrorMacro("LoadVolume: no path given");
+    return false;
+  }
+  if (!std::isfinite(isoValue))
+  {
+    vtkErrorMacro("LoadVolume: the iso-value must be finite, got " << isoValue);
+    return false;
+  }
+  vtkNew<vtkImageData> image;
+  if (!this->ReadVolume(path, image))
+  {
+    return false;
+  }
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  int dims[3];
+  image->GetDimensions(dims);
+  if (!scalars || dims[0] < 2 || dims[1] < 2 || dims[2] < 2)
+  {
+    vtkErrorMacro("Volume " << path << " has no scalars or is not 3D (dimensions " << dims[0]
+                            << " x " << dims[1] << " x " << dims[2] << ")");
+    return false;
+  }
+  double range[2];
+  scalars->GetRange(range, 0);
+  if (!(isoValue > range[0] && isoValue < range[1]))
+  {
+    vtkErrorMacro("Iso-value " << isoValue << " is outside the data range of " << path << " ["
+                               << range[0] << ", " << range[1] << "]: the surface is empty");
+    return false;
+  }
+
+  vtkNew<vtkFlyingEdges3D> iso;
+  iso->SetInputData(image);
+  iso->SetValue(0, isoValue);
+  iso->SetComputeNormals(this->ComputeNormals);
+  iso->ComputeGradientsOff();
+  iso->ComputeScalarsOff();
+  iso->Update();
+  vtkPolyData* surface = iso->GetOutput();
+  if (surface->GetNumberOfPolys() == 0)
+  {
+    vtkErrorMacro("The iso-surface of " << path << " at " << isoValue << " is empty");
+    return false;
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(surface->GetPoints());
+  mesh->SetPolys(surface->GetPolys());
+  if (this->ComputeNormals && surface->GetPointData()->GetNormals())
+  {
+    mesh->GetPointData()->SetNormals(surface->GetPointData()->GetNormals());
+  }
+  std::ostringstream name;
+  name << vtksys::SystemTools::GetFilenameName(path) << "@" << isoValue;
+  return this->AddPart(mesh, name.str().c_str(), this->DefaultColor);
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGBufferSceneLoader::ReadVolume(const char* path, vtkImageData* output)
+{
+  const std::string p = path;
+  if (vtksys::SystemTools::FileIsDirectory(p))
+  {
+    vtksys::Directory dir;
+    if (!dir.Load(p))
+    {
+      vtkErrorMacro("Cannot list the directory " << p);
+      return false;
+    }
+    std::vector<std::string> headers;
+    for (unsigned long i = 0; i < dir.GetNumberOfFiles(); ++i)
+    {
+      const std::string name = dir.GetFile(i);
+      if (IsVolumeExtension(Extension(name)) && IsRegularFile(p + "/" + name))
+      {
+        headers.push_back(name);
+      }
+    }
+    if (headers.size() != 1)
+    {
+      vtkErrorMacro("The directory " << p << " holds " << headers.size()
+                                     << " volume files (.nhdr .nrrd .mhd .mha .vti); give "
+                                        "exactly one file instead");
+      return false;
+    }
+    return this->ReadVolume((p + "/" + headers[0]).c_str(), output);
+  }
+
+  if (!vtksys::SystemTools::FileExists(p))
+  {
+    // A slice-series prefix: PREFIX.nhdr if there is one, else raw slices.
+    if (IsRegularFile(p + ".nhdr"))
+    {
+      return this->ReadVolume((p + ".nhdr").c_str(), output);
+    }
+    if (!IsRegularFile(p + ".1"))
+    {
+      vtkErrorMacro("Volume not found: " << p << " (no such file, directory, or slice series "
+                                         << p << ".1, " << p << ".2, ...)");
+      return false;
+    }
+    int slices = 1;
+    while (slices < 100000 && IsRegularFile(p + "." + std::to_string(slices + 1)))
+    {
+      ++slices;
+    }
+    const unsigned long bytes = vtksys::SystemTools::FileLength(p + ".1");
+    const int side = static_cast<int>(std::lround(std::sqrt(bytes / 2.0)));
+    if (side < 2 || static_cast<unsigned long>(2 * side * side) != bytes)
+    {
+      vtkErrorMacro("Slice " << p << ".1 has " << bytes
+                             << " bytes, not a square 16-bit image; give a .nhdr header");
+      return false;
+    }
+    vtkNew<vtkVolume16Reader> reader;
+    reader->SetFilePrefix(path);
+    reader->SetDataDimensions(side, side);
+    reader->SetImageRange(1, slices);
+    reader->SetDataSpacing(this->RawSliceSpacing);
+    if (this->RawSliceLittleEndian)
+    {
+      reader->SetDataByteOrderToLittleEndian();
+    }
+    else
+    {
+      reader->SetDataByteOrderToBigEndian();
+    }
+    vtkNew<ErrorCollector> errors;
+    errors->Watch(reader);
+    errors->Watch(reader->GetExecutive());
+    reader->Update();
+    if (!errors->Messages.empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
+    {
+      vtkErrorMacro("Cannot read the slice series " << p << ": " << errors->Messages);
+      return false;
+    }
+    output->ShallowCopy(reader->GetOutput());
+    return true;
+  }
+
+  if (!IsRegularFile(p))
+  {
+    vtkErrorMacro("Not a volume file: " << p);
+    return false;
+  }
+  const std::string ext = Extension(p);
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (ext == ".nhdr" || ext == ".nrrd")
+  {
+    bool handled = false;
+    const bool ok = this->ReadDetachedNrrd(path, output, handled);
+    if (handled)
+    {
+      return ok;
+    }
+    auto r = vtkSmartPointer<vtkNrrdReader>::New();
+    r->SetFileName(path);
+    reader = r;
+  }
+  else if (ext == ".vti")
+  {
+    auto r = vtkSmartPointer<vtkXMLImageDataReader>::New();
+    r->SetFileName(path);
+    reader = r;
+  }
+  else if (ext == ".mhd" || ext == ".mha")
+  {
+    auto r = vtkSmartPointer<vtkMetaImageReader>::New();
+    r->SetFileName(path);
+    reader = r;
+  }
+  else
+  {
+    vtkErrorMacro("Unknown volume file extension \""
+      << ext << "\" of " << p << " (known: .vti .mhd .mha .nhdr .nrrd, a directory or a "
+      << "slice-series prefix)");
+    return false;
+  }
+  vtkNew<ErrorCollector> errors;
+  errors->Watch(reader);
+  errors->Watch(reader->GetExecutive());
+  reader->Update();
+  vtkImageData* image = vtkImageData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!errors->Messages.empty() || !image || image->GetNumberOfPoints() == 0)
+  {
+    vtkErrorMacro("Cannot read volume " << p << ": "
+                                        << (errors->Messages.empty() ? std::string("no data")
+                                                                     : errors->Messages));
+    return false;
+  }
+  output->ShallowCopy(image);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGBufferSceneLoader::ReadDetachedNrrd(
+  const char* fileName, vtkImageData* output, bool& handled)
+{
+  // The few header fields of a raw NRRD (http://teem.sourceforge.net/nrrd/format.html).
+  handled = false;
+  const std::string path = fileName;
+  const std::string dir = vtksys::SystemTools::GetFilenamePath(path);
+  auto inDir = [&](const std::string& name) {
+    return (dir.empty() || vtksys::SystemTools::FileIsFullPath(name)) ? name : dir + "/" + name;
+  };
+  vtksys::ifstream in(path.c_str(), std::ios::in | std::ios::binary);
+  std::string line;
+  if (!in || !std::getline(in, line) || line.compare(0, 4, "NRRD") != 0)
+  {
+    return false; // let vtkNrrdReader report it
+  }
+  int dimension = 0, scalarType = -1;
+  int sizes[3] = { 0, 0, 0 };
+  double spacing[3] = { 1.0, 1.0, 1.0 }, origin[3] = { 0.0, 0.0, 0.0 };
+  bool haveSpacing = false;
+  std::string encoding = "raw", endian = "little";
+  long long byteSkip = 0;
+  std::vector<std::string> dataFiles;
+  bool listFollows = false;
+  while (std::getline(in, line))
+  {
+    const std::string t = Trim(line);
+    if (listFollows)
+    {
+      if (!t.empty())
+      {
+        dataFiles.push_back(inDir(t));
+      }
+      continue;
+    }
+    if (t.empty())
+    {
+      break; // end of header (attached data would follow)
+    }
+    if (t[0] == '#' || t.find(":=") != std::string::npos)
+    {
+      continue; // comments and key/value pairs
+    }
+    const size_t colon = t.find(": ");
+    if (colon == std::string::npos)
+    {
+      continue;
+    }
+    const std::string field = Lower(Trim(t.substr(0, colon)));
+    const std::string value = Trim(t.substr(colon + 2));
+    std::istringstream v(value);
+    if (field == "dimension")
+    {
+      v >> dimension;
+    }
+    else if (field == "type")
+    {
+      scalarType = NrrdScalarType(value);
+    }
+    else if (field == "sizes")
+    {
+      v >> sizes[0] >> sizes[1] >> sizes[2];
+    }
+    else if (field == "spacings")
+    {
+      std::string s[3];
+      v >> s[0] >> s[1] >> s[2];
+      for (int i = 0; i < 3; ++i)
+      {
+        const double d = std::atof(s[i].c_str());
+        spacing[i] = (std::isfinite(d) && d > 0.0) ? d : 1.0;
+      }
+      haveSpacing = true;
+    }
+    else if (field == "space directions" && !haveSpacing)
+    {
+      // "(a,0,0) (0,b,0) (0,0,c)": the spacing is each vector's length.
+      std::string vectors[3];
+      v >> vectors[0] >> vectors[1] >> vectors[2];
+      for (int i = 0; i < 3; ++i)
+      {
+        double d[3];
+        if (ParseVector(vectors[i], d) && vtkMath::Norm(d) > 0.0)
+        {
+          spacing[i] = vtkMath::Norm(d);
+        }
+      }
+    }
+    else if (field == "space origin")
+    {
+      double o[3];
+      if (ParseVector(value, o))
+      {
+        std::copy(o, o + 3, origin);
+      }
+    }
+    else if (field == "encoding")
+    {
+      encoding = Lower(value);
+    }
+    else if (field == "endian")
+    {
+      endian = Lower(value);
+    }
+    else if (field == "byte skip" || field == "byteskip")
+    {
+      v >> byteSkip;
+    }
+    else if (field == "data file" || field == "datafile")
+    {
+      std::vector<std::string> words;
+      std::string w;
+      while (v >> w)
+      {
+        words.push_back(w);
+      }
+      if (words.empty())
+      {
+        return false;
+      }
+      if (words[0] == "LIST")
+      {
+        listFollows = true;
+      }
+      else if (words.size() >= 4)
+      {
+        const long first = std::atol(words[1].c_str()), last = std::atol(words[2].c_str());
+        const long step = std::atol(words[3].c_str());
+        if (step == 0 || (last - first) / step < 0 || (last - first) / step > 100000)
+        {
+          return false;
+        }
+        for (long i = first; step > 0 ? i <= last : i >= last; i += step)
+        {
+          std::string name;
+          if (!FormatPattern(words[0], i, name))
+          {
+            return false;
+          }
+          dataFiles.push_back(inDir(name));
+        }
+      }
+      else
+      {
+        dataFiles.push_back(inDir(value));
+      }
+    }
+  }
+  const bool attached = dataFiles.empty();
+  const long long headerBytes = attached ? static_cast<long long>(in.tellg()) : 0;
+
+  // Only what this parser fully understands; the rest goes to vtkNrrdReader.
+  if (dimension != 3 || scalarType < 0 || encoding != "raw" || sizes[0] < 1 || sizes[1] < 1 ||
+    sizes[2] < 1 || (!attached && dataFiles.size() != 1 &&
+                      dataFiles.size() != static_cast<size_t>(sizes[2])) ||
+    (attached && headerBytes <= 0))
+  {
+    return false;
+  }
+  handled = true;
+  for (const std::string& f : dataFiles)
+  {
+    if (!IsRegularFile(f))
+    {
+      vtkErrorMacro("NRRD header " << path << " names the missing data file " << f);
+      return false;
+    }
+  }
+
+  vtkNew<vtkImageReader2> reader;
+  reader->SetDataScalarType(scalarType);
+  reader->SetNumberOfScalarComponents(1);
+  reader->SetDataExtent(0, sizes[0] - 1, 0, sizes[1] - 1, 0, sizes[2] - 1);
+  reader->SetDataSpacing(spacing);
+  reader->SetDataOrigin(origin);
+  if (endian == "big")
+  {
+    reader->SetDataByteOrderToBigEndian();
+  }
+  else
+  {
+    reader->SetDataByteOrderToLittleEndian();
+  }
+  if (attached)
+  {
+    reader->SetFileName(fileName);
+    reader->SetFileDimensionality(3);
+    reader->SetHeaderSize(static_cast<unsigned long>(headerBytes + std::max(0LL, byteSkip)));
+  }
+  else if (dataFiles.size() == 1)
+  {
+    reader->SetFileName(dataFiles[0].c_str());
+    reader->SetFileDimensionality(3);
+    if (byteSkip >= 0)
+    {
+      reader->SetHeaderSize(static_cast<unsigned long>(byteSkip));
+    }
+  }
+  else
+  {
+    vtkNew<vtkStringArray> names;
+    for (const std::string& f : dataFiles)
+    {
+      names->InsertNextValue(f);
+    }
+    reader->SetFileNames(names);
+    reader->SetFileDimensionality(2);
+    if (byteSkip >= 0)
+    {
+      reader->SetHeaderSize(static_cast<unsigned long>(byteSkip));
+    }
+  }
+  vtkNew<ErrorCollector> errors;
+  errors->Watch(reader);
+  errors->Watch(reader->GetExecutive());
+  reader->Update();
+  if (!errors->Messages.empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
+  {
+    vtkErrorMacro("Cannot read the data of NRRD header " << path << ": " << errors->Messages);
+    return false;
+  }
+  output->ShallowCopy(reader->GetOutput());
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkDeepGBufferSceneLoader::GetNumberOfParts()
+{
+  return static_cast<int>(this->Internals->Parts.size());
+}
+
+//------------------------------------------------------------------------------
+const char* vtkDeepGBufferSceneLoader::GetPartName(int part)
+{
+  if (part < 0 || part >= this->GetNumberOfParts())
+  {
+    return nullptr;
+  }
+  return this->Internals->Parts[part].Name.c_str();
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGBufferSceneLoader::GetPartColor(int part, double rgb[3])
+{
+  const bool valid = part >= 0 && part < this->GetNumberOfParts();
+  for (int i = 0; i < 3; ++i)
+  {
+    rgb[i] = valid ? this->Internals->Parts[part].Color[i] : 0.0;
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkDeepGBufferSceneLoader::GetPartPolyData(int part)
+{
+  if (part < 0 || part >= this->GetNumberOfParts())
+  {
+    return nullptr;
+  }
+  return this->Internals->Parts[part].PolyData;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkDeepGBufferSceneLoader::GetNumberOfTriangles()
+{
+  vtkIdType n = 0;
+  for (const Part& part : this->Internals->Parts)
+  {
+    n += part.PolyData->GetNumberOfPolys();
+  }
+  return n;
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGBufferSceneLoader::GetBounds(double bounds[6])
+{
+  vtkMath::UninitializeBounds(bounds);
+  bool first = true;
+  for (const Part& part : this->Internals->Parts)
+  {
+    double b[6];
+    part.PolyData->GetBounds(b);
+    for (int i = 0; i < 3; ++i)
+    {
+      bounds[2 * i] = first ? b[2 * i] : std::min(bounds[2 * i], b[2 * i]);
+      bounds[2 * i + 1] = first ? b[2 * i + 1] : std::max(bounds[2 * i + 1], b[2 * i + 1]);
+    }
+    first = false;
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkDeepGBufferSceneLoader::GetScenePolyData()
+{
+  if (this->Internals->Parts.empty())
+  {
+    return nullptr;
+  }
+  if (!this->Internals->Scene)
+  {
+    vtkNew<vtkAppendPolyData> append;
+    int id = 0;
+    for (const Part& part : this->Internals->Parts)
+    {
+      auto copy = vtkSmartPointer<vtkPolyData>::New();
+      copy->ShallowCopy(part.PolyData);
+      const vtkIdType n = copy->GetNumberOfCells();
+      vtkNew<vtkUnsignedCharArray> colors;
+      colors->SetName("Colors");
+      colors->SetNumberOfComponents(3);
+      colors->SetNumberOfTuples(n);
+      unsigned char rgb[3];
+      for (int c = 0; c < 3; ++c)
+      {
+        rgb[c] = static_cast<unsigned char>(
+          std::lround(255.0 * vtkMath::ClampValue(part.Color[c], 0.0, 1.0)));
+      }
+      vtkNew<vtkIntArray> ids;
+      ids->SetName("PartId");
+      ids->SetNumberOfTuples(n);
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        colors->SetTypedTuple(i, rgb);
+        ids->SetValue(i, id);
+      }
+      copy->GetCellData()->AddArray(colors);
+      copy->GetCellData()->AddArray(ids);
+      append->AddInputData(copy);
+      ++id;
+    }
+    append->Update();
+    this->Internals->Scene = vtkSmartPointer<vtkPolyData>::New();
+    this->Internals->Scene->ShallowCopy(append->GetOutput());
+  }
+  return this->Internals->Scene;
+}
+
+//------------------------------------------------------------------------------
+int vtkDeepGBufferSceneLoader::Populate(vtkRenderer* renderer)
+{
+  if (!renderer)
+  {
+    vtkErrorMacro("Populate: no renderer");
+    return 0;
+  }
+  int added = 0;
+  for (const Part& part : this->Internals->Parts)
+  {
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(part.PolyData);
+    mapper->ScalarVisibilityOff();
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    vtkProperty* property = actor->GetProperty();
+    property->SetDiffuseColor(part.Color[0], part.Color[1], part.Color[2]);
+    property->SetAmbientColor(part.Color[0], part.Color[1], part.Color[2]);
+    property->SetAmbient(0.1);
+    property->SetDiffuse(0.9);
+    property->SetSpecular(0.0);
+    property->SetInterpolationToPhong();
+    renderer->AddActor(actor);
+    ++added;
+  }
+  if (this->DefaultLight)
+  {
+    this->AddDefaultLight(renderer);
+  }
+  return added;
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGBufferSceneLoader::AddDefaultLight(vtkRenderer* renderer)
+{
+  if (!renderer)
+  {
+    vtkErrorMacro("AddDefaultLight: no renderer");
+    return;
+  }
+  // Camera coordinates: the camera at (0, 0, 1) looking at the origin.
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToCameraLight();
+  light->SetPositional(false);
+  light->SetPosition(-0.4, 0.6, 1.0);
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  light->SetColor(1.0, 1.0, 1.0);
+  light->SetIntensity(1.0);
+  renderer->AddLight(light);
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGBufferSceneLoader::ResetCamera(vtkRenderer* renderer)
+{
+  if (!renderer)
+  {
+    vtkErrorMacro("ResetCamera: no renderer");
+    return;
+  }
+  double bounds[6];
+  if (this->Internals->Parts.empty())
+  {
+    renderer->ComputeVisiblePropBounds(bounds);
+  }
+  else
+  {
+    this->GetBounds(bounds);
+  }
+  if (!vtkMath::AreBoundsInitialized(bounds))
+  {
+    renderer->ResetCamera();
+    return;
+  }
+  double direction[3] = { this->ViewDirection[0], this->ViewDirection[1],
+    this->ViewDirection[2] };
+  if (vtkMath::Normalize(direction) == 0.0)
+  {
+    direction[2] = -1.0;
+  }
+  const double center[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+    0.5 * (bounds[4] + bounds[5]) };
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(center);
+  camera->SetPosition(
+    center[0] - direction[0], center[1] - direction[1], center[2] - direction[2]);
+  camera->SetViewUp(this->ViewUp);
+  camera->OrthogonalizeViewUp();
+  renderer->ResetCamera(bounds);
+  renderer->ResetCameraClippingRange(bounds);
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGBufferSceneLoader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "IsoValue: " << this->IsoValue << "\n";
+  os << indent << "ComputeNormals: " << (this->ComputeNormals ? "On" : "Off") << "\n";
+  os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
+  os << indent << "DefaultColor: (" << this->DefaultColor[0] << ", " << this->DefaultColor[1]
+     << ", " << this->DefaultColor[2] << ")\n";
+  os << indent << "RawSliceSpacing: (" << this->RawSliceSpacing[0] << ", "
+     << this->RawSliceSpacing[1] << ", " << this->RawSliceSpacing[2] << ")\n";
+  os << indent << "RawSliceLittleEndian: " << (this->RawSliceLittleEndian ? "On" : "Off")
+     << "\n";
+  os << indent << "DefaultLight: " << (this->DefaultLight ? "On" : "Off") << "\n";
+  os << indent << "ViewDirection: (" << this->ViewDirection[0] << ", " << this->ViewDirection[1]
+     << ", " << this->ViewDirection[2] << ")\n";
+  os << indent << "ViewUp: (" << this->ViewUp[0] << ", " << this->ViewUp[1] << ", "
+     << this->ViewUp[2] << ")\n";
+  os << indent << "NumberOfParts: " << this->Internals->Parts.size() << "\n";
+  for (const Part& part : this->Internals->Parts)
+  {
+    os << indent.GetNextIndent() << part.Name << ": " << part.PolyData->GetNumberOfPolys()
+       << " triangles, colour (" << part.Color[0] << ", " << part.Color[1] << ", "
+       << part.Color[2] << ")\n";
+  }
+}

@@ -1,0 +1,226 @@
+/**
+ * @class   vtkDeepGBufferSceneLoader
+ * @brief   Loads a user's meshes and iso-surfaces of volumes into a renderer.
+ *
+ * Each successful Load adds one or more parts (a triangle vtkPolyData with a
+ * name and a diffuse colour); Populate() puts one actor per part on a
+ * renderer, with the lighting the deep G-buffer expects (Ambient 0.1,
+ * Diffuse 0.9, Specular 0).
+ *
+ * Meshes (by extension, case-insensitive):
+ * - .ply (vtkPLYReader), .stl (vtkSTLReader), .vtp (vtkXMLPolyDataReader),
+ *   .vtk (vtkPolyDataReader; legacy polydata only);
+ * - .obj: with its materials through vtkOBJImporter when an MTL file is
+ *   found (the file's `mtllib`, else NAME.obj.mtl or NAME.mtl next to it),
+ *   one part per material coloured with the material's Kd. The importer sets
+ *   Ambient = 1 and Specular = 1 on its actors, which turns Cornell boxes
+ *   black or washed out; only its geometry and Kd are kept here. Without an
+ *   MTL file, vtkOBJReader reads the geometry in DefaultColor.
+ * Polygons and strips become triangles (vtkTriangleFilter); vertices, lines
+ * and unused points are dropped; points are not merged. Meshes without point
+ * normals get them from vtkPolyDataNormals (splitting at FeatureAngle) when
+ * ComputeNormals is on; normals stored in the file are kept.
+ *
+ * Volumes are iso-surfaced with vtkFlyingEdges3D at the iso-value given
+ * (normals from the volume's gradient when ComputeNormals is on):
+ * - .vti (vtkXMLImageDataReader), .mhd/.mha (vtkMetaImageReader);
+ * - .nhdr/.nrrd: detached headers with raw encoding (a single data file, a
+ *   `data file: PATTERN MIN MAX STEP` slice series or a LIST) are read by
+ *   this class's own parser (Debian's Python build overrides vtkNrrdReader
+ *   with an MPI reader that fails); anything else goes to vtkNrrdReader;
+ * - a slice-series prefix such as .../headsq/quarter (files quarter.1,
+ *   quarter.2, ...): PREFIX.nhdr is used if it exists, else the slices are
+ *   read as square 16-bit images (size from the file size) with
+ *   RawSliceSpacing and RawSliceLittleEndian (vtkVolume16Reader);
+ * - a directory holding exactly one .nhdr, .nrrd, .mhd, .mha or .vti file.
+ *
+ * Errors (missing files, unknown extensions, unreadable or empty data, an
+ * iso-value outside the data) are reported with vtkErrorMacro and the Load
+ * returns false, leaving the parts loaded so far unchanged.
+ */
+
+#ifndef vtkDeepGBufferSceneLoader_h
+#define vtkDeepGBufferSceneLoader_h
+
+#include "vtkDeepGIFiltersModule.h" // for export macro
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // for the protected helpers
+
+#include <memory> // for std::unique_ptr
+
+class vtkImageData;
+class vtkPolyData;
+class vtkRenderer;
+
+class VTKDEEPGIFILTERS_EXPORT vtkDeepGBufferSceneLoader : public vtkObject
+{
+public:
+  static vtkDeepGBufferSceneLoader* New();
+  vtkTypeMacro(vtkDeepGBufferSceneLoader, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Loads `path` as a mesh or, for volume paths (see the class
+   * description), as the iso-surface at IsoValue. Returns false on error.
+   */
+  bool Load(const char* path);
+
+  /// Loads a mesh file (.ply, .obj, .vtp, .vtk, .stl). Returns false on error.
+  bool LoadMesh(const char* fileName);
+
+  /// Loads a volume and adds its iso-surface at `isoValue`. Returns false on error.
+  bool LoadVolume(const char* path, double isoValue);
+
+  /// Whether Load() would treat `path` as a volume (by extension or form).
+  static bool IsVolumePath(const char* path);
+
+  /// Forgets all parts.
+  void Clear();
+
+  ///@{
+  /**
+   * Iso-value used by Load() for volumes, in the volume's scalar units.
+   * Default 500 (skin of the headsq CT data).
+   */
+  vtkSetMacro(IsoValue, double);
+  vtkGetMacro(IsoValue, double);
+  ///@}
+
+  ///@{
+  /**
+   * Compute point normals for meshes that have none, and gradient normals
+   * for iso-surfaces. Off leaves them without normals. Default on.
+   */
+  vtkSetMacro(ComputeNormals, bool);
+  vtkGetMacro(ComputeNormals, bool);
+  vtkBooleanMacro(ComputeNormals, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Feature angle (degrees) where computed mesh normals are split, so hard
+   * edges stay hard. Range 0 to 180. Default 30.
+   */
+  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkGetMacro(FeatureAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * Diffuse colour (RGB, 0-1) of parts without a material. Default
+   * (0.8, 0.8, 0.8).
+   */
+  vtkSetVector3Macro(DefaultColor, double);
+  vtkGetVector3Macro(DefaultColor, double);
+  ///@}
+
+  ///@{
+  /**
+   * For slice-series prefixes without a .nhdr: voxel spacing (default
+   * 1, 1, 1) and byte order (default little endian) of the 16-bit slices.
+   */
+  vtkSetVector3Macro(RawSliceSpacing, double);
+  vtkGetVector3Macro(RawSliceSpacing, double);
+  vtkSetMacro(RawSliceLittleEndian, bool);
+  vtkGetMacro(RawSliceLittleEndian, bool);
+  vtkBooleanMacro(RawSliceLittleEndian, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Whether Populate() also adds the default light (see AddDefaultLight).
+   * Default on.
+   */
+  vtkSetMacro(DefaultLight, bool);
+  vtkGetMacro(DefaultLight, bool);
+  vtkBooleanMacro(DefaultLight, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Direction the camera looks along and its view-up, for ResetCamera().
+   * Defaults (0, 0, -1) and (0, 1, 0): looking down -z with +y up, the
+   * usual frame of OBJ scenes (Cornell boxes open towards +z). Patient
+   * volumes such as headsq look better with (0, 1, 0) and (0, 0, -1).
+   */
+  vtkSetVector3Macro(ViewDirection, double);
+  vtkGetVector3Macro(ViewDirection, double);
+  vtkSetVector3Macro(ViewUp, double);
+  vtkGetVector3Macro(ViewUp, double);
+  ///@}
+
+  ///@{
+  /**
+   * The loaded parts: names ("bunny.ply", "CornellBox-Original.obj:leftWall",
+   * "quarter.nhdr@500"), diffuse colours and triangle meshes (owned by the
+   * loader). Out-of-range indices give nullptr and black.
+   */
+  int GetNumberOfParts();
+  const char* GetPartName(int part);
+  void GetPartColor(int part, double rgb[3]);
+  vtkPolyData* GetPartPolyData(int part);
+  ///@}
+
+  /// Total number of triangles of all parts.
+  vtkIdType GetNumberOfTriangles();
+
+  /// Bounds of all parts (uninitialised bounds when nothing is loaded).
+  void GetBounds(double bounds[6]);
+
+  /**
+   * All parts appended into one polydata with cell data "Colors" (unsigned
+   * char RGB, the part's diffuse albedo) and "PartId" (int), and point
+   * "Normals" if every part has them. Owned by the loader; nullptr when
+   * nothing is loaded.
+   */
+  vtkPolyData* GetScenePolyData();
+
+  /**
+   * Adds one actor per part (scalar colouring off, the part's colour,
+   * Ambient 0.1, Diffuse 0.9, Specular 0) and, if DefaultLight is on, the
+   * default light. Returns the number of actors added.
+   */
+  int Populate(vtkRenderer* renderer);
+
+  /**
+   * Adds a white directional camera light (intensity 1) coming from above
+   * left of the viewer, so that any model is lit from the side it is seen.
+   */
+  void AddDefaultLight(vtkRenderer* renderer);
+
+  /**
+   * Points the renderer's active camera along ViewDirection with ViewUp at
+   * the loaded parts' bounds (all visible props when nothing is loaded),
+   * fits them in view and resets the clipping range.
+   */
+  void ResetCamera(vtkRenderer* renderer);
+
+protected:
+  vtkDeepGBufferSceneLoader();
+  ~vtkDeepGBufferSceneLoader() override;
+
+  double IsoValue = 500.0;
+  bool ComputeNormals = true;
+  double FeatureAngle = 30.0;
+  double DefaultColor[3] = { 0.8, 0.8, 0.8 };
+  double RawSliceSpacing[3] = { 1.0, 1.0, 1.0 };
+  bool RawSliceLittleEndian = true;
+  bool DefaultLight = true;
+  double ViewDirection[3] = { 0.0, 0.0, -1.0 };
+  double ViewUp[3] = { 0.0, 1.0, 0.0 };
+
+  bool LoadOBJ(const char* fileName);
+  vtkSmartPointer<vtkPolyData> PrepareMesh(vtkPolyData* input, const char* what);
+  bool AddPart(vtkPolyData* mesh, const char* name, const double color[3]);
+  bool ReadVolume(const char* path, vtkImageData* output);
+  bool ReadDetachedNrrd(const char* fileName, vtkImageData* output, bool& handled);
+
+private:
+  vtkDeepGBufferSceneLoader(const vtkDeepGBufferSceneLoader&) = delete;
+  void operator=(const vtkDeepGBufferSceneLoader&) = delete;
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif
