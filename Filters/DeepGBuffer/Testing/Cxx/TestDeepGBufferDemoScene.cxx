@@ -1,0 +1,379 @@
+// Tests vtkDeepGBufferDemoScene (triangle budget, scale, topology, camera
+// path) and vtkDeepGBufferSceneLoader (rejections and the shared test data).
+// Arguments: --data DIR (the shared data, see Testing/ and MANIFEST.md),
+// -T DIR (a writable temporary directory).
+// Nothing is rendered: the test runs without a display.
+
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkDeepGBufferDemoScene.h"
+#include "vtkDeepGBufferSceneLoader.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include <cmath>
+#include <iostream>
+#include <string>
+
+namespace
+{
+int Failures = 0;
+
+#define CHECK(condition, message)                                                                  \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(condition))                                                                              \
+    {                                                                                              \
+      std::cerr << "FAILED (line " << __LINE__ << "): " << message << "\n";                       \
+      ++Failures;                                                                                  \
+    }                                                                                              \
+  } while (false)
+
+// Counts the errors an object reports, instead of printing them (an expected
+// error must not reach the output, where ctest would flag it).
+class ErrorCounter : public vtkCommand
+{
+public:
+  static ErrorCounter* New() { return new ErrorCounter; }
+  void Execute(vtkObject*, unsigned long, void* callData) override
+  {
+    ++this->Count;
+    this->Last = callData ? static_cast<const char*>(callData) : "";
+  }
+  int Count = 0;
+  std::string Last;
+};
+
+// Every cell a triangle, every coordinate finite; normals unit length if
+// present; "Colors" RGB per cell if asked.
+bool CheckMesh(vtkPolyData* pd, bool expectNormals, bool expectColors, const std::string& what)
+{
+  bool ok = true;
+  auto fail = [&](const std::string& m) {
+    std::cerr << "FAILED: " << what << ": " << m << "\n";
+    ++Failures;
+    ok = false;
+  };
+  if (!pd || pd->GetNumberOfPolys() == 0)
+  {
+    fail("no triangles");
+    return false;
+  }
+  if (pd->GetNumberOfVerts() || pd->GetNumberOfLines() || pd->GetNumberOfStrips())
+  {
+    fail("has vertices, lines or strips");
+  }
+  if (pd->GetPolys()->IsHomogeneous() != 3)
+  {
+    fail("not every polygon is a triangle");
+  }
+  vtkPoints* points = pd->GetPoints();
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      fail("non-finite point " + std::to_string(i));
+      break;
+    }
+  }
+  vtkDataArray* normals = pd->GetPointData()->GetNormals();
+  if (expectNormals != (normals != nullptr))
+  {
+    fail(expectNormals ? "no point normals" : "has point normals");
+  }
+  if (normals)
+  {
+    for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i)
+    {
+      double n[3];
+      normals->GetTuple(i, n);
+      if (!(std::abs(vtkMath::Norm(n) - 1.0) < 1e-3))
+      {
+        fail("normal " + std::to_string(i) + " is not unit length");
+        break;
+      }
+    }
+  }
+  if (expectColors)
+  {
+    auto* colors =
+      vtkUnsignedCharArray::SafeDownCast(pd->GetCellData()->GetAbstractArray("Colors"));
+    if (!colors || colors->GetNumberOfComponents() != 3 ||
+      colors->GetNumberOfTuples() != pd->GetNumberOfCells())
+    {
+      fail("no unsigned char RGB cell array \"Colors\" per triangle");
+    }
+  }
+  return ok;
+}
+
+void TestDemoScene()
+{
+  vtkNew<vtkDeepGBufferDemoScene> scene;
+  vtkNew<ErrorCounter> errors;
+  scene->AddObserver(vtkCommand::ErrorEvent, errors);
+
+  // Triangle budget: at least the target, and not much more.
+  CHECK(scene->GetTargetNumberOfTriangles() == 10000, "default target is 10000");
+  const vtkIdType n10k = scene->GetNumberOfTriangles();
+  CHECK(n10k >= 10000 && n10k < 11000, "10k target gives " << n10k << " triangles");
+  CheckMesh(scene->GetScenePolyData(), true, true, "10k scene");
+  CHECK(scene->GetScenePolyData()->GetNumberOfPolys() == n10k, "scene polydata has every triangle");
+
+  double bounds1[6];
+  scene->GetBounds(bounds1);
+  const double room[6] = { -5, 5, 0, 4, -4, 4 };
+  for (int i = 0; i < 6; ++i)
+  {
+    CHECK(std::abs(bounds1[i] - room[i]) < 1e-5, "bounds[" << i << "] = " << bounds1[i]);
+  }
+
+  // One actor per material, two lights, the required material settings.
+  vtkNew<vtkRenderer> renderer;
+  scene->Populate(renderer);
+  CHECK(renderer->GetActors()->GetNumberOfItems() == vtkDeepGBufferDemoScene::NUMBER_OF_MATERIALS,
+    "Populate adds one actor per material");
+  CHECK(renderer->GetLights()->GetNumberOfItems() == 2, "Populate adds two lights");
+  vtkActor* first = renderer->GetActors()->GetLastActor();
+  CHECK(first && first->GetProperty()->GetAmbient() == 0.1 &&
+      first->GetProperty()->GetDiffuse() == 0.9 && first->GetProperty()->GetSpecular() == 0.0,
+    "actors have Ambient 0.1, Diffuse 0.9, Specular 0");
+
+  scene->SetTargetNumberOfTriangles(1000000);
+  const vtkIdType n1m = scene->GetNumberOfTriangles();
+  CHECK(n1m >= 1000000 && n1m < 1050000, "1M target gives " << n1m << " triangles");
+  CheckMesh(scene->GetScenePolyData(), true, true, "1M scene");
+
+  // Without normals or ceiling.
+  scene->SetTargetNumberOfTriangles(20000);
+  scene->ComputeNormalsOff();
+  CheckMesh(scene->GetScenePolyData(), false, true, "scene without normals");
+  const vtkIdType withCeiling = scene->GetNumberOfTriangles();
+  scene->CeilingOff();
+  CHECK(scene->GetMaterialPolyData(vtkDeepGBufferDemoScene::CEILING)->GetNumberOfCells() == 0,
+    "no ceiling triangles with Ceiling off");
+  CHECK(scene->GetNumberOfTriangles() >= 20000, "the target holds without ceiling");
+  (void)withCeiling;
+  scene->CeilingOn();
+  scene->ComputeNormalsOn();
+
+  // Scale: same tessellation, bounds scaled exactly (up to float storage).
+  scene->SetTargetNumberOfTriangles(10000);
+  for (double s : { 1e-4, 1e4 })
+  {
+    scene->SetScaleFactor(s);
+    CHECK(scene->GetNumberOfTriangles() == n10k, "scale " << s << " keeps the triangle count");
+    double b[6];
+    scene->GetBounds(b);
+    for (int i = 0; i < 6; ++i)
+    {
+      CHECK(std::abs(b[i] - s * bounds1[i]) <= 1e-6 * s * 10.0,
+        "scale " << s << ": bounds[" << i << "] = " << b[i] << ", expected " << s * bounds1[i]);
+    }
+    CheckMesh(scene->GetScenePolyData(), true, true, "scaled scene");
+  }
+  const int before = errors->Count;
+  scene->SetScaleFactor(std::nan(""));
+  scene->SetScaleFactor(-1.0);
+  scene->SetScaleFactor(0.0);
+  CHECK(errors->Count == before + 3 && scene->GetScaleFactor() == 1e4,
+    "non-finite and non-positive scale factors are rejected");
+  scene->SetScaleFactor(1.0);
+
+  // Camera path: deterministic, closed, moving, scaled with the scene.
+  vtkNew<vtkDeepGBufferDemoScene> other;
+  vtkNew<vtkCamera> a, b;
+  const int frames = 120;
+  double previous[3] = { 0, 0, 0 };
+  for (int f = 0; f < frames; f += 7)
+  {
+    scene->SetCameraToPathFrame(a, f, frames);
+    other->SetCameraToPathFrame(b, f, frames);
+    double pa[3], pb[3], fa[3], fb[3];
+    a->GetPosition(pa);
+    b->GetPosition(pb);
+    a->GetFocalPoint(fa);
+    b->GetFocalPoint(fb);
+    CHECK(pa[0] == pb[0] && pa[1] == pb[1] && pa[2] == pb[2] && fa[0] == fb[0] &&
+        fa[1] == fb[1] && fa[2] == fb[2],
+      "path frame " << f << " is deterministic");
+    for (int i = 0; i < 3; ++i)
+    {
+      CHECK(pa[i] > room[2 * i] && pa[i] < room[2 * i + 1], "path frame " << f << " is inside");
+    }
+    if (f > 0)
+    {
+      CHECK(vtkMath::Distance2BetweenPoints(pa, previous) > 1e-4, "the camera moves");
+    }
+    std::copy(pa, pa + 3, previous);
+  }
+  scene->SetCameraToPathFrame(a, 0, frames);
+  scene->SetCameraToPathFrame(b, frames, frames);
+  CHECK(a->GetPosition()[0] == b->GetPosition()[0] && a->GetPosition()[2] == b->GetPosition()[2],
+    "the path is closed (frame N is frame 0)");
+  scene->SetCameraToPathFrame(a, -1, frames);
+  scene->SetCameraToPathFrame(b, frames - 1, frames);
+  CHECK(a->GetPosition()[0] == b->GetPosition()[0], "frame -1 is frame N - 1");
+  scene->SetCameraToPathFrame(a, 5, 0); // no crash for a degenerate frame count
+  other->SetScaleFactor(1e-4);
+  scene->SetCameraToPathFrame(a, 17, frames);
+  other->SetCameraToPathFrame(b, 17, frames);
+  CHECK(std::abs(b->GetPosition()[0] - 1e-4 * a->GetPosition()[0]) < 1e-12 &&
+      std::abs(b->GetClippingRange()[0] - 1e-4 * a->GetClippingRange()[0]) < 1e-12,
+    "the path scales with the scene");
+
+  for (int i = 0; i < vtkDeepGBufferDemoScene::GetNumberOfNamedViews(); ++i)
+  {
+    CHECK(scene->SetCameraToNamedView(a, vtkDeepGBufferDemoScene::GetNamedViewName(i)),
+      "named view " << i);
+  }
+  const int beforeView = errors->Count;
+  CHECK(!scene->SetCameraToNamedView(a, "no-such-view") && errors->Count == beforeView + 1,
+    "an unknown view is rejected with an error");
+  scene->SetCameraToDefaultView(a);
+  CHECK(a->GetViewAngle() > 0.0, "default view");
+}
+
+void TestLoader(const std::string& data, const std::string& temp)
+{
+  vtkNew<vtkDeepGBufferSceneLoader> loader;
+  vtkNew<ErrorCounter> errors;
+  loader->AddObserver(vtkCommand::ErrorEvent, errors);
+
+  // Rejections: each returns false with exactly one error and loads nothing.
+  struct Bad
+  {
+    std::string Path;
+    const char* Why;
+  };
+  const std::string empty = temp + "/TestDeepGBufferDemoScene-empty.vtp";
+  {
+    vtkNew<vtkPolyData> nothing;
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetInputData(nothing);
+    writer->SetFileName(empty.c_str());
+    CHECK(writer->Write() == 1, "writing " << empty);
+  }
+  for (const Bad& bad : { Bad{ data + "/meshes/no-such-mesh.ply", "missing file" },
+         Bad{ data + "/MANIFEST.md", "unknown extension" }, Bad{ empty, "empty mesh" },
+         Bad{ data + "/meshes", "a directory without volumes" }, Bad{ "", "empty name" } })
+  {
+    const int before = errors->Count;
+    CHECK(!loader->Load(bad.Path.c_str()), bad.Why << " is rejected");
+    CHECK(errors->Count == before + 1, bad.Why << " gives one error");
+  }
+  CHECK(!loader->Load(nullptr), "a null name is rejected");
+  {
+    const int before = errors->Count;
+    CHECK(!loader->LoadVolume((data + "/volumes/headsq").c_str(), 1e9),
+      "an iso-value outside the data is rejected");
+    CHECK(errors->Count == before + 1, "outside iso-value gives one error");
+  }
+  CHECK(loader->GetNumberOfParts() == 0, "failed loads add nothing");
+  const int expectedErrors = errors->Count;
+
+  // Bunny: 69,451 triangles, normals computed.
+  CHECK(loader->Load((data + "/meshes/bunny.ply").c_str()), "bunny.ply loads");
+  CHECK(loader->GetNumberOfTriangles() == 69451, "bunny has " << loader->GetNumberOfTriangles());
+  CheckMesh(loader->GetPartPolyData(0), true, false, "bunny");
+  loader->Clear();
+
+  // Cornell box: 8 materials, 36 triangles, the left wall red (Kd).
+  CHECK(loader->Load((data + "/scenes/cornell-original/CornellBox-Original.obj").c_str()),
+    "CornellBox-Original.obj loads");
+  CHECK(loader->GetNumberOfParts() == 8, "Cornell box has " << loader->GetNumberOfParts()
+                                                            << " parts, expected 8");
+  CHECK(loader->GetNumberOfTriangles() == 36, "Cornell box has 36 triangles");
+  bool foundRed = false;
+  for (int i = 0; i < loader->GetNumberOfParts(); ++i)
+  {
+    CheckMesh(loader->GetPartPolyData(i), true, false, loader->GetPartName(i));
+    if (std::string(loader->GetPartName(i)).find("leftWall") != std::string::npos)
+    {
+      double rgb[3];
+      loader->GetPartColor(i, rgb);
+      foundRed = std::abs(rgb[0] - 0.63) < 1e-6 && std::abs(rgb[1] - 0.065) < 1e-6 &&
+        std::abs(rgb[2] - 0.05) < 1e-6;
+    }
+  }
+  CHECK(foundRed, "the Cornell left wall has Kd 0.63 0.065 0.05");
+  vtkNew<vtkRenderer> renderer;
+  CHECK(loader->Populate(renderer) == 8, "Populate adds 8 actors");
+  vtkActor* actor = renderer->GetActors()->GetLastActor();
+  CHECK(actor && actor->GetProperty()->GetAmbient() == 0.1 &&
+      actor->GetProperty()->GetSpecular() == 0.0,
+    "loaded actors have Ambient 0.1 and Specular 0 (not the importer's 1 and 1)");
+  CHECK(renderer->GetLights()->GetNumberOfItems() == 1, "Populate adds the default light");
+  loader->ResetCamera(renderer);
+  vtkPolyData* scene = loader->GetScenePolyData();
+  CheckMesh(scene, true, true, "Cornell scene polydata");
+  CHECK(scene && scene->GetNumberOfPolys() == 36, "Cornell scene polydata has 36 triangles");
+
+  // headsq at 500 (skin): 57,698 triangles (MANIFEST.md), by the directory,
+  // the .nhdr and the slice prefix.
+  for (const std::string& path : { data + "/volumes/headsq", data + "/volumes/headsq/quarter.nhdr",
+         data + "/volumes/headsq/quarter" })
+  {
+    loader->Clear();
+    CHECK(loader->LoadVolume(path.c_str(), 500.0), path << " loads");
+    CHECK(loader->GetNumberOfTriangles() == 57698,
+      path << " at 500 has " << loader->GetNumberOfTriangles() << " triangles, expected 57698");
+    if (loader->GetNumberOfParts() == 1)
+    {
+      CheckMesh(loader->GetPartPolyData(0), true, false, path);
+      double b[6];
+      loader->GetBounds(b);
+      CHECK(b[1] > 150.0 && b[1] <= 64 * 3.2 && b[5] <= 92 * 1.5 + 1e-3,
+        "headsq bounds follow its spacing 3.2/3.2/1.5");
+    }
+  }
+  CHECK(errors->Count == expectedErrors, "good files load without errors");
+}
+} // anonymous namespace
+
+int TestDeepGBufferDemoScene(int argc, char* argv[])
+{
+  std::string data, temp = ".";
+  for (int i = 1; i + 1 < argc; ++i)
+  {
+    if (std::string(argv[i]) == "--data")
+    {
+      data = argv[++i];
+    }
+    else if (std::string(argv[i]) == "-T")
+    {
+      temp = argv[++i];
+    }
+  }
+  if (data.empty())
+  {
+    std::cerr << "Usage: TestDeepGBufferDemoScene --data DIR [-T TEMPDIR]\n";
+    return EXIT_FAILURE;
+  }
+
+  TestDemoScene();
+  TestLoader(data, temp);
+
+  if (Failures)
+  {
+    std::cerr << Failures << " check(s) failed\n";
+    return EXIT_FAILURE;
+  }
+  std::cout << "All checks passed\n";
+  return EXIT_SUCCESS;
+}
