@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# setup.sh: install what the project needs (Debian bookworm, apt) and build it.
+#
+# - Packages are checked with one dpkg-query call; apt-get update and
+#   apt-get install --no-install-recommends run only when something is
+#   missing (as root, or through sudo).
+# - The build directory is build/ in the repository (override with
+#   DEEPGI_BUILD_DIR). It is configured once (Ninja, Release); later runs just
+#   call ninja, which re-runs CMake itself when a CMakeLists.txt changed.
+#
+# Everything this script prints goes to stderr, so that the stdout of
+# scripts/run.sh is the main job's alone.
+set -euo pipefail
+exec 1>&2
+
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${DEEPGI_BUILD_DIR:-$repo/build}"
+
+# libvtk9-dev pulls in what Debian's VTK CMake package needs to configure
+# (MPI, GLEW, X11, Qt, Java, ... are Depends of libvtk9-dev), so they are not
+# listed here.
+packages=(
+  build-essential cmake ninja-build   # toolchain
+  libvtk9-dev vtk9 python3-vtk9       # VTK 9.1: headers/CMake package, wrapping tools, Python
+  python3-numpy                       # numeric checks in the Python tests
+  libglm-dev libopenexr-dev libembree-dev
+  libegl-dev libegl-mesa0 libgl1-mesa-dri  # EGL backend: headers, Mesa's EGL, llvmpipe
+  xvfb xauth                          # X11 backend without a display (scripts/with-display.sh)
+)
+
+log() { echo "setup.sh: $*"; }
+
+missing_packages() {
+  # Prints the packages that are not installed, one per line.
+  local installed
+  installed="$(dpkg-query -W -f='${Package} ${db:Status-Status}\n' "${packages[@]}" 2>/dev/null |
+    awk '$2 == "installed" { print $1 }')" || true
+  local p
+  for p in "${packages[@]}"; do
+    if ! grep -qx -- "$p" <<<"$installed"; then
+      echo "$p"
+    fi
+  done
+}
+
+if command -v dpkg-query >/dev/null 2>&1 && command -v apt-get >/dev/null 2>&1; then
+  mapfile -t missing < <(missing_packages)
+  if ((${#missing[@]} > 0)); then
+    log "installing: ${missing[*]}"
+    sudo=()
+    if ((EUID != 0)); then
+      if command -v sudo >/dev/null 2>&1; then
+        sudo=(sudo)
+      else
+        log "these packages are missing and this is not root (no sudo either): ${missing[*]}"
+        exit 1
+      fi
+    fi
+    "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -q
+    "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive \
+      apt-get install -y -q --no-install-recommends "${missing[@]}"
+    mapfile -t still_missing < <(missing_packages)
+    if ((${#still_missing[@]} > 0)); then
+      log "still missing after apt-get install: ${still_missing[*]}"
+      exit 1
+    fi
+  fi
+else
+  log "no dpkg/apt here: make sure the equivalents of these are installed: ${packages[*]}"
+fi
+
+# Configure once; ninja re-runs CMake when needed.
+if [[ ! -f "$build/build.ninja" ]]; then
+  log "configuring $build"
+  cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
+fi
+ninja -C "$build"
