@@ -107,8 +107,10 @@ public:
   /**
    * Create the EGL display, context and pbuffer if they do not exist yet,
    * make the context current and initialise VTK's OpenGL state. Returns
-   * false, after a vtkErrorMacro saying why, when that fails. Render() and
-   * Initialize() call it; call it directly to test for a working context.
+   * false, after a vtkErrorMacro saying why, when that fails; later calls
+   * then fail quietly until Finalize() allows a new attempt (e.g. after
+   * SetPlatform()). Render() and Initialize() call it; call it directly to
+   * test for a working context.
    */
   bool InitializeEGL();
 

@@ -7,6 +7,7 @@
 #include "DeepGIHeadlessTestHelpers.h"
 
 #include <cstring>
+#include <sstream>
 
 int TestDeepGIEGLRenderWindow(int, char*[])
 {
@@ -88,6 +89,16 @@ int TestDeepGIEGLRenderWindow(int, char*[])
     ++failures;
   }
   failures += RenderAndCheck(rw, "render on a new context after Finalize");
+
+  // PrintSelf reports the EGL state.
+  std::ostringstream printed;
+  rw->Print(printed);
+  if (printed.str().find("PlatformDescription: ") == std::string::npos ||
+    printed.str().find("ContextVersion: ") == std::string::npos)
+  {
+    std::fprintf(stderr, "PrintSelf lacks the EGL state\n");
+    ++failures;
+  }
 
   if (messages.Errors() || messages.Warnings())
   {

@@ -7,6 +7,7 @@
 #include "DeepGIHeadlessTestHelpers.h"
 
 #include <cstring>
+#include <sstream>
 
 int TestDeepGIRenderWindowFactory(int, char*[])
 {
@@ -24,6 +25,11 @@ int TestDeepGIRenderWindowFactory(int, char*[])
       ++failures;
     }
   };
+
+  vtkNew<F> factory;
+  std::ostringstream printed;
+  factory->Print(printed);
+  expect(printed.str().find("EGL support: yes") != std::string::npos, "PrintSelf: EGL support");
 
   // Names.
   expect(F::GetBackendFromString("auto") == F::BACKEND_AUTO, "\"auto\"");
