@@ -787,7 +787,7 @@ bool vtkDeepGBufferSceneLoader::ReadDetachedNrrd(
   int dimension = 0, scalarType = -1;
   int sizes[3] = { 0, 0, 0 };
   double spacing[3] = { 1.0, 1.0, 1.0 }, origin[3] = { 0.0, 0.0, 0.0 };
-  bool haveSpacing = false;
+  bool haveSpacing = false, leftHanded = false;
   std::string encoding = "raw", endian = "little";
   long long byteSkip = 0;
   std::vector<std::string> dataFiles;
@@ -864,6 +864,11 @@ bool vtkDeepGBufferSceneLoader::ReadDetachedNrrd(
         std::copy(o, o + 3, origin);
       }
     }
+    else if (field == "space")
+    {
+      leftHanded = value == "3D-left-handed" || value == "left-anterior-superior" ||
+        value == "LAS";
+    }
     else if (field == "encoding")
     {
       encoding = Lower(value);
@@ -938,6 +943,10 @@ bool vtkDeepGBufferSceneLoader::ReadDetachedNrrd(
   }
 
   vtkNew<vtkImageReader2> reader;
+  // NRRD data is in index order; a left-handed space is made right-handed
+  // by flipping the rows, as vtkNrrdReader does (and as vtkVolume16Reader
+  // reads the headsq slices).
+  reader->SetFileLowerLeft(leftHanded ? 0 : 1);
   reader->SetDataScalarType(scalarType);
   reader->SetNumberOfScalarComponents(1);
   reader->SetDataExtent(0, sizes[0] - 1, 0, sizes[1] - 1, 0, sizes[2] - 1);
@@ -1145,15 +1154,49 @@ void vtkDeepGBufferSceneLoader::AddDefaultLight(vtkRenderer* renderer)
     vtkErrorMacro("AddDefaultLight: no renderer");
     return;
   }
-  // Camera coordinates: the camera at (0, 0, 1) looking at the origin.
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToCameraLight();
-  light->SetPositional(false);
-  light->SetPosition(-0.4, 0.6, 1.0);
-  light->SetFocalPoint(0.0, 0.0, 0.0);
-  light->SetColor(1.0, 1.0, 1.0);
-  light->SetIntensity(1.0);
-  renderer->AddLight(light);
+  // Key light in camera coordinates (the camera at (0, 0, 1) looking at the
+  // origin): from above left of the viewer, so any model is lit on the side
+  // it is seen from.
+  vtkNew<vtkLight> key;
+  key->SetLightTypeToCameraLight();
+  key->SetPositional(false);
+  key->SetPosition(-0.4, 0.6, 1.0);
+  key->SetFocalPoint(0.0, 0.0, 0.0);
+  key->SetColor(1.0, 1.0, 1.0);
+  key->SetIntensity(0.6);
+  renderer->AddLight(key);
+
+  // Point light just below the top of the loaded geometry (along ViewUp):
+  // inside a room or a Cornell box it lights the floor and the walls the
+  // way a ceiling lamp does; above an object it lights it from above.
+  double bounds[6];
+  this->GetBounds(bounds);
+  if (!vtkMath::AreBoundsInitialized(bounds))
+  {
+    return;
+  }
+  double up[3] = { this->ViewUp[0], this->ViewUp[1], this->ViewUp[2] };
+  if (vtkMath::Normalize(up) == 0.0)
+  {
+    up[1] = 1.0;
+  }
+  double position[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    const double center = 0.5 * (bounds[2 * i] + bounds[2 * i + 1]);
+    const double extent = bounds[2 * i + 1] - bounds[2 * i];
+    position[i] = center + 0.45 * extent * up[i];
+  }
+  vtkNew<vtkLight> lamp;
+  lamp->SetLightTypeToSceneLight();
+  lamp->SetPositional(true);
+  lamp->SetConeAngle(180.0); // >= 90: a point light, not a spot light
+  lamp->SetAttenuationValues(1.0, 0.0, 0.0);
+  lamp->SetPosition(position);
+  lamp->SetFocalPoint(position[0] - up[0], position[1] - up[1], position[2] - up[2]);
+  lamp->SetColor(1.0, 0.96, 0.9);
+  lamp->SetIntensity(0.7);
+  renderer->AddLight(lamp);
 }
 
 //------------------------------------------------------------------------------

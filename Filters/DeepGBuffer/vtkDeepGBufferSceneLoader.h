@@ -140,8 +140,8 @@ public:
   /**
    * Direction the camera looks along and its view-up, for ResetCamera().
    * Defaults (0, 0, -1) and (0, 1, 0): looking down -z with +y up, the
-   * usual frame of OBJ scenes (Cornell boxes open towards +z). Patient
-   * volumes such as headsq look better with (0, 1, 0) and (0, 0, -1).
+   * usual frame of OBJ scenes (Cornell boxes open towards +z). The headsq
+   * CT volume faces the camera with (0, -1, 0) and (0, 0, -1).
    */
   vtkSetVector3Macro(ViewDirection, double);
   vtkGetVector3Macro(ViewDirection, double);
@@ -183,8 +183,12 @@ public:
   int Populate(vtkRenderer* renderer);
 
   /**
-   * Adds a white directional camera light (intensity 1) coming from above
-   * left of the viewer, so that any model is lit from the side it is seen.
+   * Adds the default lights: a white directional camera light (intensity
+   * 0.6) from above left of the viewer, so that any model is lit on the side
+   * it is seen from, and, when parts are loaded, a warm point light
+   * (intensity 0.7, no attenuation) at the centre of their bounds moved 45 %
+   * of the bounds' size along ViewUp, i.e. just below the top: a ceiling lamp
+   * for rooms and Cornell boxes, a light from above for objects.
    */
   void AddDefaultLight(vtkRenderer* renderer);
 

@@ -13,6 +13,7 @@
 #include "vtkDataArray.h"
 #include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferSceneLoader.h"
+#include "vtkFlyingEdges3D.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -22,6 +23,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkVolume16Reader.h"
 #include "vtkXMLPolyDataWriter.h"
 
 #include <cmath>
@@ -318,7 +320,8 @@ void TestLoader(const std::string& data, const std::string& temp)
   CHECK(actor && actor->GetProperty()->GetAmbient() == 0.1 &&
       actor->GetProperty()->GetSpecular() == 0.0,
     "loaded actors have Ambient 0.1 and Specular 0 (not the importer's 1 and 1)");
-  CHECK(renderer->GetLights()->GetNumberOfItems() == 1, "Populate adds the default light");
+  CHECK(renderer->GetLights()->GetNumberOfItems() == 2,
+    "Populate adds the default lights (camera key light, lamp below the top)");
   loader->ResetCamera(renderer);
   vtkPolyData* scene = loader->GetScenePolyData();
   CheckMesh(scene, true, true, "Cornell scene polydata");
@@ -341,6 +344,30 @@ void TestLoader(const std::string& data, const std::string& temp)
       CHECK(b[1] > 150.0 && b[1] <= 64 * 3.2 && b[5] <= 92 * 1.5 + 1e-3,
         "headsq bounds follow its spacing 3.2/3.2/1.5");
     }
+  }
+  // The NRRD parser reads the slices the way vtkVolume16Reader does (index
+  // order, no row flip): the same surface, point for point.
+  {
+    vtkNew<vtkVolume16Reader> reader;
+    reader->SetFilePrefix((data + "/volumes/headsq/quarter").c_str());
+    reader->SetDataDimensions(64, 64);
+    reader->SetImageRange(1, 93);
+    reader->SetDataByteOrderToLittleEndian();
+    reader->SetDataSpacing(3.2, 3.2, 1.5);
+    vtkNew<vtkFlyingEdges3D> iso;
+    iso->SetInputConnection(reader->GetOutputPort());
+    iso->SetValue(0, 500.0);
+    iso->Update();
+    loader->Clear();
+    loader->LoadVolume((data + "/volumes/headsq/quarter.nhdr").c_str(), 500.0);
+    vtkPolyData* mine = loader->GetPartPolyData(0);
+    vtkPolyData* reference = iso->GetOutput();
+    bool same = mine && mine->GetNumberOfPoints() == reference->GetNumberOfPoints();
+    for (vtkIdType i = 0; same && i < reference->GetNumberOfPoints(); i += 97)
+    {
+      same = vtkMath::Distance2BetweenPoints(mine->GetPoint(i), reference->GetPoint(i)) < 1e-8;
+    }
+    CHECK(same, "headsq through the .nhdr matches vtkVolume16Reader point for point");
   }
   CHECK(errors->Count == expectedErrors, "good files load without errors");
 }
