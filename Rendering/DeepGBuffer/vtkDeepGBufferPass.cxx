@@ -23,6 +23,8 @@
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexBufferObject.h"
+#include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkOverlayPass.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -167,7 +169,7 @@ struct vtkDeepGBufferRendererState
     Matrix PreviousModel = Identity();
     unsigned long long Frame = 0;
     unsigned long long PreviousFrame = 0;
-    std::array<float, 16> OtherFromCurrentClip;
+    Matrix OtherModel = Identity(); // M_o
   };
   std::map<vtkProp*, PropHistory> Props;
   std::map<vtkProp*, vtkWeakPointer<vtkProp>> PropLiveness;
@@ -233,6 +235,7 @@ public:
   std::array<float, 16> InverseProjection{};
   std::array<float, 2> ViewportSize{};
   Matrix OtherView = Identity(), OtherProjection = Identity();
+  Matrix OtherWorldToClip = Identity(); // P_o V_o
   bool OtherUsesPreviousFrame = false;
   bool OtherIsPrediction = false;
 
@@ -305,6 +308,7 @@ void vtkDeepGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumSeparation: " << this->MinimumSeparation << "\n";
   os << indent << "AutomaticMinimumSeparation: " << this->AutomaticMinimumSeparation << "\n";
   os << indent << "AutomaticSeparationFraction: " << this->AutomaticSeparationFraction << "\n";
+  os << indent << "DeepLayerBackfaceCulling: " << this->DeepLayerBackfaceCulling << "\n";
   os << indent << "EffectiveMinimumSeparation: " << this->EffectiveMinimumSeparation << "\n";
   os << indent << "EffectiveNumberOfLayers: " << this->EffectiveNumberOfLayers << "\n";
   os << indent << "EffectiveOracle: " << GetOracleAsString(this->EffectiveOracle) << "\n";
@@ -470,13 +474,13 @@ bool vtkDeepGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
   // space (previous frame for REPROJECT/DELAY, predicted next frame for PREDICT).
   vtkShaderProgram::Substitute(vertexShader, "//VTK::Camera::Dec",
     "//VTK::Camera::Dec\n"
-    "uniform mat4 deepOtherFromCurrentClip;\n"
+    "uniform mat4 deepOtherMCDC;\n"
     "uniform int deepVertexUsesOtherClip;\n"
     "out vec4 deepOtherClipVSOutput;\n",
     false);
   vtkShaderProgram::Substitute(vertexShader, "//VTK::PositionVC::Impl",
     "//VTK::PositionVC::Impl\n"
-    "  deepOtherClipVSOutput = deepOtherFromCurrentClip * gl_Position;\n"
+    "  deepOtherClipVSOutput = deepOtherMCDC * vertexMC;\n"
     "  if (deepVertexUsesOtherClip != 0) { gl_Position = deepOtherClipVSOutput; }\n",
     false);
 
@@ -497,6 +501,7 @@ bool vtkDeepGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
                              "uniform int deepTargetLayer;\n"
                              "uniform int deepOracleLayerIndex;\n"
                              "uniform int deepOtherClipLayerMask;\n"
+                             "uniform int deepCullBackFaces;\n"
                              "uniform float deepMinimumSeparation;\n"
                              "uniform vec4 deepProjectionZ;\n"
                              "uniform vec4 deepOtherProjectionZ;\n"
@@ -524,6 +529,7 @@ bool vtkDeepGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
     "    gl_FragData[3] = vec4(deepDistance, 0.0, 0.0, 1.0);\n"
     "    return;\n"
     "  }\n"
+    "  if (deepLayer > 0 && deepCullBackFaces != 0 && gl_FrontFacing == false) { discard; }\n"
     "  if (deepLayer > 0 && deepTestMode != 0)\n"
     "  {\n"
     "    vec2 deepTestPixel = gl_FragCoord.xy;\n"
@@ -616,15 +622,15 @@ bool vtkDeepGBufferPass::SetShaderParameters(vtkShaderProgram* program,
 {
   vtkInternals& in = *this->Internals;
   if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) || !in.Current ||
-    !program->IsUniformUsed("deepOtherFromCurrentClip"))
+    !program->IsUniformUsed("deepOtherMCDC"))
   {
     return true;
   }
   vtkDeepGBufferRendererState& state = *in.Current;
 
-  // The other frame's clip position of this prop's vertices:
-  // other = P_o V_o M_o (P V M)^-1 applied to the current clip position, so
-  // VTK's own model-to-clip matrix (with its coordinate shift) is reused.
+  // The other frame's clip position of this prop's vertices, computed like
+  // VTK's own MCDCMatrix (P V M, then the vertex buffer's coordinate shift
+  // and scale) so that DELAY rasterises exactly what the previous frame did.
   auto& history = state.Props[prop];
   if (history.Frame != state.FrameIndex)
   {
@@ -648,10 +654,27 @@ bool vtkDeepGBufferPass::SetShaderParameters(vtkShaderProgram* program,
         otherModel = Extrapolate(history.PreviousModel, model);
       }
     }
-    Matrix current = Multiply(Multiply(state.Projection, state.View), model);
-    Matrix other = Multiply(Multiply(in.OtherProjection, in.OtherView), otherModel);
-    history.OtherFromCurrentClip = ToColumnMajor(Multiply(other, Invert(current)));
+    history.OtherModel = otherModel;
   }
+  // Same association as vtkOpenGLPolyDataMapper: (P V) (M S^-1).
+  Matrix modelToStored = history.OtherModel;
+  vtkOpenGLVertexBufferObject* positions =
+    static_cast<vtkOpenGLPolyDataMapper*>(mapper)->GetVBOs()->GetVBO("vertexMC");
+  if (positions && positions->GetCoordShiftAndScaleEnabled())
+  {
+    // Stored coordinates are (x - shift) * scale.
+    const std::vector<double>& shift = positions->GetShift();
+    const std::vector<double>& scale = positions->GetScale();
+    Matrix unshift = Identity();
+    for (int i = 0; i < 3 && i < static_cast<int>(shift.size()); ++i)
+    {
+      unshift[i * 4 + i] = 1.0 / scale[i];
+      unshift[i * 4 + 3] = shift[i];
+    }
+    modelToStored = Multiply(modelToStored, unshift);
+  }
+  const std::array<float, 16> otherMCDCUniform =
+    ToColumnMajor(Multiply(in.OtherWorldToClip, modelToStored));
 
   // Uniforms the compiler removed (e.g. the routing ones without a geometry
   // shader) are skipped.
@@ -676,7 +699,7 @@ bool vtkDeepGBufferPass::SetShaderParameters(vtkShaderProgram* program,
   // Shaders with the routing geometry shader choose positions per layer
   // there; the others swap in the vertex shader for the layer they draw.
   const bool routedProgram = program->IsUniformUsed("deepEmitMask");
-  setMatrix("deepOtherFromCurrentClip", history.OtherFromCurrentClip.data());
+  setMatrix("deepOtherMCDC", otherMCDCUniform.data());
   setInt("deepVertexUsesOtherClip",
     routedProgram ? 0 : (in.OtherClipLayerMask >> in.TargetLayer) & 1);
   setInt("deepEmitMask", in.EmitMask);
@@ -684,6 +707,7 @@ bool vtkDeepGBufferPass::SetShaderParameters(vtkShaderProgram* program,
   setInt("deepTestMode", in.TestMode);
   setInt("deepTargetLayer", in.TargetLayer);
   setInt("deepOracleLayerIndex", in.OracleLayerIndex);
+  setInt("deepCullBackFaces", this->DeepLayerBackfaceCulling ? 1 : 0);
   if (program->IsUniformUsed("deepMinimumSeparation"))
   {
     program->SetUniformf("deepMinimumSeparation", in.MinimumSeparation);
@@ -951,7 +975,9 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
 
   // Cameras of this frame and of the other frame the oracle needs.
   vtkCamera* camera = renderer->GetActiveCamera();
-  double aspect = static_cast<double>(width) / height;
+  // The aspect VTK's camera matrices use, so that DELAY's previous-frame
+  // matrices match what VTK computed for that frame bit for bit.
+  const double aspect = renderer->GetTiledAspectRatio();
   state.PreviousView = state.View;
   state.PreviousProjection = state.Projection;
   state.View = ToArray(camera->GetModelViewTransformMatrix());
@@ -973,6 +999,7 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
   {
     in.OtherView = Extrapolate(state.PreviousView, state.View);
   }
+  in.OtherWorldToClip = Multiply(in.OtherProjection, in.OtherView);
   in.ProjectionZ = ProjectionDepthRows(state.Projection);
   in.OtherProjectionZ = ProjectionDepthRows(in.OtherProjection);
   in.InverseProjection = ToColumnMajor(Invert(state.Projection));

@@ -150,6 +150,20 @@ public:
   vtkGetMacro(AutomaticSeparationFraction, double);
   ///@}
 
+  ///@{
+  /**
+   * When on (default), layers j > 0 keep only front-facing surfaces. The
+   * back faces of a closed object lie inside it: without culling, layer 1
+   * behind a column is the column's own far side instead of the banner
+   * behind it (paper Figure 2, the Sponza tapestry), unless dz exceeds the
+   * column's thickness. Turn it off for open surfaces whose back faces are
+   * seen (e.g. a cut-open iso-surface). Layer 0 always draws what VTK draws.
+   */
+  vtkSetMacro(DeepLayerBackfaceCulling, bool);
+  vtkGetMacro(DeepLayerBackfaceCulling, bool);
+  vtkBooleanMacro(DeepLayerBackfaceCulling, bool);
+  ///@}
+
   /// The dz used by the last rendered frame (world units).
   vtkGetMacro(EffectiveMinimumSeparation, double);
 
@@ -260,6 +274,7 @@ protected:
   double MinimumSeparation = 0.0;
   bool AutomaticMinimumSeparation = true;
   double AutomaticSeparationFraction = 0.015;
+  bool DeepLayerBackfaceCulling = true;
   int DisplayQuantity = RADIANCE;
   int DisplayLayer = 0;
 

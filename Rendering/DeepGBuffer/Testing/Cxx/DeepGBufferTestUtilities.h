@@ -1,0 +1,202 @@
+// Helpers shared by the deep G-buffer tests: windows, scenes and numeric
+// checks on captured layers.
+#ifndef DeepGBufferTestUtilities_h
+#define DeepGBufferTestUtilities_h
+
+#include "vtkActor.h"
+#include "vtkDataArray.h"
+#include "vtkDeepGBufferPass.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace DeepGBufferTest
+{
+// The value following `flag` on the command line, or `fallback`.
+inline std::string Argument(int argc, char* argv[], const char* flag, const char* fallback = "")
+{
+  for (int i = 1; i + 1 < argc; ++i)
+  {
+    if (std::string(argv[i]) == flag)
+    {
+      return argv[i + 1];
+    }
+  }
+  return fallback;
+}
+
+// An offscreen window without multisampling, so images are deterministic.
+inline vtkSmartPointer<vtkRenderWindow> MakeWindow(int width, int height)
+{
+  auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(width, height);
+  return window;
+}
+
+// True if every value of every point-data array is finite.
+inline bool AllFinite(vtkImageData* image)
+{
+  vtkPointData* pd = image->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pd->GetArray(a);
+    for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
+    {
+      for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+      {
+        if (!std::isfinite(array->GetComponent(t, c)))
+        {
+          std::printf("non-finite value in %s at %lld\n", array->GetName(),
+            static_cast<long long>(t));
+          return false;
+        }
+      }
+    }
+  }
+  return true;
+}
+
+inline vtkDataArray* Layer(vtkImageData* image, const char* quantity, int layer)
+{
+  return image->GetPointData()->GetArray((std::string(quantity) + "_" + std::to_string(layer)).c_str());
+}
+
+struct SeparationReport
+{
+  long Pixels = 0;     // valid pixels of layer j
+  long Violations = 0; // valid pixels of layer j closer than dz behind layer j - 1
+  double WorstExcess = 1e300; // min over pixels of depth_j - depth_{j-1} - dz
+};
+
+// Every valid pixel of layer j must lie at least dz behind layer j - 1
+// (up to `relativeTolerance` of its depth: the float arithmetic of the test).
+inline SeparationReport CheckSeparation(
+  vtkImageData* image, int layer, double dz, double relativeTolerance)
+{
+  SeparationReport report;
+  vtkDataArray* front = Layer(image, "Depth", layer - 1);
+  vtkDataArray* back = Layer(image, "Depth", layer);
+  vtkDataArray* frontValid = Layer(image, "Valid", layer - 1);
+  vtkDataArray* backValid = Layer(image, "Valid", layer);
+  for (vtkIdType p = 0; p < back->GetNumberOfTuples(); ++p)
+  {
+    if (backValid->GetTuple1(p) == 0)
+    {
+      continue;
+    }
+    ++report.Pixels;
+    const double d1 = back->GetTuple1(p);
+    const double d0 = frontValid->GetTuple1(p) ? front->GetTuple1(p) : -1e300;
+    const double excess = d1 - d0 - dz;
+    report.WorstExcess = std::min(report.WorstExcess, excess);
+    if (frontValid->GetTuple1(p) == 0 || excess < -relativeTolerance * d1)
+    {
+      ++report.Violations;
+    }
+  }
+  return report;
+}
+
+struct LayerDifference
+{
+  long Compared = 0;        // pixels valid in either capture
+  long MaskMismatches = 0;  // valid in one capture only
+  long DepthMismatches = 0; // valid in both, depths differ beyond the tolerance
+  long Ties = 0; // differing pixels whose surface lies within rounding of d0 + dz
+  long Different() const { return this->MaskMismatches + this->DepthMismatches; }
+  double Fraction() const
+  {
+    return this->Compared ? static_cast<double>(this->Different()) / this->Compared : 0.0;
+  }
+};
+
+// Compares layer j of two captures pixel by pixel. With dz >= 0, a pixel
+// where either capture's layer-j surface lies within `relativeTolerance` of
+// the separation threshold (layer j - 1 of `b` plus dz) is a tie: the two
+// captures computed the same comparison with different rounding, so it is
+// counted in Ties, not as a difference. `different` (optional) receives 1
+// where they differ.
+inline LayerDifference CompareLayer(vtkImageData* a, vtkImageData* b, int layer,
+  double relativeTolerance, std::vector<unsigned char>* different = nullptr, double dz = -1.0)
+{
+  LayerDifference d;
+  vtkDataArray* da = Layer(a, "Depth", layer);
+  vtkDataArray* db = Layer(b, "Depth", layer);
+  vtkDataArray* va = Layer(a, "Valid", layer);
+  vtkDataArray* vb = Layer(b, "Valid", layer);
+  vtkDataArray* front = layer > 0 ? Layer(b, "Depth", layer - 1) : nullptr;
+  if (different)
+  {
+    different->assign(da->GetNumberOfTuples(), 0);
+  }
+  for (vtkIdType p = 0; p < da->GetNumberOfTuples(); ++p)
+  {
+    const bool inA = va->GetTuple1(p) != 0, inB = vb->GetTuple1(p) != 0;
+    if (!inA && !inB)
+    {
+      continue;
+    }
+    ++d.Compared;
+    const bool maskMismatch = inA != inB;
+    const bool depthMismatch = !maskMismatch &&
+      std::abs(da->GetTuple1(p) - db->GetTuple1(p)) >
+        relativeTolerance * std::abs(db->GetTuple1(p));
+    if (!maskMismatch && !depthMismatch)
+    {
+      continue;
+    }
+    if (dz >= 0.0 && front)
+    {
+      const double threshold = front->GetTuple1(p) + dz;
+      auto nearThreshold = [&](double depth) {
+        return std::abs(depth - threshold) <= relativeTolerance * depth;
+      };
+      if ((inA && nearThreshold(da->GetTuple1(p))) || (inB && nearThreshold(db->GetTuple1(p))))
+      {
+        ++d.Ties;
+        continue;
+      }
+    }
+    (maskMismatch ? d.MaskMismatches : d.DepthMismatches)++;
+    if (different)
+    {
+      (*different)[p] = 1;
+    }
+  }
+  return d;
+}
+
+// Reads the colour and depth buffers of a rendered window.
+inline void ReadWindow(vtkRenderWindow* window, vtkImageData* rgb, vtkImageData* depth)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->SetInputBufferTypeToRGB();
+  grab->Update();
+  rgb->DeepCopy(grab->GetOutput());
+  if (depth)
+  {
+    vtkNew<vtkWindowToImageFilter> grabDepth;
+    grabDepth->SetInput(window);
+    grabDepth->ReadFrontBufferOff();
+    grabDepth->SetInputBufferTypeToZBuffer();
+    grabDepth->Update();
+    depth->DeepCopy(grabDepth->GetOutput());
+  }
+}
+}
+
+#endif
