@@ -2,8 +2,6 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkCellArray.h"
-#include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -229,7 +227,6 @@ public:
   int TestMode = TEST_NONE;
   int OracleLayerIndex = -1;
   int HistoryUnit = -1;
-  int Oracle = REPROJECT;
   float MinimumSeparation = 0.0f;
   std::array<float, 4> ProjectionZ{}, OtherProjectionZ{};
   std::array<float, 16> InverseProjection{};
@@ -239,7 +236,7 @@ public:
   bool OtherUsesPreviousFrame = false;
   bool OtherIsPrediction = false;
 
-  // Which props the geometry shader routes this frame; a change rebuilds the shaders.
+  // Which props the geometry shader routes; a change rebuilds the shaders.
   std::map<vtkProp*, bool> RoutedProps;
   bool IsRouted(vtkProp* prop) const
   {
@@ -1005,7 +1002,6 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
   in.InverseProjection = ToColumnMajor(Invert(state.Projection));
   in.ViewportSize = { static_cast<float>(width), static_cast<float>(height) };
   in.MinimumSeparation = static_cast<float>(dz);
-  in.Oracle = oracle;
 
   // The history is usable if it was written by the previous frame with the
   // same layout and the meaning this oracle expects.
@@ -1014,18 +1010,25 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
 
   // Classify props; a change of routing or layout rebuilds the shaders.
   std::vector<vtkProp*> routedProps, otherProps;
-  std::map<vtkProp*, bool> routed;
+  // Props seen for the first time get fresh shaders anyway; only a prop
+  // whose routing changed needs the rebuild (renderers sharing this pass
+  // each classify their own props without invalidating the others').
+  bool rebuild = false;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = s->GetPropArray()[i];
-    bool r = singlePass && IsRoutable(prop);
-    routed[prop] = r;
-    (r ? routedProps : otherProps).push_back(prop);
+    const bool routed = singlePass && IsRoutable(prop);
+    auto inserted = in.RoutedProps.insert({ prop, routed });
+    if (!inserted.second && inserted.first->second != routed)
+    {
+      inserted.first->second = routed;
+      rebuild = true;
+    }
+    (routed ? routedProps : otherProps).push_back(prop);
   }
   const int geometryShaderSlots = singlePass ? slots : 0;
-  if (routed != in.RoutedProps || geometryShaderSlots != in.GeometryShaderSlots)
+  if (rebuild || geometryShaderSlots != in.GeometryShaderSlots)
   {
-    in.RoutedProps = routed;
     in.GeometryShaderSlots = geometryShaderSlots;
     in.ShaderStageTime.Modified();
   }

@@ -11,6 +11,9 @@
 
 #if DEEPGI_HEADLESS_HAVE_X11
 #include <X11/Xlib.h>
+
+#include <chrono>
+#include <thread>
 #endif
 
 // vtkRenderWindow::New() must find VTK's OpenGL2 implementation even when the
@@ -27,6 +30,30 @@ vtkStandardNewMacro(vtkDeepGIRenderWindowFactory);
 
 namespace
 {
+#if DEEPGI_HEADLESS_HAVE_X11
+// One X connection for every window this factory makes, opened with a few
+// retries: a busy Xvfb occasionally drops a connection during its handshake
+// (seen as a few percent of XOpenDisplay calls failing under load), and
+// vtkXOpenGLRenderWindow aborts the process when its own XOpenDisplay fails.
+// Windows given a display do not close it; it lives as long as the process.
+Display* SharedDisplay()
+{
+  static Display* display = nullptr;
+  if (!display)
+  {
+    for (int attempt = 0; attempt < 20 && !display; ++attempt)
+    {
+      display = XOpenDisplay(nullptr);
+      if (!display)
+      {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      }
+    }
+  }
+  return display;
+}
+#endif
+
 // The static methods have no `this`: report through a temporary instance so
 // the message names the class like any vtkErrorMacro.
 void ReportError(const std::string& message)
@@ -88,13 +115,7 @@ bool vtkDeepGIRenderWindowFactory::IsX11Available()
   {
     return false;
   }
-  Display* dpy = XOpenDisplay(nullptr);
-  if (!dpy)
-  {
-    return false;
-  }
-  XCloseDisplay(dpy);
-  return true;
+  return SharedDisplay() != nullptr;
 #else
   return false;
 #endif
@@ -156,6 +177,9 @@ vtkRenderWindow* vtkDeepGIRenderWindowFactory::NewRenderWindow(int backend)
       }
       return nullptr;
     }
+#if DEEPGI_HEADLESS_HAVE_X11
+    rw->SetDisplayId(SharedDisplay());
+#endif
     rw->SetOffScreenRendering(1);
     return rw;
   }

@@ -6,6 +6,7 @@
 #include "vtkActor.h"
 #include "vtkDataArray.h"
 #include "vtkDeepGBufferPass.h"
+#include "vtkDeepGIRenderWindowFactory.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -17,6 +18,7 @@
 #include "vtkWindowToImageFilter.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <string>
 
@@ -35,11 +37,17 @@ inline std::string Argument(int argc, char* argv[], const char* flag, const char
   return fallback;
 }
 
-// An offscreen window without multisampling, so images are deterministic.
+// An offscreen window without multisampling, so images are deterministic:
+// X11 when a display answers, else the project's EGL window.
 inline vtkSmartPointer<vtkRenderWindow> MakeWindow(int width, int height)
 {
-  auto window = vtkSmartPointer<vtkRenderWindow>::New();
-  window->SetOffScreenRendering(1);
+  auto window = vtkSmartPointer<vtkRenderWindow>::Take(
+    vtkDeepGIRenderWindowFactory::NewRenderWindow(vtkDeepGIRenderWindowFactory::BACKEND_AUTO));
+  if (!window)
+  {
+    std::printf("no render window could be created\n");
+    std::exit(EXIT_FAILURE);
+  }
   window->SetMultiSamples(0);
   window->SetSize(width, height);
   return window;

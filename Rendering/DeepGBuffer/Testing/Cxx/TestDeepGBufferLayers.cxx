@@ -85,8 +85,17 @@ bool CompareWithPlainVTK(const SceneBuilder& build, const char* name)
   std::printf("%s: layer 0 vs plain VTK: max colour difference %g (of 255) in %ld channels, "
               "max depth difference %g\n",
     name, maxColor, colorDiffs, maxDepth);
-  // Radiance is stored as RGBA16F (11-bit mantissa): at most one 8-bit level.
-  return maxColor <= 1.0 && maxDepth <= 1e-7;
+  // Radiance is stored as RGBA16F (11-bit mantissa): at most one 8-bit
+  // level. Depth goes through a 32-bit float texture into the window's
+  // 24-bit depth buffer, and the geometry shader path interpolates it in a
+  // different order: a few 24-bit levels (2^-24 = 6e-8 each).
+  const double depthTolerance = 4.0 / (1 << 24);
+  if (maxColor > 1.0 || maxDepth > depthTolerance)
+  {
+    std::printf("%s: FAILED: layer 0 is not what VTK draws\n", name);
+    return false;
+  }
+  return true;
 }
 
 bool CheckScene(const SceneBuilder& build, const char* name, double dz)

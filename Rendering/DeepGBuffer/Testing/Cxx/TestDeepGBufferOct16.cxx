@@ -6,6 +6,7 @@
 // give a worst case of 0.954 degrees over 2M directions; we require
 // max < 1.0 degree and mean < 0.35 degree.
 
+#include "DeepGBufferTestUtilities.h"
 #include "vtkDeepGBufferPass.h"
 
 #include "vtkDeepGBufferCommon.h" // the GLSL under test
@@ -112,9 +113,7 @@ bool TestGlslEncoder()
   const int size = 512;
   const int n = size * size;
   vtkNew<vtkRenderer> renderer;
-  vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::New();
-  window->SetOffScreenRendering(1);
-  window->SetSize(16, 16);
+  vtkSmartPointer<vtkRenderWindow> window = DeepGBufferTest::MakeWindow(16, 16);
   window->AddRenderer(renderer);
   window->Render();
   vtkOpenGLRenderWindow* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);

@@ -11,14 +11,15 @@ import sys
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkImageData
-from vtkmodules.vtkRenderingCore import vtkRenderWindow, vtkRenderer, vtkWindowToImageFilter
+from vtkmodules.vtkRenderingCore import vtkRenderer, vtkWindowToImageFilter
 
 import vtkdeepgi
 
 
 def render(use_pass):
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
+    # X11 when a display answers (one shared connection), else EGL.
+    factory = vtkdeepgi.vtkDeepGIRenderWindowFactory
+    window = factory.NewRenderWindow(factory.BACKEND_AUTO)
     window.SetMultiSamples(0)
     window.SetSize(256, 192)
     renderer = vtkRenderer()
