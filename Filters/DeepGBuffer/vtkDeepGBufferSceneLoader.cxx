@@ -1,17 +1,18 @@
 #include "vtkDeepGBufferSceneLoader.h"
 
 #include "vtkActor.h"
-#include "vtkActorCollection.h"
 #include "vtkAlgorithm.h"
 #include "vtkAppendPolyData.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkCleanPolyData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkExecutive.h"
 #include "vtkFlyingEdges3D.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkImageReader2.h"
 #include "vtkIntArray.h"
@@ -20,17 +21,15 @@
 #include "vtkMetaImageReader.h"
 #include "vtkNew.h"
 #include "vtkNrrdReader.h"
-#include "vtkOBJImporter.h"
-#include "vtkOBJReader.h"
 #include "vtkObjectFactory.h"
 #include "vtkPLYReader.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkPolyDataReader.h"
 #include "vtkProperty.h"
-#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSTLReader.h"
 #include "vtkStringArray.h"
@@ -45,10 +44,16 @@
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
+#include <map>
+#include <set>
 #include <sstream>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 vtkStandardNewMacro(vtkDeepGBufferSceneLoader);
@@ -229,6 +234,168 @@ int NrrdScalarType(const std::string& type)
   }
   return -1;
 }
+
+// Reads the logical lines of an OBJ or MTL file: comments ('#' to the end of
+// the line) and surrounding white space removed, backslash continuations
+// joined. `lineNumber` is the number of the line's first physical line.
+class LogicalLineReader
+{
+public:
+  explicit LogicalLineReader(std::istream& in)
+    : In(in)
+  {
+  }
+  bool Next(std::string& line, int& lineNumber)
+  {
+    line.clear();
+    std::string physical;
+    bool any = false;
+    while (std::getline(this->In, physical))
+    {
+      ++this->Physical;
+      if (!any)
+      {
+        lineNumber = this->Physical;
+      }
+      any = true;
+      const size_t hash = physical.find('#');
+      if (hash != std::string::npos)
+      {
+        physical.erase(hash);
+      }
+      physical = Trim(physical);
+      if (!physical.empty() && physical.back() == '\\')
+      {
+        physical.pop_back();
+        line += physical + " ";
+        continue;
+      }
+      line += physical;
+      return true;
+    }
+    return any;
+  }
+
+private:
+  std::istream& In;
+  int Physical = 0;
+};
+
+// Splits `s` at white space.
+std::vector<std::string> Words(const std::string& s)
+{
+  std::vector<std::string> words;
+  std::istringstream in(s);
+  std::string w;
+  while (in >> w)
+  {
+    words.push_back(w);
+  }
+  return words;
+}
+
+// Parses a whole word as a number.
+bool ParseDouble(const std::string& word, double& value)
+{
+  if (word.empty())
+  {
+    return false;
+  }
+  char* end = nullptr;
+  value = std::strtod(word.c_str(), &end);
+  return end == word.c_str() + word.size();
+}
+
+bool ParseInteger(const std::string& word, long long& value)
+{
+  if (word.empty())
+  {
+    return false;
+  }
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtoll(word.c_str(), &end, 10);
+  return errno == 0 && end == word.c_str() + word.size();
+}
+
+// Resolves a 1-based OBJ index (negative: relative to the `count` elements
+// defined so far, -1 the last one) to a 0-based index. Returns -1 for 0,
+// malformed indices and relative ones before the first element. Positive
+// indices are not checked against `count` here (OBJ allows references to
+// elements defined further down), only against the final count.
+long long ResolveObjIndex(const std::string& word, long long count)
+{
+  long long i = 0;
+  if (!ParseInteger(word, i) || i == 0)
+  {
+    return -1;
+  }
+  if (i > 0)
+  {
+    return i - 1;
+  }
+  return count + i >= 0 ? count + i : -1;
+}
+
+// The diffuse colours (Kd) of the materials of an MTL file. Materials
+// without a usable Kd get none.
+bool ReadMaterialColors(const std::string& path, std::map<std::string, std::array<double, 3>>& kd,
+  std::set<std::string>& materials)
+{
+  vtksys::ifstream in(path.c_str());
+  if (!in)
+  {
+    return false;
+  }
+  LogicalLineReader reader(in);
+  std::string line, current;
+  int lineNumber = 0;
+  while (reader.Next(line, lineNumber))
+  {
+    const std::vector<std::string> words = Words(line);
+    if (words.empty())
+    {
+      continue;
+    }
+    if (words[0] == "newmtl")
+    {
+      current = Trim(line.substr(6));
+      materials.insert(current);
+    }
+    else if (words[0] == "Kd" && !current.empty())
+    {
+      // "Kd r g b", or "Kd r" for a grey; not "Kd spectral ..." or "Kd xyz ...".
+      double rgb[3] = { 0.0, 0.0, 0.0 };
+      bool ok = false;
+      if (words.size() == 4)
+      {
+        ok = ParseDouble(words[1], rgb[0]) && ParseDouble(words[2], rgb[1]) &&
+          ParseDouble(words[3], rgb[2]);
+      }
+      else if (words.size() == 2 && ParseDouble(words[1], rgb[0]))
+      {
+        rgb[1] = rgb[2] = rgb[0];
+        ok = true;
+      }
+      if (ok && std::isfinite(rgb[0]) && std::isfinite(rgb[1]) && std::isfinite(rgb[2]))
+      {
+        kd[current] = { rgb[0], rgb[1], rgb[2] };
+      }
+    }
+  }
+  return true;
+}
+
+// The faces of one material of an OBJ file, as 0-based indices into the
+// file's vertices and normals (-1: no normal).
+struct ObjGroup
+{
+  std::string Material;
+  std::vector<size_t> FaceStarts{ 0 }; // face f is corners FaceStarts[f] to FaceStarts[f + 1]
+  std::vector<int> FaceLines;
+  std::vector<long long> Vertices;
+  std::vector<long long> Normals;
+};
 } // anonymous namespace
 
 class vtkDeepGBufferSceneLoader::vtkInternals
@@ -379,27 +546,213 @@ bool vtkDeepGBufferSceneLoader::LoadMesh(const char* fileName)
 //------------------------------------------------------------------------------
 bool vtkDeepGBufferSceneLoader::LoadOBJ(const char* fileName)
 {
+  // The OBJ file is parsed here rather than by vtkOBJImporter, whose VTK 9.1
+  // parser resolves relative (negative) vertex indices against a
+  // function-static vertex count that is never reset: from the second OBJ
+  // file a process imports on, "f -4 -3 -2 -1" points past the vertices
+  // (out-of-bounds reads, garbage or empty parts). Neither the importer nor
+  // vtkOBJReader checks indices against the vertex count at all.
   const std::string path = fileName;
   const std::string dir = vtksys::SystemTools::GetFilenamePath(path);
   const std::string base = vtksys::SystemTools::GetFilenameName(path);
-  auto inDir = [&](const std::string& name) { return dir.empty() ? name : dir + "/" + name; };
+  auto inDir = [&](const std::string& name) {
+    return (dir.empty() || vtksys::SystemTools::FileIsFullPath(name)) ? name : dir + "/" + name;
+  };
 
-  // The MTL file: the OBJ's own mtllib (vtkOBJImporter ignores it), else the
-  // importer's defaults NAME.obj.mtl and NAME.mtl.
-  std::string mtl;
+  vtksys::ifstream in(path.c_str());
+  if (!in)
   {
-    vtksys::ifstream in(path.c_str());
-    std::string line;
-    while (mtl.empty() && std::getline(in, line))
+    vtkErrorMacro("Cannot open OBJ " << path);
+    return false;
+  }
+
+  // Geometry: vertices, normals and each material's faces, in the order the
+  // materials are first used (faces before any usemtl: material "").
+  std::vector<float> vertices; // x, y, z
+  std::vector<float> normals;  // x, y, z
+  std::vector<ObjGroup> groups;
+  std::map<std::string, size_t> groupOfMaterial;
+  size_t current = 0;
+  auto useMaterial = [&](const std::string& material) {
+    auto it = groupOfMaterial.find(material);
+    if (it == groupOfMaterial.end())
     {
-      const std::string t = Trim(line);
-      if (t.compare(0, 7, "mtllib ") == 0 || t.compare(0, 7, "mtllib\t") == 0)
+      it = groupOfMaterial.emplace(material, groups.size()).first;
+      groups.emplace_back();
+      groups.back().Material = material;
+    }
+    current = it->second;
+  };
+  useMaterial("");
+  std::vector<std::string> libraries;
+  long long malformedFaces = 0;
+  int firstMalformedLine = 0;
+  {
+    LogicalLineReader reader(in);
+    std::string line;
+    int lineNumber = 0;
+    std::vector<std::string> parts;
+    while (reader.Next(line, lineNumber))
+    {
+      const std::vector<std::string> words = Words(line);
+      if (words.empty())
       {
-        const std::string candidate = inDir(Trim(t.substr(7)));
-        if (IsRegularFile(candidate))
+        continue;
+      }
+      const std::string& command = words[0];
+      if (command == "v" || command == "vn")
+      {
+        // "v x y z [w | r g b]", "vn x y z".
+        double xyz[3];
+        if (words.size() < 4 || !ParseDouble(words[1], xyz[0]) ||
+          !ParseDouble(words[2], xyz[1]) || !ParseDouble(words[3], xyz[2]))
         {
-          mtl = candidate;
+          vtkErrorMacro("Cannot read OBJ " << path << ": malformed '" << command << "' at line "
+                                           << lineNumber);
+          return false;
         }
+        std::vector<float>& target = command == "v" ? vertices : normals;
+        target.insert(target.end(),
+          { static_cast<float>(xyz[0]), static_cast<float>(xyz[1]), static_cast<float>(xyz[2]) });
+      }
+      else if (command == "f")
+      {
+        // "f v v v ...", each corner v, v/t, v/t/n or v//n.
+        ObjGroup& group = groups[current];
+        const long long vertexCount = static_cast<long long>(vertices.size() / 3);
+        const long long normalCount = static_cast<long long>(normals.size() / 3);
+        bool ok = words.size() >= 4;
+        for (size_t w = 1; ok && w < words.size(); ++w)
+        {
+          parts.clear();
+          size_t start = 0;
+          for (size_t slash; (slash = words[w].find('/', start)) != std::string::npos;
+               start = slash + 1)
+          {
+            parts.push_back(words[w].substr(start, slash - start));
+          }
+          parts.push_back(words[w].substr(start));
+          const long long v = ResolveObjIndex(parts[0], vertexCount);
+          long long n = -1;
+          if (parts.size() > 3 || v < 0)
+          {
+            ok = false;
+          }
+          else if (parts.size() == 3 && !parts[2].empty())
+          {
+            // An unusable normal index costs the normal, not the face.
+            n = ResolveObjIndex(parts[2], normalCount);
+          }
+          group.Vertices.push_back(v);
+          group.Normals.push_back(n);
+        }
+        if (ok)
+        {
+          group.FaceStarts.push_back(group.Vertices.size());
+          group.FaceLines.push_back(lineNumber);
+        }
+        else
+        {
+          group.Vertices.resize(group.FaceStarts.back());
+          group.Normals.resize(group.FaceStarts.back());
+          firstMalformedLine = malformedFaces++ ? firstMalformedLine : lineNumber;
+        }
+      }
+      else if (command == "usemtl")
+      {
+        useMaterial(Trim(line.substr(6)));
+      }
+      else if (command == "mtllib")
+      {
+        libraries.push_back(Trim(line.substr(6)));
+      }
+      // vt, p, l, g, o, s and the rest play no part in the surfaces.
+    }
+  }
+
+  // Faces whose corners index vertices that the file does not define are
+  // skipped (positive indices may point forward, so this waits for the end).
+  const long long vertexCount = static_cast<long long>(vertices.size() / 3);
+  const long long normalCount = static_cast<long long>(normals.size() / 3);
+  long long outOfRangeFaces = 0;
+  int firstOutOfRangeLine = 0;
+  long long faceCount = 0;
+  for (ObjGroup& group : groups)
+  {
+    ObjGroup kept;
+    kept.Material = group.Material;
+    const size_t faces = group.FaceLines.size();
+    for (size_t f = 0; f < faces; ++f)
+    {
+      const size_t b = group.FaceStarts[f], e = group.FaceStarts[f + 1];
+      bool ok = true;
+      for (size_t c = b; c < e; ++c)
+      {
+        ok = ok && group.Vertices[c] < vertexCount;
+      }
+      if (!ok)
+      {
+        firstOutOfRangeLine = outOfRangeFaces++ ? firstOutOfRangeLine : group.FaceLines[f];
+        continue;
+      }
+      for (size_t c = b; c < e; ++c)
+      {
+        kept.Vertices.push_back(group.Vertices[c]);
+        kept.Normals.push_back(group.Normals[c] < normalCount ? group.Normals[c] : -1);
+      }
+      kept.FaceStarts.push_back(kept.Vertices.size());
+      kept.FaceLines.push_back(group.FaceLines[f]);
+    }
+    faceCount += static_cast<long long>(kept.FaceLines.size());
+    group = std::move(kept);
+  }
+  if (malformedFaces || outOfRangeFaces)
+  {
+    std::ostringstream message;
+    message << "OBJ " << path << ": skipped";
+    if (outOfRangeFaces)
+    {
+      message << " " << outOfRangeFaces << " face(s) with vertex indices outside the "
+              << vertexCount << " vertices (first at line " << firstOutOfRangeLine << ")";
+    }
+    if (malformedFaces)
+    {
+      message << (outOfRangeFaces ? " and" : "") << " " << malformedFaces
+              << " malformed face(s) (fewer than 3 corners, index 0, a relative index before "
+                 "the first vertex or not a number; first at line "
+              << firstMalformedLine << ")";
+    }
+    if (faceCount > 0)
+    {
+      vtkWarningMacro(<< message.str());
+    }
+    else
+    {
+      vtkErrorMacro(<< message.str() << ", leaving no faces");
+      return false;
+    }
+  }
+  if (faceCount == 0)
+  {
+    vtkErrorMacro("" << path << " has no polygons (empty mesh, or points/lines only)");
+    return false;
+  }
+
+  // Materials: the OBJ's own mtllib, else NAME.obj.mtl or NAME.mtl next to it.
+  std::string mtl;
+  for (const std::string& library : libraries)
+  {
+    std::vector<std::string> candidates = { library };
+    const std::vector<std::string> names = Words(library); // "mtllib a.mtl b.mtl"
+    if (names.size() > 1)
+    {
+      candidates.insert(candidates.end(), names.begin(), names.end());
+    }
+    for (const std::string& candidate : candidates)
+    {
+      if (mtl.empty() && IsRegularFile(inDir(candidate)))
+      {
+        mtl = inDir(candidate);
       }
     }
   }
@@ -415,84 +768,128 @@ bool vtkDeepGBufferSceneLoader::LoadOBJ(const char* fileName)
       }
     }
   }
-
+  std::map<std::string, std::array<double, 3>> kd;
+  std::set<std::string> materials;
+  if (!mtl.empty() && !ReadMaterialColors(mtl, kd, materials))
+  {
+    vtkWarningMacro("Cannot read the materials " << mtl << " of " << path);
+    mtl.clear();
+  }
   if (mtl.empty())
   {
-    // Geometry only.
-    vtkNew<vtkOBJReader> reader;
-    reader->SetFileName(fileName);
-    vtkNew<ErrorCollector> errors;
-    errors->Watch(reader);
-    errors->Watch(reader->GetExecutive());
-    reader->Update();
-    if (!errors->Messages.empty())
+    // Geometry only: one part in DefaultColor.
+    for (size_t g = 1; g < groups.size(); ++g)
     {
-      vtkErrorMacro("Cannot read OBJ " << path << ": " << errors->Messages);
-      return false;
+      ObjGroup& all = groups[0];
+      const size_t offset = all.Vertices.size();
+      for (size_t f = 1; f < groups[g].FaceStarts.size(); ++f)
+      {
+        all.FaceStarts.push_back(offset + groups[g].FaceStarts[f]);
+      }
+      all.FaceLines.insert(
+        all.FaceLines.end(), groups[g].FaceLines.begin(), groups[g].FaceLines.end());
+      all.Vertices.insert(all.Vertices.end(), groups[g].Vertices.begin(), groups[g].Vertices.end());
+      all.Normals.insert(all.Normals.end(), groups[g].Normals.begin(), groups[g].Normals.end());
     }
-    vtkSmartPointer<vtkPolyData> mesh = this->PrepareMesh(reader->GetOutput(), fileName);
-    return mesh && this->AddPart(mesh, base.c_str(), this->DefaultColor);
+    groups.resize(1);
   }
 
-  // With materials: the importer fills a renderer that is never rendered;
-  // only each actor's geometry and diffuse colour (Kd) are kept.
-  vtkNew<vtkRenderWindow> window;
-  vtkNew<vtkRenderer> renderer;
-  window->AddRenderer(renderer);
-  vtkNew<vtkOBJImporter> importer;
-  importer->SetFileName(fileName);
-  importer->SetFileNameMTL(mtl.c_str());
-  importer->SetTexturePath(dir.empty() ? "." : dir.c_str());
-  importer->SetRenderWindow(window);
-  vtkNew<ErrorCollector> errors;
-  errors->Watch(importer);
-  importer->Update();
-
+  // One part per material with faces. Points are the material's own vertices
+  // (vertex and normal pairs where every corner has a normal), never merged:
+  // coincident vertices and faces stay as they are in the file.
   std::vector<Part> parts;
-  vtkActorCollection* actors = renderer->GetActors();
-  actors->InitTraversal();
-  int index = 0;
-  for (vtkActor* actor = actors->GetNextActor(); actor; actor = actors->GetNextActor(), ++index)
+  std::vector<std::string> unknownMaterials;
+  for (const ObjGroup& group : groups)
   {
-    vtkPolyDataMapper* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
-    vtkPolyData* input = mapper ? mapper->GetInput() : nullptr;
-    if (!input || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+    if (group.FaceLines.empty())
     {
-      continue; // the importer's default part, unused
+      continue;
     }
-    // "data output 3 with material named leftWall texture file ..."
-    std::string name = base;
-    const std::string description = importer->GetOutputDescription(index);
-    const std::string key = "material named ";
-    const size_t start = description.find(key);
-    if (start != std::string::npos)
+    bool withNormals = true;
+    for (long long n : group.Normals)
     {
-      const size_t b = start + key.size();
-      const size_t e = description.find(" texture file", b);
-      name += ":" + description.substr(b, e == std::string::npos ? e : e - b);
+      const float* normal = n >= 0 ? &normals[3 * n] : nullptr;
+      withNormals = withNormals && normal && std::isfinite(normal[0]) &&
+        std::isfinite(normal[1]) && std::isfinite(normal[2]) &&
+        (normal[0] != 0.0f || normal[1] != 0.0f || normal[2] != 0.0f);
+      if (!withNormals)
+      {
+        break;
+      }
     }
-    vtkSmartPointer<vtkPolyData> mesh = this->PrepareMesh(input, (path + " " + name).c_str());
-    if (!mesh)
+    std::unordered_map<unsigned long long, vtkIdType> pointOf;
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkFloatArray> pointNormals;
+    pointNormals->SetName("Normals");
+    pointNormals->SetNumberOfComponents(3);
+    vtkNew<vtkCellArray> polys;
+    std::vector<vtkIdType> ids;
+    for (size_t f = 0; f + 1 < group.FaceStarts.size(); ++f)
     {
-      continue; // e.g. a part made of lines only; PrepareMesh reported it
+      ids.clear();
+      for (size_t c = group.FaceStarts[f]; c < group.FaceStarts[f + 1]; ++c)
+      {
+        const long long v = group.Vertices[c];
+        const long long n = withNormals ? group.Normals[c] : -1;
+        const unsigned long long key =
+          (static_cast<unsigned long long>(v) << 32) ^ static_cast<unsigned long long>(n + 1);
+        auto inserted = pointOf.emplace(key, points->GetNumberOfPoints());
+        if (inserted.second)
+        {
+          points->InsertNextPoint(&vertices[3 * v]);
+          if (withNormals)
+          {
+            double normal[3] = { normals[3 * n], normals[3 * n + 1], normals[3 * n + 2] };
+            vtkMath::Normalize(normal);
+            pointNormals->InsertNextTuple(normal);
+          }
+        }
+        ids.push_back(inserted.first->second);
+      }
+      polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
     }
+    vtkNew<vtkPolyData> input;
+    input->SetPoints(points);
+    input->SetPolys(polys);
+    if (withNormals)
+    {
+      input->GetPointData()->SetNormals(pointNormals);
+    }
+
     Part part;
-    part.Name = name;
-    actor->GetProperty()->GetDiffuseColor(part.Color);
-    part.PolyData = mesh;
-    parts.push_back(part);
+    part.Name = group.Material.empty() ? base : base + ":" + group.Material;
+    std::copy(this->DefaultColor, this->DefaultColor + 3, part.Color);
+    if (!mtl.empty() && !group.Material.empty())
+    {
+      auto color = kd.find(group.Material);
+      if (color != kd.end())
+      {
+        std::copy(color->second.begin(), color->second.end(), part.Color);
+      }
+      else if (!materials.count(group.Material))
+      {
+        unknownMaterials.push_back(group.Material);
+      }
+    }
+    part.PolyData = this->PrepareMesh(input, (path + " " + part.Name).c_str());
+    if (part.PolyData)
+    {
+      parts.push_back(part);
+    }
   }
   if (parts.empty())
   {
-    vtkErrorMacro("Cannot read OBJ " << path << " (materials " << mtl << "): "
-                                     << (errors->Messages.empty()
-                                            ? std::string("no surface triangles")
-                                            : errors->Messages));
-    return false;
+    return false; // PrepareMesh reported why
   }
-  if (!errors->Messages.empty())
+  if (!unknownMaterials.empty())
   {
-    vtkWarningMacro("OBJ " << path << " loaded with problems: " << errors->Messages);
+    std::string list;
+    for (const std::string& m : unknownMaterials)
+    {
+      list += (list.empty() ? "" : ", ") + m;
+    }
+    vtkWarningMacro("OBJ " << path << " uses materials missing from " << mtl << " (" << list
+                           << "); they get the default colour");
   }
   for (const Part& part : parts)
   {
@@ -510,10 +907,75 @@ vtkSmartPointer<vtkPolyData> vtkDeepGBufferSceneLoader::PrepareMesh(
     vtkErrorMacro("" << what << " has no polygons (empty mesh, or points/lines only)");
     return nullptr;
   }
+  // Only what is used below (points, polygons, strips, point normals), and
+  // only cells whose point ids exist: not every reader checks them, and
+  // the filters below would read out of bounds.
+  vtkPoints* inputPoints = input->GetPoints();
+  const vtkIdType numberOfPoints = inputPoints ? inputPoints->GetNumberOfPoints() : 0;
+  vtkIdType dropped = 0;
+  auto checkedCells = [&](vtkCellArray* cells) -> vtkSmartPointer<vtkCellArray> {
+    if (!cells || cells->GetNumberOfCells() == 0)
+    {
+      return nullptr;
+    }
+    auto valid = [numberOfPoints](vtkIdType n, const vtkIdType* ids) {
+      return std::all_of(
+        ids, ids + n, [numberOfPoints](vtkIdType id) { return id >= 0 && id < numberOfPoints; });
+    };
+    vtkIdType n;
+    const vtkIdType* ids;
+    vtkIdType bad = 0;
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      it->GetCurrentCell(n, ids);
+      bad += valid(n, ids) ? 0 : 1;
+    }
+    if (bad == 0)
+    {
+      return cells;
+    }
+    dropped += bad;
+    auto kept = vtkSmartPointer<vtkCellArray>::New();
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      it->GetCurrentCell(n, ids);
+      if (valid(n, ids))
+      {
+        kept->InsertNextCell(n, ids);
+      }
+    }
+    return kept->GetNumberOfCells() ? kept : nullptr;
+  };
+  vtkSmartPointer<vtkCellArray> polys = checkedCells(input->GetPolys());
+  vtkSmartPointer<vtkCellArray> strips = checkedCells(input->GetStrips());
+  if (!polys && !strips)
+  {
+    vtkErrorMacro("" << what << " has no polygons whose point ids are within its "
+                     << numberOfPoints << " points");
+    return nullptr;
+  }
+  if (dropped)
+  {
+    vtkWarningMacro("" << what << ": skipped " << dropped
+                       << " polygon(s) with point ids outside its " << numberOfPoints
+                       << " points");
+  }
+  vtkNew<vtkPolyData> checked;
+  checked->SetPoints(inputPoints);
+  checked->SetPolys(polys);
+  checked->SetStrips(strips);
+  vtkDataArray* inputNormals = input->GetPointData()->GetNormals();
+  if (inputNormals && inputNormals->GetNumberOfComponents() == 3 &&
+    inputNormals->GetNumberOfTuples() == numberOfPoints)
+  {
+    checked->GetPointData()->SetNormals(inputNormals);
+  }
+
   // Drop unused points without merging any (coincident duplicates stay, as
   // in the data), then triangles only.
   vtkNew<vtkCleanPolyData> clean;
-  clean->SetInputData(input);
+  clean->SetInputData(checked);
   clean->PointMergingOff();
   vtkNew<vtkTriangleFilter> triangles;
   triangles->SetInputConnection(clean->GetOutputPort());

@@ -10,14 +10,21 @@
  * Meshes (by extension, case-insensitive):
  * - .ply (vtkPLYReader), .stl (vtkSTLReader), .vtp (vtkXMLPolyDataReader),
  *   .vtk (vtkPolyDataReader; legacy polydata only);
- * - .obj: with its materials through vtkOBJImporter when an MTL file is
- *   found (the file's `mtllib`, else NAME.obj.mtl or NAME.mtl next to it),
- *   one part per material coloured with the material's Kd. The importer sets
- *   Ambient = 1 and Specular = 1 on its actors, which turns Cornell boxes
- *   black or washed out; only its geometry and Kd are kept here. Without an
- *   MTL file, vtkOBJReader reads the geometry in DefaultColor.
+ * - .obj: read by this class's own parser (VTK 9.1's vtkOBJImporter
+ *   resolves relative indices such as "f -4 -3 -2 -1" against a vertex count
+ *   left over from the previous OBJ file of the process, and neither it nor
+ *   vtkOBJReader checks indices). With an MTL file (the file's `mtllib`,
+ *   else NAME.obj.mtl or NAME.mtl next to it): one part per material, in the
+ *   order of first `usemtl`, coloured with the material's Kd (DefaultColor
+ *   for faces without a material, materials without Kd or missing from the
+ *   MTL file, with a warning for the latter); without one, a single part in
+ *   DefaultColor. Faces with vertex indices the file does not define are
+ *   skipped with a warning (an error if none is left); normals (`vn`) are
+ *   kept for parts where every corner has one. Coincident vertices and
+ *   faces stay as they are in the file.
  * Polygons and strips become triangles (vtkTriangleFilter); vertices, lines
- * and unused points are dropped; points are not merged. Meshes without point
+ * and unused points are dropped; points are not merged. Polygons and strips
+ * with point ids outside the mesh's points are dropped with a warning. Meshes without point
  * normals get them from vtkPolyDataNormals (splitting at FeatureAngle) when
  * ComputeNormals is on; normals stored in the file are kept.
  *

@@ -8,6 +8,7 @@
 #include "vtkActorCollection.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
@@ -26,8 +27,13 @@
 #include "vtkVolume16Reader.h"
 #include "vtkXMLPolyDataWriter.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <fstream>
 #include <iostream>
+#include <map>
+#include <sstream>
 #include <string>
 
 namespace
@@ -122,6 +128,82 @@ bool CheckMesh(vtkPolyData* pd, bool expectNormals, bool expectColors, const std
     }
   }
   return ok;
+}
+
+// Number of point ids of `pd`'s cells outside [0, number of points).
+vtkIdType CountBadPointIds(vtkPolyData* pd)
+{
+  vtkIdType bad = 0;
+  const vtkIdType numberOfPoints = pd->GetNumberOfPoints();
+  for (vtkCellArray* cells : { pd->GetVerts(), pd->GetLines(), pd->GetPolys(), pd->GetStrips() })
+  {
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      bad += std::count_if(
+        ids, ids + n, [=](vtkIdType id) { return id < 0 || id >= numberOfPoints; });
+    }
+  }
+  return bad;
+}
+
+// Number of triangles of `pd` that coincide exactly (same three corner
+// positions, in any order) with an earlier triangle of `pd`.
+int CountCoincidentTriangles(vtkPolyData* pd)
+{
+  std::map<std::array<double, 9>, int> seen;
+  int duplicates = 0;
+  auto it = vtk::TakeSmartPointer(pd->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    if (n != 3)
+    {
+      continue;
+    }
+    std::array<std::array<double, 3>, 3> corners;
+    for (int c = 0; c < 3; ++c)
+    {
+      pd->GetPoint(ids[c], corners[c].data());
+    }
+    std::sort(corners.begin(), corners.end());
+    std::array<double, 9> key;
+    for (int c = 0; c < 9; ++c)
+    {
+      key[c] = corners[c / 3][c % 3];
+    }
+    duplicates += seen[key]++ > 0 ? 1 : 0;
+  }
+  return duplicates;
+}
+
+// Triangles of an OBJ file by its text: each "f" line with k corners is a
+// fan of k - 2 triangles.
+vtkIdType CountObjTriangles(const std::string& path)
+{
+  std::ifstream in(path);
+  std::string line;
+  vtkIdType triangles = 0;
+  while (std::getline(in, line))
+  {
+    std::istringstream words(line);
+    std::string word;
+    if (words >> word && word == "f")
+    {
+      int corners = 0;
+      while (words >> word)
+      {
+        ++corners;
+      }
+      triangles += corners - 2;
+    }
+  }
+  return triangles;
 }
 
 void TestDemoScene()
@@ -326,6 +408,99 @@ void TestLoader(const std::string& data, const std::string& temp)
   vtkPolyData* scene = loader->GetScenePolyData();
   CheckMesh(scene, true, true, "Cornell scene polydata");
   CHECK(scene && scene->GetNumberOfPolys() == 36, "Cornell scene polydata has 36 triangles");
+
+  // Regression: VTK 9.1's vtkOBJImporter resolved "f -4 -3 -2 -1" against a
+  // vertex count that carried over from the previous OBJ file of the
+  // process, so from the second load on every part pointed past its points
+  // (out-of-bounds reads, then "no non-degenerate triangles"). Load the box
+  // three times (the first load above, a fresh loader, the same one
+  // cleared): each time every point id is in range, every part has
+  // triangles, 36 in all as the file's 18 quads make, and the two faces the
+  // file stores twice (its "bottom face" lines repeat a side face of each
+  // block) are kept, exactly coincident.
+  const std::string cornell = data + "/scenes/cornell-original/CornellBox-Original.obj";
+  CHECK(CountObjTriangles(cornell) == 36,
+    "CornellBox-Original.obj's text has " << CountObjTriangles(cornell) << " triangles");
+  vtkNew<vtkDeepGBufferSceneLoader> again;
+  again->AddObserver(vtkCommand::ErrorEvent, errors);
+  CHECK(again->Load(cornell.c_str()), "a second CornellBox-Original.obj load succeeds");
+  loader->Clear();
+  CHECK(loader->Load(cornell.c_str()), "a third CornellBox-Original.obj load succeeds");
+  for (vtkDeepGBufferSceneLoader* l : { again.Get(), loader.Get() })
+  {
+    CHECK(l->GetNumberOfParts() == 8, "reloaded Cornell box has " << l->GetNumberOfParts()
+                                                                   << " parts, expected 8");
+    CHECK(l->GetNumberOfTriangles() == CountObjTriangles(cornell),
+      "reloaded Cornell box has " << l->GetNumberOfTriangles() << " triangles, expected 36");
+    int coincident = 0;
+    for (int i = 0; i < l->GetNumberOfParts(); ++i)
+    {
+      vtkPolyData* part = l->GetPartPolyData(i);
+      const std::string name = l->GetPartName(i);
+      CHECK(part && part->GetNumberOfPolys() > 0, name << " has no triangles");
+      if (!part)
+      {
+        continue;
+      }
+      CHECK(CountBadPointIds(part) == 0,
+        name << " has " << CountBadPointIds(part) << " point ids outside its "
+             << part->GetNumberOfPoints() << " points");
+      CheckMesh(part, true, false, "reloaded " + name);
+      const int duplicates = CountCoincidentTriangles(part);
+      const bool block = name.find("shortBox") != std::string::npos ||
+        name.find("tallBox") != std::string::npos;
+      CHECK(duplicates == (block ? 2 : 0),
+        name << " has " << duplicates << " coincident duplicate triangles, expected "
+             << (block ? 2 : 0) << " (one quad stored twice per block)");
+      coincident += duplicates;
+    }
+    CHECK(coincident == 4, "the Cornell box keeps its 2 duplicate quads (" << coincident
+                                                                           << " triangles)");
+    vtkPolyData* all = l->GetScenePolyData();
+    CHECK(all && CountBadPointIds(all) == 0 && all->GetNumberOfPolys() == 36 &&
+        CountCoincidentTriangles(all) == 4,
+      "reloaded Cornell scene polydata: 36 triangles, point ids in range, 4 duplicates");
+  }
+
+  // Faces with vertex indices the file does not define are skipped with a
+  // warning (never read out of bounds); a file left without faces fails
+  // with one error. Forward references and relative indices are valid.
+  {
+    const std::string bad = temp + "/TestDeepGBufferDemoScene-bad-indices.obj";
+    {
+      std::ofstream out(bad);
+      out << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\n"
+             "f 1 2 3\n"          // good
+             "f 1 3 9\n"          // vertex 9 does not exist
+             "f -1 -2 -7\n"       // -7: before the first vertex
+             "f 0 1 2\n"          // 0 is no index
+             "f -4//1 -3//1 -2//1 -1//1\n" // good quad, relative indices
+             "f 1 2 5//3\n"       // forward reference; normal 3 does not exist
+             "v 0 0 1\n";
+    }
+    vtkNew<vtkDeepGBufferSceneLoader> l;
+    vtkNew<ErrorCounter> badErrors, badWarnings;
+    l->AddObserver(vtkCommand::ErrorEvent, badErrors);
+    l->AddObserver(vtkCommand::WarningEvent, badWarnings);
+    CHECK(l->Load(bad.c_str()), "an OBJ with some bad indices loads");
+    CHECK(badErrors->Count == 0 && badWarnings->Count == 1,
+      "bad indices give one warning (" << badWarnings->Count << ") and no error ("
+                                       << badErrors->Count << ")");
+    CHECK(l->GetNumberOfTriangles() == 4,
+      "the 3 good faces give 4 triangles, got " << l->GetNumberOfTriangles());
+    CHECK(l->GetNumberOfParts() == 1 && CountBadPointIds(l->GetPartPolyData(0)) == 0,
+      "point ids in range after skipping bad faces");
+
+    const std::string none = temp + "/TestDeepGBufferDemoScene-no-good-faces.obj";
+    {
+      std::ofstream out(none);
+      out << "v 0 0 0\nv 1 0 0\nf 1 2 3\nf -1 -2 -3\n";
+    }
+    const int before = badErrors->Count;
+    CHECK(!l->Load(none.c_str()) && badErrors->Count == before + 1,
+      "an OBJ without a single valid face is rejected with one error");
+    CHECK(l->GetNumberOfParts() == 1, "the failed load adds nothing");
+  }
 
   // headsq at 500 (skin): 57,698 triangles (MANIFEST.md), by the directory,
   // the .nhdr and the slice prefix.
