@@ -444,7 +444,7 @@ int main(int argc, char* argv[])
   }
   std::cout << std::fixed << std::setprecision(2) << "  " << o.Frames << " frame(s), "
             << 1000.0 * totalSeconds / o.Frames << " ms per frame (includes first-frame setup)"
-            << std::defaultfloat << "\n";
+            << std::defaultfloat << std::setprecision(6) << "\n";
   std::cout << "  effective: " << pass->GetEffectiveNumberOfLayers() << " layers, dz "
             << pass->GetEffectiveMinimumSeparation() << ", oracle "
             << vtkDeepGBufferPass::GetOracleAsString(pass->GetEffectiveOracle()) << ", "

@@ -1098,10 +1098,10 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
 
   // Paper Listing 1: one submission per layer, each tested against the
   // layer before it in this frame, for whatever the single pass did not draw.
-  const std::vector<vtkProp*>& peeledRouted = routedDone ? std::vector<vtkProp*>() : routedProps;
+  const bool peelRouted = !routedDone && !routedProps.empty();
   for (int j = 0; j < layers; ++j)
   {
-    if (peeledRouted.empty() && otherProps.empty())
+    if (!peelRouted && otherProps.empty())
     {
       break;
     }
@@ -1111,12 +1111,12 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
       CopyDistanceLayer(state, j - 1, j - 1);
     }
     in.TestMode = j > 0 ? TEST_SAME_PIXEL : TEST_NONE;
-    if (!peeledRouted.empty())
+    if (peelRouted)
     {
       BindTarget(ostate, state.LayeredFramebuffer);
       in.EmitMask = (1 << j) | (j == 0 ? allOracleMask : 0);
       in.TargetLayer = 0;
-      draw(peeledRouted);
+      draw(routedProps);
     }
     if (!otherProps.empty())
     {

@@ -171,18 +171,20 @@ public:
   vtkGetMacro(EffectiveNumberOfLayers, int);
 
   /// The oracle used by the last frame for its single-pass props; DEPTH_PEEL
-  /// when the frame had no history (first frame, resize).
+  /// when the frame had no history (first frame, resize) or one layer.
   vtkGetMacro(EffectiveOracle, int);
 
-  /// Number of geometry submissions of the opaque props in the last frame
-  /// (1 for the single-pass oracles, k for DEPTH_PEEL).
+  /// Number of geometry submissions of the opaque props in the last frame:
+  /// 1 for the single-pass oracles, k for DEPTH_PEEL, 1 + k when some props
+  /// also take the per-layer path.
   vtkGetMacro(LastGeometryPassCount, int);
 
   ///@{
   /**
    * Debug display: which quantity and which layer the pass shows on screen.
    * Default RADIANCE of layer 0, i.e. the normal image. DEPTH is shown as
-   * distance normalised to the layer's range, NORMAL as n * 0.5 + 0.5.
+   * distance normalised to the camera's clipping range (near black, far
+   * white), NORMAL as n * 0.5 + 0.5.
    * Empty pixels keep the renderer's background.
    */
   vtkSetClampMacro(DisplayQuantity, int, RADIANCE, DEPTH);

@@ -3,7 +3,8 @@
 // single-pass oracle is compared with DEPTH_PEEL's layer 1 for the same
 // frame (for DELAY: the previous frame, whose scene it shows). The test
 // prints, per oracle, the fraction of layer-1 pixels that differ and the
-// share of those lying within 2 pixels of a layer-0 silhouette. It requires:
+// share of those lying within SilhouetteRadius (4) pixels of a layer-0
+// silhouette. It requires:
 // - DELAY: no pixel differs (it is exact, at one frame of latency), except
 //   rounding ties: a surface within 1e-5 (relative) of the threshold d0 + dz,
 //   which the geometry-shader path and the peeling path may round apart;

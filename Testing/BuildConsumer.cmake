@@ -1,0 +1,15 @@
+# Configures, builds and runs the consumer project (see CMakeLists.txt).
+file(REMOVE_RECURSE "${BINARY}")
+execute_process(COMMAND "${CMAKE_COMMAND}" -S "${SOURCE}" -B "${BINARY}" -G "${GENERATOR}"
+  "-DDeepGI_DIR=${DEEPGI_DIR}" RESULT_VARIABLE result)
+if (result)
+  message(FATAL_ERROR "configuring the consumer failed")
+endif ()
+execute_process(COMMAND "${CMAKE_COMMAND}" --build "${BINARY}" RESULT_VARIABLE result)
+if (result)
+  message(FATAL_ERROR "building the consumer failed")
+endif ()
+execute_process(COMMAND "${BINARY}/deepgi-consumer" RESULT_VARIABLE result)
+if (result)
+  message(FATAL_ERROR "the consumer failed")
+endif ()
