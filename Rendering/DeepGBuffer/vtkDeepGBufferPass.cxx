@@ -244,6 +244,7 @@ public:
     return it != this->RoutedProps.end() && it->second;
   }
   int GeometryShaderSlots = 0;
+  int GeometryShaderLayers = 0;
   vtkTimeStamp ShaderStageTime;
 
   // Capabilities of the current context.
@@ -488,6 +489,8 @@ bool vtkDeepGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
       gs, "DEEP_GBUFFER_MAX_VERTICES", std::to_string(3 * in.GeometryShaderSlots));
     vtkShaderProgram::Substitute(
       gs, "DEEP_GBUFFER_LAYER_SLOTS", std::to_string(in.GeometryShaderSlots));
+    vtkShaderProgram::Substitute(
+      gs, "DEEP_GBUFFER_DISPLAYED_LAYERS", std::to_string(in.GeometryShaderLayers));
     geometryShader = gs;
   }
 
@@ -1027,9 +1030,11 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
     (routed ? routedProps : otherProps).push_back(prop);
   }
   const int geometryShaderSlots = singlePass ? slots : 0;
-  if (rebuild || geometryShaderSlots != in.GeometryShaderSlots)
+  if (rebuild || geometryShaderSlots != in.GeometryShaderSlots ||
+    layers != in.GeometryShaderLayers)
   {
     in.GeometryShaderSlots = geometryShaderSlots;
+    in.GeometryShaderLayers = layers;
     in.ShaderStageTime.Modified();
   }
 
