@@ -160,6 +160,9 @@ struct vtkDeepGBufferRendererState
   bool HasPreviousCamera = false;
   Matrix View = Identity(), Projection = Identity();
   Matrix PreviousView = Identity(), PreviousProjection = Identity();
+  // The camera the displayed layers were rasterised with: the current one,
+  // or the previous one for DELAY.
+  Matrix LayerView = Identity(), LayerProjection = Identity();
 
   struct PropHistory
   {
@@ -1173,6 +1176,8 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
   }
 
   state.RenderedLayers = layers;
+  state.LayerView = oracle == DELAY ? in.OtherView : state.View;
+  state.LayerProjection = oracle == DELAY ? in.OtherProjection : state.Projection;
   state.MinimumSeparation = dz;
   state.Oracle = routedDone ? oracle : DEPTH_PEEL;
   this->EffectiveMinimumSeparation = dz;
@@ -1514,6 +1519,19 @@ bool vtkDeepGBufferPass::CaptureLayers(vtkImageData* output, vtkRenderer* render
   output->GetFieldData()->AddArray(separation);
   output->GetFieldData()->AddArray(layerCount);
   output->GetFieldData()->AddArray(oracleName);
+  // The camera of the frame, so that positions can be reconstructed in world
+  // space: view (world to camera) and projection (camera to clip, z in
+  // [-1, 1]) matrices, row-major as vtkMatrix4x4 stores them. Pixel (i, j)
+  // has its centre at NDC ((i + 0.5) / width * 2 - 1, (j + 0.5) / height * 2 - 1).
+  for (auto matrix : { std::make_pair("ViewMatrix", &state->LayerView),
+         std::make_pair("ProjectionMatrix", &state->LayerProjection) })
+  {
+    vtkNew<vtkDoubleArray> values;
+    values->SetName(matrix.first);
+    values->SetNumberOfComponents(16);
+    values->InsertNextTuple(matrix.second->data());
+    output->GetFieldData()->AddArray(values);
+  }
   vtkOpenGLCheckErrorMacro("failed after capturing the deep G-buffer");
   return true;
 }

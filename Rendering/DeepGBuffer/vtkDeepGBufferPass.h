@@ -201,7 +201,10 @@ public:
    * float), "Normal_j" (decoded camera-space normal, float), "Depth_j"
    * (camera-space distance, float, 0 where empty) and "Valid_j" (unsigned
    * char, 1 where layer j has a surface). Field data "MinimumSeparation",
-   * "NumberOfLayers" and "Oracle" describe the frame. The render window's
+   * "NumberOfLayers" and "Oracle" describe the frame; "ViewMatrix" and
+   * "ProjectionMatrix" (16 components, row-major) are its camera, so that
+   * pixel (i, j) at NDC ((i + 0.5) / w * 2 - 1, (j + 0.5) / h * 2 - 1) and
+   * its depth give a world-space position. The render window's
    * context must be current (it is right after Render()). Returns false with
    * an error when there is nothing to capture.
    */
