@@ -1,0 +1,559 @@
+#include "vtkDeepGIReferenceObscurance.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <array>
+#include <cfloat>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkDeepGIReferenceObscurance);
+
+namespace
+{
+// splitmix64 finaliser: a bijective 64-bit mix.
+inline std::uint64_t Mix64(std::uint64_t z)
+{
+  z += 0x9e3779b97f4a7c15ULL;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+void EmbreeError(void*, RTCError code, const char* message)
+{
+  vtkGenericWarningMacro(
+    "Embree error " << static_cast<int>(code) << ": " << (message ? message : ""));
+}
+
+// Orthonormal basis (t, b) around unit n (Duff et al. 2017).
+void Basis(const double n[3], double t[3], double b[3])
+{
+  const double sign = std::copysign(1.0, n[2]);
+  const double a = -1.0 / (sign + n[2]);
+  const double c = n[0] * n[1] * a;
+  t[0] = 1.0 + sign * n[0] * n[0] * a;
+  t[1] = sign * c;
+  t[2] = -sign * n[0];
+  b[0] = c;
+  b[1] = sign + n[1] * n[1] * a;
+  b[2] = -n[1];
+}
+}
+
+struct vtkDeepGIReferenceObscurance::Internals
+{
+  RTCDevice Device = nullptr;
+  RTCScene Scene = nullptr;
+  vtkPolyData* BuiltFor = nullptr;
+  vtkMTimeType BuiltTime = 0;
+  std::vector<vtkIdType> TriangleToCell;
+  double Centre[3] = { 0, 0, 0 };
+  double Diagonal = 0.0;
+
+  void Release()
+  {
+    if (this->Scene)
+    {
+      rtcReleaseScene(this->Scene);
+      this->Scene = nullptr;
+    }
+    this->BuiltFor = nullptr;
+    this->TriangleToCell.clear();
+  }
+  ~Internals()
+  {
+    this->Release();
+    if (this->Device)
+    {
+      rtcReleaseDevice(this->Device);
+    }
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkDeepGIReferenceObscurance::vtkDeepGIReferenceObscurance()
+  : Radius(1.0)
+  , Bias(0.0)
+  , Epsilon(0.0)
+  , SamplesPerPixel(256)
+  , Seed(0)
+  , Layer(0)
+  , RelativeOffset(1e-5)
+  , MeanStandardError(0.0)
+  , MaximumStandardError(0.0)
+  , NumberOfValidPixels(0)
+  , NumberOfRays(0)
+  , ComputeTime(0.0)
+  , Output(vtkSmartPointer<vtkImageData>::New())
+  , Internal(new Internals)
+{
+}
+
+vtkDeepGIReferenceObscurance::~vtkDeepGIReferenceObscurance() = default;
+
+//------------------------------------------------------------------------------
+void vtkDeepGIReferenceObscurance::SetScene(vtkPolyData* scene)
+{
+  if (this->Scene != scene)
+  {
+    this->Scene = scene;
+    this->Modified();
+  }
+}
+
+vtkPolyData* vtkDeepGIReferenceObscurance::GetScene()
+{
+  return this->Scene;
+}
+
+vtkImageData* vtkDeepGIReferenceObscurance::GetOutput()
+{
+  return this->Output;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGIReferenceObscurance::BuildScene()
+{
+  Internals& in = *this->Internal;
+  if (in.Scene && in.BuiltFor == this->Scene.Get() && in.BuiltTime >= this->Scene->GetMTime())
+  {
+    return true;
+  }
+  in.Release();
+  if (!in.Device)
+  {
+    in.Device = rtcNewDevice(nullptr);
+    if (!in.Device)
+    {
+      vtkErrorMacro("Cannot create an Embree device.");
+      return false;
+    }
+    rtcSetDeviceErrorFunction(in.Device, EmbreeError, nullptr);
+  }
+  vtkPoints* points = this->Scene->GetPoints();
+  vtkCellArray* polys = this->Scene->GetPolys();
+  if (!points || !polys || polys->GetNumberOfCells() == 0)
+  {
+    vtkErrorMacro("The scene has no polygons.");
+    return false;
+  }
+  double bounds[6];
+  points->GetBounds(bounds);
+  for (int c = 0; c < 3; ++c)
+  {
+    in.Centre[c] = 0.5 * (bounds[2 * c] + bounds[2 * c + 1]);
+  }
+  in.Diagonal = std::sqrt(vtkMath::Distance2BetweenPoints(
+    std::array<double, 3>{ bounds[0], bounds[2], bounds[4] }.data(),
+    std::array<double, 3>{ bounds[1], bounds[3], bounds[5] }.data()));
+
+  // Fan-triangulate the polygons; cell ids follow the polydata's cell order
+  // (verts and lines come first there).
+  std::vector<unsigned int> indices;
+  const vtkIdType cellOffset =
+    this->Scene->GetNumberOfVerts() + this->Scene->GetNumberOfLines();
+  auto iter = vtk::TakeSmartPointer(polys->NewIterator());
+  vtkIdType cell = 0;
+  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell(), ++cell)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    iter->GetCurrentCell(npts, pts);
+    for (vtkIdType k = 1; k + 1 < npts; ++k)
+    {
+      indices.push_back(static_cast<unsigned int>(pts[0]));
+      indices.push_back(static_cast<unsigned int>(pts[k]));
+      indices.push_back(static_cast<unsigned int>(pts[k + 1]));
+      in.TriangleToCell.push_back(cellOffset + cell);
+    }
+  }
+  if (indices.empty())
+  {
+    vtkErrorMacro("The scene has no polygons with three or more points.");
+    return false;
+  }
+  const vtkIdType npoints = points->GetNumberOfPoints();
+  in.Scene = rtcNewScene(in.Device);
+  rtcSetSceneBuildQuality(in.Scene, RTC_BUILD_QUALITY_HIGH);
+  RTCGeometry geometry = rtcNewGeometry(in.Device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  float* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry,
+    RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), npoints));
+  unsigned int* triangles = static_cast<unsigned int*>(rtcSetNewGeometryBuffer(geometry,
+    RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned int), indices.size() / 3));
+  if (!vertices || !triangles)
+  {
+    rtcReleaseGeometry(geometry);
+    vtkErrorMacro("Embree could not allocate the scene buffers.");
+    in.Release();
+    return false;
+  }
+  for (vtkIdType p = 0; p < npoints; ++p)
+  {
+    double x[3];
+    points->GetPoint(p, x);
+    for (int c = 0; c < 3; ++c)
+    {
+      vertices[3 * p + c] = static_cast<float>(x[c] - in.Centre[c]);
+    }
+  }
+  std::copy(indices.begin(), indices.end(), triangles);
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(in.Scene, geometry);
+  rtcReleaseGeometry(geometry);
+  rtcCommitScene(in.Scene);
+  in.BuiltFor = this->Scene.Get();
+  in.BuiltTime = this->Scene->GetMTime();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGIReferenceObscurance::TraceRay(
+  const double origin[3], const double direction[3], double tmax, HitRecord& hit) const
+{
+  const Internals& in = *this->Internal;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh;
+  rh.ray.org_x = static_cast<float>(origin[0] - in.Centre[0]);
+  rh.ray.org_y = static_cast<float>(origin[1] - in.Centre[1]);
+  rh.ray.org_z = static_cast<float>(origin[2] - in.Centre[2]);
+  rh.ray.dir_x = static_cast<float>(direction[0]);
+  rh.ray.dir_y = static_cast<float>(direction[1]);
+  rh.ray.dir_z = static_cast<float>(direction[2]);
+  rh.ray.tnear = 0.0f;
+  rh.ray.tfar = static_cast<float>(std::min(tmax, static_cast<double>(FLT_MAX)));
+  rh.ray.time = 0.0f;
+  rh.ray.mask = 0xFFFFFFFFu;
+  rh.ray.id = 0;
+  rh.ray.flags = 0;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(in.Scene, &context, &rh);
+  hit.Hit = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+  if (!hit.Hit)
+  {
+    hit.Distance = std::numeric_limits<double>::infinity();
+    hit.Cell = -1;
+    hit.Normal[0] = hit.Normal[1] = hit.Normal[2] = 0.0;
+    return false;
+  }
+  hit.Distance = rh.ray.tfar;
+  hit.Cell = in.TriangleToCell[rh.hit.primID];
+  hit.Normal[0] = rh.hit.Ng_x;
+  hit.Normal[1] = rh.hit.Ng_y;
+  hit.Normal[2] = rh.hit.Ng_z;
+  vtkMath::Normalize(hit.Normal);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+double vtkDeepGIReferenceObscurance::Random(vtkIdType pixel, int sample, int dimension) const
+{
+  std::uint64_t h = Mix64(static_cast<std::uint64_t>(this->Seed) ^ 0x5851f42d4c957f2dULL);
+  h = Mix64(h ^ static_cast<std::uint64_t>(pixel));
+  h = Mix64(h ^ ((static_cast<std::uint64_t>(static_cast<std::uint32_t>(sample)) << 8) |
+                  static_cast<std::uint64_t>(dimension & 0xff)));
+  return static_cast<double>(h >> 11) * (1.0 / 9007199254740992.0);
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGIReferenceObscurance::EvaluateSample(const SurfacePoint& x,
+  const double direction[3], const HitRecord& hit, int, double* values) const
+{
+  values[0] = 0.0;
+  if (!hit.Hit || hit.Distance >= this->Radius)
+  {
+    return;
+  }
+  const double cosine = vtkMath::Dot(direction, x.Normal);
+  if (cosine <= 0.0)
+  {
+    return;
+  }
+  // v = Y - X, measured from the shading point (not the offset origin).
+  double v[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    v[c] = x.Origin[c] + hit.Distance * direction[c] - x.Position[c];
+  }
+  const double vv = vtkMath::Dot(v, v);
+  const double falloff = 1.0 - vv / (this->Radius * this->Radius);
+  if (falloff <= 0.0)
+  {
+    return;
+  }
+  const double denominator = std::sqrt(vv + this->Epsilon);
+  double geometric = 1.0; // (v.n - beta)/sqrt(v.v + eps) divided by cos
+  if (this->Bias > 0.0 || this->Epsilon > 0.0)
+  {
+    geometric = denominator > 0.0
+      ? std::max(0.0, (vtkMath::Dot(v, x.Normal) - this->Bias) / denominator) / cosine
+      : 0.0;
+  }
+  values[0] = falloff * std::min(1.0, geometric);
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGIReferenceObscurance::AllocateOutput(vtkImageData* output, vtkIdType pixels)
+{
+  const char* names[] = { "AmbientVisibility", "Obscurance", "StandardError" };
+  for (const char* name : names)
+  {
+    vtkNew<vtkFloatArray> array;
+    array->SetName(name);
+    array->SetNumberOfTuples(pixels);
+    output->GetPointData()->AddArray(array);
+  }
+}
+
+void vtkDeepGIReferenceObscurance::FinishPixel(
+  vtkImageData* output, vtkIdType pixel, const double* mean, const double* standardError)
+{
+  vtkPointData* pd = output->GetPointData();
+  auto av = vtkFloatArray::SafeDownCast(pd->GetArray("AmbientVisibility"));
+  auto ao = vtkFloatArray::SafeDownCast(pd->GetArray("Obscurance"));
+  auto se = vtkFloatArray::SafeDownCast(pd->GetArray("StandardError"));
+  if (!mean)
+  {
+    av->SetValue(pixel, -1.0f);
+    ao->SetValue(pixel, -1.0f);
+    se->SetValue(pixel, 0.0f);
+    return;
+  }
+  av->SetValue(pixel, static_cast<float>(1.0 - mean[0]));
+  ao->SetValue(pixel, static_cast<float>(mean[0]));
+  se->SetValue(pixel, static_cast<float>(standardError[0]));
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGIReferenceObscurance::Compute(vtkImageData* capture)
+{
+  const auto start = std::chrono::steady_clock::now();
+  this->Output->Initialize();
+  this->MeanStandardError = this->MaximumStandardError = 0.0;
+  this->NumberOfValidPixels = this->NumberOfRays = 0;
+  this->ComputeTime = 0.0;
+  if (!(std::isfinite(this->Radius) && this->Radius > 0.0))
+  {
+    vtkErrorMacro("Radius must be a positive finite number, not " << this->Radius << ".");
+    return false;
+  }
+  if (!capture)
+  {
+    vtkErrorMacro("No capture.");
+    return false;
+  }
+  if (!this->Scene)
+  {
+    vtkErrorMacro("No scene: call SetScene() first.");
+    return false;
+  }
+  int dims[3];
+  capture->GetDimensions(dims);
+  const vtkIdType pixels = capture->GetNumberOfPoints();
+  const std::string suffix = "_" + std::to_string(this->Layer);
+  vtkDataArray* depth = capture->GetPointData()->GetArray(("Depth" + suffix).c_str());
+  vtkDataArray* normal = capture->GetPointData()->GetArray(("Normal" + suffix).c_str());
+  vtkDataArray* valid = capture->GetPointData()->GetArray(("Valid" + suffix).c_str());
+  vtkDataArray* view = capture->GetFieldData()->GetArray("ViewMatrix");
+  vtkDataArray* projection = capture->GetFieldData()->GetArray("ProjectionMatrix");
+  if (pixels <= 0 || dims[2] != 1 || !depth || !normal || normal->GetNumberOfComponents() != 3 ||
+    depth->GetNumberOfTuples() != pixels || normal->GetNumberOfTuples() != pixels ||
+    (valid && valid->GetNumberOfTuples() != pixels))
+  {
+    vtkErrorMacro("The capture has no 2D layer " << this->Layer
+                                                 << " (arrays Depth" << suffix << ", Normal"
+                                                 << suffix << ").");
+    return false;
+  }
+  if (!view || !projection || view->GetNumberOfValues() < 16 ||
+    projection->GetNumberOfValues() < 16)
+  {
+    vtkErrorMacro("The capture has no ViewMatrix/ProjectionMatrix field data.");
+    return false;
+  }
+  if (!this->BuildScene())
+  {
+    return false;
+  }
+
+  // Camera to world (inverse view) and NDC to camera (inverse projection).
+  vtkNew<vtkMatrix4x4> viewMatrix, projectionMatrix, cameraToWorld, ndcToCamera;
+  for (int k = 0; k < 16; ++k)
+  {
+    viewMatrix->SetElement(k / 4, k % 4, view->GetComponent(0, k));
+    projectionMatrix->SetElement(k / 4, k % 4, projection->GetComponent(0, k));
+  }
+  vtkMatrix4x4::Invert(viewMatrix, cameraToWorld);
+  vtkMatrix4x4::Invert(projectionMatrix, ndcToCamera);
+
+  this->Output->SetDimensions(dims);
+  this->Output->SetSpacing(capture->GetSpacing());
+  this->Output->SetOrigin(capture->GetOrigin());
+  this->AllocateOutput(this->Output, pixels);
+  vtkNew<vtkUnsignedCharArray> validOut;
+  validOut->SetName("Valid");
+  validOut->SetNumberOfTuples(pixels);
+  this->Output->GetPointData()->AddArray(validOut);
+
+  const int width = dims[0];
+  const int height = dims[1];
+  const int spp = this->SamplesPerPixel;
+  const int components = this->GetNumberOfSampleComponents();
+  const double tmax = this->GetMaximumRayDistance();
+  const Internals& in = *this->Internal;
+
+  vtkSMPTools::For(0, height, [&](vtkIdType rowBegin, vtkIdType rowEnd) {
+    std::vector<double> sum(components), sum2(components), values(components),
+      mean(components), error(components);
+    for (vtkIdType row = rowBegin; row < rowEnd; ++row)
+    {
+      for (int col = 0; col < width; ++col)
+      {
+        const vtkIdType pixel = row * width + col;
+        const double distance = depth->GetComponent(pixel, 0);
+        double n[3] = { normal->GetComponent(pixel, 0), normal->GetComponent(pixel, 1),
+          normal->GetComponent(pixel, 2) };
+        const bool isValid = (!valid || valid->GetComponent(pixel, 0) != 0) &&
+          std::isfinite(distance) && distance > 0.0 && std::isfinite(n[0]) &&
+          std::isfinite(n[1]) && std::isfinite(n[2]) && vtkMath::Norm(n) > 0.5;
+        validOut->SetValue(pixel, isValid ? 1 : 0);
+        if (!isValid)
+        {
+          this->FinishPixel(this->Output, pixel, nullptr, nullptr);
+          continue;
+        }
+        // The pixel's viewing ray in camera space: unproject the NDC points
+        // at the near and far planes, then pick the point with z = -depth.
+        const double ndcX = (col + 0.5) / width * 2.0 - 1.0;
+        const double ndcY = (row + 0.5) / height * 2.0 - 1.0;
+        double a[4] = { ndcX, ndcY, -1.0, 1.0 }, b[4] = { ndcX, ndcY, 1.0, 1.0 };
+        ndcToCamera->MultiplyPoint(a, a);
+        ndcToCamera->MultiplyPoint(b, b);
+        for (int c = 0; c < 3; ++c)
+        {
+          a[c] /= a[3];
+          b[c] /= b[3];
+        }
+        const double s = (-distance - a[2]) / (b[2] - a[2]);
+        double camera[4] = { a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1]), -distance, 1.0 };
+        double world[4];
+        cameraToWorld->MultiplyPoint(camera, world);
+        SurfacePoint x;
+        x.Pixel = pixel;
+        for (int c = 0; c < 3; ++c)
+        {
+          x.Position[c] = world[c] / world[3];
+          // Normals go from camera to world with the transpose of the view
+          // matrix's 3x3 (inverse transpose of camera-to-world).
+          x.Normal[c] = viewMatrix->GetElement(0, c) * n[0] +
+            viewMatrix->GetElement(1, c) * n[1] + viewMatrix->GetElement(2, c) * n[2];
+        }
+        vtkMath::Normalize(x.Normal);
+        double rel[3] = { x.Position[0] - in.Centre[0], x.Position[1] - in.Centre[1],
+          x.Position[2] - in.Centre[2] };
+        const double offset = this->RelativeOffset * (in.Diagonal + vtkMath::Norm(rel));
+        for (int c = 0; c < 3; ++c)
+        {
+          x.Origin[c] = x.Position[c] + offset * x.Normal[c];
+        }
+        double t[3], bt[3];
+        Basis(x.Normal, t, bt);
+        std::fill(sum.begin(), sum.end(), 0.0);
+        std::fill(sum2.begin(), sum2.end(), 0.0);
+        for (int i = 0; i < spp; ++i)
+        {
+          // Cosine-weighted direction (Malley: uniform disc, projected up).
+          const double u1 = this->Random(pixel, i, 0);
+          const double u2 = this->Random(pixel, i, 1);
+          const double radius = std::sqrt(u1);
+          const double phi = 2.0 * vtkMath::Pi() * u2;
+          const double lx = radius * std::cos(phi), ly = radius * std::sin(phi);
+          const double lz = std::sqrt(std::max(0.0, 1.0 - u1));
+          double w[3];
+          for (int c = 0; c < 3; ++c)
+          {
+            w[c] = lx * t[c] + ly * bt[c] + lz * x.Normal[c];
+          }
+          vtkMath::Normalize(w);
+          HitRecord hit;
+          this->TraceRay(x.Origin, w, tmax, hit);
+          this->EvaluateSample(x, w, hit, i, values.data());
+          for (int c = 0; c < components; ++c)
+          {
+            sum[c] += values[c];
+            sum2[c] += values[c] * values[c];
+          }
+        }
+        for (int c = 0; c < components; ++c)
+        {
+          mean[c] = sum[c] / spp;
+          const double variance =
+            spp > 1 ? std::max(0.0, (sum2[c] - sum[c] * mean[c]) / (spp - 1)) : 0.0;
+          error[c] = std::sqrt(variance / spp);
+        }
+        this->FinishPixel(this->Output, pixel, mean.data(), error.data());
+      }
+    }
+  });
+
+  // Statistics, serially (deterministic order).
+  vtkDataArray* se = this->Output->GetPointData()->GetArray("StandardError");
+  double total = 0.0;
+  for (vtkIdType p = 0; p < pixels; ++p)
+  {
+    if (validOut->GetValue(p))
+    {
+      ++this->NumberOfValidPixels;
+      const double e = se ? se->GetComponent(p, 0) : 0.0;
+      total += e;
+      this->MaximumStandardError = std::max(this->MaximumStandardError, e);
+    }
+  }
+  this->MeanStandardError = this->NumberOfValidPixels ? total / this->NumberOfValidPixels : 0.0;
+  this->NumberOfRays = this->NumberOfValidPixels * static_cast<vtkIdType>(spp);
+  this->ComputeTime =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGIReferenceObscurance::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Scene: " << this->Scene.Get() << "\n";
+  os << indent << "Radius: " << this->Radius << "\n";
+  os << indent << "Bias: " << this->Bias << "\n";
+  os << indent << "Epsilon: " << this->Epsilon << "\n";
+  os << indent << "SamplesPerPixel: " << this->SamplesPerPixel << "\n";
+  os << indent << "Seed: " << this->Seed << "\n";
+  os << indent << "Layer: " << this->Layer << "\n";
+  os << indent << "RelativeOffset: " << this->RelativeOffset << "\n";
+  os << indent << "MeanStandardError: " << this->MeanStandardError << "\n";
+  os << indent << "MaximumStandardError: " << this->MaximumStandardError << "\n";
+  os << indent << "NumberOfValidPixels: " << this->NumberOfValidPixels << "\n";
+  os << indent << "NumberOfRays: " << this->NumberOfRays << "\n";
+  os << indent << "ComputeTime: " << this->ComputeTime << "\n";
+}
