@@ -1262,6 +1262,12 @@ void vtkDeepGBufferPass::ResolveToFramebuffer(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 void vtkDeepGBufferPass::Render(const vtkRenderState* s)
 {
+  this->RenderFrame(s, nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGBufferPass::RenderFrame(const vtkRenderState* s, vtkRenderPass* opaqueStep)
+{
   vtkOpenGLClearErrorMacro();
   this->NumberOfRenderedProps = 0;
   vtkRenderer* renderer = s->GetRenderer();
@@ -1305,7 +1311,11 @@ void vtkDeepGBufferPass::Render(const vtkRenderState* s)
   }
   this->Internals->LightsPass->Render(s);
 
-  if (this->RenderLayers(s))
+  if (opaqueStep)
+  {
+    opaqueStep->Render(s);
+  }
+  else if (this->RenderLayers(s))
   {
     this->ResolveToFramebuffer(s);
   }
@@ -1360,6 +1370,20 @@ vtkDeepGBufferRendererState* FindState(
   auto it = states.find(renderer ? renderer : first);
   return (it == states.end() || !it->second->LayeredFramebuffer) ? nullptr : it->second.get();
 }
+}
+
+int vtkDeepGBufferPass::GetLayerCamera(
+  vtkRenderer* renderer, double view[16], double projection[16])
+{
+  vtkDeepGBufferRendererState* state =
+    FindState(this->Internals->States, renderer, this->Internals->FirstRenderer);
+  if (!state)
+  {
+    return 0;
+  }
+  std::copy(state->LayerView.begin(), state->LayerView.end(), view);
+  std::copy(state->LayerProjection.begin(), state->LayerProjection.end(), projection);
+  return state->RenderedLayers;
 }
 
 unsigned int vtkDeepGBufferPass::GetTextureHandle(vtkRenderer* renderer, int quantity)

@@ -239,6 +239,26 @@ public:
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
+  /**
+   * Renders a whole frame the way Render() does (camera and clear in the
+   * renderer's viewport, lights, the opaque step, then the translucent,
+   * volumetric and overlay steps), with the opaque step delegated to
+   * `opaqueStep` when it is not null. Passes that consume the G-buffer
+   * (vtkDeepAmbientObscurancePass) call RenderLayers from their opaque step
+   * and draw their own result. With null, the opaque step is RenderLayers
+   * followed by ResolveToFramebuffer, i.e. Render(s).
+   */
+  void RenderFrame(const vtkRenderState* s, vtkRenderPass* opaqueStep);
+
+  /**
+   * The camera the layers of the last frame rendered for `renderer` were
+   * rasterised with (the current camera, or the previous one for DELAY):
+   * view and projection matrices, row-major as vtkMatrix4x4 stores them.
+   * Returns the number of layers of that frame, 0 (matrices untouched) if
+   * no G-buffer has been rendered for `renderer`.
+   */
+  int GetLayerCamera(vtkRenderer* renderer, double view[16], double projection[16]);
+
   ///@{
   /// The steps drawn after the opaque layers. Defaults: vtkTranslucentPass,
   /// vtkVolumetricPass, vtkOverlayPass. Set to null to skip a step.

@@ -1,0 +1,584 @@
+// Exact and qualitative properties of vtkDeepAmbientObscurancePass on small
+// scenes made of planes and boxes (radius set explicitly, 240 x 200 px):
+// - an unoccluded plane (oblique perspective and parallel views) has AV = 1
+//   within 1e-3 (raw and filtered; the bias beta = 0.01 r absorbs the
+//   Oct16 normal quantisation, < 0.01 rad);
+// - the raw AV equals an independent CPU evaluation of eq. 1-2 with the same
+//   taps on the captured G-buffer (|difference| <= 2e-3 on >= 99 % of the
+//   pixels: float vs double rounding may pick a neighbouring texel for a
+//   tap that lands on a texel border);
+// - a floor + wall corner: AV < 1 near the corner, 1 (1e-3) farther than r
+//   from it, increasing with the distance (bins of r / 8, each mean at least
+//   the previous one minus 0.02, the residual noise of 16 taps);
+// - the bilateral filter does not bleed across a depth discontinuity: a quad
+//   0.3 in front of a plane (r = 1, so the plane is obscured around the quad
+//   while the quad is not) keeps AV = 1 (1e-3) on the quad after filtering,
+//   and every filtered plane pixel next to the silhouette lies within the
+//   range of the raw plane values of its (2 BlurRadius + 1)^2 window (1e-5,
+//   float rounding): a filter that only averages same-surface values cannot
+//   leave that range;
+// - UseSecondLayer: raw AV with every layer <= raw AV with layer 0 only
+//   (eq. 1's max over more layers, 1e-5), and strictly lower (by > 0.02) on
+//   floor pixels near a corner hidden behind a column;
+// - the composite image is the plain G-buffer image times AV (8-bit
+//   rounding: <= 2 levels) with the same depth buffer; background kept;
+// - no NaN or Inf anywhere; N = 1 and N = 99 (clamped to 98) give finite
+//   values; ReleaseGraphicsResources then Render gives the same AV (1e-6).
+
+#include "DeepGBufferTestUtilities.h"
+
+#include "vtkCamera.h"
+#include "vtkCubeSource.h"
+#include "vtkDeepAmbientObscurancePass.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkMatrix4x4.h"
+#include "vtkPlaneSource.h"
+#include "vtkPolyDataMapper.h"
+
+#include <algorithm>
+#include <functional>
+#include <vector>
+
+using namespace DeepGBufferTest;
+
+namespace
+{
+constexpr int Width = 240;
+constexpr int Height = 200;
+constexpr double Pi = 3.14159265358979323846;
+
+int Failures = 0;
+void Check(bool ok, const char* what)
+{
+  if (!ok)
+  {
+    std::printf("FAILED: %s\n", what);
+    ++Failures;
+  }
+}
+
+void AddQuad(vtkRenderer* renderer, const double origin[3], const double p1[3], const double p2[3])
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(origin[0], origin[1], origin[2]);
+  plane->SetPoint1(p1[0], p1[1], p1[2]);
+  plane->SetPoint2(p2[0], p2[1], p2[2]);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(plane->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  renderer->AddActor(actor);
+}
+
+void AddBox(vtkRenderer* renderer, const double center[3], const double size[3])
+{
+  vtkNew<vtkCubeSource> cube;
+  cube->SetCenter(center[0], center[1], center[2]);
+  cube->SetXLength(size[0]);
+  cube->SetYLength(size[1]);
+  cube->SetZLength(size[2]);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(cube->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  renderer->AddActor(actor);
+}
+
+using Scene = std::function<void(vtkRenderer*)>;
+
+struct Result
+{
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkSmartPointer<vtkRenderer> Renderer;
+  vtkNew<vtkImageData> AO;
+  vtkNew<vtkImageData> Layers;
+};
+
+// Renders `scene` with `pass` (3 frames) and captures AV and the layers.
+bool Render(const Scene& scene, vtkDeepAmbientObscurancePass* pass, Result& r)
+{
+  r.Window = MakeWindow(Width, Height);
+  r.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  r.Window->AddRenderer(r.Renderer);
+  scene(r.Renderer);
+  r.Renderer->ResetCameraClippingRange();
+  r.Renderer->SetPass(pass);
+  for (int f = 0; f < 3; ++f)
+  {
+    r.Window->Render();
+  }
+  const bool ok = pass->CaptureAmbientVisibility(r.AO, r.Renderer) &&
+    pass->GetGBufferPass()->CaptureLayers(r.Layers, r.Renderer);
+  Check(ok, "capture");
+  Check(AllFinite(r.AO), "AV finite");
+  return ok;
+}
+
+float Value(vtkImageData* image, const char* name, int i, int j)
+{
+  return static_cast<float>(
+    image->GetPointData()->GetArray(name)->GetComponent(static_cast<vtkIdType>(j) * Width + i, 0));
+}
+
+// Camera-space position of pixel (i, j) of layer `layer` (as the shader does).
+bool CameraPosition(vtkImageData* layers, int layer, double i, double j, double out[3])
+{
+  const int ii = static_cast<int>(std::floor(i)), jj = static_cast<int>(std::floor(j));
+  const double d = Layer(layers, "Depth", layer)->GetTuple1(static_cast<vtkIdType>(jj) * Width + ii);
+  if (!(d > 0.0))
+  {
+    return false;
+  }
+  const double* P = vtkDoubleArray::SafeDownCast(
+    layers->GetFieldData()->GetArray("ProjectionMatrix"))->GetPointer(0);
+  const double ndc[2] = { (ii + 0.5) / Width * 2.0 - 1.0, (jj + 0.5) / Height * 2.0 - 1.0 };
+  const double z = -d, w = P[14] * z + P[15];
+  out[0] = (ndc[0] * w - P[2] * z - P[3]) / P[0];
+  out[1] = (ndc[1] * w - P[6] * z - P[7]) / P[5];
+  out[2] = z;
+  return true;
+}
+
+// World position of layer-0 pixel (i, j).
+bool WorldPosition(vtkImageData* layers, int i, int j, double world[3])
+{
+  double c[4] = { 0, 0, 0, 1 };
+  if (!CameraPosition(layers, 0, i, j, c))
+  {
+    return false;
+  }
+  vtkNew<vtkMatrix4x4> view;
+  view->DeepCopy(vtkDoubleArray::SafeDownCast(layers->GetFieldData()->GetArray("ViewMatrix"))
+                   ->GetPointer(0));
+  view->Invert();
+  double out[4];
+  view->MultiplyPoint(c, out);
+  for (int k = 0; k < 3; ++k)
+  {
+    world[k] = out[k] / out[3];
+  }
+  return true;
+}
+
+// Eq. 1-2 on the CPU, in double precision, with the documented taps and hash.
+double ReferenceAV(vtkImageData* layers, int i, int j, int layerCount, int n, double radius,
+  double bias, double epsilon)
+{
+  double X[3];
+  if (!CameraPosition(layers, 0, i, j, X))
+  {
+    return 1.0;
+  }
+  const double* P = vtkDoubleArray::SafeDownCast(
+    layers->GetFieldData()->GetArray("ProjectionMatrix"))->GetPointer(0);
+  double nX[3];
+  Layer(layers, "Normal", 0)->GetTuple(static_cast<vtkIdType>(j) * Width + i, nX);
+  const double w = P[14] * X[2] + P[15];
+  const double rp = radius * P[5] * 0.5 * Height / w;
+  const double ign = 52.9829189 * std::fmod(0.06711056 * i + 0.00583715 * j, 1.0);
+  const double phi = 2.0 * Pi * (ign - std::floor(ign));
+  const int tau = vtkDeepAmbientObscurancePass::GetSpiralTurns(n);
+  double sum = 0.0;
+  for (int s = 0; s < n; ++s)
+  {
+    const double kappa = (s + 0.5) / n;
+    const double theta = 2.0 * Pi * kappa * tau + phi;
+    const double tx = i + 0.5 + rp * kappa * std::cos(theta);
+    const double ty = j + 0.5 + rp * kappa * std::sin(theta);
+    if (tx < 0 || ty < 0 || tx >= Width || ty >= Height)
+    {
+      continue;
+    }
+    double best = 0.0;
+    for (int layer = 0; layer < layerCount; ++layer)
+    {
+      double Y[3];
+      if (!CameraPosition(layers, layer, tx, ty, Y))
+      {
+        continue;
+      }
+      const double v[3] = { Y[0] - X[0], Y[1] - X[1], Y[2] - X[2] };
+      const double vv = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+      if (vv < radius * radius)
+      {
+        const double vn = v[0] * nX[0] + v[1] * nX[1] + v[2] * nX[2];
+        best = std::max(best,
+          (1.0 - vv / (radius * radius)) * std::max((vn - bias) / std::sqrt(vv + epsilon), 0.0));
+      }
+    }
+    sum += best;
+  }
+  return std::max(0.0, 1.0 - std::sqrt(Pi / n * sum));
+}
+
+vtkSmartPointer<vtkDeepAmbientObscurancePass> MakePass(double radius)
+{
+  auto pass = vtkSmartPointer<vtkDeepAmbientObscurancePass>::New();
+  pass->SetRadius(radius);
+  return pass;
+}
+
+void SetCamera(vtkRenderer* renderer, double px, double py, double pz, double fx, double fy,
+  double fz, bool parallel = false)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(px, py, pz);
+  camera->SetFocalPoint(fx, fy, fz);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetViewAngle(40.0);
+  camera->SetParallelProjection(parallel);
+  camera->SetParallelScale(3.0);
+}
+
+// Floor y = 0 (z in [-2, 4]) meeting a wall z = -2.
+void CornerScene(vtkRenderer* renderer)
+{
+  const double f0[3] = { -4, 0, 4 }, f1[3] = { 4, 0, 4 }, f2[3] = { -4, 0, -2 };
+  AddQuad(renderer, f0, f1, f2);
+  const double w0[3] = { -4, 0, -2 }, w1[3] = { 4, 0, -2 }, w2[3] = { -4, 4, -2 };
+  AddQuad(renderer, w0, w1, w2);
+  SetCamera(renderer, 0.0, 2.5, 4.0, 0.0, 0.3, -1.5);
+}
+
+void TestPlane(bool parallel)
+{
+  auto pass = MakePass(1.0);
+  Result r;
+  if (!Render(
+        [&](vtkRenderer* ren) {
+          const double o[3] = { -20, 0, -20 }, p1[3] = { 20, 0, -20 }, p2[3] = { -20, 0, 20 };
+          AddQuad(ren, o, p1, p2);
+          SetCamera(ren, 0.0, 3.0, 4.0, 0.0, 0.0, -2.0, parallel);
+        },
+        pass, r))
+  {
+    return;
+  }
+  long valid = 0;
+  double worst = 0.0;
+  for (int j = 0; j < Height; ++j)
+  {
+    for (int i = 0; i < Width; ++i)
+    {
+      if (Value(r.AO, "Valid", i, j) == 0)
+      {
+        continue;
+      }
+      ++valid;
+      worst = std::max(worst, 1.0 - Value(r.AO, "RawAmbientVisibility", i, j));
+      worst = std::max(worst, 1.0 - Value(r.AO, "AmbientVisibility", i, j));
+    }
+  }
+  std::printf("plane (%s): %ld valid pixels, max 1 - AV = %.2e\n",
+    parallel ? "parallel" : "perspective", valid, worst);
+  Check(valid > Width * Height / 2, "plane covers the image");
+  Check(worst <= 1e-3, "unoccluded plane has AV = 1");
+  pass->ReleaseGraphicsResources(r.Window);
+}
+
+void TestCorner()
+{
+  const double radius = 1.0;
+  auto pass = MakePass(radius);
+  Result r;
+  if (!Render(CornerScene, pass, r))
+  {
+    return;
+  }
+  // CPU reference of the raw AV.
+  long compared = 0, mismatched = 0;
+  double meanDifference = 0.0, maxDifference = 0.0;
+  const int layerCount = r.Layers->GetFieldData()->GetArray("NumberOfLayers")->GetTuple1(0);
+  for (int j = 0; j < Height; ++j)
+  {
+    for (int i = 0; i < Width; ++i)
+    {
+      if (Value(r.AO, "Valid", i, j) == 0)
+      {
+        continue;
+      }
+      const double reference =
+        ReferenceAV(r.Layers, i, j, layerCount, pass->GetNumberOfSamples(), radius,
+          pass->GetBias() * radius, pass->GetEpsilon() * radius * radius);
+      const double d = std::abs(reference - Value(r.AO, "RawAmbientVisibility", i, j));
+      ++compared;
+      mismatched += d > 2e-3 ? 1 : 0;
+      meanDifference += d;
+      maxDifference = std::max(maxDifference, d);
+    }
+  }
+  meanDifference /= std::max(compared, 1L);
+  std::printf("corner: CPU reference vs GPU raw AV over %ld pixels: mean %.2e, max %.2e, "
+              "%ld above 2e-3\n",
+    compared, meanDifference, maxDifference, mismatched);
+  Check(compared > 0 && mismatched <= compared / 100, "raw AV matches the CPU reference");
+
+  // AV against the distance t from the wall, floor pixels only.
+  const int bins = 8;
+  std::vector<double> sum(bins, 0.0);
+  std::vector<long> count(bins, 0);
+  double farWorstRaw = 0.0, farWorstFiltered = 0.0;
+  long far = 0;
+  for (int j = 0; j < Height; ++j)
+  {
+    for (int i = 0; i < Width; ++i)
+    {
+      double p[3];
+      if (!WorldPosition(r.Layers, i, j, p) || std::abs(p[1]) > 1e-3 || std::abs(p[0]) > 3.0)
+      {
+        continue;
+      }
+      const double t = p[2] + 2.0;
+      if (t < radius)
+      {
+        const int b = std::min(bins - 1, static_cast<int>(t / radius * bins));
+        sum[b] += Value(r.AO, "AmbientVisibility", i, j);
+        ++count[b];
+      }
+      if (t > 1.02 * radius)
+      {
+        farWorstRaw = std::max(farWorstRaw, 1.0 - Value(r.AO, "RawAmbientVisibility", i, j));
+      }
+      if (t > 1.5 * radius)
+      {
+        ++far;
+        farWorstFiltered = std::max(farWorstFiltered, 1.0 - Value(r.AO, "AmbientVisibility", i, j));
+      }
+    }
+  }
+  std::printf("corner: mean AV by distance from the wall (bins of r/8):");
+  double previous = -1.0;
+  bool monotonic = true;
+  for (int b = 0; b < bins; ++b)
+  {
+    const double mean = count[b] ? sum[b] / count[b] : -1.0;
+    std::printf(" %.3f", mean);
+    Check(count[b] > 0, "every distance bin has pixels");
+    monotonic = monotonic && mean >= previous - 0.02;
+    previous = mean;
+  }
+  std::printf("\ncorner: far floor (%ld px): max 1 - AV raw %.2e (t > 1.02 r), filtered %.2e "
+              "(t > 1.5 r)\n",
+    far, farWorstRaw, farWorstFiltered);
+  Check(count[0] > 0 && sum[0] / count[0] < 0.8, "AV well below 1 at the corner");
+  Check(monotonic, "AV increases with the distance from the corner");
+  Check(far > 100 && farWorstRaw <= 1e-3 && farWorstFiltered <= 1e-3, "AV = 1 far from the corner");
+
+  // Composite: the AO image is the plain G-buffer image times AV.
+  vtkNew<vtkImageData> rgbAO, depthAO, rgbPlain, depthPlain;
+  ReadWindow(r.Window, rgbAO, depthAO);
+  pass->ReleaseGraphicsResources(r.Window);
+  {
+    auto window = MakeWindow(Width, Height);
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    CornerScene(renderer);
+    renderer->ResetCameraClippingRange();
+    vtkNew<vtkDeepGBufferPass> plain;
+    renderer->SetPass(plain);
+    for (int f = 0; f < 3; ++f)
+    {
+      window->Render();
+    }
+    ReadWindow(window, rgbPlain, depthPlain);
+    plain->ReleaseGraphicsResources(window);
+  }
+  double worstColor = 0.0, worstDepth = 0.0;
+  vtkDataArray* a = rgbAO->GetPointData()->GetScalars();
+  vtkDataArray* b = rgbPlain->GetPointData()->GetScalars();
+  for (vtkIdType p = 0; p < a->GetNumberOfTuples(); ++p)
+  {
+    const double av = r.AO->GetPointData()->GetArray("AmbientVisibility")->GetTuple1(p);
+    for (int c = 0; c < 3; ++c)
+    {
+      worstColor = std::max(worstColor, std::abs(a->GetComponent(p, c) - b->GetComponent(p, c) * av));
+    }
+    worstDepth = std::max(worstDepth,
+      std::abs(depthAO->GetPointData()->GetScalars()->GetTuple1(p) -
+        depthPlain->GetPointData()->GetScalars()->GetTuple1(p)));
+  }
+  std::printf("composite: max |AO image - plain image x AV| = %.2f levels, max depth difference "
+              "%.2e\n",
+    worstColor, worstDepth);
+  Check(worstColor <= 2.0, "composite = plain image x AV");
+  Check(worstDepth <= 1e-6, "composite writes layer-0 depth");
+}
+
+void TestNoBleed()
+{
+  const double radius = 1.0;
+  auto pass = MakePass(radius);
+  const int R = pass->GetBlurRadius();
+  Result r;
+  if (!Render(
+        [](vtkRenderer* ren) {
+          const double o[3] = { -20, -20, 0 }, p1[3] = { 20, -20, 0 }, p2[3] = { -20, 20, 0 };
+          AddQuad(ren, o, p1, p2);
+          const double q0[3] = { -1, -1, 0.3 }, q1[3] = { 1, -1, 0.3 }, q2[3] = { -1, 1, 0.3 };
+          AddQuad(ren, q0, q1, q2);
+          SetCamera(ren, 0.0, 0.0, 10.0, 0.0, 0.0, 0.0);
+        },
+        pass, r))
+  {
+    return;
+  }
+  auto depth = [&](int i, int j) {
+    return Layer(r.Layers, "Depth", 0)->GetTuple1(static_cast<vtkIdType>(j) * Width + i);
+  };
+  auto onQuad = [&](int i, int j) { return depth(i, j) < 9.85; };
+  double quadWorst = 0.0, worstEscape = 0.0, nearPlaneMax = 0.0;
+  long planeChecked = 0, quadPixels = 0;
+  for (int j = R; j < Height - R; ++j)
+  {
+    for (int i = R; i < Width - R; ++i)
+    {
+      if (onQuad(i, j))
+      {
+        ++quadPixels;
+        quadWorst = std::max(quadWorst, 1.0 - Value(r.AO, "AmbientVisibility", i, j));
+        quadWorst = std::max(quadWorst, 1.0 - Value(r.AO, "RawAmbientVisibility", i, j));
+        continue;
+      }
+      // Plane pixels within 2 px of the silhouette.
+      bool adjacent = false;
+      for (int dj = -2; dj <= 2 && !adjacent; ++dj)
+      {
+        for (int di = -2; di <= 2 && !adjacent; ++di)
+        {
+          adjacent = onQuad(i + di, j + dj);
+        }
+      }
+      if (!adjacent)
+      {
+        continue;
+      }
+      double lo = 1e30, hi = -1e30;
+      for (int dj = -R; dj <= R; ++dj)
+      {
+        for (int di = -R; di <= R; ++di)
+        {
+          if (!onQuad(i + di, j + dj))
+          {
+            const double v = Value(r.AO, "RawAmbientVisibility", i + di, j + dj);
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+          }
+        }
+      }
+      const double f = Value(r.AO, "AmbientVisibility", i, j);
+      worstEscape = std::max(worstEscape, std::max(lo - f, f - hi));
+      nearPlaneMax = std::max(nearPlaneMax, hi);
+      ++planeChecked;
+    }
+  }
+  std::printf("no bleed: quad %ld px, max 1 - AV %.2e; %ld plane px at the silhouette, largest "
+              "raw AV in their windows %.3f, worst escape from the window's range %.2e\n",
+    quadPixels, quadWorst, planeChecked, nearPlaneMax, worstEscape);
+  Check(quadPixels > 100 && quadWorst <= 1e-3, "quad keeps AV = 1 after filtering");
+  Check(planeChecked > 100 && nearPlaneMax < 0.95, "plane is obscured at the silhouette");
+  Check(worstEscape <= 1e-5, "filtered plane values stay within their surface's range");
+  pass->ReleaseGraphicsResources(r.Window);
+}
+
+void ColumnScene(vtkRenderer* renderer)
+{
+  const double f0[3] = { -4, 0, 4 }, f1[3] = { 4, 0, 4 }, f2[3] = { -4, 0, -2 };
+  AddQuad(renderer, f0, f1, f2);
+  const double w0[3] = { -4, 0, -2 }, w1[3] = { 4, 0, -2 }, w2[3] = { -4, 3, -2 };
+  AddQuad(renderer, w0, w1, w2);
+  const double c[3] = { 0.0, 1.5, 0.0 }, s[3] = { 0.8, 3.0, 0.8 };
+  AddBox(renderer, c, s);
+  SetCamera(renderer, 0.0, 1.5, 6.0, 0.0, 0.7, -1.0);
+}
+
+void TestSecondLayer()
+{
+  auto on = MakePass(2.5);
+  auto off = MakePass(2.5);
+  off->UseSecondLayerOff();
+  Result a, b;
+  if (!Render(ColumnScene, on, a) || !Render(ColumnScene, off, b))
+  {
+    return;
+  }
+  long lower = 0, higher = 0;
+  double worstHigher = 0.0, largestGain = 0.0;
+  for (int j = 0; j < Height; ++j)
+  {
+    for (int i = 0; i < Width; ++i)
+    {
+      if (Value(a.AO, "Valid", i, j) == 0)
+      {
+        continue;
+      }
+      const double d =
+        Value(a.AO, "RawAmbientVisibility", i, j) - Value(b.AO, "RawAmbientVisibility", i, j);
+      higher += d > 1e-5 ? 1 : 0;
+      worstHigher = std::max(worstHigher, d);
+      lower += d < -0.02 ? 1 : 0;
+      largestGain = std::max(largestGain, -d);
+    }
+  }
+  std::printf("second layer: %ld px darker by > 0.02 (largest %.3f), %ld px brighter (worst "
+              "%.2e)\n",
+    lower, largestGain, higher, worstHigher);
+  Check(higher == 0, "more layers never raise the raw AV");
+  Check(lower > 50, "the second layer adds occlusion behind the column");
+  on->ReleaseGraphicsResources(a.Window);
+  off->ReleaseGraphicsResources(b.Window);
+}
+
+void TestSampleCountsAndRelease()
+{
+  for (int n : { 1, 99 })
+  {
+    auto pass = MakePass(1.0);
+    pass->SetNumberOfSamples(n);
+    Result r;
+    if (Render(CornerScene, pass, r))
+    {
+      std::printf("N = %d (used %d): finite\n", n, pass->GetNumberOfSamples());
+    }
+    pass->ReleaseGraphicsResources(r.Window);
+  }
+
+  auto pass = MakePass(1.0);
+  Result r;
+  if (!Render(CornerScene, pass, r))
+  {
+    return;
+  }
+  pass->ReleaseGraphicsResources(r.Window);
+  vtkNew<vtkImageData> failed;
+  // Nothing to capture after the release (an error is expected, not a crash).
+  pass->GlobalWarningDisplayOff();
+  Check(!pass->CaptureAmbientVisibility(failed, r.Renderer), "no capture after release");
+  pass->GlobalWarningDisplayOn();
+  r.Window->Render();
+  vtkNew<vtkImageData> again;
+  Check(pass->CaptureAmbientVisibility(again, r.Renderer), "capture after release and render");
+  double worst = 0.0;
+  vtkDataArray* x = r.AO->GetPointData()->GetArray("AmbientVisibility");
+  vtkDataArray* y = again->GetPointData()->GetArray("AmbientVisibility");
+  for (vtkIdType p = 0; y && p < x->GetNumberOfTuples(); ++p)
+  {
+    worst = std::max(worst, std::abs(x->GetTuple1(p) - y->GetTuple1(p)));
+  }
+  std::printf("release and render again: max AV difference %.2e\n", worst);
+  Check(y && worst <= 1e-6, "same AV after ReleaseGraphicsResources");
+  pass->ReleaseGraphicsResources(r.Window);
+}
+}
+
+int TestDeepAmbientObscurance(int, char*[])
+{
+  TestPlane(false);
+  TestPlane(true);
+  TestCorner();
+  TestNoBleed();
+  TestSecondLayer();
+  TestSampleCountsAndRelease();
+  std::printf("%s\n", Failures ? "FAILED" : "passed");
+  return Failures ? 1 : 0;
+}

@@ -1,0 +1,72 @@
+//VTK::System::Dec
+
+//=========================================================================
+// One direction of the separable bilateral reconstruction of the ambient
+// visibility (Mara et al. 2016, section 3.1: normal and plane weights).
+// Gaussian spatial weights times a plane weight (distance of the tap's
+// surface from the centre's tangent plane, relative to the centre's
+// distance) times a normal weight. Taps on other surfaces get weight 0, so
+// AV does not bleed across depth or normal discontinuities.
+//=========================================================================
+
+in vec2 texCoord;
+
+uniform sampler2D deepInput;       // AV to filter (R32F)
+uniform sampler2DArray deepDistance;
+uniform sampler2DArray deepNormal;
+uniform ivec2 deepAxis;            // (1, 0) horizontal, (0, 1) vertical
+uniform int deepBlurRadius;        // taps on each side
+uniform float deepPlaneTolerance;  // fraction of the centre's distance
+uniform float deepNormalPower;
+
+//VTK::DeepGBuffer::Common
+
+//VTK::DeepAO::Common
+
+//VTK::Output::Dec
+
+void main()
+{
+  vec2 size = vec2(textureSize(deepDistance, 0).xy);
+  ivec2 pixel = min(ivec2(texCoord * size), ivec2(size) - 1);
+  float centerValue = texelFetch(deepInput, pixel, 0).r;
+  float d = texelFetch(deepDistance, ivec3(pixel, 0), 0).r;
+  if (!(d > 0.0))
+  {
+    gl_FragData[0] = vec4(centerValue, 0.0, 0.0, 1.0);
+    return;
+  }
+  vec3 X = deepPositionFromDistance(vec2(pixel) + 0.5, size, d);
+  vec3 n = deepDecodeOct16(texelFetch(deepNormal, ivec3(pixel, 0), 0).rg);
+  float sigma = max(0.5 * float(deepBlurRadius), 0.5);
+  float tolerance = deepPlaneTolerance * d;
+
+  float sum = centerValue;
+  float weights = 1.0;
+  for (int k = -deepBlurRadius; k <= deepBlurRadius; ++k)
+  {
+    if (k == 0)
+    {
+      continue;
+    }
+    ivec2 tap = pixel + k * deepAxis;
+    if (any(lessThan(tap, ivec2(0))) || any(greaterThanEqual(tap, ivec2(size))))
+    {
+      continue;
+    }
+    float dy = texelFetch(deepDistance, ivec3(tap, 0), 0).r;
+    if (!(dy > 0.0))
+    {
+      continue;
+    }
+    vec3 Y = deepPositionFromDistance(vec2(tap) + 0.5, size, dy);
+    vec3 ny = deepDecodeOct16(texelFetch(deepNormal, ivec3(tap, 0), 0).rg);
+    float plane = max(0.0, 1.0 - abs(dot(Y - X, n)) / tolerance);
+    float facing = max(0.0, dot(n, ny));
+    float normalWeight = deepNormalPower > 0.0 ? pow(facing, deepNormalPower) : 1.0;
+    float w = exp(-float(k * k) / (2.0 * sigma * sigma)) * plane * normalWeight;
+    sum += w * texelFetch(deepInput, tap, 0).r;
+    weights += w;
+  }
+  gl_FragData[0] = vec4(sum / weights, 0.0, 0.0, 1.0);
+}

@@ -1,0 +1,91 @@
+//VTK::System::Dec
+
+//=========================================================================
+// Deep scalable ambient obscurance (Mara et al. 2016, section 3.1,
+// equations 1 and 2) with the spiral taps of section 3.4. Writes the raw
+// ambient visibility AV of layer 0's surface (1 where layer 0 is empty).
+//=========================================================================
+
+in vec2 texCoord;
+
+uniform sampler2DArray deepDistance;
+uniform sampler2DArray deepNormal;
+uniform int deepLayers;        // layers searched for occluders (1 = layer 0 only)
+uniform int deepSamples;       // N
+uniform float deepTurns;       // tau(N), Listing 3
+uniform float deepRadius;      // r, world units
+uniform float deepBias;        // beta, world units
+uniform float deepEpsilon;     // epsilon, world units squared
+uniform float deepIntensity;   // exponent applied to eq. 1
+
+//VTK::DeepGBuffer::Common
+
+//VTK::DeepAO::Common
+
+//VTK::Output::Dec
+
+const float deepPi = 3.14159265358979;
+
+void main()
+{
+  vec2 size = vec2(textureSize(deepDistance, 0).xy);
+  ivec2 pixel = min(ivec2(texCoord * size), ivec2(size) - 1);
+  float d = texelFetch(deepDistance, ivec3(pixel, 0), 0).r;
+  if (!(d > 0.0))
+  {
+    gl_FragData[0] = vec4(1.0);
+    return;
+  }
+  vec2 center = vec2(pixel) + 0.5;
+  vec3 X = deepPositionFromDistance(center, size, d);
+  vec3 n = deepDecodeOct16(texelFetch(deepNormal, ivec3(pixel, 0), 0).rg);
+  float r2 = deepRadius * deepRadius;
+
+  // Screen-space radius r_p: r projected at X's depth (section 3.4).
+  float rp = deepRadius * deepProjXY.y * 0.5 * size.y / deepClipW(d);
+
+  // Per-pixel rotation: interleaved gradient noise of (x, y).
+  float phi = 2.0 * deepPi *
+    fract(52.9829189 * fract(dot(vec2(pixel), vec2(0.06711056, 0.00583715))));
+
+  float sum = 0.0;
+  float invN = 1.0 / float(deepSamples);
+  for (int i = 0; i < deepSamples; ++i)
+  {
+    float kappa = (float(i) + 0.5) * invN;
+    float h = rp * kappa;
+    float theta = 2.0 * deepPi * kappa * deepTurns + phi;
+    vec2 tapPoint = center + h * vec2(cos(theta), sin(theta));
+    ivec2 tap = ivec2(floor(tapPoint));
+    if (any(lessThan(tap, ivec2(0))) || any(greaterThanEqual(tap, ivec2(size))))
+    {
+      continue;
+    }
+    vec2 tapCenter = vec2(tap) + 0.5;
+    float best = 0.0; // max(0, A_i^0, A_i^1, ...)
+    for (int j = 0; j < deepLayers; ++j)
+    {
+      float dy = texelFetch(deepDistance, ivec3(tap, j), 0).r;
+      if (!(dy > 0.0))
+      {
+        continue;
+      }
+      vec3 v = deepPositionFromDistance(tapCenter, size, dy) - X;
+      float vv = dot(v, v);
+      if (vv < r2)
+      {
+        // Equation 2.
+        float o = (1.0 - vv / r2) * max((dot(v, n) - deepBias) / sqrt(vv + deepEpsilon), 0.0);
+        best = max(best, o);
+      }
+    }
+    sum += best;
+  }
+  // Equation 1, raised to the Intensity exponent.
+  float av = max(0.0, 1.0 - sqrt(deepPi * invN * sum));
+  if (deepIntensity != 1.0)
+  {
+    av = deepIntensity > 0.0 ? (av > 0.0 ? exp2(deepIntensity * log2(av)) : 0.0) : 1.0;
+  }
+  gl_FragData[0] = vec4(av, 0.0, 0.0, 1.0);
+}

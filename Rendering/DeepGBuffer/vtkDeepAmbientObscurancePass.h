@@ -1,0 +1,264 @@
+/**
+ * @class   vtkDeepAmbientObscurancePass
+ * @brief   Deep scalable ambient obscurance over the layers of a deep G-buffer.
+ *
+ * Implements section 3.1 (equations 1 and 2) and the spiral sampling of
+ * section 3.4 of Mara, McGuire, Nowrouzezahrai and Luebke, "Deep G-Buffers
+ * for Stable Global Illumination Approximation" (HPG 2016). Put it on a
+ * renderer (`renderer->SetPass(pass)`) and it renders the whole frame:
+ * camera, lights, the opaque props into the layers of an internal
+ * vtkDeepGBufferPass (GetGBufferPass(); SetGBufferPass() shares one), the
+ * ambient visibility AV, its bilateral reconstruction, the composite, then
+ * the G-buffer pass's translucent, volumetric and overlay steps (VTK's own
+ * by default), which compose against layer 0's depth.
+ *
+ * Ambient visibility at the layer-0 surface point X (camera space) with
+ * normal n_X (paper eq. 1, with the Intensity exponent, see below):
+ *
+ *   AV(X) = max(0, 1 - sqrt(pi / N * sum_i max(0, A_i^0, A_i^1, ...)))^Intensity
+ *   A_i^j = O(X, Y_i^j), Y_i^j the surface of layer j at spiral tap i,
+ *   O(X, Y) = (1 - v.v / r^2) * max((v.n_X - beta) / sqrt(v.v + epsilon), 0),
+ *   v = Y - X, and O = 0 where v.v >= r^2 (a tap beyond the radius).
+ *
+ * Taps (section 3.4): kappa_i = (i + 0.5) / N, h_i = r_p kappa_i pixels,
+ * theta_i = 2 pi kappa_i tau(N) + phi, tap i at the texel containing
+ * pixel centre + h_i (cos theta_i, sin theta_i). tau(N) is the paper's
+ * Listing 3 (GetSpiralTurns). r_p is the world radius r projected at X's
+ * depth: r_p = r * P11 * height / (2 w), w = -P32 * d + P33 the clip w of X
+ * (w = d for perspective, 1 for parallel projection). Taps outside the
+ * image or on empty texels contribute 0 (they still count in N).
+ * phi, the per-pixel rotation, is 2 pi times Jimenez's interleaved gradient
+ * noise of the integer pixel coordinates (x, y) (Jimenez, "Next Generation
+ * Post Processing in Call of Duty: Advanced Warfare", SIGGRAPH 2014):
+ *   phi = 2 pi fract(52.9829189 fract(0.06711056 x + 0.00583715 y)).
+ * Camera-space positions come from each layer's DEPTH (distance d along
+ * -z: z = -d) and the projection the layers were rasterised with.
+ * Level 0 of the distance texture is sampled with texelFetch: there is no
+ * depth MIP pyramid yet.
+ *
+ * The reconstruction is a separable bilateral filter (horizontal, then
+ * vertical), BlurRadius taps on each side with Gaussian spatial weights
+ * (sigma = BlurRadius / 2), multiplied by a plane weight
+ * max(0, 1 - |(Y - X).n_X| / (BlurPlaneTolerance d_X)) and a normal weight
+ * max(0, n_X.n_Y)^BlurNormalPower, so it does not blur across depth or
+ * normal discontinuities.
+ *
+ * Composition (COMPOSITE_MULTIPLY, the only mode so far): the G-buffer's
+ * layer-0 image and depth are resolved into the renderer's framebuffer, then
+ * the colour is multiplied by AV (alpha untouched), like vtkSSAOPass.
+ * Pixels where layer 0 is empty keep the background.
+ *
+ * Textures (each of the renderer's viewport size, per renderer):
+ * | texture  | format | content                                    |
+ * |----------|--------|--------------------------------------------|
+ * | raw AV   | R32F   | eq. 1 before the filter (1 where empty)     |
+ * | blur tmp | R32F   | after the horizontal pass                  |
+ * | AV       | R32F   | after the vertical pass                    |
+ * Reads: the G-buffer's DEPTH and NORMAL arrays (all layers) and its
+ * layer-0 RADIANCE (through ResolveToFramebuffer). Writes: the renderer's
+ * colour and depth.
+ *
+ * Bad input never crashes: a non-finite or negative radius, a sample count
+ * outside 1..98 and a negative intensity are reported with vtkWarningMacro
+ * and replaced by the nearest valid value. When the G-buffer is unsupported
+ * (vtkDeepGBufferPass::RenderLayers returns false) a warning is given once
+ * and the plain VTK image is shown.
+ *
+ * @sa vtkDeepGBufferPass vtkSSAOPass
+ */
+
+#ifndef vtkDeepAmbientObscurancePass_h
+#define vtkDeepAmbientObscurancePass_h
+
+#include "vtkDeepGIRenderingModule.h" // for export macro
+#include "vtkRenderPass.h"
+
+#include <memory> // for std::unique_ptr
+
+class vtkDeepGBufferPass;
+class vtkImageData;
+class vtkRenderer;
+
+class VTKDEEPGIRENDERING_EXPORT vtkDeepAmbientObscurancePass : public vtkRenderPass
+{
+public:
+  static vtkDeepAmbientObscurancePass* New();
+  vtkTypeMacro(vtkDeepAmbientObscurancePass, vtkRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// How AV is applied to the image. Only COMPOSITE_MULTIPLY exists so far.
+  enum CompositionMode
+  {
+    COMPOSITE_MULTIPLY = 0 ///< layer-0 radiance (the whole colour) times AV
+  };
+
+  /// Largest sample count: Listing 3 of the paper gives tau for N = 1..98.
+  static constexpr int MAXIMUM_NUMBER_OF_SAMPLES = 98;
+
+  /**
+   * Number of spiral turns tau for N samples, the paper's Listing 3
+   * (discrepancy-minimising, N = 1..98). Returns 0 for N outside 1..98: the
+   * paper gives no value there (in particular none for N = 99).
+   */
+  static int GetSpiralTurns(int numberOfSamples);
+
+  ///@{
+  /**
+   * The G-buffer pass that builds the layers. One is created by default;
+   * set one to share it (e.g. with other deep passes). Null is refused.
+   */
+  void SetGBufferPass(vtkDeepGBufferPass* pass);
+  vtkGetObjectMacro(GBufferPass, vtkDeepGBufferPass);
+  ///@}
+
+  ///@{
+  /**
+   * World-space obscurance radius r. Setting a value switches
+   * AutomaticRadius off. NaN and infinities are rejected with a warning
+   * (the previous value stays); negative values are clamped to 0 with a
+   * warning (r = 0 gives AV = 1).
+   */
+  void SetRadius(double radius);
+  vtkGetMacro(Radius, double);
+  ///@}
+
+  ///@{
+  /**
+   * When on (default), r is AutomaticRadiusFraction (default 0.05) times the
+   * diagonal of the bounds of the renderer's visible props, so it follows
+   * the scene's scale (0.67 in vtkDeepGBufferDemoScene's 10 x 4 x 8 room,
+   * about SAO's 1 m in the paper's 30-40 m scenes).
+   */
+  vtkSetMacro(AutomaticRadius, bool);
+  vtkGetMacro(AutomaticRadius, bool);
+  vtkBooleanMacro(AutomaticRadius, bool);
+  vtkSetClampMacro(AutomaticRadiusFraction, double, 0.0, 1.0);
+  vtkGetMacro(AutomaticRadiusFraction, double);
+  ///@}
+
+  /// The radius r used by the last frame (world units).
+  vtkGetMacro(EffectiveRadius, double);
+
+  ///@{
+  /**
+   * beta of eq. 2, relative to the radius: the bias in world units is
+   * Bias * r. It keeps flat surfaces from obscuring themselves through
+   * depth and normal quantisation. Default 0.01 (SAO's 1.2 cm at r = 1 m).
+   * Clamped to [0, 1].
+   */
+  vtkSetClampMacro(Bias, double, 0.0, 1.0);
+  vtkGetMacro(Bias, double);
+  ///@}
+
+  ///@{
+  /**
+   * epsilon of eq. 2, relative to the squared radius: epsilon in world
+   * units squared is Epsilon * r^2. Default 0.01 (SAO's 0.01 m^2 at
+   * r = 1 m). Clamped to [1e-6, 1].
+   */
+  vtkSetClampMacro(Epsilon, double, 1e-6, 1.0);
+  vtkGetMacro(Epsilon, double);
+  ///@}
+
+  ///@{
+  /**
+   * Exponent applied to eq. 1's AV: AV = max(0, 1 - sqrt(...))^Intensity.
+   * 1 (default) is exactly eq. 1, 0 disables obscurance (AV = 1), larger
+   * values darken; AV stays in [0, 1]. Negative values are clamped to 0
+   * with a warning.
+   */
+  void SetIntensity(double intensity);
+  vtkGetMacro(Intensity, double);
+  ///@}
+
+  ///@{
+  /**
+   * Number of spiral taps N, 1 to MAXIMUM_NUMBER_OF_SAMPLES (98). Default
+   * 16. Values outside are clamped with a warning; in particular N = 99,
+   * which the paper's Figure 7 uses but Listing 3 does not tabulate, becomes
+   * 98 with a warning.
+   */
+  void SetNumberOfSamples(int samples);
+  vtkGetMacro(NumberOfSamples, int);
+  ///@}
+
+  ///@{
+  /**
+   * When on (default), occluders come from every layer of the G-buffer
+   * (eq. 1's max over A_i^0, A_i^1, ...). Off: layer 0 only, classic SAO
+   * without its falloff terms.
+   */
+  vtkSetMacro(UseSecondLayer, bool);
+  vtkGetMacro(UseSecondLayer, bool);
+  vtkBooleanMacro(UseSecondLayer, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Bilateral reconstruction: taps on each side of each separable pass
+   * (0 to 16, default 4; 0 disables the filter), the plane tolerance as a
+   * fraction of the centre pixel's distance (default 0.02) and the exponent
+   * of the normal weight (default 8).
+   */
+  vtkSetClampMacro(BlurRadius, int, 0, 16);
+  vtkGetMacro(BlurRadius, int);
+  vtkSetClampMacro(BlurPlaneTolerance, double, 1e-6, 1.0);
+  vtkGetMacro(BlurPlaneTolerance, double);
+  vtkSetClampMacro(BlurNormalPower, double, 0.0, 128.0);
+  vtkGetMacro(BlurNormalPower, double);
+  ///@}
+
+  ///@{
+  /// How AV is applied (CompositionMode). Default COMPOSITE_MULTIPLY.
+  vtkSetClampMacro(Composition, int, COMPOSITE_MULTIPLY, COMPOSITE_MULTIPLY);
+  vtkGetMacro(Composition, int);
+  ///@}
+
+  /**
+   * Copies the ambient visibility of the last frame rendered for `renderer`
+   * (the first renderer the pass rendered if null) into `output`, an image
+   * of the viewport's size: float point-data arrays "AmbientVisibility"
+   * (after the bilateral filter), "RawAmbientVisibility" (eq. 1 before it),
+   * both 1 where layer 0 is empty, and unsigned char "Valid" (1 where
+   * layer 0 has a surface). Field data "Radius" (the effective r) and
+   * "NumberOfSamples". The render window's context must be current (it is
+   * right after Render()). Returns false with an error when there is
+   * nothing to capture.
+   */
+  bool CaptureAmbientVisibility(vtkImageData* output, vtkRenderer* renderer = nullptr);
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+protected:
+  vtkDeepAmbientObscurancePass();
+  ~vtkDeepAmbientObscurancePass() override;
+
+  /// The opaque step of the frame: layers, AO, filter, composite.
+  void RenderOpaque(const vtkRenderState* s);
+
+  vtkDeepGBufferPass* GBufferPass = nullptr;
+  double Radius = 1.0;
+  bool AutomaticRadius = true;
+  double AutomaticRadiusFraction = 0.05;
+  double EffectiveRadius = 0.0;
+  double Bias = 0.01;
+  double Epsilon = 0.01;
+  double Intensity = 1.0;
+  int NumberOfSamples = 16;
+  bool UseSecondLayer = true;
+  int BlurRadius = 4;
+  double BlurPlaneTolerance = 0.02;
+  double BlurNormalPower = 8.0;
+  int Composition = COMPOSITE_MULTIPLY;
+
+private:
+  vtkDeepAmbientObscurancePass(const vtkDeepAmbientObscurancePass&) = delete;
+  void operator=(const vtkDeepAmbientObscurancePass&) = delete;
+
+  friend class vtkDeepAmbientObscuranceOpaqueStep;
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif
