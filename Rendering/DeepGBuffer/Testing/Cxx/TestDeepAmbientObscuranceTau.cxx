@@ -4,6 +4,9 @@
 // table. N = 99 has no entry in the paper: GetSpiralTurns(99) is 0 and
 // SetNumberOfSamples(99) clamps to 98 with one warning; N = 0 likewise
 // clamps to 1.
+// Also the parameter checks that need no window: NaN, infinite and negative
+// radii and intensities are warned about and replaced, and PrintSelf prints
+// every parameter.
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
@@ -11,6 +14,8 @@
 #include "vtkNew.h"
 
 #include <cstdio>
+#include <limits>
+#include <sstream>
 
 int TestDeepAmbientObscuranceTau(int, char*[])
 {
@@ -74,6 +79,45 @@ int TestDeepAmbientObscuranceTau(int, char*[])
   {
     std::printf("N = 9 gave %d with %d warnings\n", pass->GetNumberOfSamples(), warnings);
     ++failures;
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  pass->SetRadius(2.0);
+  pass->SetRadius(nan);
+  pass->SetRadius(std::numeric_limits<double>::infinity());
+  if (pass->GetRadius() != 2.0 || pass->GetAutomaticRadius() || warnings != 4)
+  {
+    std::printf("non-finite radius: %g, %d warnings\n", pass->GetRadius(), warnings);
+    ++failures;
+  }
+  pass->SetRadius(-1.0);
+  if (pass->GetRadius() != 0.0 || warnings != 5)
+  {
+    std::printf("negative radius: %g, %d warnings\n", pass->GetRadius(), warnings);
+    ++failures;
+  }
+  pass->SetIntensity(-2.0);
+  if (pass->GetIntensity() != 0.0 || warnings != 6)
+  {
+    std::printf("negative intensity: %g, %d warnings\n", pass->GetIntensity(), warnings);
+    ++failures;
+  }
+  pass->SetIntensity(nan);
+  if (pass->GetIntensity() != 0.0 || warnings != 7)
+  {
+    std::printf("NaN intensity: %g, %d warnings\n", pass->GetIntensity(), warnings);
+    ++failures;
+  }
+  std::ostringstream printed;
+  pass->Print(printed);
+  for (const char* name : { "GBufferPass", "Radius", "AutomaticRadius", "AutomaticRadiusFraction",
+         "EffectiveRadius", "Bias", "Epsilon", "Intensity", "NumberOfSamples", "UseSecondLayer",
+         "BlurRadius", "BlurPlaneTolerance", "BlurNormalPower", "Composition" })
+  {
+    if (printed.str().find(std::string(name) + ":") == std::string::npos)
+    {
+      std::printf("PrintSelf does not print %s\n", name);
+      ++failures;
+    }
   }
   std::printf("%s\n", failures ? "FAILED" : "tau(1..98) = Listing 3; N = 99 -> 98 with a warning");
   return failures ? 1 : 0;
