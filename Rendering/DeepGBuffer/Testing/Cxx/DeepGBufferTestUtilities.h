@@ -4,6 +4,8 @@
 #define DeepGBufferTestUtilities_h
 
 #include "vtkActor.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDeepGIRenderWindowFactory.h"
@@ -184,6 +186,37 @@ inline LayerDifference CompareLayer(vtkImageData* a, vtkImageData* b, int layer,
     }
   }
   return d;
+}
+
+// Counts the events (vtkCommand::WarningEvent, ErrorEvent) an object emits;
+// observed messages are not printed.
+struct EventCounter
+{
+  int Count = 0;
+  vtkNew<vtkCallbackCommand> Callback;
+  EventCounter(vtkObject* object, unsigned long event)
+  {
+    this->Callback->SetClientData(this);
+    this->Callback->SetCallback(
+      [](vtkObject*, unsigned long, void* self, void*) { ++static_cast<EventCounter*>(self)->Count; });
+    object->AddObserver(event, this->Callback);
+  }
+};
+
+// Largest per-channel difference (0..255) between two RGB images.
+inline double MaximumColorDifference(vtkImageData* a, vtkImageData* b)
+{
+  vtkDataArray* x = a->GetPointData()->GetScalars();
+  vtkDataArray* y = b->GetPointData()->GetScalars();
+  double maximum = 0.0;
+  for (vtkIdType p = 0; p < x->GetNumberOfTuples(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      maximum = std::max(maximum, std::abs(x->GetComponent(p, c) - y->GetComponent(p, c)));
+    }
+  }
+  return maximum;
 }
 
 // Reads the colour and depth buffers of a rendered window.

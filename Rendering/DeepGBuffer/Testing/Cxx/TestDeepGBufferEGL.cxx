@@ -40,16 +40,7 @@ int TestDeepGBufferEGL(int, char*[])
   const double dz = pass->GetEffectiveMinimumSeparation();
   DeepGBufferTest::SeparationReport separation =
     DeepGBufferTest::CheckSeparation(capture, 1, dz, 1e-6);
-  double maximum = 0.0;
-  vtkDataArray* a = image->GetPointData()->GetScalars();
-  vtkDataArray* b = plain->GetPointData()->GetScalars();
-  for (vtkIdType p = 0; p < a->GetNumberOfTuples(); ++p)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      maximum = std::max(maximum, std::abs(a->GetComponent(p, c) - b->GetComponent(p, c)));
-    }
-  }
+  const double maximum = DeepGBufferTest::MaximumColorDifference(image, plain);
   std::printf("EGL: layer 1 %ld px, %ld closer than dz %g; max difference to plain VTK %g\n",
     separation.Pixels, separation.Violations, dz, maximum);
   pass->ReleaseGraphicsResources(window);

@@ -11,9 +11,7 @@
 
 #include "DeepGBufferTestUtilities.h"
 
-#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
-#include "vtkCommand.h"
 #include "vtkLineSource.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
@@ -36,20 +34,6 @@ void Check(bool condition, const char* what)
     ++Failures;
   }
 }
-
-// Counts the warnings an object emits.
-struct WarningCounter
-{
-  int Count = 0;
-  vtkNew<vtkCallbackCommand> Callback;
-  explicit WarningCounter(vtkObject* object)
-  {
-    this->Callback->SetClientData(this);
-    this->Callback->SetCallback(
-      [](vtkObject*, unsigned long, void* self, void*) { ++static_cast<WarningCounter*>(self)->Count; });
-    object->AddObserver(vtkCommand::WarningEvent, this->Callback);
-  }
-};
 
 vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithm* source, double r, double g, double b)
 {
@@ -129,7 +113,7 @@ vtkSmartPointer<vtkImageData> RenderAndCapture(vtkDeepGBufferPass* pass,
 void TestParameters()
 {
   vtkNew<vtkDeepGBufferPass> pass;
-  WarningCounter warnings(pass);
+  EventCounter warnings(pass, vtkCommand::WarningEvent);
   pass->SetMinimumSeparation(std::nan(""));
   Check(warnings.Count == 1 && pass->GetAutomaticMinimumSeparation(),
     "NaN dz warns and keeps the automatic separation");
@@ -150,7 +134,7 @@ void TestParameters()
 
   // A dz larger than the scene: warned once at render time, layer 1 empty.
   vtkNew<vtkDeepGBufferPass> huge;
-  WarningCounter hugeWarnings(huge);
+  EventCounter hugeWarnings(huge, vtkCommand::WarningEvent);
   huge->SetMinimumSeparation(1e30);
   auto capture = RenderAndCapture(huge, [](vtkRenderer* r) { AddSphereAndWall(r); });
   Check(capture && hugeWarnings.Count == 1 && ValidCount(capture, 0) > 0 &&
@@ -180,7 +164,7 @@ void TestLayerCounts()
     }
   }
   vtkNew<vtkDeepGBufferPass> predict;
-  WarningCounter warnings(predict);
+  EventCounter warnings(predict, vtkCommand::WarningEvent);
   predict->SetOracleToPredict();
   predict->SetNumberOfLayers(3);
   auto capture = RenderAndCapture(predict, [](vtkRenderer* r) { AddSphereAndWall(r); }, 3);
@@ -268,16 +252,7 @@ void TestViewportsAndProjection()
   pass->CaptureLayers(b, right);
   ReadWindow(window, rgbPass, nullptr);
   ReadWindow(plainWindow, rgbPlain, nullptr);
-  double maximum = 0.0;
-  vtkDataArray* x = rgbPass->GetPointData()->GetScalars();
-  vtkDataArray* y = rgbPlain->GetPointData()->GetScalars();
-  for (vtkIdType p = 0; p < x->GetNumberOfTuples(); ++p)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      maximum = std::max(maximum, std::abs(x->GetComponent(p, c) - y->GetComponent(p, c)));
-    }
-  }
+  const double maximum = MaximumColorDifference(rgbPass, rgbPlain);
   int dims[3];
   b->GetDimensions(dims);
   Check(maximum <= 1.0, "two viewports, perspective and parallel: image equals plain VTK's");
