@@ -1,0 +1,1088 @@
+// deepgi-benchmark-ao: time and error of ambient obscurance methods, side by
+// side in one run (issue 3, section 3).
+//
+// For each scene (the demo scene, cornell-lucy, dragon.ply and an
+// iso-surface of headsq) and each method (VTK's vtkSSAOPass at several
+// kernel sizes, vtkDeepAmbientObscurancePass with one and with two layers
+// at several N, and named settings (N, BlurRadius)):
+//
+// - accuracy (at --accuracy-size, default 320x240): the same still camera
+//   is rendered with the method and without it (plain VTK for vtkSSAOPass,
+//   the G-buffer pass alone for ours). Every surface is white and
+//   ambient-only (Ambient 1, Diffuse 0, Specular 0), so the plain image is
+//   white and the luminance ratio (method / plain, clamped to [0, 1]) is the
+//   method's ambient visibility AV on that pixel. The ground truth is
+//   vtkDeepGIReferenceObscurance (Embree) on the G-buffer capture of the
+//   same frame (layer 0), same r, beta = 0.01 r and eps = 0.01 r^2 (our
+//   pass's Bias and Epsilon). Errors: RMSE and mean absolute error over
+//   valid pixels (layer 0 valid, both plain luminances > 0.05), RMSE on the
+//   pixels where layer 1 exists (Valid_1), raw and after fitting one
+//   exponent gamma per method and scene (AV^gamma vs reference).
+// - time (at --size, default 640x480): median over the frames of every
+//   round after warm-up; each method's frames back to back, all methods
+//   in each round; every frame timed from Render() to WaitForCompletion().
+//
+// Outputs in --output DIR: benchmark-ao.md, benchmark-ao.csv,
+// benchmark-ao-plot.png (RMSE against time, one curve per method family,
+// averaged over the scenes), benchmark-ao-plot-SCENE.png and
+// errors/SCENE-METHOD.png (|AV - AV_ref|, colour map 0..0.5).
+
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkAxis.h"
+#include "vtkCamera.h"
+#include "vtkChartLegend.h"
+#include "vtkChartXY.h"
+#include "vtkContextScene.h"
+#include "vtkContextView.h"
+#include "vtkDataArray.h"
+#include "vtkDeepAmbientObscurancePass.h"
+#include "vtkDeepGBufferDemoScene.h"
+#include "vtkDeepGBufferPass.h"
+#include "vtkDeepGBufferSceneLoader.h"
+#include "vtkDeepGIReferenceObscurance.h"
+#include "vtkDeepGIRenderWindowFactory.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkLightCollection.h"
+#include "vtkNew.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPNGWriter.h"
+#include "vtkPen.h"
+#include "vtkPlot.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSSAOPass.h"
+#include "vtkSmartPointer.h"
+#include "vtkTable.h"
+#include "vtkTextProperty.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
+#include "vtksys/SystemTools.hxx"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#ifndef DEEPGI_DATA_DIR
+#define DEEPGI_DATA_DIR "../shared/data"
+#endif
+
+namespace
+{
+const char* const Program = "deepgi-benchmark-ao";
+
+struct Options
+{
+  int Width = 640;
+  int Height = 480;
+  int AccuracyWidth = 320;
+  int AccuracyHeight = 240;
+  int Frames = 7;
+  int Rounds = 2;
+  int Warmup = 3;
+  int Samples = 256;
+  double RadiusFraction = 0.05;
+  int Backend = vtkDeepGIRenderWindowFactory::BACKEND_AUTO;
+  std::string Output = "output";
+  std::string Data = DEEPGI_DATA_DIR;
+  std::vector<std::string> Scenes = { "demo", "cornell-lucy", "dragon", "headsq" };
+  std::vector<std::string> Methods;
+  bool ErrorMaps = true;
+};
+
+// Default methods: families (SSAO kernel sizes, ours 1 layer / 2 layers at
+// several N with BlurRadius 4) and named settings of ours.
+const char* const DefaultMethods = "ssao:8,ssao:16,ssao:32,ssao:64,"
+                                   "ours1:4,ours1:8,ours1:16,ours1:32,"
+                                   "ours2:4,ours2:8,ours2:16,ours2:32,"
+                                   "fast,quality";
+
+void Usage()
+{
+  std::printf(
+    "Usage: deepgi-benchmark-ao [options]\n"
+    "Time and error against a ray-traced reference of vtkSSAOPass and of the deep\n"
+    "ambient obscurance (1 and 2 layers) on several scenes, measured in one run.\n"
+    "  --size WxH           timing size in pixels (default 640x480)\n"
+    "  --accuracy-size WxH  size of the error measurement (default 320x240)\n"
+    "  --frames N           timed frames per method and round (default 7)\n"
+    "  --rounds N           rounds over all methods (default 2)\n"
+    "  --samples N          reference rays per pixel (default 256)\n"
+    "  --radius-fraction F  r = F x scene diagonal, every method (default 0.05)\n"
+    "  --scenes LIST        comma list of demo, cornell-lucy, dragon, headsq\n"
+    "                       (default all four)\n"
+    "  --methods LIST       comma list of ssao:K (vtkSSAOPass, kernel size K, blur on),\n"
+    "                       ours1:N[:B] / ours2:N[:B] (one / two layers, N samples,\n"
+    "                       BlurRadius B, default 4), fast (= ours2:8:2),\n"
+    "                       quality (= ours2:32:6). Default:\n"
+    "                       %s\n"
+    "  --data DIR           shared data directory (default %s)\n"
+    "  --no-error-maps      do not write the error-map PNGs\n"
+    "  --backend NAME       auto, x11 or egl (default auto)\n"
+    "  --output DIR         output directory (default output)\n"
+    "  --help               this text\n",
+    DefaultMethods, DEEPGI_DATA_DIR);
+}
+
+std::vector<std::string> Split(const std::string& s, char sep)
+{
+  std::vector<std::string> parts;
+  std::stringstream in(s);
+  std::string item;
+  while (std::getline(in, item, sep))
+  {
+    parts.push_back(item);
+  }
+  return parts;
+}
+
+bool ParseInt(const std::string& s, int& v)
+{
+  char* end = nullptr;
+  const long x = std::strtol(s.c_str(), &end, 10);
+  if (s.empty() || *end || x < -1000000000L || x > 1000000000L)
+  {
+    return false;
+  }
+  v = static_cast<int>(x);
+  return true;
+}
+
+bool ParseSize(const std::string& s, int& w, int& h)
+{
+  const std::vector<std::string> p = Split(s, 'x');
+  return p.size() == 2 && ParseInt(p[0], w) && ParseInt(p[1], h) && w >= 16 && h >= 16 &&
+    w <= 8192 && h <= 8192;
+}
+
+struct Method
+{
+  std::string Name;   // as in the table
+  std::string Family; // curve of the plot
+  int Kind = 0;       // 0 SSAO, 1 ours
+  int Parameter = 16; // SSAO kernel size or N
+  int Layers = 2;     // ours
+  int Blur = 4;       // ours
+};
+
+bool ParseMethod(const std::string& spec, Method& m)
+{
+  if (spec == "fast")
+  {
+    m = { "ours 2 layers, fast (N=8, B=2)", "", 1, 8, 2, 2 };
+    return true;
+  }
+  if (spec == "quality")
+  {
+    m = { "ours 2 layers, quality (N=32, B=6)", "", 1, 32, 2, 6 };
+    return true;
+  }
+  const std::vector<std::string> p = Split(spec, ':');
+  if (p.size() == 2 && p[0] == "ssao")
+  {
+    int k = 0;
+    if (!ParseInt(p[1], k) || k < 1 || k > 1000)
+    {
+      return false;
+    }
+    m = { "vtkSSAOPass K=" + p[1], "vtkSSAOPass (kernel size)", 0, k, 0, 0 };
+    return true;
+  }
+  if ((p.size() == 2 || p.size() == 3) && (p[0] == "ours1" || p[0] == "ours2"))
+  {
+    int n = 0, b = 4;
+    if (!ParseInt(p[1], n) || n < 1 || n > 98 || (p.size() == 3 && (!ParseInt(p[2], b) || b < 0 || b > 16)))
+    {
+      return false;
+    }
+    const int layers = p[0] == "ours1" ? 1 : 2;
+    m.Kind = 1;
+    m.Parameter = n;
+    m.Layers = layers;
+    m.Blur = b;
+    m.Name = std::string("ours ") + (layers == 1 ? "1 layer" : "2 layers") + " N=" + p[1] +
+      (b != 4 ? " B=" + std::to_string(b) : "");
+    m.Family = b == 4 ? std::string("ours, ") + (layers == 1 ? "1 layer" : "2 layers") + " (N)"
+                      : "";
+    return true;
+  }
+  return false;
+}
+
+bool ParseOptions(int argc, char* argv[], Options& o)
+{
+  std::string methods = DefaultMethods;
+  auto bad = [](const std::string& what) {
+    std::fprintf(stderr, "%s: %s\n", Program, what.c_str());
+    return false;
+  };
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h")
+    {
+      Usage();
+      std::exit(0);
+    }
+    if (arg == "--no-error-maps")
+    {
+      o.ErrorMaps = false;
+      continue;
+    }
+    static const char* const withValue[] = { "--size", "--accuracy-size", "--frames", "--rounds",
+      "--samples", "--radius-fraction", "--scenes", "--methods", "--data", "--backend",
+      "--output" };
+    if (std::find_if(std::begin(withValue), std::end(withValue),
+          [&](const char* s) { return arg == s; }) == std::end(withValue))
+    {
+      return bad("unknown option " + arg);
+    }
+    if (i + 1 >= argc)
+    {
+      return bad(arg + " needs a value");
+    }
+    const std::string value = argv[++i];
+    if (arg == "--size" && !ParseSize(value, o.Width, o.Height))
+    {
+      return bad("--size needs WxH with 16..8192 pixels per side, got '" + value + "'");
+    }
+    if (arg == "--accuracy-size" && !ParseSize(value, o.AccuracyWidth, o.AccuracyHeight))
+    {
+      return bad("--accuracy-size needs WxH with 16..8192 pixels per side, got '" + value + "'");
+    }
+    if (arg == "--frames" && (!ParseInt(value, o.Frames) || o.Frames < 1 || o.Frames > 10000))
+    {
+      return bad("--frames needs an integer 1..10000, got '" + value + "'");
+    }
+    if (arg == "--rounds" && (!ParseInt(value, o.Rounds) || o.Rounds < 1 || o.Rounds > 100))
+    {
+      return bad("--rounds needs an integer 1..100, got '" + value + "'");
+    }
+    if (arg == "--samples" &&
+      (!ParseInt(value, o.Samples) || o.Samples < 1 || o.Samples > 1048576))
+    {
+      return bad("--samples needs an integer 1..1048576, got '" + value + "'");
+    }
+    if (arg == "--radius-fraction")
+    {
+      char* end = nullptr;
+      o.RadiusFraction = std::strtod(value.c_str(), &end);
+      if (value.empty() || *end || !(o.RadiusFraction > 0.0 && o.RadiusFraction <= 1.0))
+      {
+        return bad("--radius-fraction needs a number in (0, 1], got '" + value + "'");
+      }
+    }
+    if (arg == "--scenes")
+    {
+      o.Scenes = Split(value, ',');
+      if (o.Scenes.empty())
+      {
+        return bad("--scenes needs at least one scene");
+      }
+      for (const std::string& s : o.Scenes)
+      {
+        if (s != "demo" && s != "cornell-lucy" && s != "dragon" && s != "headsq")
+        {
+          return bad("unknown scene '" + s + "' (demo, cornell-lucy, dragon, headsq)");
+        }
+      }
+    }
+    if (arg == "--methods")
+    {
+      methods = value;
+    }
+    if (arg == "--data")
+    {
+      o.Data = value;
+    }
+    if (arg == "--backend")
+    {
+      o.Backend = vtkDeepGIRenderWindowFactory::GetBackendFromString(value.c_str());
+      if (o.Backend < 0)
+      {
+        return bad("unknown backend '" + value + "' (auto, x11, egl)");
+      }
+    }
+    if (arg == "--output")
+    {
+      if (value.empty())
+      {
+        return bad("--output needs a directory");
+      }
+      o.Output = value;
+    }
+  }
+  o.Methods = Split(methods, ',');
+  if (o.Methods.empty())
+  {
+    return bad("--methods needs at least one method");
+  }
+  for (const std::string& m : o.Methods)
+  {
+    Method parsed;
+    if (!ParseMethod(m, parsed))
+    {
+      return bad("unknown method '" + m + "' (ssao:K, ours1:N[:B], ours2:N[:B], fast, quality)");
+    }
+  }
+  return true;
+}
+
+double Median(std::vector<double> v)
+{
+  if (v.empty())
+  {
+    return 0.0;
+  }
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/// Luminance (0..1) of the window's last frame, bottom row first.
+std::vector<float> GrabLuminance(vtkRenderWindow* window)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->ShouldRerenderOff();
+  grab->SetInputBufferTypeToRGB();
+  grab->Update();
+  vtkImageData* image = grab->GetOutput();
+  vtkDataArray* rgb = image->GetPointData()->GetScalars();
+  std::vector<float> lum(rgb->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < rgb->GetNumberOfTuples(); ++i)
+  {
+    lum[i] = static_cast<float>((0.2126 * rgb->GetComponent(i, 0) +
+                                  0.7152 * rgb->GetComponent(i, 1) +
+                                  0.0722 * rgb->GetComponent(i, 2)) /
+      255.0);
+  }
+  return lum;
+}
+
+struct Accuracy
+{
+  double Rmse = 0, Mae = 0, RmseLayer1 = 0;           // raw
+  double Gamma = 1, CRmse = 0, CMae = 0, CRmseLayer1 = 0; // calibrated
+  double CaptureDifference = -1;                      // ours: mean |ratio - captured AV|
+  double MeanAV = 0;
+};
+
+struct Result
+{
+  std::string Scene;
+  Method M;
+  double FrameMs = 0;
+  Accuracy A;
+};
+
+struct ErrorStats
+{
+  double Rmse, Mae, RmseLayer1;
+};
+
+ErrorStats Errors(const std::vector<float>& av, const std::vector<float>& ref,
+  const std::vector<unsigned char>& mask, const std::vector<unsigned char>& layer1, double gamma)
+{
+  double s2 = 0, s1 = 0, l2 = 0;
+  long n = 0, nl = 0;
+  for (size_t i = 0; i < av.size(); ++i)
+  {
+    if (!mask[i])
+    {
+      continue;
+    }
+    const double a = gamma == 1.0 ? av[i] : std::pow(std::max(0.0f, av[i]), gamma);
+    const double d = a - ref[i];
+    s2 += d * d;
+    s1 += std::fabs(d);
+    ++n;
+    if (layer1[i])
+    {
+      l2 += d * d;
+      ++nl;
+    }
+  }
+  return { n ? std::sqrt(s2 / n) : 0.0, n ? s1 / n : 0.0, nl ? std::sqrt(l2 / nl) : 0.0 };
+}
+
+/// gamma in [0.05, 20] minimising the RMSE of AV^gamma (golden section on log gamma).
+double FitGamma(const std::vector<float>& av, const std::vector<float>& ref,
+  const std::vector<unsigned char>& mask, const std::vector<unsigned char>& layer1)
+{
+  double a = std::log(0.05), b = std::log(20.0);
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  double c = b - g * (b - a), d = a + g * (b - a);
+  auto f = [&](double x) { return Errors(av, ref, mask, layer1, std::exp(x)).Rmse; };
+  double fc = f(c), fd = f(d);
+  for (int it = 0; it < 40; ++it)
+  {
+    if (fc < fd)
+    {
+      b = d;
+      d = c;
+      fd = fc;
+      c = b - g * (b - a);
+      fc = f(c);
+    }
+    else
+    {
+      a = c;
+      c = d;
+      fc = fd;
+      d = a + g * (b - a);
+      fd = f(d);
+    }
+  }
+  return std::exp(0.5 * (a + b));
+}
+
+bool WriteErrorMap(const std::string& file, int w, int h, const std::vector<float>& av,
+  const std::vector<float>& ref, const std::vector<unsigned char>& mask)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(w, h, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* p = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (size_t i = 0; i < av.size(); ++i)
+  {
+    unsigned char rgb[3] = { 20, 20, 60 }; // excluded / empty
+    if (mask[i])
+    {
+      // black -> red -> yellow -> white for |AV - AV_ref| = 0 .. 0.5
+      const double e = std::min(1.0, std::fabs(av[i] - ref[i]) / 0.5) * 3.0;
+      rgb[0] = static_cast<unsigned char>(255 * std::min(1.0, e));
+      rgb[1] = static_cast<unsigned char>(255 * std::min(1.0, std::max(0.0, e - 1.0)));
+      rgb[2] = static_cast<unsigned char>(255 * std::min(1.0, std::max(0.0, e - 2.0)));
+    }
+    std::copy(rgb, rgb + 3, p + 3 * i);
+  }
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(file.c_str());
+  writer->Write();
+  return writer->GetErrorCode() == 0;
+}
+
+/// Error (calibrated RMSE) against frame time, one curve per family.
+bool WritePlot(const std::string& file, const std::string& title,
+  const std::vector<std::string>& families,
+  const std::map<std::string, std::vector<std::pair<double, double>>>& curves, int backend)
+{
+  vtkSmartPointer<vtkRenderWindow> window =
+    vtkSmartPointer<vtkRenderWindow>::Take(vtkDeepGIRenderWindowFactory::NewRenderWindow(backend));
+  if (!window)
+  {
+    return false;
+  }
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  vtkNew<vtkContextView> view;
+  view->SetRenderWindow(window);
+  view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
+  window->SetSize(900, 600);
+  vtkNew<vtkChartXY> chart;
+  view->GetScene()->AddItem(chart);
+  chart->SetTitle(title);
+  chart->SetShowLegend(true);
+  chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("frame time [ms] (median)");
+  chart->GetAxis(vtkAxis::LEFT)->SetTitle("RMSE of AV vs ray-traced reference (gamma-calibrated)");
+  const unsigned char colors[][3] = { { 200, 40, 40 }, { 40, 90, 200 }, { 30, 150, 60 },
+    { 150, 60, 170 }, { 230, 140, 20 } };
+  int c = 0;
+  std::vector<vtkSmartPointer<vtkTable>> tables;
+  for (const std::string& family : families)
+  {
+    auto it = curves.find(family);
+    if (it == curves.end() || it->second.empty())
+    {
+      continue;
+    }
+    std::vector<std::pair<double, double>> pts = it->second;
+    std::sort(pts.begin(), pts.end());
+    auto table = vtkSmartPointer<vtkTable>::New();
+    vtkNew<vtkFloatArray> x, y;
+    x->SetName("time");
+    y->SetName(family.c_str());
+    for (const auto& pt : pts)
+    {
+      x->InsertNextValue(static_cast<float>(pt.first));
+      y->InsertNextValue(static_cast<float>(pt.second));
+    }
+    table->AddColumn(x);
+    table->AddColumn(y);
+    tables.push_back(table);
+    vtkPlot* line = chart->AddPlot(pts.size() > 1 ? vtkChart::LINE : vtkChart::POINTS);
+    line->SetInputData(table, 0, 1);
+    const unsigned char* col = colors[c++ % 5];
+    line->SetColor(col[0], col[1], col[2], 255);
+    line->SetWidth(2.5);
+  }
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->ShouldRerenderOff();
+  grab->Update();
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->SetFileName(file.c_str());
+  writer->Write();
+  return writer->GetErrorCode() == 0;
+}
+
+struct SceneSetup
+{
+  std::string Name;
+  vtkSmartPointer<vtkPolyData> Geometry;
+};
+
+/// Populates `renderer` with `name`; white ambient-only materials, still camera.
+bool LoadScene(const Options& o, const std::string& name, vtkRenderer* renderer, SceneSetup& s,
+  vtkSmartPointer<vtkObject>& keep)
+{
+  s.Name = name;
+  if (name == "demo")
+  {
+    auto demo = vtkSmartPointer<vtkDeepGBufferDemoScene>::New();
+    demo->SetTargetNumberOfTriangles(200000);
+    demo->Populate(renderer);
+    demo->SetCameraToDefaultView(renderer->GetActiveCamera());
+    s.Geometry = demo->GetScenePolyData();
+    keep = demo;
+  }
+  else
+  {
+    auto loader = vtkSmartPointer<vtkDeepGBufferSceneLoader>::New();
+    bool ok = false;
+    if (name == "cornell-lucy")
+    {
+      ok = loader->Load((o.Data + "/scenes/cornell-lucy/CornellBox-Lucy.obj").c_str());
+    }
+    else if (name == "dragon")
+    {
+      ok = loader->Load((o.Data + "/meshes/dragon.ply").c_str());
+    }
+    else
+    {
+      ok = loader->LoadVolume((o.Data + "/volumes/headsq/quarter").c_str(), 500.0);
+      loader->SetViewDirection(0.0, -1.0, 0.0);
+      loader->SetViewUp(0.0, 0.0, -1.0);
+    }
+    if (!ok)
+    {
+      std::fprintf(stderr, "%s: cannot load scene %s from %s\n", Program, name.c_str(),
+        o.Data.c_str());
+      return false;
+    }
+    loader->Populate(renderer);
+    loader->ResetCamera(renderer);
+    s.Geometry = loader->GetScenePolyData();
+    keep = loader;
+  }
+  vtkActorCollection* actors = renderer->GetActors();
+  actors->InitTraversal();
+  while (vtkActor* actor = actors->GetNextActor())
+  {
+    vtkProperty* p = actor->GetProperty();
+    p->SetColor(1.0, 1.0, 1.0);
+    p->SetAmbient(1.0);
+    p->SetDiffuse(0.0);
+    p->SetSpecular(0.0);
+  }
+  renderer->SetBackground(0.0, 0.0, 0.0);
+  renderer->ResetCameraClippingRange();
+  return true;
+}
+
+std::string Fmt(const char* f, double v)
+{
+  char b[64];
+  std::snprintf(b, sizeof(b), f, v);
+  return b;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Options options;
+  if (!ParseOptions(argc, argv, options))
+  {
+    Usage();
+    return 2;
+  }
+  std::vector<Method> methods;
+  for (const std::string& spec : options.Methods)
+  {
+    Method m;
+    ParseMethod(spec, m);
+    methods.push_back(m);
+  }
+
+  vtksys::SystemTools::MakeDirectory(options.Output);
+  if (options.ErrorMaps)
+  {
+    vtksys::SystemTools::MakeDirectory(options.Output + "/errors");
+  }
+
+  std::vector<Result> results;
+  struct SceneInfo
+  {
+    std::string Name;
+    vtkIdType Triangles;
+    double Radius, RefError, PlainMs, GBufferMs;
+    long Valid, Excluded, Layer1;
+    double ReferenceSeconds;
+  };
+  std::vector<SceneInfo> infos;
+  std::string device = "unknown";
+
+  for (const std::string& sceneName : options.Scenes)
+  {
+    vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::Take(
+      vtkDeepGIRenderWindowFactory::NewRenderWindow(options.Backend));
+    if (!window)
+    {
+      std::fprintf(stderr, "%s: no render window for this backend\n", Program);
+      return 1;
+    }
+    window->SetMultiSamples(0);
+    window->SetSize(options.AccuracyWidth, options.AccuracyHeight);
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    SceneSetup scene;
+    vtkSmartPointer<vtkObject> keep;
+    if (!LoadScene(options, sceneName, renderer, scene, keep))
+    {
+      return 1;
+    }
+    double bounds[6];
+    scene.Geometry->GetBounds(bounds);
+    const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+      (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+      (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+    const double r = options.RadiusFraction * diagonal;
+
+    // The passes of every method.
+    std::vector<vtkSmartPointer<vtkRenderPass>> passes;
+    std::vector<vtkSmartPointer<vtkRenderStepsPass>> steps;
+    for (const Method& m : methods)
+    {
+      if (m.Kind == 0)
+      {
+        auto basic = vtkSmartPointer<vtkRenderStepsPass>::New();
+        auto ssao = vtkSmartPointer<vtkSSAOPass>::New();
+        ssao->SetDelegatePass(basic);
+        ssao->SetRadius(r);
+        ssao->SetBias(0.02 * r); // VTK's default ratio Bias / Radius = 0.01 / 0.5
+        ssao->SetKernelSize(static_cast<unsigned int>(m.Parameter));
+        ssao->SetBlur(true);
+        steps.push_back(basic);
+        passes.push_back(ssao);
+      }
+      else
+      {
+        auto ao = vtkSmartPointer<vtkDeepAmbientObscurancePass>::New();
+        ao->SetRadius(r);
+        ao->SetNumberOfSamples(m.Parameter);
+        ao->SetUseSecondLayer(m.Layers == 2);
+        ao->GetGBufferPass()->SetNumberOfLayers(m.Layers);
+        ao->SetBlurRadius(m.Blur);
+        passes.push_back(ao);
+      }
+    }
+    auto gbuffer = vtkSmartPointer<vtkDeepGBufferPass>::New();
+    gbuffer->SetNumberOfLayers(2);
+
+    auto renderStill = [&](vtkRenderPass* pass, int frames) {
+      renderer->SetPass(pass);
+      for (int f = 0; f < frames; ++f)
+      {
+        window->Render();
+      }
+      window->WaitForCompletion();
+    };
+
+    // ---- accuracy ----
+    const int w = options.AccuracyWidth, h = options.AccuracyHeight;
+    renderStill(nullptr, 2);
+    if (device == "unknown")
+    {
+      if (auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window))
+      {
+        std::istringstream lines(gl->ReportCapabilities());
+        std::string line;
+        while (std::getline(lines, line))
+        {
+          if (line.find("OpenGL renderer string") != std::string::npos)
+          {
+            device = line.substr(line.find(':') + 1);
+            device.erase(0, device.find_first_not_of(' '));
+          }
+        }
+      }
+    }
+    const std::vector<float> plainVTK = GrabLuminance(window);
+    renderStill(gbuffer, 3); // the oracle gets a history at the still camera
+    const std::vector<float> plainGB = GrabLuminance(window);
+    vtkNew<vtkImageData> capture;
+    if (!gbuffer->CaptureLayers(capture, renderer))
+    {
+      std::fprintf(stderr, "%s: the G-buffer capture failed on %s\n", Program, sceneName.c_str());
+      return 1;
+    }
+    const size_t np = static_cast<size_t>(w) * h;
+    std::vector<unsigned char> mask(np, 0), layer1(np, 0);
+    vtkDataArray* valid0 = capture->GetPointData()->GetArray("Valid_0");
+    vtkDataArray* valid1 = capture->GetPointData()->GetArray("Valid_1");
+    long nValid = 0, nExcluded = 0, nLayer1 = 0;
+    for (size_t i = 0; i < np; ++i)
+    {
+      if (valid0 && valid0->GetComponent(i, 0) > 0)
+      {
+        if (plainVTK[i] > 0.05f && plainGB[i] > 0.05f)
+        {
+          mask[i] = 1;
+          ++nValid;
+          if (valid1 && valid1->GetComponent(i, 0) > 0)
+          {
+            layer1[i] = 1;
+            ++nLayer1;
+          }
+        }
+        else
+        {
+          ++nExcluded;
+        }
+      }
+    }
+
+    vtkNew<vtkDeepGIReferenceObscurance> reference;
+    reference->SetScene(scene.Geometry);
+    reference->SetRadius(r);
+    reference->SetBias(0.01 * r);
+    reference->SetEpsilon(0.01 * r * r);
+    reference->SetSamplesPerPixel(options.Samples);
+    const auto refStart = std::chrono::steady_clock::now();
+    if (!reference->Compute(capture))
+    {
+      std::fprintf(stderr, "%s: the reference failed on %s\n", Program, sceneName.c_str());
+      return 1;
+    }
+    const double refSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - refStart).count();
+    std::vector<float> ref(np, 1.0f);
+    vtkDataArray* refAV = reference->GetOutput()->GetPointData()->GetArray("AmbientVisibility");
+    for (size_t i = 0; i < np; ++i)
+    {
+      ref[i] = static_cast<float>(refAV->GetComponent(i, 0));
+    }
+
+    std::vector<Result> sceneResults;
+    for (size_t k = 0; k < methods.size(); ++k)
+    {
+      const Method& m = methods[k];
+      renderStill(passes[k], 3);
+      const std::vector<float> lum = GrabLuminance(window);
+      const std::vector<float>& plain = m.Kind == 0 ? plainVTK : plainGB;
+      std::vector<float> av(np, 1.0f);
+      double sumAV = 0;
+      for (size_t i = 0; i < np; ++i)
+      {
+        if (mask[i])
+        {
+          av[i] = std::min(1.0f, std::max(0.0f, lum[i] / plain[i]));
+          sumAV += av[i];
+        }
+      }
+      Result res;
+      res.Scene = sceneName;
+      res.M = m;
+      res.A.MeanAV = nValid ? sumAV / nValid : 0.0;
+      if (m.Kind == 1)
+      {
+        vtkNew<vtkImageData> captured;
+        auto* ao = vtkDeepAmbientObscurancePass::SafeDownCast(passes[k]);
+        if (ao->CaptureAmbientVisibility(captured, renderer))
+        {
+          vtkDataArray* cav = captured->GetPointData()->GetArray("AmbientVisibility");
+          double diff = 0;
+          for (size_t i = 0; i < np; ++i)
+          {
+            if (mask[i])
+            {
+              diff += std::fabs(av[i] - cav->GetComponent(i, 0));
+            }
+          }
+          res.A.CaptureDifference = nValid ? diff / nValid : 0.0;
+        }
+      }
+      const ErrorStats raw = Errors(av, ref, mask, layer1, 1.0);
+      res.A.Rmse = raw.Rmse;
+      res.A.Mae = raw.Mae;
+      res.A.RmseLayer1 = raw.RmseLayer1;
+      res.A.Gamma = FitGamma(av, ref, mask, layer1);
+      const ErrorStats cal = Errors(av, ref, mask, layer1, res.A.Gamma);
+      res.A.CRmse = cal.Rmse;
+      res.A.CMae = cal.Mae;
+      res.A.CRmseLayer1 = cal.RmseLayer1;
+      if (options.ErrorMaps)
+      {
+        std::string tag = m.Name;
+        for (char& ch : tag)
+        {
+          if (!std::isalnum(static_cast<unsigned char>(ch)))
+          {
+            ch = '-';
+          }
+        }
+        WriteErrorMap(options.Output + "/errors/" + sceneName + "-" + tag + ".png", w, h, av,
+          ref, mask);
+      }
+      sceneResults.push_back(res);
+    }
+
+    // ---- time ----
+    window->SetSize(options.Width, options.Height);
+    std::vector<std::vector<double>> ms(methods.size() + 2);
+    for (int round = 0; round < options.Rounds; ++round)
+    {
+      for (size_t k = 0; k < methods.size() + 2; ++k)
+      {
+        vtkRenderPass* pass =
+          k == 0 ? nullptr : (k == 1 ? gbuffer.GetPointer() : passes[k - 2].GetPointer());
+        renderer->SetPass(pass);
+        for (int f = 0; f < options.Warmup + options.Frames; ++f)
+        {
+          const auto start = std::chrono::steady_clock::now();
+          window->Render();
+          window->WaitForCompletion();
+          const auto stop = std::chrono::steady_clock::now();
+          if (f >= options.Warmup)
+          {
+            ms[k].push_back(std::chrono::duration<double, std::milli>(stop - start).count());
+          }
+        }
+      }
+    }
+    for (size_t k = 0; k < methods.size(); ++k)
+    {
+      sceneResults[k].FrameMs = Median(ms[k + 2]);
+      results.push_back(sceneResults[k]);
+    }
+    infos.push_back({ sceneName, scene.Geometry->GetNumberOfPolys(), r,
+      reference->GetMeanStandardError(), Median(ms[0]), Median(ms[1]), nValid, nExcluded, nLayer1,
+      refSeconds });
+    renderer->SetPass(nullptr);
+    for (auto& p : passes)
+    {
+      p->ReleaseGraphicsResources(window);
+    }
+    gbuffer->ReleaseGraphicsResources(window);
+    std::fprintf(stderr, "%s: scene %s done\n", Program, sceneName.c_str());
+  }
+
+  // ---- tables ----
+  std::ostringstream md, csv;
+  md << "Accuracy at " << options.AccuracyWidth << "x" << options.AccuracyHeight
+     << ", time at " << options.Width << "x" << options.Height << " (median of "
+     << options.Frames * options.Rounds << " frames per method, " << options.Rounds
+     << " rounds, after " << options.Warmup
+     << " warm-up frames per round); OpenGL renderer: " << device << ".\n"
+     << "r = " << options.RadiusFraction
+     << " x scene diagonal for every method; vtkSSAOPass: Radius r, Bias 0.02 r, Blur on; "
+        "ours: Radius r, Bias 0.01 r, Epsilon 0.01 r^2; reference: Embree, "
+     << options.Samples
+     << " rays per pixel, same beta and eps, on the G-buffer capture of the same frame "
+        "(layer 0).\nAV of a method = luminance(method) / luminance(plain) on white "
+        "ambient-only surfaces (plain = VTK for vtkSSAOPass, the G-buffer pass alone for ours).\n\n";
+  md << "| scene | triangles | r | valid px | excluded px | layer-1 px | reference std. error | "
+        "reference [s] | VTK frame [ms] | G-buffer (2 layers) frame [ms] |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const SceneInfo& s : infos)
+  {
+    char b[512];
+    std::snprintf(b, sizeof(b), "| %s | %lld | %.4g | %ld | %ld | %ld | %.4f | %.1f | %.2f | %.2f |\n",
+      s.Name.c_str(), static_cast<long long>(s.Triangles), s.Radius, s.Valid, s.Excluded,
+      s.Layer1, s.RefError, s.ReferenceSeconds, s.PlainMs, s.GBufferMs);
+    md << b;
+  }
+  md << "\n| scene | method | frame [ms] | AO cost [ms] | RMSE | MAE | RMSE layer-1 px | gamma | "
+        "RMSE cal. | MAE cal. | RMSE cal. layer-1 px | mean AV | ratio vs captured AV |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  csv << "scene,method,family,kind,samples,layers,blur,frame_ms,ao_cost_ms,rmse,mae,rmse_layer1,"
+         "gamma,rmse_cal,mae_cal,rmse_cal_layer1,mean_av,capture_difference\n";
+  for (const Result& r : results)
+  {
+    double plainMs = 0;
+    for (const SceneInfo& s : infos)
+    {
+      if (s.Name == r.Scene)
+      {
+        plainMs = s.PlainMs;
+      }
+    }
+    char b[1024];
+    std::snprintf(b, sizeof(b),
+      "| %s | %s | %.2f | %.2f | %.4f | %.4f | %.4f | %.2f | %.4f | %.4f | %.4f | %.3f | %s |\n",
+      r.Scene.c_str(), r.M.Name.c_str(), r.FrameMs, r.FrameMs - plainMs, r.A.Rmse, r.A.Mae,
+      r.A.RmseLayer1, r.A.Gamma, r.A.CRmse, r.A.CMae, r.A.CRmseLayer1, r.A.MeanAV,
+      r.A.CaptureDifference < 0 ? "" : Fmt("%.4f", r.A.CaptureDifference).c_str());
+    md << b;
+    std::snprintf(b, sizeof(b),
+      "%s,%s,%s,%s,%d,%d,%d,%.4f,%.4f,%.5f,%.5f,%.5f,%.4f,%.5f,%.5f,%.5f,%.4f,%s\n",
+      r.Scene.c_str(), r.M.Name.c_str(), r.M.Family.c_str(), r.M.Kind == 0 ? "ssao" : "ours",
+      r.M.Parameter, r.M.Kind == 0 ? 0 : r.M.Layers, r.M.Blur, r.FrameMs, r.FrameMs - plainMs,
+      r.A.Rmse, r.A.Mae, r.A.RmseLayer1, r.A.Gamma, r.A.CRmse, r.A.CMae, r.A.CRmseLayer1,
+      r.A.MeanAV, r.A.CaptureDifference < 0 ? "" : Fmt("%.5f", r.A.CaptureDifference).c_str());
+    csv << b;
+  }
+
+  // ---- goals ----
+  md << "\n### Goals\n\n";
+  for (int calibrated = 1; calibrated >= 0; --calibrated)
+  {
+    auto rmse = [&](const Result& r) { return calibrated ? r.A.CRmse : r.A.Rmse; };
+    auto rmse1 = [&](const Result& r) { return calibrated ? r.A.CRmseLayer1 : r.A.RmseLayer1; };
+    md << (calibrated ? "Calibrated errors (headline):\n\n" : "\nRaw errors:\n\n");
+    md << "| scene | goal 1: worst over SSAO settings of (best 2-layer RMSE at <= its time) / "
+          "SSAO RMSE (goal <= 0.6) | goal 2: per N, layer-1 RMSE 2 layers / 1 layer (goal <= 0.8) "
+          "and time ratio (goal <= 1.3) |\n|---|---|---|\n";
+    for (const SceneInfo& s : infos)
+    {
+      std::ostringstream g1, g2;
+      double worst = -1;
+      bool missing = false;
+      for (const Result& a : results)
+      {
+        if (a.Scene != s.Name || a.M.Kind != 0)
+        {
+          continue;
+        }
+        double best = -1;
+        for (const Result& b : results)
+        {
+          if (b.Scene == s.Name && b.M.Kind == 1 && b.M.Layers == 2 && b.FrameMs <= a.FrameMs &&
+            (best < 0 || rmse(b) < best))
+          {
+            best = rmse(b);
+          }
+        }
+        double bestAny = -1; // best 2-layer RMSE at any time
+        for (const Result& b : results)
+        {
+          if (b.Scene == s.Name && b.M.Kind == 1 && b.M.Layers == 2 &&
+            (bestAny < 0 || rmse(b) < bestAny))
+          {
+            bestAny = rmse(b);
+          }
+        }
+        if (best < 0)
+        {
+          missing = true;
+          g1 << a.M.Name << ": no 2-layer setting as fast";
+          if (bestAny >= 0)
+          {
+            g1 << " (at any time: " << Fmt("%.2f", bestAny / std::max(1e-9, rmse(a))) << ")";
+          }
+          g1 << "; ";
+          continue;
+        }
+        const double ratio = best / std::max(1e-9, rmse(a));
+        g1 << a.M.Name << ": " << Fmt("%.2f", ratio) << "; ";
+        worst = std::max(worst, ratio);
+      }
+      std::string g1s = (worst < 0 ? std::string("n/a") : Fmt("%.2f", worst)) +
+        (worst >= 0 && worst <= 0.6 && !missing ? " (met)" : " (missed)") + " [" + g1.str() + "]";
+      for (const Result& two : results)
+      {
+        if (two.Scene != s.Name || two.M.Kind != 1 || two.M.Layers != 2)
+        {
+          continue;
+        }
+        for (const Result& one : results)
+        {
+          if (one.Scene == s.Name && one.M.Kind == 1 && one.M.Layers == 1 &&
+            one.M.Parameter == two.M.Parameter && one.M.Blur == two.M.Blur)
+          {
+            const double er = rmse1(two) / std::max(1e-9, rmse1(one));
+            const double tr = two.FrameMs / std::max(1e-9, one.FrameMs);
+            g2 << "N=" << two.M.Parameter << ": " << Fmt("%.2f", er) << " / " << Fmt("%.2f", tr)
+               << (er <= 0.8 && tr <= 1.3 ? " met" : " missed") << "; ";
+          }
+        }
+      }
+      md << "| " << s.Name << " | " << g1s << " | " << g2.str() << " |\n";
+    }
+  }
+
+  std::fputs(md.str().c_str(), stdout);
+  std::ofstream(options.Output + "/benchmark-ao.md") << md.str();
+  std::ofstream(options.Output + "/benchmark-ao.csv") << csv.str();
+
+  // ---- plots ----
+  std::vector<std::string> families;
+  for (const Method& m : methods)
+  {
+    const std::string f = m.Family.empty() ? m.Name : m.Family;
+    if (std::find(families.begin(), families.end(), f) == families.end())
+    {
+      families.push_back(f);
+    }
+  }
+  std::map<std::string, std::vector<std::pair<double, double>>> mean;
+  for (size_t k = 0; k < methods.size(); ++k)
+  {
+    double t = 0, e = 0;
+    int n = 0;
+    for (const Result& r : results)
+    {
+      if (r.M.Name == methods[k].Name)
+      {
+        t += r.FrameMs;
+        e += r.A.CRmse;
+        ++n;
+      }
+    }
+    const std::string f = methods[k].Family.empty() ? methods[k].Name : methods[k].Family;
+    if (n)
+    {
+      mean[f].push_back({ t / n, e / n });
+    }
+  }
+  if (!WritePlot(options.Output + "/benchmark-ao-plot.png",
+        "Ambient obscurance: error vs time (mean over scenes)", families, mean, options.Backend))
+  {
+    std::fprintf(stderr, "%s: cannot write the plot\n", Program);
+    return 1;
+  }
+  for (const SceneInfo& s : infos)
+  {
+    std::map<std::string, std::vector<std::pair<double, double>>> curves;
+    for (const Result& r : results)
+    {
+      if (r.Scene == s.Name)
+      {
+        curves[r.M.Family.empty() ? r.M.Name : r.M.Family].push_back({ r.FrameMs, r.A.CRmse });
+      }
+    }
+    WritePlot(options.Output + "/benchmark-ao-plot-" + s.Name + ".png",
+      "Ambient obscurance: error vs time, " + s.Name, families, curves, options.Backend);
+  }
+  std::printf("\nwrote %s/benchmark-ao.{md,csv}, %s/benchmark-ao-plot.png\n",
+    options.Output.c_str(), options.Output.c_str());
+  return 0;
+}
