@@ -121,12 +121,14 @@ enum TestMode
 };
 
 const char* const OracleNames[] = { "DEPTH_PEEL", "PREVIOUS", "REPROJECT", "PREDICT", "DELAY" };
-const char* const QuantityNames[] = { "RADIANCE", "ALBEDO", "NORMAL", "DEPTH" };
+const char* const QuantityNames[] = { "RADIANCE", "ALBEDO", "NORMAL", "DEPTH", "AMBIENT" };
 
 // Internal formats of the quantities, in the order of the Quantity enum.
-const GLenum QuantityInternalFormats[] = { GL_RGBA16F, GL_RGBA8, GL_RG8, GL_R32F };
-const GLenum QuantityFormats[] = { GL_RGBA, GL_RGBA, GL_RG, GL_RED };
-const GLenum QuantityTypes[] = { GL_HALF_FLOAT, GL_UNSIGNED_BYTE, GL_UNSIGNED_BYTE, GL_FLOAT };
+const GLenum QuantityInternalFormats[] = { GL_RGBA16F, GL_RGBA8, GL_RG8, GL_R32F,
+  GL_R11F_G11F_B10F };
+const GLenum QuantityFormats[] = { GL_RGBA, GL_RGBA, GL_RG, GL_RED, GL_RGB };
+const GLenum QuantityTypes[] = { GL_HALF_FLOAT, GL_UNSIGNED_BYTE, GL_UNSIGNED_BYTE, GL_FLOAT,
+  GL_FLOAT };
 
 // Upper bound of the number of floats a VTK polydata vertex shader passes on
 // per vertex (position, normal, colour, texture coordinates, clip distances,
@@ -146,7 +148,7 @@ struct vtkDeepGBufferRendererState
   int Height = 0;
   int Slots = 0;        // array layers: k, plus one oracle layer for PREDICT/DELAY
   int HistoryLayers = 0; // max(1, k - 1)
-  GLuint Textures[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES] = { 0, 0, 0, 0 };
+  GLuint Textures[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES] = { 0, 0, 0, 0, 0 };
   GLuint DepthTexture = 0;
   GLuint HistoryTexture = 0; // R32F array: the oracle's distances of the previous frame
   GLuint LayeredFramebuffer = 0;
@@ -348,7 +350,8 @@ int vtkDeepGBufferPass::GetOracleFromString(const char* name)
 
 const char* vtkDeepGBufferPass::GetQuantityAsString(int quantity)
 {
-  return (quantity >= RADIANCE && quantity <= DEPTH) ? QuantityNames[quantity] : "UNKNOWN";
+  return (quantity >= RADIANCE && quantity < NUMBER_OF_QUANTITIES) ? QuantityNames[quantity]
+                                                                   : "UNKNOWN";
 }
 
 //------------------------------------------------------------------------------
@@ -530,6 +533,7 @@ bool vtkDeepGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
     "    gl_FragData[1] = vec4(0.0);\n"
     "    gl_FragData[2] = vec4(0.0);\n"
     "    gl_FragData[3] = vec4(deepDistance, 0.0, 0.0, 1.0);\n"
+    "    gl_FragData[4] = vec4(0.0);\n"
     "    return;\n"
     "  }\n"
     "  if (deepLayer > 0 && deepCullBackFaces != 0 && gl_FrontFacing == false) { discard; }\n"
@@ -583,6 +587,14 @@ bool vtkDeepGBufferPass::PostReplaceShaderValues(std::string& vtkNotUsed(vertexS
   {
     albedo += " * tcolor.rgb";
   }
+  // VTK's colour is ambientColor + diffuse + specular (times the texture):
+  // its ambient part is what ambient obscurance darkens. PBR lighting has no
+  // separate ambient term here (its image-based light is left whole).
+  std::string ambient = pbr ? "vec3(0.0)" : "ambientColor";
+  if (textured && !pbr)
+  {
+    ambient += " * tcolor.rgb";
+  }
   std::string normal = "normalize(normalVCVSOutput)";
   if (!shadingNormal)
   {
@@ -596,8 +608,8 @@ bool vtkDeepGBufferPass::PostReplaceShaderValues(std::string& vtkNotUsed(vertexS
       "  deepPositionVC /= deepPositionVC.w;\n"
       "  vec3 deepGeometricNormal = normalize(cross(dFdx(deepPositionVC.xyz),\n"
       "    dFdy(deepPositionVC.xyz)));\n"
-      "  if (dot(deepGeometricNormal, deepInverseProjection[3][3] != 0.0 ?\n"
-      "    vec3(0.0, 0.0, -1.0) : deepPositionVC.xyz) > 0.0)\n"
+      "  vec3 deepViewRay = deepProjectionZ.z != 0.0 ? deepPositionVC.xyz : vec3(0.0, 0.0, -1.0);\n"
+      "  if (dot(deepGeometricNormal, deepViewRay) > 0.0)\n"
       "  { deepGeometricNormal = -deepGeometricNormal; }\n",
       false);
     normal = "deepGeometricNormal";
@@ -608,7 +620,9 @@ bool vtkDeepGBufferPass::PostReplaceShaderValues(std::string& vtkNotUsed(vertexS
       "  gl_FragData[2] = vec4(deepEncodeOct16(" +
       normal +
       "), 0.0, 1.0);\n"
-      "  gl_FragData[3] = vec4(deepDistance, 0.0, 0.0, 1.0);\n",
+      "  gl_FragData[3] = vec4(deepDistance, 0.0, 0.0, 1.0);\n"
+      "  gl_FragData[4] = vec4(max(" +
+      ambient + ", vec3(0.0)), 1.0);\n",
     false);
   return true;
 }
@@ -774,7 +788,7 @@ static bool AllocateTargets(vtkDeepGBufferRendererState& state, vtkOpenGLState* 
   // vtkOpenGLState caches them across framebuffers, so setting them through
   // it after a bind may be skipped.
   const GLenum drawBuffers[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES] = { GL_COLOR_ATTACHMENT0,
-    GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3 };
+    GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3, GL_COLOR_ATTACHMENT4 };
   auto attach = [&](GLuint framebuffer, int layer) {
     ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     glDrawBuffers(vtkDeepGBufferPass::NUMBER_OF_QUANTITIES, drawBuffers);
@@ -859,7 +873,7 @@ static bool CheckSupport(vtkOpenGLRenderWindow* window, int& maximumSlots, std::
   if (drawBuffers < vtkDeepGBufferPass::NUMBER_OF_QUANTITIES ||
     attachments < vtkDeepGBufferPass::NUMBER_OF_QUANTITIES)
   {
-    why = "fewer than 4 draw buffers";
+    why = "fewer than " + std::to_string(vtkDeepGBufferPass::NUMBER_OF_QUANTITIES) + " draw buffers";
     return false;
   }
   maximumSlots = std::min({ static_cast<int>(arrayLayers), static_cast<int>(gsVertices) / 3,
@@ -1221,12 +1235,11 @@ void vtkDeepGBufferPass::ResolveToFramebuffer(const vtkRenderState* s)
   }
 
   vtkTextureUnitManager* units = window->GetTextureUnitManager();
-  const GLuint textures[5] = { state.Textures[RADIANCE], state.Textures[ALBEDO],
-    state.Textures[NORMAL], state.Textures[DEPTH], state.DepthTexture };
-  const char* names[5] = { "deepRadiance", "deepAlbedo", "deepNormal", "deepDistance",
-    "deepHardwareDepth" };
-  int boundUnits[5];
-  for (int i = 0; i < 5; ++i)
+  const GLuint textures[3] = { state.Textures[this->DisplayQuantity], state.Textures[DEPTH],
+    state.DepthTexture };
+  const char* names[3] = { "deepQuantityTexture", "deepDistance", "deepHardwareDepth" };
+  int boundUnits[3];
+  for (int i = 0; i < 3; ++i)
   {
     boundUnits[i] = units->Allocate();
     ostate->vtkglActiveTexture(GL_TEXTURE0 + boundUnits[i]);
@@ -1250,7 +1263,7 @@ void vtkDeepGBufferPass::ResolveToFramebuffer(const vtkRenderState* s)
   ostate->vtkglDepthMask(GL_TRUE);
   in.ResolveQuad->Render();
 
-  for (int i = 0; i < 5; ++i)
+  for (int i = 0; i < 3; ++i)
   {
     ostate->vtkglActiveTexture(GL_TEXTURE0 + boundUnits[i]);
     glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
@@ -1462,7 +1475,7 @@ bool vtkDeepGBufferPass::CaptureLayers(vtkImageData* output, vtkRenderer* render
   const int w = state->Width, h = state->Height, layers = state->RenderedLayers;
   const size_t pixels = static_cast<size_t>(w) * h;
   const size_t slotPixels = pixels * state->Slots;
-  std::vector<float> radiance(slotPixels * 4), distance(slotPixels);
+  std::vector<float> radiance(slotPixels * 4), distance(slotPixels), ambient(slotPixels * 3);
   std::vector<unsigned char> albedo(slotPixels * 4), normal(slotPixels * 2);
 
   ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -1477,6 +1490,7 @@ bool vtkDeepGBufferPass::CaptureLayers(vtkImageData* output, vtkRenderer* render
   download(state->Textures[ALBEDO], GL_RGBA, GL_UNSIGNED_BYTE, albedo.data());
   download(state->Textures[NORMAL], GL_RG, GL_UNSIGNED_BYTE, normal.data());
   download(state->Textures[DEPTH], GL_RED, GL_FLOAT, distance.data());
+  download(state->Textures[AMBIENT], GL_RGB, GL_FLOAT, ambient.data());
   glBindTexture(GL_TEXTURE_2D_ARRAY, previous);
   ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
 
@@ -1488,7 +1502,7 @@ bool vtkDeepGBufferPass::CaptureLayers(vtkImageData* output, vtkRenderer* render
   for (int j = 0; j < layers; ++j)
   {
     const std::string suffix = "_" + std::to_string(j);
-    vtkNew<vtkFloatArray> rad, alb, nrm, dist;
+    vtkNew<vtkFloatArray> rad, alb, nrm, dist, amb;
     vtkNew<vtkUnsignedCharArray> valid;
     rad->SetName(("Radiance" + suffix).c_str());
     rad->SetNumberOfComponents(4);
@@ -1499,6 +1513,9 @@ bool vtkDeepGBufferPass::CaptureLayers(vtkImageData* output, vtkRenderer* render
     nrm->SetName(("Normal" + suffix).c_str());
     nrm->SetNumberOfComponents(3);
     nrm->SetNumberOfTuples(pixels);
+    amb->SetName(("Ambient" + suffix).c_str());
+    amb->SetNumberOfComponents(3);
+    amb->SetNumberOfTuples(pixels);
     dist->SetName(("Depth" + suffix).c_str());
     dist->SetNumberOfTuples(pixels);
     valid->SetName(("Valid" + suffix).c_str());
@@ -1522,6 +1539,7 @@ bool vtkDeepGBufferPass::CaptureLayers(vtkImageData* output, vtkRenderer* render
       for (int c = 0; c < 3; ++c)
       {
         alb->SetTypedComponent(p, c, isValid ? albedo[4 * q + c] / 255.0f : 0.0f);
+        amb->SetTypedComponent(p, c, isValid ? ambient[3 * q + c] : 0.0f);
         nrm->SetTypedComponent(p, c, static_cast<float>(n[c]));
       }
     }
@@ -1529,6 +1547,7 @@ bool vtkDeepGBufferPass::CaptureLayers(vtkImageData* output, vtkRenderer* render
     pd->AddArray(alb);
     pd->AddArray(nrm);
     pd->AddArray(dist);
+    pd->AddArray(amb);
     pd->AddArray(valid);
   }
   vtkNew<vtkDoubleArray> separation;

@@ -40,6 +40,7 @@
  * | ALBEDO    | RGBA8             | 4        | diffuse albedo after VTK's colouring  |
  * | NORMAL    | RG8 (Oct16)       | 2        | camera-space normal, paper Table 1    |
  * | DEPTH     | R32F              | 4        | camera-space distance, 0 = empty      |
+ * | AMBIENT   | R11F_G11F_B10F    | 4        | the ambient part of RADIANCE          |
  * | (z-test)  | DEPTH_COMPONENT32F| 4        | hardware depth per layer              |
  * Reads: nothing but the props. Writes: the renderer's colour and depth.
  *
@@ -88,7 +89,8 @@ public:
     ALBEDO = 1,
     NORMAL = 2,
     DEPTH = 3,
-    NUMBER_OF_QUANTITIES = 4
+    AMBIENT = 4,
+    NUMBER_OF_QUANTITIES = 5
   };
 
   /// The largest layer count this class supports (the GPU may allow fewer).
@@ -187,7 +189,7 @@ public:
    * white), NORMAL as n * 0.5 + 0.5.
    * Empty pixels keep the renderer's background.
    */
-  vtkSetClampMacro(DisplayQuantity, int, RADIANCE, DEPTH);
+  vtkSetClampMacro(DisplayQuantity, int, RADIANCE, AMBIENT);
   vtkGetMacro(DisplayQuantity, int);
   vtkSetClampMacro(DisplayLayer, int, 0, MAXIMUM_NUMBER_OF_LAYERS - 1);
   vtkGetMacro(DisplayLayer, int);
@@ -199,8 +201,10 @@ public:
    * renderer the pass rendered if null) into `output`: one point-data array
    * per quantity per layer, named "Radiance_j" (RGBA float), "Albedo_j" (RGB
    * float), "Normal_j" (decoded camera-space normal, float), "Depth_j"
-   * (camera-space distance, float, 0 where empty) and "Valid_j" (unsigned
-   * char, 1 where layer j has a surface). Field data "MinimumSeparation",
+   * (camera-space distance, float, 0 where empty), "Ambient_j" (RGB float:
+   * the part of Radiance_j that VTK's ambient term contributes, so that
+   * Radiance_j - Ambient_j is the direct radiance from the lights) and
+   * "Valid_j" (unsigned char, 1 where layer j has a surface). Field data "MinimumSeparation",
    * "NumberOfLayers" and "Oracle" describe the frame; "ViewMatrix" and
    * "ProjectionMatrix" (16 components, row-major) are its camera, so that
    * pixel (i, j) at NDC ((i + 0.5) / w * 2 - 1, (j + 0.5) / h * 2 - 1) and

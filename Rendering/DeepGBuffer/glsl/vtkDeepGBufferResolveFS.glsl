@@ -9,9 +9,7 @@
 
 in vec2 texCoord;
 
-uniform sampler2DArray deepRadiance;
-uniform sampler2DArray deepAlbedo;
-uniform sampler2DArray deepNormal;
+uniform sampler2DArray deepQuantityTexture; // the displayed quantity's layers
 uniform sampler2DArray deepDistance;
 uniform sampler2DArray deepHardwareDepth;
 uniform int deepLayer;
@@ -31,23 +29,24 @@ void main()
   {
     discard;
   }
+  vec4 value = texelFetch(deepQuantityTexture, texel, 0);
   vec4 color;
-  if (deepQuantity == 0)
+  if (deepQuantity == 0) // RADIANCE
   {
-    color = texelFetch(deepRadiance, texel, 0);
+    color = value;
   }
-  else if (deepQuantity == 1)
+  else if (deepQuantity == 2) // NORMAL
   {
-    color = vec4(texelFetch(deepAlbedo, texel, 0).rgb, 1.0);
+    color = vec4(deepDecodeOct16(value.rg) * 0.5 + 0.5, 1.0);
   }
-  else if (deepQuantity == 2)
-  {
-    color = vec4(deepDecodeOct16(texelFetch(deepNormal, texel, 0).rg) * 0.5 + 0.5, 1.0);
-  }
-  else
+  else if (deepQuantity == 3) // DEPTH
   {
     float t = (distance - deepDistanceRange.x) / max(deepDistanceRange.y - deepDistanceRange.x, 1e-30);
     color = vec4(vec3(clamp(t, 0.0, 1.0)), 1.0);
+  }
+  else // ALBEDO, AMBIENT
+  {
+    color = vec4(value.rgb, 1.0);
   }
   gl_FragData[0] = color;
   gl_FragDepth = texelFetch(deepHardwareDepth, texel, 0).r;

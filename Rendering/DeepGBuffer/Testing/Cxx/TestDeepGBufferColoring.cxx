@@ -1,5 +1,7 @@
 // The albedo layer holds VTK's colouring, whatever its source, and the
 // G-buffer composes with what VTK draws after it:
+// - the ambient layer holds VTK's ambient term (Ka x ambient colour), a
+//   part of the radiance;
 // - actor colour; point scalars through a lookup table (interpolated as
 //   colours, and through VTK's colour texture with
 //   InterpolateScalarsBeforeMapping); an actor texture: each quad's
@@ -98,6 +100,8 @@ int TestDeepGBufferColoring(int, char*[])
   plainActor->SetMapper(plainMapper);
   plainActor->GetProperty()->SetDiffuseColor(0.8, 0.4, 0.2);
   plainActor->GetProperty()->SetDiffuse(0.75);
+  plainActor->GetProperty()->SetAmbientColor(1.0, 0.5, 0.25);
+  plainActor->GetProperty()->SetAmbient(0.2);
   renderer->AddActor(plainActor);
 
   // Point scalars (all 0.25) through a lookup table, mapped per vertex and
@@ -186,6 +190,29 @@ int TestDeepGBufferColoring(int, char*[])
   ReadWindow(window, image, nullptr);
 
   CheckAlbedo(renderer, capture, -1.0, 1.0, { 0.6, 0.3, 0.15 }, "actor colour x diffuse");
+  {
+    double world[4] = { -1.0, 1.0, 0.0, 1.0 }, display[3];
+    renderer->SetWorldPoint(world);
+    renderer->WorldToDisplay();
+    renderer->GetDisplayPoint(display);
+    const vtkIdType pixel =
+      static_cast<vtkIdType>(display[1]) * 300 + static_cast<vtkIdType>(display[0]);
+    vtkDataArray* ambient = Layer(capture, "Ambient", 0);
+    vtkDataArray* radiance = Layer(capture, "Radiance", 0);
+    const double expected[3] = { 0.2, 0.1, 0.05 };
+    double error = 0.0, leastDirect = 1.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      error = std::max(error, std::abs(ambient->GetComponent(pixel, c) - expected[c]));
+      leastDirect = std::min(
+        leastDirect, radiance->GetComponent(pixel, c) - ambient->GetComponent(pixel, c));
+    }
+    std::printf("  ambient (%.3f %.3f %.3f), radiance - ambient >= %.3f\n",
+      ambient->GetComponent(pixel, 0), ambient->GetComponent(pixel, 1),
+      ambient->GetComponent(pixel, 2), leastDirect);
+    // R11F_G11F_B10F keeps 6-7 mantissa bits: 1 % relative.
+    Check(error <= 0.01 * 0.2 && leastDirect > 0.0, "ambient layer = Ka x ambient colour");
+  }
   CheckAlbedo(renderer, capture, 0.0, 1.0, { lutColor[0], lutColor[1], lutColor[2] },
     "scalars through a lookup table");
   CheckAlbedo(renderer, capture, 1.0, 1.0, { lutColor[0], lutColor[1], lutColor[2] },
