@@ -19,6 +19,7 @@
 #include "vtkPointData.h"
 #include "vtkRenderState.h"
 #include "vtkShaderProgram.h"
+#include "vtkTextureUnitManager.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
@@ -29,6 +30,7 @@
 #include "vtkDeepAmbientObscuranceCommon.h"
 #include "vtkDeepAmbientObscuranceCompositeFS.h"
 #include "vtkDeepAmbientObscuranceFS.h"
+#include "vtkDeepAmbientObscuranceMinifyFS.h"
 #include "vtkDeepGBufferCommon.h"
 
 #include <algorithm>
@@ -98,9 +100,33 @@ struct vtkDeepAmbientObscuranceRendererState
   bool HasFrame = false;
   double Radius = 0.0;
   int NumberOfSamples = 0;
+  // Distance pyramid: GL_TEXTURE_2D_ARRAY R32F, MipLevels levels (0 when
+  // MaximumMipLevel is 0: taps read the G-buffer directly).
+  GLuint MipTexture = 0;
+  GLuint MipFramebuffer = 0;
+  int MipLevels = 0;
+  int MipLayers = 0;
+  int MipWidth = 0;
+  int MipHeight = 0;
+
+  void ReleaseMip()
+  {
+    if (this->MipTexture)
+    {
+      glDeleteTextures(1, &this->MipTexture);
+      this->MipTexture = 0;
+    }
+    if (this->MipFramebuffer)
+    {
+      glDeleteFramebuffers(1, &this->MipFramebuffer);
+      this->MipFramebuffer = 0;
+    }
+    this->MipLevels = this->MipLayers = this->MipWidth = this->MipHeight = 0;
+  }
 
   void Release(vtkWindow* w)
   {
+    this->ReleaseMip();
     for (auto& t : this->Targets)
     {
       if (t)
@@ -124,6 +150,7 @@ public:
   vtkOpenGLQuadHelper* AOQuad = nullptr;
   vtkOpenGLQuadHelper* BlurQuad = nullptr;
   vtkOpenGLQuadHelper* CompositeQuad = nullptr;
+  vtkOpenGLQuadHelper* MinifyQuad = nullptr;
   bool WarnedUnsupported = false;
 
   vtkDeepAmbientObscuranceRendererState* Find(vtkRenderer* renderer)
@@ -183,6 +210,8 @@ void vtkDeepAmbientObscurancePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BlurNormalPower: " << this->BlurNormalPower << "\n";
   os << indent << "Composition: "
      << (this->Composition == COMPOSITE_MULTIPLY ? "COMPOSITE_MULTIPLY" : "?") << "\n";
+  os << indent << "MipThreshold: " << this->MipThreshold << "\n";
+  os << indent << "MaximumMipLevel: " << this->MaximumMipLevel << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -408,7 +437,8 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
   const bool aoReady = ReadyQuad(in.AOQuad, window, vtkDeepAmbientObscuranceFS);
   const bool blurReady = ReadyQuad(in.BlurQuad, window, vtkDeepAmbientObscuranceBlurFS);
   const bool compositeReady = ReadyQuad(in.CompositeQuad, window, vtkDeepAmbientObscuranceCompositeFS);
-  if (!aoReady || !blurReady || !compositeReady)
+  const bool minifyReady = ReadyQuad(in.MinifyQuad, window, vtkDeepAmbientObscuranceMinifyFS);
+  if (!aoReady || !blurReady || !compositeReady || !minifyReady)
   {
     vtkErrorMacro("The ambient obscurance shaders failed to compile.");
     gbuffer->ResolveToFramebuffer(s);
@@ -433,6 +463,7 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
     ostate->vtkglDisable(GL_BLEND);
     ostate->vtkglDisable(GL_DEPTH_TEST);
     ostate->PushFramebufferBindings();
+    const int mipUnit = this->BuildDistancePyramid(state, window, distanceUnit, std::max(1, layers));
     in.Framebuffer->Bind();
     ostate->vtkglViewport(0, 0, width, height);
 
@@ -453,7 +484,16 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
     program->SetUniformf("deepEpsilon",
       static_cast<float>(std::max(this->Epsilon * radius * radius, 1e-30)));
     program->SetUniformf("deepIntensity", static_cast<float>(this->Intensity));
+    program->SetUniformi("deepDistanceMip", mipUnit >= 0 ? mipUnit : distanceUnit);
+    program->SetUniformi("deepMaxMip", mipUnit >= 0 ? state.MipLevels - 1 : 0);
+    program->SetUniformf("deepMipThreshold", static_cast<float>(this->MipThreshold));
     in.AOQuad->Render();
+    if (mipUnit >= 0)
+    {
+      ostate->vtkglActiveTexture(GL_TEXTURE0 + mipUnit);
+      glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+      window->GetTextureUnitManager()->Free(mipUnit);
+    }
 
     // Separable bilateral reconstruction: RAW -> BLUR_TEMP -> FILTERED.
     const int passes[2][3] = { { RAW, BLUR_TEMP, 0 }, { BLUR_TEMP, FILTERED, 1 } };
@@ -512,6 +552,155 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
+int vtkDeepAmbientObscurancePass::BuildDistancePyramid(
+  vtkDeepAmbientObscuranceRendererState& state, vtkOpenGLRenderWindow* window, int distanceUnit,
+  int layers)
+{
+  const int width = state.Width, height = state.Height;
+  int finest = 0;
+  while ((std::max(width, height) >> (finest + 1)) > 0)
+  {
+    ++finest; // floor(log2(max(width, height)))
+  }
+  const int coarsest = std::min(this->MaximumMipLevel, finest);
+  if (coarsest <= 0 || distanceUnit < 0)
+  {
+    state.ReleaseMip();
+    return -1;
+  }
+  const int levels = coarsest + 1;
+  // Take a unit of our own first: binding on the active unit would unbind
+  // the G-buffer texture the caller activated there.
+  vtkOpenGLState* ostate = window->GetState();
+  const int mipUnit = window->GetTextureUnitManager()->Allocate();
+  if (mipUnit < 0)
+  {
+    return -1;
+  }
+  ostate->vtkglActiveTexture(GL_TEXTURE0 + mipUnit);
+  if (!state.MipTexture || state.MipLevels != levels || state.MipLayers != layers ||
+    state.MipWidth != width || state.MipHeight != height)
+  {
+    state.ReleaseMip();
+    glGenTextures(1, &state.MipTexture);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, state.MipTexture);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    for (int m = 0; m < levels; ++m)
+    {
+      glTexImage3D(GL_TEXTURE_2D_ARRAY, m, GL_R32F, std::max(1, width >> m),
+        std::max(1, height >> m), layers, 0, GL_RED, GL_FLOAT, nullptr);
+    }
+    glGenFramebuffers(1, &state.MipFramebuffer);
+    state.MipLevels = levels;
+    state.MipLayers = layers;
+    state.MipWidth = width;
+    state.MipHeight = height;
+  }
+
+  glBindTexture(GL_TEXTURE_2D_ARRAY, state.MipTexture);
+  ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, state.MipFramebuffer);
+  const GLenum drawBuffer = GL_COLOR_ATTACHMENT0;
+  glDrawBuffers(1, &drawBuffer);
+  vtkShaderProgram* program = this->Internals->MinifyQuad->Program;
+  window->GetShaderCache()->ReadyShaderProgram(program);
+  for (int m = 0; m < levels; ++m)
+  {
+    // Level 0 copies the G-buffer; level m reads level m - 1 of the pyramid
+    // itself, restricted to that level (base = max = m - 1) so the level
+    // being written is outside the sampled range (no feedback loop).
+    if (m > 0)
+    {
+      ostate->vtkglActiveTexture(GL_TEXTURE0 + mipUnit);
+      glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BASE_LEVEL, m - 1);
+      glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, m - 1);
+    }
+    program->SetUniformi("deepSource", m == 0 ? distanceUnit : mipUnit);
+    program->SetUniformi("deepRotate", m == 0 ? 0 : 1);
+    const int target[2] = { std::max(1, width >> m), std::max(1, height >> m) };
+    program->SetUniform2i("deepTargetSize", target);
+    ostate->vtkglViewport(0, 0, std::max(1, width >> m), std::max(1, height >> m));
+    for (int j = 0; j < layers; ++j)
+    {
+      glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, state.MipTexture, m, j);
+      program->SetUniformi("deepLayer", j);
+      this->Internals->MinifyQuad->Render();
+    }
+  }
+  glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, 0, 0, 0);
+  ostate->vtkglActiveTexture(GL_TEXTURE0 + mipUnit);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BASE_LEVEL, 0);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, levels - 1);
+  return mipUnit;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepAmbientObscurancePass::CaptureDistancePyramid(
+  int level, vtkImageData* output, vtkRenderer* renderer)
+{
+  vtkDeepAmbientObscuranceRendererState* state = this->Internals->Find(renderer);
+  if (!output || !state || !state->Renderer)
+  {
+    vtkErrorMacro("CaptureDistancePyramid: no ambient obscurance has been rendered for this "
+                  "renderer.");
+    return false;
+  }
+  const int levels = std::max(1, state->MipLevels);
+  GLuint handle = state->MipTexture;
+  int layers = state->MipLayers;
+  if (!handle)
+  {
+    double view[16], projection[16];
+    layers = std::max(1, this->GBufferPass->GetLayerCamera(state->Renderer, view, projection));
+    handle = this->GBufferPass->GetTextureHandle(state->Renderer, vtkDeepGBufferPass::DEPTH);
+  }
+  if (level < 0 || level >= levels || !handle)
+  {
+    vtkErrorMacro("CaptureDistancePyramid: level " << level << " does not exist (" << levels
+                                                   << " levels).");
+    return false;
+  }
+  vtkOpenGLRenderWindow* window =
+    vtkOpenGLRenderWindow::SafeDownCast(state->Renderer->GetRenderWindow());
+  window->MakeCurrent();
+  vtkOpenGLState* ostate = window->GetState();
+  vtkOpenGLClearErrorMacro();
+  vtkOpenGLState::ScopedglActiveTexture savedUnit(ostate);
+  GLint previousArray = 0;
+  glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &previousArray);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, handle);
+  GLint w = 0, h = 0, depth = 0;
+  glGetTexLevelParameteriv(GL_TEXTURE_2D_ARRAY, level, GL_TEXTURE_WIDTH, &w);
+  glGetTexLevelParameteriv(GL_TEXTURE_2D_ARRAY, level, GL_TEXTURE_HEIGHT, &h);
+  glGetTexLevelParameteriv(GL_TEXTURE_2D_ARRAY, level, GL_TEXTURE_DEPTH, &depth);
+  const size_t pixels = static_cast<size_t>(w) * h;
+  std::vector<float> values(pixels * std::max(1, depth));
+  ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTexImage(GL_TEXTURE_2D_ARRAY, level, GL_RED, GL_FLOAT, values.data());
+  ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, previousArray);
+
+  output->Initialize();
+  output->SetDimensions(w, h, 1);
+  for (int j = 0; j < std::min(layers, static_cast<int>(depth)); ++j)
+  {
+    vtkNew<vtkFloatArray> array;
+    array->SetName(("Distance_" + std::to_string(j)).c_str());
+    array->SetNumberOfTuples(pixels);
+    std::copy(values.begin() + j * pixels, values.begin() + (j + 1) * pixels, array->GetPointer(0));
+    output->GetPointData()->AddArray(array);
+  }
+  vtkNew<vtkIntArray> count;
+  count->SetName("NumberOfMipLevels");
+  count->InsertNextValue(levels);
+  output->GetFieldData()->AddArray(count);
+  vtkOpenGLCheckErrorMacro("failed after capturing the distance pyramid");
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkDeepAmbientObscurancePass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkInternals& in = *this->Internals;
@@ -521,7 +710,7 @@ void vtkDeepAmbientObscurancePass::ReleaseGraphicsResources(vtkWindow* w)
   }
   in.States.clear();
   in.FirstRenderer = nullptr;
-  for (vtkOpenGLQuadHelper** quad : { &in.AOQuad, &in.BlurQuad, &in.CompositeQuad })
+  for (vtkOpenGLQuadHelper** quad : { &in.AOQuad, &in.BlurQuad, &in.CompositeQuad, &in.MinifyQuad })
   {
     if (*quad)
     {

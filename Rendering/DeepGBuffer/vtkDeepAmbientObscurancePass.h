@@ -33,8 +33,17 @@
  *   phi = 2 pi fract(52.9829189 fract(0.06711056 x + 0.00583715 y)).
  * Camera-space positions come from each layer's DEPTH (distance d along
  * -z: z = -d) and the projection the layers were rasterised with.
- * Level 0 of the distance texture is sampled with texelFetch: there is no
- * depth MIP pyramid yet.
+ * Taps read a camera-space distance MIP pyramid (section 3.4, after SAO,
+ * McGuire, Mara and Luebke, HPG 2012): level 0 is a copy of each layer's
+ * distance, level m + 1 texel (x, y) is level m texel
+ * (2x + (y & 1), 2y + (x & 1)) clamped to level m's size (SAO's rotated-grid
+ * downsampling, SAO_minify.pix). Tap i reads level
+ * m_i = clamp(floor(log2(h_i / q)), 0, L), q = MipThreshold pixels,
+ * L = min(MaximumMipLevel, floor(log2(max(width, height)))). Its point is
+ * reconstructed at the centre of the level-0 texel the rotated grid chose
+ * for that coarse texel, so it is an exact surface point (up to 2^m - 1
+ * pixels from the tap in each axis). MaximumMipLevel = 0 reads level 0
+ * only and builds no pyramid.
  *
  * The reconstruction is a separable bilateral filter (horizontal, then
  * vertical), BlurRadius taps on each side with Gaussian spatial weights
@@ -77,6 +86,8 @@
 
 class vtkDeepGBufferPass;
 class vtkImageData;
+class vtkOpenGLRenderWindow;
+struct vtkDeepAmbientObscuranceRendererState;
 class vtkRenderer;
 
 class VTKDEEPGIRENDERING_EXPORT vtkDeepAmbientObscurancePass : public vtkRenderPass
@@ -209,6 +220,30 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Depth MIP pyramid (see the class description): q, the screen radius in
+   * pixels at which taps start reading coarser levels (default 8, SAO's
+   * 2^LOG_MAX_OFFSET; clamped to [1, 65536]), and the coarsest level L
+   * (0 to 15, default 5 as SAO's MAX_MIP_LEVEL; 0 disables the pyramid).
+   */
+  vtkSetClampMacro(MipThreshold, double, 1.0, 65536.0);
+  vtkGetMacro(MipThreshold, double);
+  vtkSetClampMacro(MaximumMipLevel, int, 0, 15);
+  vtkGetMacro(MaximumMipLevel, int);
+  ///@}
+
+  /**
+   * Copies level `level` of the distance pyramid of the last frame rendered
+   * for `renderer` (the first renderer if null) into `output`, an image of
+   * that level's size (max(1, width >> level) x max(1, height >> level)):
+   * float point-data arrays "Distance_j" per layer j (0 = empty). Field
+   * data "NumberOfMipLevels" (levels built, L + 1). Level 0 is available
+   * even when MaximumMipLevel is 0. The context must be current. Returns
+   * false with an error when the level does not exist.
+   */
+  bool CaptureDistancePyramid(int level, vtkImageData* output, vtkRenderer* renderer = nullptr);
+
+  ///@{
   /// How AV is applied (CompositionMode). Default COMPOSITE_MULTIPLY.
   vtkSetClampMacro(Composition, int, COMPOSITE_MULTIPLY, COMPOSITE_MULTIPLY);
   vtkGetMacro(Composition, int);
@@ -237,6 +272,11 @@ protected:
   /// The opaque step of the frame: layers, AO, filter, composite.
   void RenderOpaque(const vtkRenderState* s);
 
+  /// Builds the distance pyramid into the bound framebuffer slot; returns
+  /// the texture unit it is bound to (-1: no pyramid, taps read level 0).
+  int BuildDistancePyramid(vtkDeepAmbientObscuranceRendererState& state,
+    vtkOpenGLRenderWindow* window, int distanceUnit, int layers);
+
   vtkDeepGBufferPass* GBufferPass = nullptr;
   double Radius = 1.0;
   bool AutomaticRadius = true;
@@ -251,6 +291,8 @@ protected:
   double BlurPlaneTolerance = 0.02;
   double BlurNormalPower = 8.0;
   int Composition = COMPOSITE_MULTIPLY;
+  double MipThreshold = 8.0;
+  int MaximumMipLevel = 5;
 
 private:
   vtkDeepAmbientObscurancePass(const vtkDeepAmbientObscurancePass&) = delete;

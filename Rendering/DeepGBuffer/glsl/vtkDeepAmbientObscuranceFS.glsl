@@ -17,6 +17,9 @@ uniform float deepRadius;      // r, world units
 uniform float deepBias;        // beta, world units
 uniform float deepEpsilon;     // epsilon, world units squared
 uniform float deepIntensity;   // exponent applied to eq. 1
+uniform sampler2DArray deepDistanceMip; // rotated-grid distance pyramid
+uniform int deepMaxMip;        // finest..coarsest level index available
+uniform float deepMipThreshold; // q, pixels
 
 //VTK::DeepGBuffer::Common
 
@@ -61,11 +64,28 @@ void main()
     {
       continue;
     }
-    vec2 tapCenter = vec2(tap) + 0.5;
+    // MIP level m_i = clamp(floor(log2(h_i / q)), 0, deepMaxMip) (section
+    // 3.4). The coarse texel holds the distance of one level-0 texel (the
+    // rotated grid's choice); the tap's point is reconstructed at THAT
+    // texel's centre, so it is an exact surface point (SAO reconstructs at
+    // the tap's own centre with the coarse distance instead).
+    int m = 0;
+    if (deepMaxMip > 0 && h >= 2.0 * deepMipThreshold)
+    {
+      m = min(int(floor(log2(h / deepMipThreshold))), deepMaxMip);
+    }
+    ivec2 coarse = min(tap >> m, max(ivec2(size) >> m, ivec2(1)) - 1);
+    ivec2 source = coarse;
+    for (int k = m; k > 0; --k)
+    {
+      source = min(2 * source + ivec2(source.y & 1, source.x & 1),
+        max(ivec2(size) >> (k - 1), ivec2(1)) - 1);
+    }
+    vec2 tapCenter = vec2(source) + 0.5;
     float best = 0.0; // max(0, A_i^0, A_i^1, ...)
     for (int j = 0; j < deepLayers; ++j)
     {
-      float dy = texelFetch(deepDistance, ivec3(tap, j), 0).r;
+      float dy = texelFetch(deepDistanceMip, ivec3(coarse, j), m).r;
       if (!(dy > 0.0))
       {
         continue;

@@ -4,7 +4,8 @@
 //   within 1e-3 (raw and filtered; the bias beta = 0.01 r absorbs the
 //   Oct16 normal quantisation, < 0.01 rad);
 // - the raw AV equals an independent CPU evaluation of eq. 1-2 with the same
-//   taps on the captured G-buffer (|difference| <= 2e-3 on >= 99 % of the
+//   taps (and the same MIP level and rotated-grid texel per tap) on the
+//   captured G-buffer (|difference| <= 2e-3 on >= 99 % of the
 //   pixels: float vs double rounding may pick a neighbouring texel for a
 //   tap that lands on a texel border);
 // - a floor + wall corner: AV < 1 near the corner, 1 (1e-3) farther than r
@@ -161,9 +162,12 @@ bool WorldPosition(vtkImageData* layers, int i, int j, double world[3])
   return true;
 }
 
-// Eq. 1-2 on the CPU, in double precision, with the documented taps and hash.
+// Eq. 1-2 on the CPU, in double precision, with the documented taps and hash
+// and the distance pyramid's level choice: tap i at level
+// m = clamp(floor(log2(h_i / q)), 0, levels - 1) uses the level-0 texel the
+// rotated grid (2x + (y & 1), 2y + (x & 1)) selects for its coarse texel.
 double ReferenceAV(vtkImageData* layers, int i, int j, int layerCount, int n, double radius,
-  double bias, double epsilon)
+  double bias, double epsilon, double q, int levels)
 {
   double X[3];
   if (!CameraPosition(layers, 0, i, j, X))
@@ -184,12 +188,27 @@ double ReferenceAV(vtkImageData* layers, int i, int j, int layerCount, int n, do
   {
     const double kappa = (s + 0.5) / n;
     const double theta = 2.0 * Pi * kappa * tau + phi;
-    const double tx = i + 0.5 + rp * kappa * std::cos(theta);
-    const double ty = j + 0.5 + rp * kappa * std::sin(theta);
+    const double h = rp * kappa;
+    double tx = i + 0.5 + h * std::cos(theta);
+    double ty = j + 0.5 + h * std::sin(theta);
     if (tx < 0 || ty < 0 || tx >= Width || ty >= Height)
     {
       continue;
     }
+    const int m = (levels > 1 && h >= 2.0 * q)
+      ? std::min(static_cast<int>(std::floor(std::log2(h / q))), levels - 1)
+      : 0;
+    int cx = std::min(static_cast<int>(tx) >> m, std::max(Width >> m, 1) - 1);
+    int cy = std::min(static_cast<int>(ty) >> m, std::max(Height >> m, 1) - 1);
+    for (int k = m; k > 0; --k)
+    {
+      const int nx = std::min(2 * cx + (cy & 1), std::max(Width >> (k - 1), 1) - 1);
+      const int ny = std::min(2 * cy + (cx & 1), std::max(Height >> (k - 1), 1) - 1);
+      cx = nx;
+      cy = ny;
+    }
+    tx = cx;
+    ty = cy;
     double best = 0.0;
     for (int layer = 0; layer < layerCount; ++layer)
     {
@@ -290,6 +309,11 @@ void TestCorner()
   long compared = 0, mismatched = 0;
   double meanDifference = 0.0, maxDifference = 0.0;
   const int layerCount = r.Layers->GetFieldData()->GetArray("NumberOfLayers")->GetTuple1(0);
+  vtkNew<vtkImageData> pyramid;
+  Check(pass->CaptureDistancePyramid(0, pyramid, r.Renderer), "capture the distance pyramid");
+  const int levels = static_cast<int>(
+    pyramid->GetFieldData()->GetArray("NumberOfMipLevels")->GetTuple1(0));
+  std::printf("corner: %d pyramid levels\n", levels);
   for (int j = 0; j < Height; ++j)
   {
     for (int i = 0; i < Width; ++i)
@@ -298,9 +322,9 @@ void TestCorner()
       {
         continue;
       }
-      const double reference =
-        ReferenceAV(r.Layers, i, j, layerCount, pass->GetNumberOfSamples(), radius,
-          pass->GetBias() * radius, pass->GetEpsilon() * radius * radius);
+      const double reference = ReferenceAV(r.Layers, i, j, layerCount,
+        pass->GetNumberOfSamples(), radius, pass->GetBias() * radius,
+        pass->GetEpsilon() * radius * radius, pass->GetMipThreshold(), levels);
       const double d = std::abs(reference - Value(r.AO, "RawAmbientVisibility", i, j));
       ++compared;
       mismatched += d > 2e-3 ? 1 : 0;
