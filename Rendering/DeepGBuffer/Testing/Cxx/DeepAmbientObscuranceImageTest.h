@@ -1,0 +1,158 @@
+// Regression images of vtkDeepAmbientObscurancePass: one 800 x 300 window,
+// two 400 x 300 viewports. Left: the AO-composited image (the pass on the
+// renderer, composition set explicitly to COMPOSITE_MULTIPLY so that a
+// change of the default does not change the baseline). Right: the filtered
+// ambient visibility itself, captured from the left renderer and shown as a
+// grey image (AV x 255, nearest-neighbour) by a vtkImageActor, so the AV is
+// part of the baseline independently of the lit colours.
+//
+// Before the image comparison the captured AV is checked numerically (VTK
+// 9.1's image threshold is a sum of large per-pixel excesses, see
+// VTK91-NOTES.md): finite, in [0, 1], 1 exactly on empty pixels, a mean over
+// the surface pixels inside a stated range, a stated fraction of surface
+// pixels unoccluded (AV > 0.999) and darkened (AV < 0.8), and the AV shown
+// on the right equals the AV of the final frame (1e-6: still camera).
+#ifndef DeepAmbientObscuranceImageTest_h
+#define DeepAmbientObscuranceImageTest_h
+
+#include "DeepGBufferTestUtilities.h"
+
+#include "vtkCamera.h"
+#include "vtkDeepAmbientObscurancePass.h"
+#include "vtkImageActor.h"
+#include "vtkImageProperty.h"
+#include "vtkRegressionTestImage.h"
+
+#include <algorithm>
+#include <functional>
+
+namespace DeepGBufferTest
+{
+struct AVExpectations
+{
+  double MeanMin, MeanMax;             // mean filtered AV over surface pixels
+  double UnoccludedMin;                // fraction of surface pixels with AV > 0.999
+  double DarkMin;                      // fraction of surface pixels with AV < 0.8
+};
+
+// Grey 8-bit image of the "AmbientVisibility" array of `av`.
+inline void AVToGrey(vtkImageData* av, vtkImageData* grey)
+{
+  grey->SetDimensions(av->GetDimensions());
+  grey->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  vtkDataArray* a = av->GetPointData()->GetArray("AmbientVisibility");
+  unsigned char* out = static_cast<unsigned char*>(grey->GetScalarPointer());
+  for (vtkIdType p = 0; p < a->GetNumberOfTuples(); ++p)
+  {
+    const double v = std::min(1.0, std::max(0.0, a->GetTuple1(p)));
+    out[p] = static_cast<unsigned char>(std::lround(255.0 * v));
+  }
+}
+
+// `build` fills the renderer and sets its camera; `configure` sets the pass.
+inline int RunAOImageTest(int argc, char* argv[], const std::function<bool(vtkRenderer*)>& build,
+  const std::function<void(vtkDeepAmbientObscurancePass*)>& configure, const AVExpectations& e,
+  double threshold)
+{
+  constexpr int W = 400, H = 300;
+  auto window = MakeWindow(2 * W, H);
+  vtkNew<vtkRenderer> lit, avView;
+  lit->SetViewport(0.0, 0.0, 0.5, 1.0);
+  avView->SetViewport(0.5, 0.0, 1.0, 1.0);
+  lit->SetBackground(0.1, 0.1, 0.15);
+  avView->SetBackground(0.1, 0.1, 0.15);
+  window->AddRenderer(lit);
+  window->AddRenderer(avView);
+  if (!build(lit))
+  {
+    return EXIT_FAILURE;
+  }
+  vtkNew<vtkDeepAmbientObscurancePass> pass;
+  pass->SetComposition(vtkDeepAmbientObscurancePass::COMPOSITE_MULTIPLY);
+  configure(pass);
+  lit->SetPass(pass);
+
+  // The AV viewport: a parallel camera showing image pixel (i, j) at
+  // viewport pixel (i, j).
+  // Black until the first AV is captured (an image actor needs an input).
+  vtkNew<vtkImageData> grey;
+  grey->SetDimensions(W, H, 1);
+  grey->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  std::fill_n(static_cast<unsigned char*>(grey->GetScalarPointer()), W * H, 0);
+  vtkNew<vtkImageActor> image;
+  image->SetInputData(grey);
+  image->InterpolateOff();
+  image->GetProperty()->SetColorWindow(255.0);
+  image->GetProperty()->SetColorLevel(127.5);
+  avView->AddActor(image);
+  vtkCamera* camera = avView->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  camera->SetFocalPoint(0.5 * (W - 1), 0.5 * (H - 1), 0.0);
+  camera->SetPosition(0.5 * (W - 1), 0.5 * (H - 1), 1000.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetParallelScale(0.5 * H);
+  camera->SetClippingRange(1.0, 2000.0);
+
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    window->Render();
+  }
+  vtkNew<vtkImageData> shown, av;
+  bool ok = pass->CaptureAmbientVisibility(shown, lit);
+  if (ok)
+  {
+    AVToGrey(shown, grey);
+    grey->Modified();
+    window->Render();
+    ok = pass->CaptureAmbientVisibility(av, lit);
+  }
+  if (!ok)
+  {
+    std::printf("capture FAILED\n");
+    return EXIT_FAILURE;
+  }
+
+  vtkDataArray* a = av->GetPointData()->GetArray("AmbientVisibility");
+  vtkDataArray* raw = av->GetPointData()->GetArray("RawAmbientVisibility");
+  vtkDataArray* valid = av->GetPointData()->GetArray("Valid");
+  vtkDataArray* before = shown->GetPointData()->GetArray("AmbientVisibility");
+  long surface = 0, unoccluded = 0, dark = 0, outOfRange = 0, emptyNotOne = 0;
+  double sum = 0.0, changed = 0.0;
+  for (vtkIdType p = 0; p < a->GetNumberOfTuples(); ++p)
+  {
+    const double v = a->GetTuple1(p), r = raw->GetTuple1(p);
+    outOfRange += (v < 0.0 || v > 1.0 || r < 0.0 || r > 1.0) ? 1 : 0;
+    changed = std::max(changed, std::abs(v - before->GetTuple1(p)));
+    if (valid->GetTuple1(p) == 0)
+    {
+      emptyNotOne += (v != 1.0 || r != 1.0) ? 1 : 0;
+      continue;
+    }
+    ++surface;
+    sum += v;
+    unoccluded += v > 0.999 ? 1 : 0;
+    dark += v < 0.8 ? 1 : 0;
+  }
+  const double mean = sum / std::max(surface, 1L);
+  const double fu = static_cast<double>(unoccluded) / std::max(surface, 1L);
+  const double fd = static_cast<double>(dark) / std::max(surface, 1L);
+  const bool finite = AllFinite(av);
+  std::printf("AV: %ld surface px (radius %.4g, N %d), mean %.4f (expected %.3f..%.3f), "
+              "unoccluded %.3f (>= %.3f), dark %.3f (>= %.3f), %ld values outside [0, 1], %ld empty "
+              "px not 1, finite: %s, change since the displayed frame %.2e\n",
+    surface, pass->GetEffectiveRadius(), pass->GetNumberOfSamples(), mean, e.MeanMin, e.MeanMax,
+    fu, e.UnoccludedMin, fd, e.DarkMin, outOfRange, emptyNotOne, finite ? "yes" : "no", changed);
+  const bool numbersOk = finite && outOfRange == 0 && emptyNotOne == 0 && surface > W * H / 10 &&
+    mean >= e.MeanMin && mean <= e.MeanMax && fu >= e.UnoccludedMin && fd >= e.DarkMin &&
+    changed <= 1e-6;
+  if (!numbersOk)
+  {
+    std::printf("numeric checks FAILED\n");
+  }
+  const int result = vtkRegressionTestImageThreshold(window, threshold);
+  pass->ReleaseGraphicsResources(window);
+  return (numbersOk && result == vtkRegressionTester::PASSED) ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+}
+
+#endif

@@ -1,0 +1,35 @@
+// Regression image of vtkDeepAmbientObscurancePass on the skin of the
+// headsq CT volume (../shared/data/volumes/headsq, iso-value 500 through
+// vtkDeepGBufferSceneLoader, its default light and the documented face-on
+// view): left the AO-composited image, right the ambient visibility (see
+// DeepAmbientObscuranceImageTest.h). Automatic radius, N = 16.
+// Threshold 0.5 and the margins of the numeric ranges: as in
+// TestDeepAmbientObscuranceDemoImage. Measured when the baseline was made:
+// mean AV 0.821, dark fraction 0.314; the skin iso-surface is rippled (the
+// quarter-resolution CT), so only 1.1 % of it is fully unoccluded (AV >
+// 0.999): required >= 0.5 %.
+
+#include "DeepAmbientObscuranceImageTest.h"
+#include "vtkDeepGBufferSceneLoader.h"
+
+int TestDeepAmbientObscuranceHeadImage(int argc, char* argv[])
+{
+  const std::string data = DeepGBufferTest::Argument(argc, argv, "--data");
+  return DeepGBufferTest::RunAOImageTest(
+    argc, argv,
+    [&data](vtkRenderer* renderer) {
+      vtkNew<vtkDeepGBufferSceneLoader> loader;
+      loader->SetIsoValue(500.0);
+      if (!loader->Load((data + "/volumes/headsq/quarter").c_str()) ||
+        loader->Populate(renderer) == 0)
+      {
+        std::printf("could not load %s/volumes/headsq/quarter\n", data.c_str());
+        return false;
+      }
+      loader->SetViewDirection(0.0, -1.0, 0.0);
+      loader->SetViewUp(0.0, 0.0, -1.0);
+      loader->ResetCamera(renderer);
+      return true;
+    },
+    [](vtkDeepAmbientObscurancePass*) {}, { 0.79, 0.85, 0.005, 0.2 }, 0.5);
+}
