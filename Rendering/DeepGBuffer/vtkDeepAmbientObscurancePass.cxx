@@ -209,7 +209,11 @@ void vtkDeepAmbientObscurancePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BlurPlaneTolerance: " << this->BlurPlaneTolerance << "\n";
   os << indent << "BlurNormalPower: " << this->BlurNormalPower << "\n";
   os << indent << "Composition: "
-     << (this->Composition == COMPOSITE_MULTIPLY ? "COMPOSITE_MULTIPLY" : "?") << "\n";
+     << (this->Composition == COMPOSITE_MULTIPLY ? "COMPOSITE_MULTIPLY"
+                                                  : this->Composition == COMPOSITE_AMBIENT
+             ? "COMPOSITE_AMBIENT"
+             : "?")
+     << "\n";
   os << indent << "MipThreshold: " << this->MipThreshold << "\n";
   os << indent << "MaximumMipLevel: " << this->MaximumMipLevel << "\n";
 }
@@ -529,8 +533,23 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
     vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
     vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
     vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(ostate);
+    // COMPOSITE_AMBIENT needs the radiance on display (it rewrites it).
+    const bool ambientOnly = this->Composition == COMPOSITE_AMBIENT &&
+      gbuffer->GetDisplayQuantity() == vtkDeepGBufferPass::RADIANCE;
+    const int radianceUnit =
+      ambientOnly ? gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::RADIANCE) : -1;
+    const int ambientUnit =
+      ambientOnly ? gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::AMBIENT) : -1;
     ostate->vtkglEnable(GL_BLEND);
-    ostate->vtkglBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ZERO, GL_ONE);
+    if (ambientOnly && radianceUnit >= 0 && ambientUnit >= 0)
+    {
+      // colour = radiance - (1 - AV) ambient (float), alpha kept.
+      ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ZERO, GL_ZERO, GL_ONE);
+    }
+    else
+    {
+      ostate->vtkglBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ZERO, GL_ONE);
+    }
     ostate->vtkglDisable(GL_DEPTH_TEST);
     ostate->vtkglDepthMask(GL_FALSE);
     vtkShaderProgram* program = in.CompositeQuad->Program;
@@ -539,8 +558,20 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
     visibility->Activate();
     program->SetUniformi("deepVisibility", visibility->GetTextureUnit());
     program->SetUniformi("deepDistance", distanceUnit);
+    const bool useAmbient = radianceUnit >= 0 && ambientUnit >= 0;
+    program->SetUniformi("deepMode", useAmbient ? 1 : 0);
+    program->SetUniformi("deepRadiance", useAmbient ? radianceUnit : distanceUnit);
+    program->SetUniformi("deepAmbient", useAmbient ? ambientUnit : distanceUnit);
     in.CompositeQuad->Render();
     visibility->Deactivate();
+    if (ambientUnit >= 0)
+    {
+      gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::AMBIENT);
+    }
+    if (radianceUnit >= 0)
+    {
+      gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::RADIANCE);
+    }
   }
 
   gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::NORMAL);

@@ -52,7 +52,10 @@
  * max(0, n_X.n_Y)^BlurNormalPower, so it does not blur across depth or
  * normal discontinuities.
  *
- * Composition (COMPOSITE_MULTIPLY, the only mode so far): the G-buffer's
+ * Composition COMPOSITE_AMBIENT: layer 0's colour becomes
+ * radiance - (1 - AV) * ambient, from the G-buffer's RADIANCE and AMBIENT
+ * (float, before the framebuffer's 8-bit rounding), alpha kept.
+ * Composition COMPOSITE_MULTIPLY (default): the G-buffer's
  * layer-0 image and depth are resolved into the renderer's framebuffer, then
  * the colour is multiplied by AV (alpha untouched), like vtkSSAOPass.
  * Pixels where layer 0 is empty keep the background.
@@ -97,10 +100,11 @@ public:
   vtkTypeMacro(vtkDeepAmbientObscurancePass, vtkRenderPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// How AV is applied to the image. Only COMPOSITE_MULTIPLY exists so far.
+  /// How AV is applied to the image.
   enum CompositionMode
   {
-    COMPOSITE_MULTIPLY = 0 ///< layer-0 radiance (the whole colour) times AV
+    COMPOSITE_MULTIPLY = 0, ///< layer-0 radiance (the whole colour) times AV, like vtkSSAOPass
+    COMPOSITE_AMBIENT = 1   ///< only the ambient part: radiance - (1 - AV) ambient
   };
 
   /// Largest sample count: Listing 3 of the paper gives tau for N = 1..98.
@@ -244,9 +248,18 @@ public:
   bool CaptureDistancePyramid(int level, vtkImageData* output, vtkRenderer* renderer = nullptr);
 
   ///@{
-  /// How AV is applied (CompositionMode). Default COMPOSITE_MULTIPLY.
-  vtkSetClampMacro(Composition, int, COMPOSITE_MULTIPLY, COMPOSITE_MULTIPLY);
+  /**
+   * How AV is applied (CompositionMode). Default COMPOSITE_MULTIPLY.
+   * COMPOSITE_AMBIENT darkens only VTK's ambient term (the G-buffer's
+   * AMBIENT quantity: property Ambient x AmbientColor, times the texture),
+   * so direct light keeps its look; with VTK's default Ambient = 0 it
+   * changes nothing. It applies when the G-buffer displays RADIANCE, else
+   * the pass multiplies.
+   */
+  vtkSetClampMacro(Composition, int, COMPOSITE_MULTIPLY, COMPOSITE_AMBIENT);
   vtkGetMacro(Composition, int);
+  void SetCompositionToMultiply() { this->SetComposition(COMPOSITE_MULTIPLY); }
+  void SetCompositionToAmbient() { this->SetComposition(COMPOSITE_AMBIENT); }
   ///@}
 
   /**
