@@ -307,6 +307,30 @@ void vtkDeepAmbientObscurancePass::SetNumberOfSamples(int samples)
 }
 
 //------------------------------------------------------------------------------
+void vtkDeepAmbientObscurancePass::SetQualityPreset(int preset)
+{
+  struct Settings
+  {
+    int Samples;
+    int BlurRadius;
+    double MipThreshold;
+    int MaximumMipLevel;
+  };
+  static const Settings presets[] = { { 8, 2, 4.0, 5 }, { 16, 4, 8.0, 5 }, { 32, 6, 16.0, 5 } };
+  if (preset < PRESET_LOW || preset > PRESET_HIGH)
+  {
+    vtkWarningMacro("Unknown quality preset " << preset << "; the settings are unchanged.");
+    return;
+  }
+  const Settings& p = presets[preset];
+  this->NumberOfSamples = p.Samples;
+  this->BlurRadius = p.BlurRadius;
+  this->MipThreshold = p.MipThreshold;
+  this->MaximumMipLevel = p.MaximumMipLevel;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
 void vtkDeepAmbientObscurancePass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;

@@ -262,6 +262,28 @@ public:
   void SetCompositionToAmbient() { this->SetComposition(COMPOSITE_AMBIENT); }
   ///@}
 
+  /// Quality presets, from low cost to high quality.
+  enum QualityPreset
+  {
+    PRESET_LOW = 0,    ///< N 8, BlurRadius 2, MipThreshold 4, MaximumMipLevel 5
+    PRESET_MEDIUM = 1, ///< N 16, BlurRadius 4, MipThreshold 8, MaximumMipLevel 5 (the defaults)
+    PRESET_HIGH = 2    ///< N 32, BlurRadius 6, MipThreshold 16, MaximumMipLevel 5
+  };
+
+  ///@{
+  /**
+   * Sets NumberOfSamples, BlurRadius, MipThreshold and MaximumMipLevel to a
+   * preset's values (see QualityPreset) with one Modified(). Fewer taps, a
+   * narrower filter and coarser MIP levels (a smaller threshold q) cost
+   * less; the other parameters keep their values. An unknown preset is
+   * ignored with a warning.
+   */
+  void SetQualityPreset(int preset);
+  void SetQualityToLow() { this->SetQualityPreset(PRESET_LOW); }
+  void SetQualityToMedium() { this->SetQualityPreset(PRESET_MEDIUM); }
+  void SetQualityToHigh() { this->SetQualityPreset(PRESET_HIGH); }
+  ///@}
+
   /**
    * Copies the ambient visibility of the last frame rendered for `renderer`
    * (the first renderer the pass rendered if null) into `output`, an image

@@ -107,6 +107,34 @@ int TestDeepAmbientObscuranceTau(int, char*[])
     std::printf("NaN intensity: %g, %d warnings\n", pass->GetIntensity(), warnings);
     ++failures;
   }
+  // Presets set exactly their documented values, in one call.
+  const struct
+  {
+    int Preset, Samples, Blur;
+    double Threshold;
+    int Levels;
+  } presets[] = { { vtkDeepAmbientObscurancePass::PRESET_LOW, 8, 2, 4.0, 5 },
+    { vtkDeepAmbientObscurancePass::PRESET_MEDIUM, 16, 4, 8.0, 5 },
+    { vtkDeepAmbientObscurancePass::PRESET_HIGH, 32, 6, 16.0, 5 } };
+  for (const auto& p : presets)
+  {
+    const vtkMTimeType before = pass->GetMTime();
+    pass->SetQualityPreset(p.Preset);
+    if (pass->GetNumberOfSamples() != p.Samples || pass->GetBlurRadius() != p.Blur ||
+      pass->GetMipThreshold() != p.Threshold || pass->GetMaximumMipLevel() != p.Levels ||
+      pass->GetMTime() <= before)
+    {
+      std::printf("preset %d does not set its values\n", p.Preset);
+      ++failures;
+    }
+  }
+  const int warningsBeforeUnknown = warnings;
+  pass->SetQualityPreset(7);
+  if (warnings != warningsBeforeUnknown + 1 || pass->GetNumberOfSamples() != 32)
+  {
+    std::printf("an unknown preset must warn and change nothing\n");
+    ++failures;
+  }
   std::ostringstream printed;
   pass->Print(printed);
   for (const char* name : { "GBufferPass", "Radius", "AutomaticRadius", "AutomaticRadiusFraction",
