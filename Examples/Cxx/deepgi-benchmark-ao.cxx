@@ -108,7 +108,7 @@ struct Options
 const char* const DefaultMethods = "ssao:8,ssao:16,ssao:32,ssao:64,"
                                    "ours1:4,ours1:8,ours1:16,ours1:32,"
                                    "ours2:4,ours2:8,ours2:16,ours2:32,"
-                                   "fast,quality";
+                                   "low,medium,high";
 
 void Usage()
 {
@@ -126,8 +126,8 @@ void Usage()
     "                       (default all four)\n"
     "  --methods LIST       comma list of ssao:K (vtkSSAOPass, kernel size K, blur on),\n"
     "                       ours1:N[:B] / ours2:N[:B] (one / two layers, N samples,\n"
-    "                       BlurRadius B, default 4), fast (= ours2:8:2),\n"
-    "                       quality (= ours2:32:6). Default:\n"
+    "                       BlurRadius B, default 4), low, medium, high (two\n"
+    "                       layers with a quality preset). Default:\n"
     "                       %s\n"
     "  --data DIR           shared data directory (default %s)\n"
     "  --no-error-maps      do not write the error-map PNGs\n"
@@ -176,19 +176,23 @@ struct Method
   int Parameter = 16; // SSAO kernel size or N
   int Layers = 2;     // ours
   int Blur = 4;       // ours
+  int Preset = -1;    // ours: a vtkDeepAmbientObscurancePass quality preset, or -1
 };
 
 bool ParseMethod(const std::string& spec, Method& m)
 {
-  if (spec == "fast")
+  const char* const presetNames[] = { "low", "medium", "high" };
+  for (int preset = vtkDeepAmbientObscurancePass::PRESET_LOW;
+       preset <= vtkDeepAmbientObscurancePass::PRESET_HIGH; ++preset)
   {
-    m = { "ours 2 layers, fast (N=8, B=2)", "", 1, 8, 2, 2 };
-    return true;
-  }
-  if (spec == "quality")
-  {
-    m = { "ours 2 layers, quality (N=32, B=6)", "", 1, 32, 2, 6 };
-    return true;
+    if (spec == presetNames[preset])
+    {
+      vtkNew<vtkDeepAmbientObscurancePass> settings;
+      settings->SetQualityPreset(preset);
+      m = { std::string("ours 2 layers, preset ") + presetNames[preset], "", 1,
+        settings->GetNumberOfSamples(), 2, settings->GetBlurRadius(), preset };
+      return true;
+    }
   }
   const std::vector<std::string> p = Split(spec, ':');
   if (p.size() == 2 && p[0] == "ssao")
@@ -335,7 +339,7 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     Method parsed;
     if (!ParseMethod(m, parsed))
     {
-      return bad("unknown method '" + m + "' (ssao:K, ours1:N[:B], ours2:N[:B], fast, quality)");
+      return bad("unknown method '" + m + "' (ssao:K, ours1:N[:B], ours2:N[:B], low, medium, high)");
     }
   }
   return true;
@@ -698,10 +702,17 @@ int main(int argc, char* argv[])
       {
         auto ao = vtkSmartPointer<vtkDeepAmbientObscurancePass>::New();
         ao->SetRadius(r);
-        ao->SetNumberOfSamples(m.Parameter);
+        if (m.Preset >= 0)
+        {
+          ao->SetQualityPreset(m.Preset);
+        }
+        else
+        {
+          ao->SetNumberOfSamples(m.Parameter);
+          ao->SetBlurRadius(m.Blur);
+        }
         ao->SetUseSecondLayer(m.Layers == 2);
         ao->GetGBufferPass()->SetNumberOfLayers(m.Layers);
-        ao->SetBlurRadius(m.Blur);
         passes.push_back(ao);
       }
     }
