@@ -954,7 +954,8 @@ int main(int argc, char* argv[])
       r.A.CaptureDifference < 0 ? "" : Fmt("%.4f", r.A.CaptureDifference).c_str());
     md << b;
     std::snprintf(b, sizeof(b),
-      "%s,%s,%s,%s,%d,%d,%d,%.4f,%.4f,%.5f,%.5f,%.5f,%.4f,%.5f,%.5f,%.5f,%.4f,%s\n",
+      // Text fields are quoted: method names may contain commas.
+      "\"%s\",\"%s\",\"%s\",%s,%d,%d,%d,%.4f,%.4f,%.5f,%.5f,%.5f,%.4f,%.5f,%.5f,%.5f,%.4f,%s\n",
       r.Scene.c_str(), r.M.Name.c_str(), r.M.Family.c_str(), r.M.Kind == 0 ? "ssao" : "ours",
       r.M.Parameter, r.M.Kind == 0 ? 0 : r.M.Layers, r.M.Blur, r.FrameMs, r.FrameMs - plainMs,
       r.A.Rmse, r.A.Mae, r.A.RmseLayer1, r.A.Gamma, r.A.CRmse, r.A.CMae, r.A.CRmseLayer1,
