@@ -1,5 +1,7 @@
 #include "vtkDeepAmbientObscurancePass.h"
 
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -7,6 +9,8 @@
 #include "vtkImageData.h"
 #include "vtkIntArray.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -31,6 +35,7 @@
 #include "vtkDeepAmbientObscuranceCompositeFS.h"
 #include "vtkDeepAmbientObscuranceFS.h"
 #include "vtkDeepAmbientObscuranceMinifyFS.h"
+#include "vtkDeepAmbientObscuranceTemporalFS.h"
 #include "vtkDeepGBufferCommon.h"
 
 #include <algorithm>
@@ -108,6 +113,57 @@ struct vtkDeepAmbientObscuranceRendererState
   int MipLayers = 0;
   int MipWidth = 0;
   int MipHeight = 0;
+  // Temporal accumulation: ping-pong RG32F (AV, layer-0 distance) textures,
+  // History[HistoryCurrent] is the last frame's; the camera it was drawn
+  // with; the renderer's render count (StartEvent observer) to detect a
+  // render of this renderer that did not go through this pass.
+  vtkSmartPointer<vtkTextureObject> History[2];
+  int HistoryCurrent = 0;
+  bool HistoryValid = false;
+  bool Temporal = false; // the last frame accumulated (AV is in History)
+  double PreviousView[16];
+  double PreviousProjection[16];
+  unsigned long RenderCount = 0;
+  unsigned long LastRenderCount = 0;
+  unsigned long ObserverTag = 0;
+  vtkSmartPointer<vtkCallbackCommand> Observer;
+  unsigned int FrameIndex = 0;
+
+  static void CountRender(vtkObject*, unsigned long, void* clientData, void*)
+  {
+    ++static_cast<vtkDeepAmbientObscuranceRendererState*>(clientData)->RenderCount;
+  }
+
+  void Observe(vtkRenderer* renderer)
+  {
+    this->Observer = vtkSmartPointer<vtkCallbackCommand>::New();
+    this->Observer->SetClientData(this);
+    this->Observer->SetCallback(&vtkDeepAmbientObscuranceRendererState::CountRender);
+    this->ObserverTag = renderer->AddObserver(vtkCommand::StartEvent, this->Observer);
+  }
+
+  ~vtkDeepAmbientObscuranceRendererState()
+  {
+    if (this->Observer && this->Renderer)
+    {
+      this->Renderer->RemoveObserver(this->ObserverTag);
+    }
+  }
+
+  void ResetHistory(vtkWindow* w)
+  {
+    for (auto& t : this->History)
+    {
+      if (t)
+      {
+        t->ReleaseGraphicsResources(w);
+        t = nullptr;
+      }
+    }
+    this->HistoryValid = false;
+    this->Temporal = false;
+    this->FrameIndex = 0;
+  }
 
   void ReleaseMip()
   {
@@ -127,6 +183,7 @@ struct vtkDeepAmbientObscuranceRendererState
   void Release(vtkWindow* w)
   {
     this->ReleaseMip();
+    this->ResetHistory(w);
     for (auto& t : this->Targets)
     {
       if (t)
@@ -151,6 +208,7 @@ public:
   vtkOpenGLQuadHelper* BlurQuad = nullptr;
   vtkOpenGLQuadHelper* CompositeQuad = nullptr;
   vtkOpenGLQuadHelper* MinifyQuad = nullptr;
+  vtkOpenGLQuadHelper* TemporalQuad = nullptr;
   bool WarnedUnsupported = false;
 
   vtkDeepAmbientObscuranceRendererState* Find(vtkRenderer* renderer)
@@ -181,6 +239,8 @@ vtkDeepAmbientObscurancePass::~vtkDeepAmbientObscurancePass()
   delete in.AOQuad;
   delete in.BlurQuad;
   delete in.CompositeQuad;
+  delete in.MinifyQuad;
+  delete in.TemporalQuad;
   if (in.Framebuffer)
   {
     in.Framebuffer->Delete();
@@ -216,6 +276,7 @@ void vtkDeepAmbientObscurancePass::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "MipThreshold: " << this->MipThreshold << "\n";
   os << indent << "MaximumMipLevel: " << this->MaximumMipLevel << "\n";
+  os << indent << "TemporalAlpha: " << this->TemporalAlpha << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -359,7 +420,7 @@ bool ReadyQuad(vtkOpenGLQuadHelper*& quad, vtkOpenGLRenderWindow* window, const 
 }
 
 bool AllocateTarget(vtkSmartPointer<vtkTextureObject>& texture, vtkOpenGLRenderWindow* window,
-  int width, int height)
+  int width, int height, int components = 1)
 {
   if (texture && texture->GetWidth() == static_cast<unsigned int>(width) &&
     texture->GetHeight() == static_cast<unsigned int>(height))
@@ -370,14 +431,14 @@ bool AllocateTarget(vtkSmartPointer<vtkTextureObject>& texture, vtkOpenGLRenderW
   {
     texture = vtkSmartPointer<vtkTextureObject>::New();
     texture->SetContext(window);
-    texture->SetInternalFormat(GL_R32F);
-    texture->SetFormat(GL_RED);
+    texture->SetInternalFormat(components == 2 ? GL_RG32F : GL_R32F);
+    texture->SetFormat(components == 2 ? GL_RG : GL_RED);
     texture->SetDataType(GL_FLOAT);
     texture->SetMinificationFilter(vtkTextureObject::Nearest);
     texture->SetMagnificationFilter(vtkTextureObject::Nearest);
     texture->SetWrapS(vtkTextureObject::ClampToEdge);
     texture->SetWrapT(vtkTextureObject::ClampToEdge);
-    return texture->Allocate2D(width, height, 1, VTK_FLOAT);
+    return texture->Allocate2D(width, height, components, VTK_FLOAT);
   }
   texture->Resize(width, height);
   return true;
@@ -402,6 +463,7 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
     if (it != in.States.end())
     {
       it->second->HasFrame = false;
+      it->second->ResetHistory(renderer->GetRenderWindow());
     }
     return;
   }
@@ -438,6 +500,7 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
   {
     slot.reset(new vtkDeepAmbientObscuranceRendererState);
     slot->Renderer = renderer;
+    slot->Observe(renderer);
   }
   if (!in.FirstRenderer || !in.States.count(in.FirstRenderer))
   {
@@ -445,6 +508,24 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
   }
   vtkDeepAmbientObscuranceRendererState& state = *slot;
   state.HasFrame = false;
+  // Temporal history: reset when off, on a resize, and when this renderer
+  // was rendered without this pass since the history's frame.
+  const bool consecutive = state.RenderCount == state.LastRenderCount + 1;
+  state.LastRenderCount = state.RenderCount;
+  const bool temporal = this->TemporalAlpha > 0.0 && layers > 0;
+  if (!temporal || !consecutive || state.Width != width || state.Height != height)
+  {
+    state.ResetHistory(window);
+  }
+  state.Temporal = false;
+  double rotationOffset = 0.0;
+  if (temporal)
+  {
+    // Golden-ratio sequence of rotations: frame k adds 2 pi fract(k / golden ratio).
+    ++state.FrameIndex;
+    const double f = 0.6180339887498949 * static_cast<double>(state.FrameIndex % 1000003u);
+    rotationOffset = 2.0 * vtkMath::Pi() * (f - std::floor(f));
+  }
   for (auto& t : state.Targets)
   {
     if (!AllocateTarget(t, window, width, height))
@@ -466,7 +547,9 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
   const bool blurReady = ReadyQuad(in.BlurQuad, window, vtkDeepAmbientObscuranceBlurFS);
   const bool compositeReady = ReadyQuad(in.CompositeQuad, window, vtkDeepAmbientObscuranceCompositeFS);
   const bool minifyReady = ReadyQuad(in.MinifyQuad, window, vtkDeepAmbientObscuranceMinifyFS);
-  if (!aoReady || !blurReady || !compositeReady || !minifyReady)
+  const bool temporalReady =
+    !temporal || ReadyQuad(in.TemporalQuad, window, vtkDeepAmbientObscuranceTemporalFS);
+  if (!aoReady || !blurReady || !compositeReady || !minifyReady || !temporalReady)
   {
     vtkErrorMacro("The ambient obscurance shaders failed to compile.");
     gbuffer->ResolveToFramebuffer(s);
@@ -515,6 +598,7 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
     program->SetUniformi("deepDistanceMip", mipUnit >= 0 ? mipUnit : distanceUnit);
     program->SetUniformi("deepMaxMip", mipUnit >= 0 ? state.MipLevels - 1 : 0);
     program->SetUniformf("deepMipThreshold", static_cast<float>(this->MipThreshold));
+    program->SetUniformf("deepRotationOffset", static_cast<float>(rotationOffset));
     in.AOQuad->Render();
     if (mipUnit >= 0)
     {
@@ -545,6 +629,71 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
       program->SetUniformf("deepNormalPower", static_cast<float>(this->BlurNormalPower));
       in.BlurQuad->Render();
       input->Deactivate();
+    }
+
+    // Temporal accumulation: FILTERED + History[current] -> History[other].
+    if (temporal)
+    {
+      bool allocated = true;
+      for (auto& t : state.History)
+      {
+        allocated = allocated && AllocateTarget(t, window, width, height, 2);
+      }
+      if (allocated)
+      {
+        const int next = 1 - state.HistoryCurrent;
+        in.Framebuffer->AddColorAttachment(0, state.History[next]);
+        in.Framebuffer->ActivateDrawBuffers(1);
+        program = in.TemporalQuad->Program;
+        window->GetShaderCache()->ReadyShaderProgram(program);
+        vtkTextureObject* input = state.Targets[FILTERED];
+        vtkTextureObject* history = state.History[state.HistoryCurrent];
+        input->Activate();
+        history->Activate();
+        // Current camera -> previous camera: V_prev * inverse(V_now), in
+        // double; GLSL matrices are column-major.
+        vtkNew<vtkMatrix4x4> toPrevious, inverseView;
+        inverseView->DeepCopy(view);
+        inverseView->Invert();
+        float toPreviousGL[16], previousProjectionGL[16];
+        if (state.HistoryValid)
+        {
+          vtkMatrix4x4::Multiply4x4(state.PreviousView, &inverseView->Element[0][0],
+            &toPrevious->Element[0][0]);
+        }
+        for (int r = 0; r < 4; ++r)
+        {
+          for (int c = 0; c < 4; ++c)
+          {
+            toPreviousGL[c * 4 + r] = static_cast<float>(toPrevious->GetElement(r, c));
+            previousProjectionGL[c * 4 + r] = static_cast<float>(
+              state.HistoryValid ? state.PreviousProjection[r * 4 + c] : projection[r * 4 + c]);
+          }
+        }
+        program->SetUniformi("deepInput", input->GetTextureUnit());
+        program->SetUniformi("deepHistory", history->GetTextureUnit());
+        program->SetUniformi("deepDistance", distanceUnit);
+        program->SetUniform4f("deepProjXY", projXY);
+        program->SetUniform4f("deepProjT", projT);
+        program->SetUniformMatrix4x4("deepToPrevious", toPreviousGL);
+        program->SetUniformMatrix4x4("deepPrevProjection", previousProjectionGL);
+        program->SetUniformf("deepAlpha", static_cast<float>(this->TemporalAlpha));
+        program->SetUniformi("deepHasHistory", state.HistoryValid ? 1 : 0);
+        program->SetUniformf("deepTolerance", static_cast<float>(TEMPORAL_DISTANCE_TOLERANCE));
+        in.TemporalQuad->Render();
+        history->Deactivate();
+        input->Deactivate();
+        state.HistoryCurrent = next;
+        state.HistoryValid = true;
+        state.Temporal = true;
+        std::copy(view, view + 16, state.PreviousView);
+        std::copy(projection, projection + 16, state.PreviousProjection);
+      }
+      else
+      {
+        vtkErrorMacro("Could not allocate the temporal history; AV is not accumulated.");
+        state.ResetHistory(window);
+      }
     }
     in.Framebuffer->RemoveColorAttachment(0);
     ostate->PopFramebufferBindings();
@@ -578,7 +727,8 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
     ostate->vtkglDepthMask(GL_FALSE);
     vtkShaderProgram* program = in.CompositeQuad->Program;
     window->GetShaderCache()->ReadyShaderProgram(program);
-    vtkTextureObject* visibility = state.Targets[FILTERED];
+    vtkTextureObject* visibility =
+      state.Temporal ? state.History[state.HistoryCurrent] : state.Targets[FILTERED];
     visibility->Activate();
     program->SetUniformi("deepVisibility", visibility->GetTextureUnit());
     program->SetUniformi("deepDistance", distanceUnit);
@@ -765,7 +915,8 @@ void vtkDeepAmbientObscurancePass::ReleaseGraphicsResources(vtkWindow* w)
   }
   in.States.clear();
   in.FirstRenderer = nullptr;
-  for (vtkOpenGLQuadHelper** quad : { &in.AOQuad, &in.BlurQuad, &in.CompositeQuad, &in.MinifyQuad })
+  for (vtkOpenGLQuadHelper** quad :
+    { &in.AOQuad, &in.BlurQuad, &in.CompositeQuad, &in.MinifyQuad, &in.TemporalQuad })
   {
     if (*quad)
     {
@@ -817,7 +968,10 @@ bool vtkDeepAmbientObscurancePass::CaptureAmbientVisibility(
   glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &previousArray);
   glBindTexture(GL_TEXTURE_2D, state->Targets[RAW]->GetHandle());
   glGetTexImage(GL_TEXTURE_2D, 0, GL_RED, GL_FLOAT, raw.data());
-  glBindTexture(GL_TEXTURE_2D, state->Targets[FILTERED]->GetHandle());
+  // The accumulated AV when the last frame accumulated (R of the RG32F history).
+  glBindTexture(GL_TEXTURE_2D,
+    (state->Temporal ? state->History[state->HistoryCurrent] : state->Targets[FILTERED])
+      ->GetHandle());
   glGetTexImage(GL_TEXTURE_2D, 0, GL_RED, GL_FLOAT, filtered.data());
   glBindTexture(GL_TEXTURE_2D, previous2D);
   // The distance array holds every layer (and possibly an oracle layer):

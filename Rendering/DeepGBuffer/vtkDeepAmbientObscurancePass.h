@@ -52,6 +52,24 @@
  * max(0, n_X.n_Y)^BlurNormalPower, so it does not blur across depth or
  * normal discontinuities.
  *
+ * Temporal accumulation (TemporalAlpha alpha > 0, off by default): the
+ * filtered AV of this frame becomes mix(AV_now, AV_history, alpha) where the
+ * history is valid, AV_now elsewhere. The history is the last frame's final
+ * AV and layer-0 distance (RG32F, per renderer) with the view and projection
+ * it was drawn with. Reprojection: the pixel's camera-space point from the
+ * current distance and projection, to world with the inverse current view,
+ * to the previous clip space with the previous view and projection, to the
+ * nearest previous texel. Rejected (AV_now) when it is behind the previous
+ * camera or outside the previous image, when the previous distance there
+ * is 0, or when |d_prev - d_reprojected| > TEMPORAL_DISTANCE_TOLERANCE
+ * (0.01) x d_reprojected. The history is reset on a resize, by
+ * ReleaseGraphicsResources, while TemporalAlpha is 0, when the G-buffer is
+ * unavailable, and when the renderer was rendered without this pass since
+ * the history's frame (its StartEvents are counted). While accumulating,
+ * phi gets a per-frame offset 2 pi fract(k / golden ratio) (k the frame
+ * index since the reset), so successive frames sample other directions;
+ * with TemporalAlpha 0 phi and the AV are bit-identical to no accumulation.
+ *
  * Composition COMPOSITE_AMBIENT: layer 0's colour becomes
  * radiance - (1 - AV) * ambient, from the G-buffer's RADIANCE and AMBIENT
  * (float, before the framebuffer's 8-bit rounding), alpha kept.
@@ -66,6 +84,7 @@
  * | raw AV   | R32F   | eq. 1 before the filter (1 where empty)     |
  * | blur tmp | R32F   | after the horizontal pass                  |
  * | AV       | R32F   | after the vertical pass                    |
+ * | history  | RG32F  | x2, accumulated AV + layer-0 distance (only with TemporalAlpha > 0) |
  * Reads: the G-buffer's DEPTH and NORMAL arrays (all layers) and its
  * layer-0 RADIANCE (through ResolveToFramebuffer). Writes: the renderer's
  * colour and depth.
@@ -106,6 +125,9 @@ public:
     COMPOSITE_MULTIPLY = 0, ///< layer-0 radiance (the whole colour) times AV, like vtkSSAOPass
     COMPOSITE_AMBIENT = 1   ///< only the ambient part: radiance - (1 - AV) ambient
   };
+
+  /// Relative distance tolerance of the temporal reprojection test.
+  static constexpr double TEMPORAL_DISTANCE_TOLERANCE = 0.01;
 
   /// Largest sample count: Listing 3 of the paper gives tau for N = 1..98.
   static constexpr int MAXIMUM_NUMBER_OF_SAMPLES = 98;
@@ -236,6 +258,18 @@ public:
   vtkGetMacro(MaximumMipLevel, int);
   ///@}
 
+  ///@{
+  /**
+   * Temporal accumulation weight alpha of the reprojected history (see the
+   * class description): 0 (default) turns accumulation off, the image is
+   * then exactly the single-frame one; larger values average over more
+   * frames (about (1 + alpha) / (1 - alpha) frames for a still camera) but
+   * lag more behind changes. Clamped to [0, 0.99].
+   */
+  vtkSetClampMacro(TemporalAlpha, double, 0.0, 0.99);
+  vtkGetMacro(TemporalAlpha, double);
+  ///@}
+
   /**
    * Copies level `level` of the distance pyramid of the last frame rendered
    * for `renderer` (the first renderer if null) into `output`, an image of
@@ -288,7 +322,9 @@ public:
    * Copies the ambient visibility of the last frame rendered for `renderer`
    * (the first renderer the pass rendered if null) into `output`, an image
    * of the viewport's size: float point-data arrays "AmbientVisibility"
-   * (after the bilateral filter), "RawAmbientVisibility" (eq. 1 before it),
+   * (after the bilateral filter and, with TemporalAlpha > 0, the temporal
+   * accumulation: the AV the image was composited with),
+   * "RawAmbientVisibility" (eq. 1 before it),
    * both 1 where layer 0 is empty, and unsigned char "Valid" (1 where
    * layer 0 has a surface). Field data "Radius" (the effective r) and
    * "NumberOfSamples". The render window's context must be current (it is
@@ -328,6 +364,7 @@ protected:
   int Composition = COMPOSITE_MULTIPLY;
   double MipThreshold = 8.0;
   int MaximumMipLevel = 5;
+  double TemporalAlpha = 0.0;
 
 private:
   vtkDeepAmbientObscurancePass(const vtkDeepAmbientObscurancePass&) = delete;

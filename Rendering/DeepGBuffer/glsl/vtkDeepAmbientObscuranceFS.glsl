@@ -20,6 +20,7 @@ uniform float deepIntensity;   // exponent applied to eq. 1
 uniform sampler2DArray deepDistanceMip; // rotated-grid distance pyramid
 uniform int deepMaxMip;        // finest..coarsest level index available
 uniform float deepMipThreshold; // q, pixels
+uniform float deepRotationOffset; // radians added to phi (0 unless temporal)
 
 //VTK::DeepGBuffer::Common
 
@@ -50,6 +51,9 @@ void main()
   // Per-pixel rotation: interleaved gradient noise of (x, y).
   float phi = 2.0 * deepPi *
     fract(52.9829189 * fract(dot(vec2(pixel), vec2(0.06711056, 0.00583715))));
+  // Temporal accumulation: a frame-dependent offset (0 when it is off, so
+  // phi is unchanged bit for bit).
+  phi += deepRotationOffset;
 
   float sum = 0.0;
   float invN = 1.0 / float(deepSamples);
