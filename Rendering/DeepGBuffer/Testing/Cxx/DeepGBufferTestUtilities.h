@@ -12,6 +12,7 @@
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -37,6 +38,34 @@ inline std::string Argument(int argc, char* argv[], const char* flag, const char
     }
   }
   return fallback;
+}
+
+// Test checks: each prints "ok: what" or "FAILED: what"; CheckFailures()
+// counts the failed ones for the test's exit status.
+inline int& CheckFailures()
+{
+  static int failures = 0;
+  return failures;
+}
+
+inline void Check(bool ok, const std::string& what)
+{
+  std::printf("%s: %s\n", ok ? "ok" : "FAILED", what.c_str());
+  if (!ok)
+  {
+    ++CheckFailures();
+  }
+}
+
+// Adds an actor drawing `source`'s output with default properties.
+inline vtkActor* AddSourceActor(vtkRenderer* renderer, vtkAlgorithm* source)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  renderer->AddActor(actor);
+  return actor;
 }
 
 // An offscreen window without multisampling, so images are deterministic:

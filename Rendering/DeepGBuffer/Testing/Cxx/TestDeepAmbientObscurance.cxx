@@ -49,16 +49,6 @@ constexpr int Width = 240;
 constexpr int Height = 200;
 constexpr double Pi = 3.14159265358979323846;
 
-int Failures = 0;
-void Check(bool ok, const char* what)
-{
-  if (!ok)
-  {
-    std::printf("FAILED: %s\n", what);
-    ++Failures;
-  }
-}
-
 void AddQuad(vtkRenderer* renderer, const double origin[3], const double p1[3], const double p2[3])
 {
   vtkNew<vtkPlaneSource> plane;
@@ -603,6 +593,6 @@ int TestDeepAmbientObscurance(int, char*[])
   TestNoBleed();
   TestSecondLayer();
   TestSampleCountsAndRelease();
-  std::printf("%s\n", Failures ? "FAILED" : "passed");
-  return Failures ? 1 : 0;
+  std::printf("%s\n", CheckFailures() ? "FAILED" : "passed");
+  return CheckFailures() ? 1 : 0;
 }

@@ -21,16 +21,6 @@ using namespace DeepGBufferTest;
 
 namespace
 {
-int Failures = 0;
-void Check(bool ok, const char* what)
-{
-  if (!ok)
-  {
-    std::printf("FAILED: %s\n", what);
-    ++Failures;
-  }
-}
-
 void AddQuad(vtkRenderer* renderer, const double o[3], const double p1[3], const double p2[3],
   double ambient)
 {
@@ -125,6 +115,6 @@ int TestDeepAmbientObscuranceComposite(int, char*[])
   Check(darkening > 5.0, "the ambient term is darkened near the corner");
   Run(0.0, worst, darkening, valid);
   Check(valid > 1000 && worst <= 2.0 && darkening <= 1.0, "Ambient = 0: the plain radiance");
-  std::printf("%s\n", Failures ? "FAILED" : "passed");
-  return Failures ? 1 : 0;
+  std::printf("%s\n", CheckFailures() ? "FAILED" : "passed");
+  return CheckFailures() ? 1 : 0;
 }

@@ -29,16 +29,6 @@ namespace
 constexpr int Width = 160;
 constexpr int Height = 120;
 
-int Failures = 0;
-void Check(bool ok, const char* what)
-{
-  std::printf("  [%s] %s\n", ok ? "ok" : "FAILED", what);
-  if (!ok)
-  {
-    ++Failures;
-  }
-}
-
 void AddQuad(vtkRenderer* renderer, double s, const double o[3], const double a[3], const double b[3])
 {
   vtkNew<vtkPlaneSource> plane;
@@ -561,6 +551,6 @@ int TestDeepAmbientObscuranceExtremes(int, char*[])
   }
   TestGrazing();
   TestWindowSizes();
-  std::printf("%s (%d failed checks)\n", Failures ? "FAILED" : "passed", Failures);
-  return Failures ? 1 : 0;
+  std::printf("%s (%d failed checks)\n", CheckFailures() ? "FAILED" : "passed", CheckFailures());
+  return CheckFailures() ? 1 : 0;
 }

@@ -32,25 +32,6 @@ using namespace DeepGBufferTest;
 
 namespace
 {
-int Failures = 0;
-void Check(bool ok, const char* what)
-{
-  if (!ok)
-  {
-    std::printf("FAILED: %s\n", what);
-    ++Failures;
-  }
-}
-
-void AddActor(vtkRenderer* renderer, vtkAlgorithm* source)
-{
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(source->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  renderer->AddActor(actor);
-}
-
 // Floor, wall and a box in front of the wall (two layers where the box hides
 // the floor and the wall).
 void Scene(vtkRenderer* renderer)
@@ -59,18 +40,18 @@ void Scene(vtkRenderer* renderer)
   floor->SetOrigin(-4, 0, 4);
   floor->SetPoint1(4, 0, 4);
   floor->SetPoint2(-4, 0, -2);
-  AddActor(renderer, floor);
+  AddSourceActor(renderer, floor);
   vtkNew<vtkPlaneSource> wall;
   wall->SetOrigin(-4, 0, -2);
   wall->SetPoint1(4, 0, -2);
   wall->SetPoint2(-4, 4, -2);
-  AddActor(renderer, wall);
+  AddSourceActor(renderer, wall);
   vtkNew<vtkCubeSource> box;
   box->SetCenter(0.5, 0.75, 0.0);
   box->SetXLength(1.0);
   box->SetYLength(1.5);
   box->SetZLength(1.0);
-  AddActor(renderer, box);
+  AddSourceActor(renderer, box);
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetPosition(0.0, 2.5, 4.0);
   camera->SetFocalPoint(0.0, 0.3, -1.5);
@@ -272,6 +253,6 @@ int TestDeepAmbientObscuranceMip(int, char*[])
   TestPyramidContents();
   TestCloseToLevelZero();
   Time();
-  std::printf("%s\n", Failures ? "FAILED" : "passed");
-  return Failures ? 1 : 0;
+  std::printf("%s\n", CheckFailures() ? "FAILED" : "passed");
+  return CheckFailures() ? 1 : 0;
 }

@@ -35,25 +35,6 @@ using namespace DeepGBufferTest;
 
 namespace
 {
-int Failures = 0;
-void Check(bool ok, const char* what)
-{
-  if (!ok)
-  {
-    std::printf("FAILED: %s\n", what);
-    ++Failures;
-  }
-}
-
-void AddActor(vtkRenderer* renderer, vtkAlgorithm* source)
-{
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(source->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  renderer->AddActor(actor);
-}
-
 // Floor and wall (the corner), optionally a box in front of the wall.
 void Scene(vtkRenderer* renderer, bool box)
 {
@@ -61,12 +42,12 @@ void Scene(vtkRenderer* renderer, bool box)
   floor->SetOrigin(-4, 0, 4);
   floor->SetPoint1(4, 0, 4);
   floor->SetPoint2(-4, 0, -2);
-  AddActor(renderer, floor);
+  AddSourceActor(renderer, floor);
   vtkNew<vtkPlaneSource> wall;
   wall->SetOrigin(-4, 0, -2);
   wall->SetPoint1(4, 0, -2);
   wall->SetPoint2(-4, 4, -2);
-  AddActor(renderer, wall);
+  AddSourceActor(renderer, wall);
   if (box)
   {
     vtkNew<vtkCubeSource> cube;
@@ -74,7 +55,7 @@ void Scene(vtkRenderer* renderer, bool box)
     cube->SetXLength(1.0);
     cube->SetYLength(1.5);
     cube->SetZLength(1.0);
-    AddActor(renderer, cube);
+    AddSourceActor(renderer, cube);
   }
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetPosition(0.0, 2.5, 4.0);
@@ -431,6 +412,6 @@ int TestDeepAmbientObscuranceTemporal(int, char*[])
   TestConvergence();
   TestMovingCamera();
   TestResets();
-  std::printf("%s\n", Failures ? "FAILED" : "passed");
-  return Failures ? 1 : 0;
+  std::printf("%s\n", CheckFailures() ? "FAILED" : "passed");
+  return CheckFailures() ? 1 : 0;
 }

@@ -36,14 +36,6 @@ using namespace DeepGBufferTest;
 
 namespace
 {
-int Failures = 0;
-
-void Check(bool condition, const std::string& what)
-{
-  std::printf("%s: %s\n", condition ? "ok" : "FAILED", what.c_str());
-  Failures += condition ? 0 : 1;
-}
-
 // A unit quad centred at (x, y) in the z = 0 plane, facing the camera.
 vtkSmartPointer<vtkPlaneSource> Quad(double x, double y)
 {
@@ -258,6 +250,6 @@ int TestDeepGBufferColoring(int, char*[])
   Check(pass->GetTextureHandle(renderer, vtkDeepGBufferPass::DEPTH) == 0,
     "no textures after ReleaseGraphicsResources");
 
-  std::printf("%d failure(s)\n", Failures);
-  return Failures ? 1 : 0;
+  std::printf("%d failure(s)\n", CheckFailures());
+  return CheckFailures() ? 1 : 0;
 }

@@ -24,17 +24,6 @@ using namespace DeepGBufferTest;
 
 namespace
 {
-int Failures = 0;
-
-void Check(bool condition, const char* what)
-{
-  std::printf("%s: %s\n", condition ? "ok" : "FAILED", what);
-  if (!condition)
-  {
-    ++Failures;
-  }
-}
-
 vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithm* source, double r, double g, double b)
 {
   auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
@@ -342,6 +331,6 @@ int TestDeepGBufferRobustness(int, char*[])
   TestEmptyAndChangingScenes();
   TestViewportsAndProjection();
   TestMappersAndTranslucency();
-  std::printf("%d failure(s)\n", Failures);
-  return Failures ? 1 : 0;
+  std::printf("%d failure(s)\n", CheckFailures());
+  return CheckFailures() ? 1 : 0;
 }
