@@ -1,5 +1,6 @@
 #include "vtkDeepAmbientObscurancePass.h"
 
+#include "vtkActor.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkDeepGBufferPass.h"
@@ -21,6 +22,8 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkPointData.h"
+#include "vtkPropCollection.h"
+#include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureUnitManager.h"
@@ -268,11 +271,8 @@ void vtkDeepAmbientObscurancePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BlurRadius: " << this->BlurRadius << "\n";
   os << indent << "BlurPlaneTolerance: " << this->BlurPlaneTolerance << "\n";
   os << indent << "BlurNormalPower: " << this->BlurNormalPower << "\n";
-  os << indent << "Composition: "
-     << (this->Composition == COMPOSITE_MULTIPLY ? "COMPOSITE_MULTIPLY"
-                                                  : this->Composition == COMPOSITE_AMBIENT
-             ? "COMPOSITE_AMBIENT"
-             : "?")
+  os << indent << "Composition: " << GetCompositionAsString(this->Composition) << "\n";
+  os << indent << "EffectiveComposition: " << GetCompositionAsString(this->EffectiveComposition)
      << "\n";
   os << indent << "MipThreshold: " << this->MipThreshold << "\n";
   os << indent << "MaximumMipLevel: " << this->MaximumMipLevel << "\n";
@@ -287,6 +287,22 @@ int vtkDeepAmbientObscurancePass::GetSpiralTurns(int numberOfSamples)
     return 0;
   }
   return SpiralTurns[numberOfSamples - 1];
+}
+
+//------------------------------------------------------------------------------
+const char* vtkDeepAmbientObscurancePass::GetCompositionAsString(int composition)
+{
+  switch (composition)
+  {
+    case COMPOSITE_MULTIPLY:
+      return "COMPOSITE_MULTIPLY";
+    case COMPOSITE_AMBIENT:
+      return "COMPOSITE_AMBIENT";
+    case COMPOSITE_AUTOMATIC:
+      return "COMPOSITE_AUTOMATIC";
+    default:
+      return "?";
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -442,6 +458,30 @@ bool AllocateTarget(vtkSmartPointer<vtkTextureObject>& texture, vtkOpenGLRenderW
   }
   texture->Resize(width, height);
   return true;
+}
+
+// True when a visible actor with opaque geometry has an ambient term, i.e.
+// when the G-buffer's AMBIENT quantity can be non-zero somewhere.
+bool HasAmbientTerm(vtkRenderer* renderer)
+{
+  vtkCollectionSimpleIterator it;
+  vtkPropCollection* props = renderer->GetViewProps();
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    vtkActor* actor = vtkActor::SafeDownCast(prop);
+    if (!actor || !actor->GetVisibility() || !actor->HasOpaqueGeometry())
+    {
+      continue;
+    }
+    vtkProperty* property = actor->GetProperty();
+    const double* color = property->GetAmbientColor();
+    if (property->GetAmbient() > 0.0 && std::max({ color[0], color[1], color[2] }) > 0.0)
+    {
+      return true;
+    }
+  }
+  return false;
 }
 }
 
@@ -706,8 +746,13 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
     vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
     vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
     vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(ostate);
+    int composition = this->Composition;
+    if (composition == COMPOSITE_AUTOMATIC)
+    {
+      composition = HasAmbientTerm(renderer) ? COMPOSITE_AMBIENT : COMPOSITE_MULTIPLY;
+    }
     // COMPOSITE_AMBIENT needs the radiance on display (it rewrites it).
-    const bool ambientOnly = this->Composition == COMPOSITE_AMBIENT &&
+    const bool ambientOnly = composition == COMPOSITE_AMBIENT &&
       gbuffer->GetDisplayQuantity() == vtkDeepGBufferPass::RADIANCE;
     const int radianceUnit =
       ambientOnly ? gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::RADIANCE) : -1;
@@ -733,6 +778,7 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
     program->SetUniformi("deepVisibility", visibility->GetTextureUnit());
     program->SetUniformi("deepDistance", distanceUnit);
     const bool useAmbient = radianceUnit >= 0 && ambientUnit >= 0;
+    this->EffectiveComposition = useAmbient ? COMPOSITE_AMBIENT : COMPOSITE_MULTIPLY;
     program->SetUniformi("deepMode", useAmbient ? 1 : 0);
     program->SetUniformi("deepRadiance", useAmbient ? radianceUnit : distanceUnit);
     program->SetUniformi("deepAmbient", useAmbient ? ambientUnit : distanceUnit);

@@ -73,9 +73,12 @@
  * Composition COMPOSITE_AMBIENT: layer 0's colour becomes
  * radiance - (1 - AV) * ambient, from the G-buffer's RADIANCE and AMBIENT
  * (float, before the framebuffer's 8-bit rounding), alpha kept.
- * Composition COMPOSITE_MULTIPLY (default): the G-buffer's
+ * Composition COMPOSITE_MULTIPLY: the G-buffer's
  * layer-0 image and depth are resolved into the renderer's framebuffer, then
  * the colour is multiplied by AV (alpha untouched), like vtkSSAOPass.
+ * COMPOSITE_AUTOMATIC (default) is AMBIENT when the renderer's visible
+ * opaque actors have an ambient term and MULTIPLY when none has (see
+ * SetComposition).
  * Pixels where layer 0 is empty keep the background.
  *
  * Textures (each of the renderer's viewport size, per renderer):
@@ -123,7 +126,8 @@ public:
   enum CompositionMode
   {
     COMPOSITE_MULTIPLY = 0, ///< layer-0 radiance (the whole colour) times AV, like vtkSSAOPass
-    COMPOSITE_AMBIENT = 1   ///< only the ambient part: radiance - (1 - AV) ambient
+    COMPOSITE_AMBIENT = 1,  ///< only the ambient part: radiance - (1 - AV) ambient
+    COMPOSITE_AUTOMATIC = 2 ///< AMBIENT when the scene has an ambient term, else MULTIPLY
   };
 
   /// Relative distance tolerance of the temporal reprojection test.
@@ -283,17 +287,31 @@ public:
 
   ///@{
   /**
-   * How AV is applied (CompositionMode). Default COMPOSITE_MULTIPLY.
-   * COMPOSITE_AMBIENT darkens only VTK's ambient term (the G-buffer's
-   * AMBIENT quantity: property Ambient x AmbientColor, times the texture),
-   * so direct light keeps its look; with VTK's default Ambient = 0 it
-   * changes nothing. It applies when the G-buffer displays RADIANCE, else
-   * the pass multiplies.
+   * How AV is applied (CompositionMode). Default COMPOSITE_AUTOMATIC.
+   * Obscurance is a visibility term for light arriving from all directions,
+   * so physically it scales only the ambient (indirect) light and leaves
+   * direct light and its shadows alone (paper section 3.1).
+   * COMPOSITE_AMBIENT does exactly that: it darkens VTK's ambient term (the
+   * G-buffer's AMBIENT quantity: property Ambient x AmbientColor, times the
+   * texture). COMPOSITE_MULTIPLY darkens the whole colour as vtkSSAOPass
+   * does. COMPOSITE_AUTOMATIC chooses, each frame and per renderer,
+   * COMPOSITE_AMBIENT when at least one visible opaque actor has an ambient
+   * term (Ambient > 0 and a non-black AmbientColor), and COMPOSITE_MULTIPLY
+   * otherwise: with VTK's default Ambient = 0 an ambient-only composition
+   * would show no obscurance at all. In a scene that mixes both kinds of
+   * actors, the actors without an ambient term are then not darkened.
+   * GetEffectiveComposition() tells which one the last frame used. The
+   * ambient composition applies when the G-buffer displays RADIANCE; for
+   * its debug displays the pass multiplies.
    */
-  vtkSetClampMacro(Composition, int, COMPOSITE_MULTIPLY, COMPOSITE_AMBIENT);
+  vtkSetClampMacro(Composition, int, COMPOSITE_MULTIPLY, COMPOSITE_AUTOMATIC);
   vtkGetMacro(Composition, int);
   void SetCompositionToMultiply() { this->SetComposition(COMPOSITE_MULTIPLY); }
   void SetCompositionToAmbient() { this->SetComposition(COMPOSITE_AMBIENT); }
+  void SetCompositionToAutomatic() { this->SetComposition(COMPOSITE_AUTOMATIC); }
+  static const char* GetCompositionAsString(int composition);
+  /// COMPOSITE_MULTIPLY or COMPOSITE_AMBIENT: what the last frame used.
+  vtkGetMacro(EffectiveComposition, int);
   ///@}
 
   /// Quality presets, from low cost to high quality.
@@ -361,7 +379,8 @@ protected:
   int BlurRadius = 4;
   double BlurPlaneTolerance = 0.02;
   double BlurNormalPower = 8.0;
-  int Composition = COMPOSITE_MULTIPLY;
+  int Composition = COMPOSITE_AUTOMATIC;
+  int EffectiveComposition = COMPOSITE_MULTIPLY;
   double MipThreshold = 8.0;
   int MaximumMipLevel = 5;
   double TemporalAlpha = 0.0;

@@ -1,11 +1,14 @@
-// COMPOSITE_AMBIENT of vtkDeepAmbientObscurancePass on the floor/wall corner
+// The compositions of vtkDeepAmbientObscurancePass on the floor/wall corner
 // (240 x 200, r = 1):
-// - with props of Ambient 0.4 / Diffuse 0.6, every pixel of layer 0 shows
-//   radiance - (1 - AV) ambient of the G-buffer's RADIANCE and AMBIENT
-//   (captured, float) within 2 of 255 levels (the framebuffer's rounding),
-//   and the corner is darkened by more than 5 levels somewhere;
-// - with VTK's default Ambient = 0 the image equals the plain G-buffer
-//   radiance (1 level): direct light is never darkened;
+// - COMPOSITE_AMBIENT with props of Ambient 0.4 / Diffuse 0.6: every pixel
+//   of layer 0 shows radiance - (1 - AV) ambient of the G-buffer's RADIANCE
+//   and AMBIENT (captured, float) within 2 of 255 levels (the framebuffer's
+//   rounding), and the corner is darkened by more than 5 levels somewhere;
+// - COMPOSITE_AMBIENT with VTK's default Ambient = 0: the image equals the
+//   plain G-buffer radiance (1 level): direct light is never darkened;
+// - COMPOSITE_AUTOMATIC (the default) is AMBIENT (same image, effective
+//   composition reported) with Ambient 0.4, and MULTIPLY (image = radiance x
+//   AV within 2 levels, darkened by more than 5 levels) with Ambient 0;
 // - background pixels keep the background; AV is finite.
 
 #include "DeepGBufferTestUtilities.h"
@@ -38,10 +41,18 @@ void AddQuad(vtkRenderer* renderer, const double o[3], const double p1[3], const
   renderer->AddActor(actor);
 }
 
-// Returns the worst |image - expected| in levels and the largest darkening
-// (radiance - image) in levels.
-void Run(double ambient, double& worst, double& darkening, long& valid)
+struct CompositeResult
 {
+  double WorstAmbient = 0.0;  // max |image - (radiance - (1 - AV) ambient)|, levels
+  double WorstMultiply = 0.0; // max |image - radiance x AV|, levels
+  double Darkening = 0.0;     // max (radiance - image), levels
+  long Valid = 0;
+  int EffectiveComposition = -1;
+};
+
+CompositeResult Run(double ambient, int composition)
+{
+  CompositeResult result;
   auto window = MakeWindow(240, 200);
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(0.1, 0.2, 0.3);
@@ -58,7 +69,9 @@ void Run(double ambient, double& worst, double& darkening, long& valid)
   renderer->ResetCameraClippingRange();
   vtkNew<vtkDeepAmbientObscurancePass> pass;
   pass->SetRadius(1.0);
-  pass->SetCompositionToAmbient();
+  Check(pass->GetComposition() == vtkDeepAmbientObscurancePass::COMPOSITE_AUTOMATIC,
+    "the default composition is automatic");
+  pass->SetComposition(composition);
   renderer->SetPass(pass);
   for (int i = 0; i < 3; ++i)
   {
@@ -74,8 +87,6 @@ void Run(double ambient, double& worst, double& darkening, long& valid)
   vtkDataArray* radiance = Layer(layers, "Radiance", 0);
   vtkDataArray* amb = Layer(layers, "Ambient", 0);
   vtkDataArray* image = rgb->GetPointData()->GetScalars();
-  worst = darkening = 0.0;
-  valid = 0;
   double background = 0.0;
   const double bg[3] = { 0.1, 0.2, 0.3 };
   for (vtkIdType p = 0; p < image->GetNumberOfTuples(); ++p)
@@ -88,33 +99,50 @@ void Run(double ambient, double& worst, double& darkening, long& valid)
       }
       continue;
     }
-    ++valid;
+    ++result.Valid;
+    const double a = av->GetTuple1(p);
     for (int c = 0; c < 3; ++c)
     {
+      const double value = image->GetComponent(p, c);
       const double r = std::min(1.0, std::max(0.0, radiance->GetComponent(p, c)));
-      const double e = std::min(1.0,
-        std::max(0.0, radiance->GetComponent(p, c) - (1.0 - av->GetTuple1(p)) * amb->GetComponent(p, c)));
-      worst = std::max(worst, std::abs(image->GetComponent(p, c) - 255.0 * e));
-      darkening = std::max(darkening, 255.0 * r - image->GetComponent(p, c));
+      const double e = std::min(
+        1.0, std::max(0.0, radiance->GetComponent(p, c) - (1.0 - a) * amb->GetComponent(p, c)));
+      result.WorstAmbient = std::max(result.WorstAmbient, std::abs(value - 255.0 * e));
+      result.WorstMultiply = std::max(result.WorstMultiply, std::abs(value - 255.0 * r * a));
+      result.Darkening = std::max(result.Darkening, 255.0 * r - value);
     }
   }
-  std::printf("ambient %.1f: %ld px, max |image - (radiance - (1 - AV) ambient)| = %.2f levels, "
-              "largest darkening %.1f levels, background error %.2f\n",
-    ambient, valid, worst, darkening, background);
+  result.EffectiveComposition = pass->GetEffectiveComposition();
+  std::printf("%s, ambient %.1f: effective %s, %ld px, max |image - (radiance - (1 - AV) "
+              "ambient)| = %.2f levels, max |image - radiance AV| = %.2f levels, largest "
+              "darkening %.1f levels, background error %.2f\n",
+    vtkDeepAmbientObscurancePass::GetCompositionAsString(composition), ambient,
+    vtkDeepAmbientObscurancePass::GetCompositionAsString(result.EffectiveComposition),
+    result.Valid, result.WorstAmbient, result.WorstMultiply, result.Darkening, background);
   Check(background <= 1.0, "background kept");
   pass->ReleaseGraphicsResources(window);
+  return result;
 }
 }
 
 int TestDeepAmbientObscuranceComposite(int, char*[])
 {
-  double worst, darkening;
-  long valid;
-  Run(0.4, worst, darkening, valid);
-  Check(valid > 1000 && worst <= 2.0, "image = radiance - (1 - AV) ambient");
-  Check(darkening > 5.0, "the ambient term is darkened near the corner");
-  Run(0.0, worst, darkening, valid);
-  Check(valid > 1000 && worst <= 2.0 && darkening <= 1.0, "Ambient = 0: the plain radiance");
+  using Pass = vtkDeepAmbientObscurancePass;
+  CompositeResult r = Run(0.4, Pass::COMPOSITE_AMBIENT);
+  Check(r.Valid > 1000 && r.WorstAmbient <= 2.0, "image = radiance - (1 - AV) ambient");
+  Check(r.Darkening > 5.0, "the ambient term is darkened near the corner");
+  Check(r.EffectiveComposition == Pass::COMPOSITE_AMBIENT, "AMBIENT reported");
+  r = Run(0.0, Pass::COMPOSITE_AMBIENT);
+  Check(r.Valid > 1000 && r.WorstAmbient <= 2.0 && r.Darkening <= 1.0,
+    "Ambient = 0: the plain radiance");
+  r = Run(0.4, Pass::COMPOSITE_AUTOMATIC);
+  Check(r.EffectiveComposition == Pass::COMPOSITE_AMBIENT && r.WorstAmbient <= 2.0 &&
+      r.Darkening > 5.0,
+    "automatic with an ambient term: the ambient composition");
+  r = Run(0.0, Pass::COMPOSITE_AUTOMATIC);
+  Check(r.EffectiveComposition == Pass::COMPOSITE_MULTIPLY && r.WorstMultiply <= 2.0 &&
+      r.Darkening > 5.0,
+    "automatic without an ambient term: radiance x AV");
   std::printf("%s\n", CheckFailures() ? "FAILED" : "passed");
   return CheckFailures() ? 1 : 0;
 }

@@ -8,9 +8,14 @@ captures the ambient visibility AV and checks it with numpy:
   surface pixels lies at least 0.2 below the median (the demo room's
   floor-wall corners, column feet and banners; the median, 0.90 when
   written, is an open surface: at least 0.8; the darkest 5 % averaged 0.43);
-- the image differs from the plain G-buffer image (vtkDeepGBufferPass alone,
-  same scene) only by darkening: never brighter by more than one 8-bit
-  level (rounding), and equal to plain x AV within 2 levels.
+- with COMPOSITE_MULTIPLY the image differs from the plain G-buffer image
+  (vtkDeepGBufferPass alone, same scene) only by darkening: never brighter
+  by more than one 8-bit level (rounding), and equal to plain x AV within 2
+  levels;
+- with the default COMPOSITE_AUTOMATIC the demo scene (Ambient 0.1) gets the
+  ambient composition: only VTK's ambient term is darkened, so no pixel is
+  brighter than plain (1 level) or darker than 0.1 x 255 + 1 levels, and
+  some pixels are darker by more than 2 levels.
 Exits non-zero on failure.
 """
 import sys
@@ -55,10 +60,17 @@ def render(make_pass):
     return image, capture, render_pass
 
 
+def multiply_pass():
+    render_pass = vtkdeepgi.vtkDeepAmbientObscurancePass()
+    render_pass.SetCompositionToMultiply()
+    return render_pass
+
+
 def main():
     failures = []
-    ao_image, capture, ao = render(vtkdeepgi.vtkDeepAmbientObscurancePass)
+    ao_image, capture, ao = render(multiply_pass)
     plain_image, _, _ = render(vtkdeepgi.vtkDeepGBufferPass)
+    ambient_image, _, automatic = render(vtkdeepgi.vtkDeepAmbientObscurancePass)
 
     data = capture.GetPointData()
     av = vtk_to_numpy(data.GetArray("AmbientVisibility")).astype(float)
@@ -93,6 +105,20 @@ def main():
         failures.append("the AO image is brighter than the plain image somewhere")
     if error > 2:
         failures.append("the AO image is not the plain image times AV")
+
+    # The default composition darkens only the ambient term (Ambient 0.1).
+    Pass = vtkdeepgi.vtkDeepAmbientObscurancePass
+    effective = Pass.GetCompositionAsString(automatic.GetEffectiveComposition())
+    darkening = (plain_image - ambient_image).max()
+    print("default composition %s -> %s: brightest increase %.0f levels, largest darkening "
+          "%.0f levels" % (Pass.GetCompositionAsString(automatic.GetComposition()), effective,
+                           (ambient_image - plain_image).max(), darkening))
+    if automatic.GetComposition() != Pass.COMPOSITE_AUTOMATIC:
+        failures.append("the default composition is not COMPOSITE_AUTOMATIC")
+    if automatic.GetEffectiveComposition() != Pass.COMPOSITE_AMBIENT:
+        failures.append("an ambient scene did not get the ambient composition")
+    if (ambient_image - plain_image).max() > 1 or darkening > 0.1 * 255 + 1 or darkening <= 2:
+        failures.append("the ambient composition darkens more than the ambient term, or nothing")
     for failure in failures:
         print("FAILED:", failure)
     return 1 if failures else 0
