@@ -1,8 +1,9 @@
 // deepgi-benchmark-ao: time and error of ambient obscurance methods, side by
-// side in one run (issue 3, section 3).
+// side in one run.
 //
-// For each scene (the demo scene, cornell-lucy, dragon.ply and an
-// iso-surface of headsq) and each method (VTK's vtkSSAOPass at several
+// For each scene (the demo scene from its default view and from its
+// "columns" view, cornell-lucy, dragon.ply and an iso-surface of headsq) and
+// each method (VTK's vtkSSAOPass at several
 // kernel sizes, vtkDeepAmbientObscurancePass with one and with two layers
 // at several N, and named settings (N, BlurRadius)):
 //
@@ -98,7 +99,8 @@ struct Options
   int Backend = vtkDeepGIRenderWindowFactory::BACKEND_AUTO;
   std::string Output = "output";
   std::string Data = DEEPGI_DATA_DIR;
-  std::vector<std::string> Scenes = { "demo", "cornell-lucy", "dragon", "headsq" };
+  std::vector<std::string> Scenes = { "demo", "demo-columns", "cornell-lucy", "dragon",
+    "headsq" };
   std::vector<std::string> Methods;
   bool ErrorMaps = true;
 };
@@ -107,7 +109,7 @@ struct Options
 // several N with BlurRadius 4) and named settings of ours.
 const char* const DefaultMethods = "ssao:8,ssao:16,ssao:32,ssao:64,"
                                    "ours1:4,ours1:8,ours1:16,ours1:32,"
-                                   "ours2:4,ours2:8,ours2:16,ours2:32,"
+                                   "ours2:4,ours2:8,ours2:16,ours2:32,ours2nc:16,"
                                    "low,medium,high";
 
 void Usage()
@@ -122,11 +124,13 @@ void Usage()
     "  --rounds N           rounds over all methods (default 2)\n"
     "  --samples N          reference rays per pixel (default 256)\n"
     "  --radius-fraction F  r = F x scene diagonal, every method (default 0.05)\n"
-    "  --scenes LIST        comma list of demo, cornell-lucy, dragon, headsq\n"
-    "                       (default all four)\n"
+    "  --scenes LIST        comma list of demo, demo-columns (the demo scene's\n"
+    "                       columns view), cornell-lucy, dragon, headsq\n"
+    "                       (default all five)\n"
     "  --methods LIST       comma list of ssao:K (vtkSSAOPass, kernel size K, blur on),\n"
     "                       ours1:N[:B] / ours2:N[:B] (one / two layers, N samples,\n"
-    "                       BlurRadius B, default 4), low, medium, high (two\n"
+    "                       BlurRadius B, default 4), ours2nc:N[:B] (two layers,\n"
+    "                       layer 1 without back-face culling), low, medium, high (two\n"
     "                       layers with a quality preset). Default:\n"
     "                       %s\n"
     "  --data DIR           shared data directory (default %s)\n"
@@ -177,6 +181,7 @@ struct Method
   int Layers = 2;     // ours
   int Blur = 4;       // ours
   int Preset = -1;    // ours: a vtkDeepAmbientObscurancePass quality preset, or -1
+  bool DeepLayerBackfaceCulling = true; // ours: the G-buffer's culling in layer 1
 };
 
 bool ParseMethod(const std::string& spec, Method& m)
@@ -205,7 +210,8 @@ bool ParseMethod(const std::string& spec, Method& m)
     m = { "vtkSSAOPass K=" + p[1], "vtkSSAOPass (kernel size)", 0, k, 0, 0 };
     return true;
   }
-  if ((p.size() == 2 || p.size() == 3) && (p[0] == "ours1" || p[0] == "ours2"))
+  if ((p.size() == 2 || p.size() == 3) &&
+    (p[0] == "ours1" || p[0] == "ours2" || p[0] == "ours2nc"))
   {
     int n = 0, b = 4;
     if (!ParseInt(p[1], n) || n < 1 || n > 98 || (p.size() == 3 && (!ParseInt(p[2], b) || b < 0 || b > 16)))
@@ -217,10 +223,12 @@ bool ParseMethod(const std::string& spec, Method& m)
     m.Parameter = n;
     m.Layers = layers;
     m.Blur = b;
-    m.Name = std::string("ours ") + (layers == 1 ? "1 layer" : "2 layers") + " N=" + p[1] +
-      (b != 4 ? " B=" + std::to_string(b) : "");
-    m.Family = b == 4 ? std::string("ours, ") + (layers == 1 ? "1 layer" : "2 layers") + " (N)"
-                      : "";
+    m.DeepLayerBackfaceCulling = p[0] != "ours2nc";
+    const std::string label = layers == 1 ? "1 layer"
+      : m.DeepLayerBackfaceCulling        ? "2 layers"
+                                          : "2 layers, no layer-1 culling";
+    m.Name = "ours " + label + " N=" + p[1] + (b != 4 ? " B=" + std::to_string(b) : "");
+    m.Family = b == 4 ? "ours, " + label + " (N)" : "";
     return true;
   }
   return false;
@@ -298,9 +306,11 @@ bool ParseOptions(int argc, char* argv[], Options& o)
       }
       for (const std::string& s : o.Scenes)
       {
-        if (s != "demo" && s != "cornell-lucy" && s != "dragon" && s != "headsq")
+        if (s != "demo" && s != "demo-columns" && s != "cornell-lucy" && s != "dragon" &&
+          s != "headsq")
         {
-          return bad("unknown scene '" + s + "' (demo, cornell-lucy, dragon, headsq)");
+          return bad(
+            "unknown scene '" + s + "' (demo, demo-columns, cornell-lucy, dragon, headsq)");
         }
       }
     }
@@ -393,6 +403,18 @@ struct Result
   double FrameMs = 0;
   Accuracy A;
 };
+
+/// Where a two-layer setting's AV differs from the one-layer setting with
+/// the same N and BlurRadius, and which of the two is nearer the reference.
+struct SecondLayerEffect
+{
+  std::string Scene, TwoLayers, OneLayer;
+  long Changed = 0, Valid = 0;         // pixels with |AV_2 - AV_1| > SecondLayerChange
+  double RmseOne = 0.0, RmseTwo = 0.0; // calibrated, on the changed pixels
+};
+
+/// AV difference above which a pixel counts as changed by the second layer.
+constexpr double SecondLayerChange = 0.02;
 
 struct ErrorStats
 {
@@ -560,12 +582,19 @@ bool LoadScene(const Options& o, const std::string& name, vtkRenderer* renderer,
   vtkSmartPointer<vtkObject>& keep)
 {
   s.Name = name;
-  if (name == "demo")
+  if (name == "demo" || name == "demo-columns")
   {
     auto demo = vtkSmartPointer<vtkDeepGBufferDemoScene>::New();
     demo->SetTargetNumberOfTriangles(200000);
     demo->Populate(renderer);
-    demo->SetCameraToDefaultView(renderer->GetActiveCamera());
+    if (name == "demo")
+    {
+      demo->SetCameraToDefaultView(renderer->GetActiveCamera());
+    }
+    else
+    {
+      demo->SetCameraToNamedView(renderer->GetActiveCamera(), "columns");
+    }
     s.Geometry = demo->GetScenePolyData();
     keep = demo;
   }
@@ -644,6 +673,7 @@ int main(int argc, char* argv[])
   }
 
   std::vector<Result> results;
+  std::vector<SecondLayerEffect> effects;
   struct SceneInfo
   {
     std::string Name;
@@ -713,6 +743,7 @@ int main(int argc, char* argv[])
         }
         ao->SetUseSecondLayer(m.Layers == 2);
         ao->GetGBufferPass()->SetNumberOfLayers(m.Layers);
+        ao->GetGBufferPass()->SetDeepLayerBackfaceCulling(m.DeepLayerBackfaceCulling);
         passes.push_back(ao);
       }
     }
@@ -804,6 +835,7 @@ int main(int argc, char* argv[])
     }
 
     std::vector<Result> sceneResults;
+    std::vector<std::vector<float>> sceneAV(methods.size());
     for (size_t k = 0; k < methods.size(); ++k)
     {
       const Method& m = methods[k];
@@ -865,6 +897,33 @@ int main(int argc, char* argv[])
           ref, mask);
       }
       sceneResults.push_back(res);
+      sceneAV[k] = av;
+    }
+
+    for (size_t two = 0; two < methods.size(); ++two)
+    {
+      const Method& m2 = methods[two];
+      for (size_t one = 0; one < methods.size() && m2.Kind == 1 && m2.Layers == 2; ++one)
+      {
+        const Method& m1 = methods[one];
+        if (m1.Kind != 1 || m1.Layers != 1 || m1.Parameter != m2.Parameter || m1.Blur != m2.Blur)
+        {
+          continue;
+        }
+        std::vector<unsigned char> changed(np, 0);
+        SecondLayerEffect e{ sceneName, m2.Name, m1.Name, 0, nValid };
+        for (size_t i = 0; i < np; ++i)
+        {
+          if (mask[i] && std::fabs(sceneAV[two][i] - sceneAV[one][i]) > SecondLayerChange)
+          {
+            changed[i] = 1;
+            ++e.Changed;
+          }
+        }
+        e.RmseOne = Errors(sceneAV[one], ref, changed, changed, sceneResults[one].A.Gamma).Rmse;
+        e.RmseTwo = Errors(sceneAV[two], ref, changed, changed, sceneResults[two].A.Gamma).Rmse;
+        effects.push_back(e);
+      }
     }
 
     // ---- time ----
@@ -1032,13 +1091,26 @@ int main(int argc, char* argv[])
           {
             const double er = rmse1(two) / std::max(1e-9, rmse1(one));
             const double tr = two.FrameMs / std::max(1e-9, one.FrameMs);
-            g2 << "N=" << two.M.Parameter << ": " << Fmt("%.2f", er) << " / " << Fmt("%.2f", tr)
+            g2 << two.M.Name << ": " << Fmt("%.2f", er) << " / " << Fmt("%.2f", tr)
                << (er <= 0.8 && tr <= 1.3 ? " met" : " missed") << "; ";
           }
         }
       }
       md << "| " << s.Name << " | " << g1s << " | " << g2.str() << " |\n";
     }
+  }
+
+  md << "\n### Where the second layer changes AV\n\n"
+     << "Pixels where a two-layer setting's AV differs by more than " << SecondLayerChange
+     << " from the one-layer setting with the same N and BlurRadius, and the calibrated RMSE "
+        "of both on those pixels only.\n\n"
+     << "| scene | two layers | one layer | changed px | of valid px | RMSE cal. 1 layer | "
+        "RMSE cal. 2 layers |\n|---|---|---|---|---|---|---|\n";
+  for (const SecondLayerEffect& e : effects)
+  {
+    md << "| " << e.Scene << " | " << e.TwoLayers << " | " << e.OneLayer << " | " << e.Changed
+       << " | " << e.Valid << " | " << Fmt("%.4f", e.RmseOne) << " | " << Fmt("%.4f", e.RmseTwo)
+       << " |\n";
   }
 
   std::fputs(md.str().c_str(), stdout);
