@@ -73,11 +73,12 @@
  * hit, to the protected virtual EvaluateSample(), which returns
  * GetNumberOfSampleComponents() values; the driver accumulates their mean
  * and standard error and FinishPixel() turns them into output arrays.
- * A later one-bounce diffuse irradiance reference overrides these three
- * methods: at the hit (HitRecord gives the triangle id for the "Colors"
- * albedo and the geometric normal) it traces shadow rays to the lights with
- * TraceRay and returns RGB radiance, reusing scene, ray generation,
- * threading and statistics unchanged.
+ * vtkDeepGIReferenceIrradiance (one-bounce diffuse irradiance) overrides
+ * these methods and the CheckParameters/PrepareCompute hooks: at the hit
+ * (HitRecord gives the triangle id for the "Colors" albedo, the winding
+ * normal, and the point ids and barycentric weights for point normals) it
+ * traces shadow rays to the lights with IsOccluded and returns RGB values,
+ * reusing scene, ray generation, threading and statistics unchanged.
  *
  * Scale robustness: the triangles are stored relative to the centre of
  * their bounds (so float precision follows the scene's size, not its
