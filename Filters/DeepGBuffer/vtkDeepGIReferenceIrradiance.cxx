@@ -72,6 +72,12 @@ struct vtkDeepGIReferenceIrradiance::Lighting
   std::vector<float> PointNormals; // per scene point (xyz), empty if none
   std::vector<float> CellNormals;  // per scene cell (xyz), empty if none
   vtkSmartPointer<vtkDataArray> CaptureAlbedo;
+  // The capture's camera, for DIRECT_RADIANCE: eye and viewing direction in
+  // world space, and whether the projection is parallel.
+  double Eye[3] = { 0, 0, 0 };
+  double ViewDirection[3] = { 0, 0, -1 };
+  bool Parallel = false;
+  vtkFloatArray* Direct = nullptr;
   vtkFloatArray* Irradiance = nullptr;
   vtkFloatArray* IrradianceError = nullptr;
   vtkFloatArray* Radiance = nullptr;
@@ -148,7 +154,8 @@ struct vtkDeepGIReferenceIrradiance::Lighting
 
 //------------------------------------------------------------------------------
 vtkDeepGIReferenceIrradiance::vtkDeepGIReferenceIrradiance()
-  : Shadows(false)
+  : Quantity(INDIRECT_IRRADIANCE)
+  , Shadows(false)
   , TwoSidedLighting(true)
   , MaximumDistance(std::numeric_limits<double>::infinity())
   , DiffuseCoefficient(1.0)
@@ -263,8 +270,17 @@ bool vtkDeepGIReferenceIrradiance::GetLight(
 }
 
 //------------------------------------------------------------------------------
+int vtkDeepGIReferenceIrradiance::GetNumberOfSamplesPerPixel() const
+{
+  return this->Quantity == DIRECT_RADIANCE ? 1 : this->SamplesPerPixel;
+}
+
 double vtkDeepGIReferenceIrradiance::GetMaximumRayDistance() const
 {
+  if (this->Quantity == DIRECT_RADIANCE)
+  {
+    return 0.0; // EvaluateSample traces its own ray; the hemisphere ray is unused
+  }
   // Rays start RelativeOffset-sized distances above X; EvaluateSample applies
   // the exact |Y - X| <= MaximumDistance test, so any bound above it will do.
   return 2.0 * this->MaximumDistance;
@@ -358,6 +374,31 @@ bool vtkDeepGIReferenceIrradiance::PrepareCompute(vtkImageData* capture)
   copyNormals(scene->GetPointData()->GetNormals(), points, d.PointNormals);
   copyNormals(d.PointNormals.empty() ? scene->GetCellData()->GetNormals() : nullptr, cells,
     d.CellNormals);
+
+  // The camera (Compute() validated the matrices): the eye is
+  // the inverse view matrix's translation, the view direction its -z axis.
+  vtkDataArray* view = capture->GetFieldData()->GetArray("ViewMatrix");
+  vtkDataArray* projection = capture->GetFieldData()->GetArray("ProjectionMatrix");
+  vtkNew<vtkMatrix4x4> viewMatrix, cameraToWorld;
+  for (int k = 0; k < 16; ++k)
+  {
+    viewMatrix->SetElement(k / 4, k % 4, view->GetComponent(0, k));
+  }
+  vtkMatrix4x4::Invert(viewMatrix, cameraToWorld);
+  for (int c = 0; c < 3; ++c)
+  {
+    d.Eye[c] = cameraToWorld->GetElement(c, 3);
+    d.ViewDirection[c] = -cameraToWorld->GetElement(c, 2);
+  }
+  vtkMath::Normalize(d.ViewDirection);
+  // A perspective projection's last row is (0, 0, -1, 0), a parallel one's
+  // (0, 0, 0, 1).
+  d.Parallel = projection->GetComponent(0, 14) == 0.0;
+  if (this->Quantity == DIRECT_RADIANCE)
+  {
+    d.CaptureAlbedo = nullptr;
+    return true;
+  }
 
   // rho_X for the reflected radiance.
   const std::string name = "Albedo_" + std::to_string(this->Layer);
@@ -488,6 +529,43 @@ void vtkDeepGIReferenceIrradiance::EvaluateSample(
   const SurfacePoint& x, const double direction[3], const HitRecord& hit, int, double* values) const
 {
   values[0] = values[1] = values[2] = 0.0;
+  if (this->Quantity == DIRECT_RADIANCE)
+  {
+    // Find X's triangle along the viewing ray, starting just in front of X
+    // (1e-4 of the viewing distance plus the ray offset: far less than any
+    // layer separation, so nearer layers do not block it).
+    const Lighting& d = *this->Data;
+    double w[3], toX[3];
+    vtkMath::Subtract(x.Position, d.Eye, toX);
+    double distance;
+    if (d.Parallel)
+    {
+      std::copy(d.ViewDirection, d.ViewDirection + 3, w);
+      distance = std::fabs(vtkMath::Dot(toX, w));
+    }
+    else
+    {
+      std::copy(toX, toX + 3, w);
+      distance = vtkMath::Normalize(w);
+    }
+    const double margin = 1e-4 * distance + this->GetRayOffset(x.Position);
+    double origin[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      origin[c] = x.Position[c] - margin * w[c];
+    }
+    HitRecord own;
+    if (this->TraceRay(origin, w, 2.0 * margin, own))
+    {
+      double y[3];
+      for (int c = 0; c < 3; ++c)
+      {
+        y[c] = origin[c] + own.Distance * w[c];
+      }
+      this->DirectRadiance(y, w, own, values);
+    }
+    return;
+  }
   if (!hit.Hit)
   {
     return;
@@ -515,6 +593,7 @@ void vtkDeepGIReferenceIrradiance::EvaluateSample(
 void vtkDeepGIReferenceIrradiance::AllocateOutput(vtkImageData* output, vtkIdType pixels)
 {
   Lighting& d = *this->Data;
+  d.Direct = d.Irradiance = d.IrradianceError = d.Radiance = d.RadianceError = nullptr;
   auto add = [&](const char* name) {
     vtkNew<vtkFloatArray> array;
     array->SetName(name);
@@ -523,6 +602,11 @@ void vtkDeepGIReferenceIrradiance::AllocateOutput(vtkImageData* output, vtkIdTyp
     output->GetPointData()->AddArray(array);
     return array.GetPointer();
   };
+  if (this->Quantity == DIRECT_RADIANCE)
+  {
+    d.Direct = add("DirectRadiance");
+    return;
+  }
   d.Irradiance = add("IndirectIrradiance");
   d.IrradianceError = add("IndirectIrradianceStandardError");
   d.Radiance = d.CaptureAlbedo ? add("IndirectRadiance") : nullptr;
@@ -533,6 +617,14 @@ void vtkDeepGIReferenceIrradiance::FinishPixel(
   vtkImageData*, vtkIdType pixel, const double* mean, const double* standardError)
 {
   const Lighting& d = *this->Data;
+  if (d.Direct)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      d.Direct->SetTypedComponent(pixel, c, mean ? static_cast<float>(mean[c]) : 0.0f);
+    }
+    return;
+  }
   for (int c = 0; c < 3; ++c)
   {
     const double e = mean ? mean[c] : 0.0;
@@ -553,6 +645,8 @@ void vtkDeepGIReferenceIrradiance::FinishPixel(
 void vtkDeepGIReferenceIrradiance::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Quantity: "
+     << (this->Quantity == DIRECT_RADIANCE ? "DIRECT_RADIANCE" : "INDIRECT_IRRADIANCE") << "\n";
   os << indent << "Shadows: " << (this->Shadows ? "On" : "Off") << "\n";
   os << indent << "TwoSidedLighting: " << (this->TwoSidedLighting ? "On" : "Off") << "\n";
   os << indent << "MaximumDistance: " << this->MaximumDistance << "\n";

@@ -156,6 +156,30 @@ public:
     bool& positional) const;
   ///@}
 
+  /// What Compute() evaluates.
+  enum QuantityType
+  {
+    INDIRECT_IRRADIANCE = 0,
+    DIRECT_RADIANCE = 1
+  };
+
+  ///@{
+  /**
+   * INDIRECT_IRRADIANCE (default): the one-bounce quantities above.
+   * DIRECT_RADIANCE: L_direct at each pixel's own surface point as seen from
+   * the capture's camera (the ray from just in front of X towards X gives the
+   * triangle, its albedo and its shading normal), in the point array
+   * "DirectRadiance" (RGB; 0 where empty or where that ray finds no
+   * triangle) with "Valid". One sample per pixel (the value is exact, its
+   * standard error 0). It checks the light model against VTK's rendering:
+   * a capture's Radiance_j - Ambient_j is VTK's diffuse (plus specular) term.
+   */
+  vtkSetClampMacro(Quantity, int, INDIRECT_IRRADIANCE, DIRECT_RADIANCE);
+  vtkGetMacro(Quantity, int);
+  void SetQuantityToIndirectIrradiance() { this->SetQuantity(INDIRECT_IRRADIANCE); }
+  void SetQuantityToDirectRadiance() { this->SetQuantity(DIRECT_RADIANCE); }
+  ///@}
+
   ///@{
   /**
    * Shadow rays from each hit point Y to each light. Default off (VTK's
@@ -215,7 +239,9 @@ protected:
   {
     return "IndirectIrradianceStandardError";
   }
+  int GetNumberOfSamplesPerPixel() const override;
 
+  int Quantity;
   bool Shadows;
   bool TwoSidedLighting;
   double MaximumDistance;

@@ -493,7 +493,7 @@ bool vtkDeepGIReferenceObscurance::Compute(vtkImageData* capture)
 
   const int width = dims[0];
   const int height = dims[1];
-  const int spp = this->SamplesPerPixel;
+  const int spp = this->GetNumberOfSamplesPerPixel();
   const int components = this->GetNumberOfSampleComponents();
   const double tmax = this->GetMaximumRayDistance();
 

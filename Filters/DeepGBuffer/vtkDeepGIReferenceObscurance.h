@@ -305,6 +305,9 @@ protected:
   /// Farthest distance a sample ray needs (Radius here).
   virtual double GetMaximumRayDistance() const { return this->Radius; }
 
+  /// Samples Compute() takes per pixel (SamplesPerPixel here).
+  virtual int GetNumberOfSamplesPerPixel() const { return this->SamplesPerPixel; }
+
   double Radius;
   double Bias;
   double Epsilon;
