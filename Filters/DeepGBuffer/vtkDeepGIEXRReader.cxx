@@ -25,8 +25,8 @@
 
 #include <algorithm>
 #include <cctype>
-#include <exception>
 #include <cstdio>
+#include <exception>
 #include <map>
 #include <memory>
 #include <string>
@@ -54,9 +54,9 @@ std::pair<int, std::string> ComponentKey(const std::string& part)
   {
     return { static_cast<int>(rgba.find(part[0])), std::string() };
   }
-  if (!part.empty() && std::all_of(part.begin(), part.end(), [](char c) {
-        return std::isdigit(static_cast<unsigned char>(c)) != 0;
-      }))
+  if (!part.empty() &&
+    std::all_of(part.begin(), part.end(),
+      [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }))
   {
     // Left-pad so that the string comparison is numeric.
     return { 4, std::string(32 - std::min<size_t>(part.size(), 32), '0') + part };
@@ -93,7 +93,8 @@ std::vector<Group> GroupChannels(const std::vector<std::string>& channels)
     }
     layers[layer].push_back(name);
   }
-  auto byComponent = [](const std::string& a, const std::string& b) {
+  auto byComponent = [](const std::string& a, const std::string& b)
+  {
     const size_t da = a.rfind('.'), db = b.rfind('.');
     return ComponentKey(da == std::string::npos ? a : a.substr(da + 1)) <
       ComponentKey(db == std::string::npos ? b : b.substr(db + 1));
@@ -247,8 +248,8 @@ int vtkDeepGIEXRReader::RequestData(
   {
     if (it.channel().xSampling != 1 || it.channel().ySampling != 1)
     {
-      vtkWarningMacro("Channel " << it.name() << " of \"" << this->FileName
-                                 << "\" is subsampled; skipped.");
+      vtkWarningMacro(
+        "Channel " << it.name() << " of \"" << this->FileName << "\" is subsampled; skipped.");
       continue;
     }
     names.emplace_back(it.name());

@@ -104,7 +104,8 @@ void vtkDeepGIEXRWriter::WriteData()
   double origin[3], spacing[3];
   image->GetOrigin(origin);
   image->GetSpacing(spacing);
-  auto index = [](double o, double s, int e) {
+  auto index = [](double o, double s, int e)
+  {
     const double v = (s != 0.0 ? o / s : 0.0) + e;
     return std::isfinite(v) && std::fabs(v) < 1e9 ? static_cast<int>(std::lround(v)) : 0;
   };
@@ -183,8 +184,7 @@ void vtkDeepGIEXRWriter::WriteData()
   }
   if (buffers.empty())
   {
-    vtkErrorMacro("The image has no numeric point array to write to \"" << this->FileName
-                                                                        << "\".");
+    vtkErrorMacro("The image has no numeric point array to write to \"" << this->FileName << "\".");
     this->SetErrorCode(vtkErrorCode::UnknownError);
     return;
   }

@@ -290,8 +290,8 @@ bool vtkDeepGIReferenceIrradiance::CheckParameters()
 {
   if (!(this->MaximumDistance > 0.0)) // also catches NaN
   {
-    vtkErrorMacro("MaximumDistance must be positive (or infinite), not " << this->MaximumDistance
-                                                                         << ".");
+    vtkErrorMacro(
+      "MaximumDistance must be positive (or infinite), not " << this->MaximumDistance << ".");
     return false;
   }
   return true;
@@ -314,9 +314,8 @@ bool vtkDeepGIReferenceIrradiance::PrepareCompute(vtkImageData* capture)
   vtkDataArray* colors = scene->GetCellData()->GetArray("Colors");
   if (colors && colors->GetNumberOfTuples() != cells)
   {
-    vtkWarningMacro("The scene's \"Colors\" cell array has " << colors->GetNumberOfTuples()
-                                                             << " tuples for " << cells
-                                                             << " cells; using white.");
+    vtkWarningMacro("The scene's \"Colors\" cell array has "
+      << colors->GetNumberOfTuples() << " tuples for " << cells << " cells; using white.");
     colors = nullptr;
   }
   else if (!colors)
@@ -355,10 +354,10 @@ bool vtkDeepGIReferenceIrradiance::PrepareCompute(vtkImageData* capture)
 
   // Shading normals, the ones VTK's mapper would use: point normals, else
   // cell normals (else the winding normal of the hit triangle).
-  auto copyNormals = [](vtkDataArray* normals, vtkIdType count, std::vector<float>& out) {
+  auto copyNormals = [](vtkDataArray* normals, vtkIdType count, std::vector<float>& out)
+  {
     out.clear();
-    if (!normals || normals->GetNumberOfComponents() != 3 ||
-      normals->GetNumberOfTuples() != count)
+    if (!normals || normals->GetNumberOfComponents() != 3 || normals->GetNumberOfTuples() != count)
     {
       return;
     }
@@ -372,8 +371,8 @@ bool vtkDeepGIReferenceIrradiance::PrepareCompute(vtkImageData* capture)
     }
   };
   copyNormals(scene->GetPointData()->GetNormals(), points, d.PointNormals);
-  copyNormals(d.PointNormals.empty() ? scene->GetCellData()->GetNormals() : nullptr, cells,
-    d.CellNormals);
+  copyNormals(
+    d.PointNormals.empty() ? scene->GetCellData()->GetNormals() : nullptr, cells, d.CellNormals);
 
   // The camera (Compute() validated the matrices): the eye is
   // the inverse view matrix's translation, the view direction its -z axis.
@@ -494,8 +493,8 @@ void vtkDeepGIReferenceIrradiance::DirectRadiance(
       {
         // Cosine between the light's axis and the direction light -> Y.
         const double coneDot = -vtkMath::Dot(l, light.Direction);
-        attenuation = coneDot >= light.CosCone ? attenuation * std::pow(coneDot, light.Exponent)
-                                               : 0.0;
+        attenuation =
+          coneDot >= light.CosCone ? attenuation * std::pow(coneDot, light.Exponent) : 0.0;
       }
     }
     else
@@ -594,7 +593,8 @@ void vtkDeepGIReferenceIrradiance::AllocateOutput(vtkImageData* output, vtkIdTyp
 {
   Lighting& d = *this->Data;
   d.Direct = d.Irradiance = d.IrradianceError = d.Radiance = d.RadianceError = nullptr;
-  auto add = [&](const char* name) {
+  auto add = [&](const char* name)
+  {
     vtkNew<vtkFloatArray> array;
     array->SetName(name);
     array->SetNumberOfComponents(3);
@@ -656,9 +656,9 @@ void vtkDeepGIReferenceIrradiance::PrintSelf(ostream& os, vtkIndent indent)
   {
     os << indent.GetNextIndent() << (light.Positional ? "positional" : "directional")
        << " light: position (" << light.Position[0] << ", " << light.Position[1] << ", "
-       << light.Position[2] << "), direction (" << light.Direction[0] << ", "
-       << light.Direction[1] << ", " << light.Direction[2] << "), colour x intensity ("
-       << light.Color[0] << ", " << light.Color[1] << ", " << light.Color[2] << ")";
+       << light.Position[2] << "), direction (" << light.Direction[0] << ", " << light.Direction[1]
+       << ", " << light.Direction[2] << "), colour x intensity (" << light.Color[0] << ", "
+       << light.Color[1] << ", " << light.Color[2] << ")";
     if (light.Positional)
     {
       os << ", attenuation (" << light.Attenuation[0] << ", " << light.Attenuation[1] << ", "

@@ -152,8 +152,8 @@ public:
    * times intensity, and whether it is positional. Out-of-range indices
    * return false.
    */
-  bool GetLight(int index, double position[3], double direction[3], double color[3],
-    bool& positional) const;
+  bool GetLight(
+    int index, double position[3], double direction[3], double color[3], bool& positional) const;
   ///@}
 
   /// What Compute() evaluates.
@@ -252,8 +252,8 @@ private:
   void operator=(const vtkDeepGIReferenceIrradiance&) = delete;
 
   /// Direct diffuse radiance leaving the hit (seen from direction w).
-  void DirectRadiance(const double y[3], const double w[3], const HitRecord& hit,
-    double radiance[3]) const;
+  void DirectRadiance(
+    const double y[3], const double w[3], const HitRecord& hit, double radiance[3]) const;
 
   struct Lighting;
   std::unique_ptr<Lighting> Data;

@@ -136,8 +136,7 @@ void CompareImages(vtkImageData* expected, vtkImageData* actual, bool half, cons
   expected->GetDimensions(dims);
   actual->GetDimensions(dimsActual);
   Check(dims[0] == dimsActual[0] && dims[1] == dimsActual[1] && dimsActual[2] == 1,
-    what + ": dimensions " + std::to_string(dimsActual[0]) + " x " +
-      std::to_string(dimsActual[1]));
+    what + ": dimensions " + std::to_string(dimsActual[0]) + " x " + std::to_string(dimsActual[1]));
   double o[3], oa[3];
   expected->GetOrigin(o);
   actual->GetOrigin(oa);
@@ -233,8 +232,8 @@ vtkSmartPointer<vtkImageData> MakeCapture(int w, int h)
     ambient->SetNumberOfComponents(3);
     depth->SetName(("Depth" + s).c_str());
     valid->SetName(("Valid" + s).c_str());
-    for (vtkFloatArray* a : { radiance.Get(), albedo.Get(), normal.Get(), depth.Get(),
-           ambient.Get() })
+    for (vtkFloatArray* a :
+      { radiance.Get(), albedo.Get(), normal.Get(), depth.Get(), ambient.Get() })
     {
       a->SetNumberOfTuples(n);
     }
@@ -254,8 +253,8 @@ vtkSmartPointer<vtkImageData> MakeCapture(int w, int h)
       }
       radiance->SetTypedComponent(p, 3, on ? 1.0f : 0.0f);
     }
-    for (vtkFloatArray* a : { radiance.Get(), albedo.Get(), normal.Get(), depth.Get(),
-           ambient.Get() })
+    for (vtkFloatArray* a :
+      { radiance.Get(), albedo.Get(), normal.Get(), depth.Get(), ambient.Get() })
     {
       capture->GetPointData()->AddArray(a);
     }
@@ -389,7 +388,8 @@ int TestDeepGIEXR(int argc, char* argv[])
     for (int c = 0; c < 4; ++c)
     {
       frameBuffer.insert(names[c],
-        Imf::Slice::Make(Imf::HALF, rgba.data() + c, data, 4 * sizeof(half), 4 * sizeof(half) * tw));
+        Imf::Slice::Make(
+          Imf::HALF, rgba.data() + c, data, 4 * sizeof(half), 4 * sizeof(half) * tw));
     }
     frameBuffer.insert("id.Y", Imf::Slice::Make(Imf::UINT, id.data(), data));
     frameBuffer.insert("Z", Imf::Slice::Make(Imf::FLOAT, z.data(), data));
@@ -429,8 +429,9 @@ int TestDeepGIEXR(int argc, char* argv[])
         bad += zArray->GetValue(v) != z[p];
       }
     }
-    Check(bad == 0, "tiled: half, uint and float values exact, rows flipped (" +
-        std::to_string(bad) + " differ)");
+    Check(bad == 0,
+      "tiled: half, uint and float values exact, rows flipped (" + std::to_string(bad) +
+        " differ)");
   }
 
   // 4. Capture round trip.
@@ -469,8 +470,8 @@ int TestDeepGIEXR(int argc, char* argv[])
     {
       points->InsertNextPoint(p);
     }
-    const vtkIdType faces[5][4] = { { 4, 5, 6, 7 }, { 0, 1, 5, 4 }, { 1, 2, 6, 5 },
-      { 2, 3, 7, 6 }, { 3, 0, 4, 7 } };
+    const vtkIdType faces[5][4] = { { 4, 5, 6, 7 }, { 0, 1, 5, 4 }, { 1, 2, 6, 5 }, { 2, 3, 7, 6 },
+      { 3, 0, 4, 7 } };
     for (const auto& f : faces)
     {
       polys->InsertNextCell(4, f);
@@ -488,8 +489,8 @@ int TestDeepGIEXR(int argc, char* argv[])
     auto av = vtkFloatArray::SafeDownCast(a->GetOutput()->GetPointData()->GetArray("Obscurance"));
     auto bv = vtkFloatArray::SafeDownCast(b->GetOutput()->GetPointData()->GetArray("Obscurance"));
     Check(av && bv && av->GetNumberOfValues() == bv->GetNumberOfValues() &&
-        std::memcmp(av->GetPointer(0), bv->GetPointer(0), sizeof(float) * av->GetNumberOfValues()) ==
-          0 &&
+        std::memcmp(
+          av->GetPointer(0), bv->GetPointer(0), sizeof(float) * av->GetNumberOfValues()) == 0 &&
         a->GetMeanStandardError() > 0,
       "capture: the reference gives identical obscurance on the reloaded capture");
   }

@@ -143,7 +143,8 @@ vtkSmartPointer<vtkImageData> MakeCapture(const Frame& f, int w, int h, double c
   camera->SetViewAngle(40.0);
   camera->SetClippingRange(0.1 * height * f.Scale, 2.0 * height * f.Scale);
   vtkMatrix4x4* view = camera->GetModelViewTransformMatrix();
-  vtkMatrix4x4* projection = camera->GetProjectionTransformMatrix(static_cast<double>(w) / h, -1, 1);
+  vtkMatrix4x4* projection =
+    camera->GetProjectionTransformMatrix(static_cast<double>(w) / h, -1, 1);
   vtkNew<vtkMatrix4x4> inverseView, inverseProjection;
   vtkMatrix4x4::Invert(view, inverseView);
   vtkMatrix4x4::Invert(projection, inverseProjection);
@@ -371,7 +372,8 @@ int TestDeepGIReferenceIrradiance(int, char*[])
     squareL[c] = SquareColor[c] / 255.0 * LightIntensity * LightColor[c];
   }
   const double below[3] = { 0, 0, -1 }, origin[3] = { 0, 0, 0 };
-  auto squareExact = [&](vtkIdType p, int c) {
+  auto squareExact = [&](vtkIdType p, int c)
+  {
     return vtkMath::Pi() * squareL[c] *
       SquareViewFactor(squarePositions[p][0], squarePositions[p][1], SquareHalf, SquareHeight);
   };
@@ -394,8 +396,8 @@ int TestDeepGIReferenceIrradiance(int, char*[])
           std::fabs(l->GetComponent(p, c) - albedoX[c] * e->GetComponent(p, c) / vtkMath::Pi()));
       }
     }
-    Check(maxError < 1e-6, "IndirectRadiance = rho_X E / pi (max error " +
-        std::to_string(maxError) + ")");
+    Check(maxError < 1e-6,
+      "IndirectRadiance = rho_X E / pi (max error " + std::to_string(maxError) + ")");
   }
   // Seen from behind: two-sided lighting flips the normal (same E), one-sided
   // lighting makes it black.
@@ -447,7 +449,8 @@ int TestDeepGIReferenceIrradiance(int, char*[])
     reference->Compute(squareCapture);
     CompareExact(
       reference,
-      [&](vtkIdType p, int c) {
+      [&](vtkIdType p, int c)
+      {
         const double R = std::sqrt(r2);
         if (std::fabs(squarePositions[p][0]) + R >= SquareHalf ||
           std::fabs(squarePositions[p][1]) + R >= SquareHalf)
@@ -517,8 +520,8 @@ int TestDeepGIReferenceIrradiance(int, char*[])
     const double sigma = std::sqrt(nearVar / (nearN * nearN) + farVar / (farN * farN));
     std::cout << "red wall: mean E_r at d < 0.8: " << nearMean << ", at d > 2.4: " << farMean
               << " (difference standard error " << sigma << ")\n";
-    Check(notRed == 0, "red wall: E_r > E_g, E_b on every pixel (" + std::to_string(notRed) +
-        " not)");
+    Check(
+      notRed == 0, "red wall: E_r > E_g, E_b on every pixel (" + std::to_string(notRed) + " not)");
     Check(nearMean - farMean > 10 * sigma, "red wall: more irradiance near the wall");
   }
 
@@ -549,19 +552,20 @@ int TestDeepGIReferenceIrradiance(int, char*[])
     {
       maxDiff = std::max(maxDiff, static_cast<double>(std::fabs(a->GetValue(i) - b->GetValue(i))));
     }
-    Check(maxDiff == 0.0, "no roof: shadows on and off identical (max diff " +
-        std::to_string(maxDiff) + ")");
+    Check(maxDiff == 0.0,
+      "no roof: shadows on and off identical (max diff " + std::to_string(maxDiff) + ")");
     wall->ShadowsOff();
   }
 
   // 4. Two seeds agree within noise.
-  auto compareResults = [](vtkImageData* a, vtkImageData* b, double k, const std::string& what) {
+  auto compareResults = [](vtkImageData* a, vtkImageData* b, double k, const std::string& what)
+  {
     auto ea = vtkFloatArray::SafeDownCast(a->GetPointData()->GetArray("IndirectIrradiance"));
-    auto sa = vtkFloatArray::SafeDownCast(
-      a->GetPointData()->GetArray("IndirectIrradianceStandardError"));
+    auto sa =
+      vtkFloatArray::SafeDownCast(a->GetPointData()->GetArray("IndirectIrradianceStandardError"));
     auto eb = vtkFloatArray::SafeDownCast(b->GetPointData()->GetArray("IndirectIrradiance"));
-    auto sb = vtkFloatArray::SafeDownCast(
-      b->GetPointData()->GetArray("IndirectIrradianceStandardError"));
+    auto sb =
+      vtkFloatArray::SafeDownCast(b->GetPointData()->GetArray("IndirectIrradianceStandardError"));
     int bad = 0, identical = 0, n = 0;
     double maxZ = 0;
     for (vtkIdType i = 0; i < ea->GetNumberOfValues(); ++i)
@@ -636,7 +640,8 @@ int TestDeepGIReferenceIrradiance(int, char*[])
       scaled->Compute(capture);
       CompareExact(
         scaled,
-        [&](vtkIdType p, int c) {
+        [&](vtkIdType p, int c)
+        {
           return vtkMath::Pi() * squareL[c] *
             SquareViewFactor(positions[p][0], positions[p][1], SquareHalf, SquareHeight);
         },
@@ -710,11 +715,11 @@ int TestDeepGIReferenceIrradiance(int, char*[])
     bad->SetMaximumDistance(std::numeric_limits<double>::infinity());
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double nanPoint[3] = { nan, 0, 0 };
-    Check(!bad->AddLight(SceneLight(unit, nanPoint, origin, false, 1, white)) &&
-        events->Warnings == 2,
+    Check(
+      !bad->AddLight(SceneLight(unit, nanPoint, origin, false, 1, white)) && events->Warnings == 2,
       "light with a NaN position: skipped with a warning");
-    Check(!bad->AddLight(SceneLight(unit, origin, origin, false, 1, white)) &&
-        events->Warnings == 3,
+    Check(
+      !bad->AddLight(SceneLight(unit, origin, origin, false, 1, white)) && events->Warnings == 3,
       "light without a direction: skipped with a warning");
     bad->GetScene()->GetCellData()->RemoveArray("Colors");
     Check(bad->Compute(squareCapture) && events->Warnings == 4, "no Colors: a warning");

@@ -95,22 +95,21 @@ int TestDeepGIEXRCapture(int argc, char* argv[])
   Check(pass->CaptureLayers(capture, renderer), "capture");
 
   int missing = 0;
-  auto exact = RoundTrip(capture, directory + "/TestDeepGIEXRCapture-float.exr",
-    vtkDeepGIEXRWriter::FLOAT);
+  auto exact =
+    RoundTrip(capture, directory + "/TestDeepGIEXRCapture-float.exr", vtkDeepGIEXRWriter::FLOAT);
   const double floatError = Compare(capture, exact, false, missing);
-  std::printf("FLOAT: %d arrays, %d missing\n", capture->GetPointData()->GetNumberOfArrays(),
-    missing);
+  std::printf(
+    "FLOAT: %d arrays, %d missing\n", capture->GetPointData()->GetNumberOfArrays(), missing);
   Check(missing == 0 && floatError == 0.0, "FLOAT: every array bit-identical");
   vtkFieldData* a = capture->GetFieldData();
   vtkFieldData* b = exact->GetFieldData();
   bool sameField = true;
-  for (const char* name : { "ViewMatrix", "ProjectionMatrix", "MinimumSeparation",
-         "NumberOfLayers" })
+  for (const char* name :
+    { "ViewMatrix", "ProjectionMatrix", "MinimumSeparation", "NumberOfLayers" })
   {
     vtkDataArray* x = a->GetArray(name);
     vtkDataArray* y = b->GetArray(name);
-    sameField = sameField && x && y &&
-      x->GetNumberOfComponents() == y->GetNumberOfComponents();
+    sameField = sameField && x && y && x->GetNumberOfComponents() == y->GetNumberOfComponents();
     for (int k = 0; sameField && k < x->GetNumberOfComponents(); ++k)
     {
       sameField = x->GetComponent(0, k) == y->GetComponent(0, k);
@@ -121,8 +120,8 @@ int TestDeepGIEXRCapture(int argc, char* argv[])
   Check(sameField && oracle && oracleIn && oracle->GetValue(0) == oracleIn->GetValue(0),
     "FLOAT: field data exact");
 
-  auto rounded = RoundTrip(capture, directory + "/TestDeepGIEXRCapture-half.exr",
-    vtkDeepGIEXRWriter::HALF);
+  auto rounded =
+    RoundTrip(capture, directory + "/TestDeepGIEXRCapture-half.exr", vtkDeepGIEXRWriter::HALF);
   const double halfError = Compare(capture, rounded, true, missing);
   std::printf("HALF: largest error / (2^-11 |a| + 2^-24) = %.3f\n", halfError);
   Check(missing == 0 && halfError <= 1.0, "HALF: every value within half precision");
@@ -135,8 +134,10 @@ int TestDeepGIEXRCapture(int argc, char* argv[])
     r->SetRadius(0.5);
   }
   Check(original->Compute(capture) && reloaded->Compute(exact), "reference on both captures");
-  auto x = vtkFloatArray::SafeDownCast(original->GetOutput()->GetPointData()->GetArray("Obscurance"));
-  auto y = vtkFloatArray::SafeDownCast(reloaded->GetOutput()->GetPointData()->GetArray("Obscurance"));
+  auto x =
+    vtkFloatArray::SafeDownCast(original->GetOutput()->GetPointData()->GetArray("Obscurance"));
+  auto y =
+    vtkFloatArray::SafeDownCast(reloaded->GetOutput()->GetPointData()->GetArray("Obscurance"));
   Check(x && y && x->GetNumberOfValues() == y->GetNumberOfValues() &&
       std::memcmp(x->GetPointer(0), y->GetPointer(0), sizeof(float) * x->GetNumberOfValues()) == 0,
     "the reference gives identical obscurance on the reloaded capture");
