@@ -256,17 +256,18 @@ int vtkDeepGIEXRReader::RequestData(
   }
 
   // Each channel is read as float into its own plane, in the file's row
-  // order; OpenEXR converts half and uint.
+  // order; OpenEXR converts half and uint. A corrupt header can claim a
+  // data window too large to allocate: std::bad_alloc is caught below.
   std::map<std::string, std::vector<float>> planes;
-  Imf::FrameBuffer frameBuffer;
-  for (const std::string& name : names)
-  {
-    std::vector<float>& plane = planes[name];
-    plane.assign(pixels, 0.0f);
-    frameBuffer.insert(name, Imf::Slice::Make(Imf::FLOAT, plane.data(), data));
-  }
   try
   {
+    Imf::FrameBuffer frameBuffer;
+    for (const std::string& name : names)
+    {
+      std::vector<float>& plane = planes[name];
+      plane.assign(pixels, 0.0f);
+      frameBuffer.insert(name, Imf::Slice::Make(Imf::FLOAT, plane.data(), data));
+    }
     file->setFrameBuffer(frameBuffer);
     file->readPixels(data.min.y, data.max.y);
   }
