@@ -69,6 +69,8 @@ struct vtkDeepGIReferenceObscurance::Internals
   vtkPolyData* BuiltFor = nullptr;
   vtkMTimeType BuiltTime = 0;
   std::vector<vtkIdType> TriangleToCell;
+  // Scene point ids of each fan triangle (3 per triangle), for HitRecord.
+  std::vector<unsigned int> Indices;
   double Centre[3] = { 0, 0, 0 };
   double Diagonal = 0.0;
 
@@ -81,6 +83,7 @@ struct vtkDeepGIReferenceObscurance::Internals
     }
     this->BuiltFor = nullptr;
     this->TriangleToCell.clear();
+    this->Indices.clear();
   }
   ~Internals()
   {
@@ -171,7 +174,7 @@ bool vtkDeepGIReferenceObscurance::BuildScene()
 
   // Fan-triangulate the polygons; cell ids follow the polydata's cell order
   // (verts and lines come first there).
-  std::vector<unsigned int> indices;
+  std::vector<unsigned int>& indices = in.Indices;
   const vtkIdType cellOffset =
     this->Scene->GetNumberOfVerts() + this->Scene->GetNumberOfLines();
   auto iter = vtk::TakeSmartPointer(polys->NewIterator());
@@ -256,15 +259,86 @@ bool vtkDeepGIReferenceObscurance::TraceRay(
   {
     hit.Distance = std::numeric_limits<double>::infinity();
     hit.Cell = -1;
-    hit.Normal[0] = hit.Normal[1] = hit.Normal[2] = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      hit.Normal[k] = hit.Weights[k] = 0.0;
+      hit.PointIds[k] = -1;
+    }
     return false;
   }
   hit.Distance = rh.ray.tfar;
   hit.Cell = in.TriangleToCell[rh.hit.primID];
-  hit.Normal[0] = rh.hit.Ng_x;
-  hit.Normal[1] = rh.hit.Ng_y;
-  hit.Normal[2] = rh.hit.Ng_z;
+  // Embree's (u, v) weight vertices 1 and 2; vertex 0 gets 1 - u - v.
+  for (int k = 0; k < 3; ++k)
+  {
+    hit.PointIds[k] = in.Indices[3 * static_cast<size_t>(rh.hit.primID) + k];
+  }
+  hit.Weights[1] = rh.hit.u;
+  hit.Weights[2] = rh.hit.v;
+  hit.Weights[0] = 1.0 - hit.Weights[1] - hit.Weights[2];
+  // The winding normal (p1 - p0) x (p2 - p0), the side OpenGL and VTK call
+  // front facing, from the double-precision points rather than Embree's
+  // float Ng (whose orientation convention is Embree's own).
+  double p[3][3];
+  for (int k = 0; k < 3; ++k)
+  {
+    this->Scene->GetPoints()->GetPoint(hit.PointIds[k], p[k]);
+  }
+  double e1[3], e2[3];
+  vtkMath::Subtract(p[1], p[0], e1);
+  vtkMath::Subtract(p[2], p[0], e2);
+  vtkMath::Cross(e1, e2, hit.Normal);
   vtkMath::Normalize(hit.Normal);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGIReferenceObscurance::IsOccluded(
+  const double origin[3], const double direction[3], double tmax) const
+{
+  const Internals& in = *this->Internal;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray;
+  ray.org_x = static_cast<float>(origin[0] - in.Centre[0]);
+  ray.org_y = static_cast<float>(origin[1] - in.Centre[1]);
+  ray.org_z = static_cast<float>(origin[2] - in.Centre[2]);
+  ray.dir_x = static_cast<float>(direction[0]);
+  ray.dir_y = static_cast<float>(direction[1]);
+  ray.dir_z = static_cast<float>(direction[2]);
+  ray.tnear = 0.0f;
+  ray.tfar = static_cast<float>(std::min(tmax, static_cast<double>(FLT_MAX)));
+  ray.time = 0.0f;
+  ray.mask = 0xFFFFFFFFu;
+  ray.id = 0;
+  ray.flags = 0;
+  rtcOccluded1(in.Scene, &context, &ray);
+  // rtcOccluded1 sets tfar to -inf when it finds a hit.
+  return ray.tfar < 0.0f;
+}
+
+//------------------------------------------------------------------------------
+double vtkDeepGIReferenceObscurance::GetRayOffset(const double point[3]) const
+{
+  const Internals& in = *this->Internal;
+  const double rel[3] = { point[0] - in.Centre[0], point[1] - in.Centre[1],
+    point[2] - in.Centre[2] };
+  return this->RelativeOffset * (in.Diagonal + vtkMath::Norm(rel));
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGIReferenceObscurance::CheckParameters()
+{
+  if (!(std::isfinite(this->Radius) && this->Radius > 0.0))
+  {
+    vtkErrorMacro("Radius must be a positive finite number, not " << this->Radius << ".");
+    return false;
+  }
+  return true;
+}
+
+bool vtkDeepGIReferenceObscurance::PrepareCompute(vtkImageData*)
+{
   return true;
 }
 
@@ -355,9 +429,8 @@ bool vtkDeepGIReferenceObscurance::Compute(vtkImageData* capture)
   this->MeanStandardError = this->MaximumStandardError = 0.0;
   this->NumberOfValidPixels = this->NumberOfRays = 0;
   this->ComputeTime = 0.0;
-  if (!(std::isfinite(this->Radius) && this->Radius > 0.0))
+  if (!this->CheckParameters())
   {
-    vtkErrorMacro("Radius must be a positive finite number, not " << this->Radius << ".");
     return false;
   }
   if (!capture)
@@ -394,7 +467,7 @@ bool vtkDeepGIReferenceObscurance::Compute(vtkImageData* capture)
     vtkErrorMacro("The capture has no ViewMatrix/ProjectionMatrix field data.");
     return false;
   }
-  if (!this->BuildScene())
+  if (!this->BuildScene() || !this->PrepareCompute(capture))
   {
     return false;
   }
@@ -420,10 +493,9 @@ bool vtkDeepGIReferenceObscurance::Compute(vtkImageData* capture)
 
   const int width = dims[0];
   const int height = dims[1];
-  const int spp = this->SamplesPerPixel;
+  const int spp = this->GetNumberOfSamplesPerPixel();
   const int components = this->GetNumberOfSampleComponents();
   const double tmax = this->GetMaximumRayDistance();
-  const Internals& in = *this->Internal;
 
   vtkSMPTools::For(0, height, [&](vtkIdType rowBegin, vtkIdType rowEnd) {
     std::vector<double> sum(components), sum2(components), values(components),
@@ -472,9 +544,7 @@ bool vtkDeepGIReferenceObscurance::Compute(vtkImageData* capture)
             viewMatrix->GetElement(1, c) * n[1] + viewMatrix->GetElement(2, c) * n[2];
         }
         vtkMath::Normalize(x.Normal);
-        double rel[3] = { x.Position[0] - in.Centre[0], x.Position[1] - in.Centre[1],
-          x.Position[2] - in.Centre[2] };
-        const double offset = this->RelativeOffset * (in.Diagonal + vtkMath::Norm(rel));
+        const double offset = this->GetRayOffset(x.Position);
         for (int c = 0; c < 3; ++c)
         {
           x.Origin[c] = x.Position[c] + offset * x.Normal[c];
@@ -520,14 +590,18 @@ bool vtkDeepGIReferenceObscurance::Compute(vtkImageData* capture)
   });
 
   // Statistics, serially (deterministic order).
-  vtkDataArray* se = this->Output->GetPointData()->GetArray("StandardError");
+  vtkDataArray* se = this->Output->GetPointData()->GetArray(this->GetStandardErrorArrayName());
   double total = 0.0;
   for (vtkIdType p = 0; p < pixels; ++p)
   {
     if (validOut->GetValue(p))
     {
       ++this->NumberOfValidPixels;
-      const double e = se ? se->GetComponent(p, 0) : 0.0;
+      double e = 0.0;
+      for (int c = 0; se && c < se->GetNumberOfComponents(); ++c)
+      {
+        e = std::max(e, se->GetComponent(p, c));
+      }
       total += e;
       this->MaximumStandardError = std::max(this->MaximumStandardError, e);
     }

@@ -73,11 +73,12 @@
  * hit, to the protected virtual EvaluateSample(), which returns
  * GetNumberOfSampleComponents() values; the driver accumulates their mean
  * and standard error and FinishPixel() turns them into output arrays.
- * A later one-bounce diffuse irradiance reference overrides these three
- * methods: at the hit (HitRecord gives the triangle id for the "Colors"
- * albedo and the geometric normal) it traces shadow rays to the lights with
- * TraceRay and returns RGB radiance, reusing scene, ray generation,
- * threading and statistics unchanged.
+ * vtkDeepGIReferenceIrradiance (one-bounce diffuse irradiance) overrides
+ * these methods and the CheckParameters/PrepareCompute hooks: at the hit
+ * (HitRecord gives the triangle id for the "Colors" albedo, the winding
+ * normal, and the point ids and barycentric weights for point normals) it
+ * traces shadow rays to the lights with IsOccluded and returns RGB values,
+ * reusing scene, ray generation, threading and statistics unchanged.
  *
  * Scale robustness: the triangles are stored relative to the centre of
  * their bounds (so float precision follows the scene's size, not its
@@ -240,19 +241,46 @@ protected:
   };
 
   /// The first hit of a ray: distance from the origin, triangle (index into
-  /// the scene's cells), unit geometric normal (world space).
+  /// the scene's cells), unit geometric normal (world space, oriented by the
+  /// triangle's winding: (p1 - p0) x (p2 - p0) of its fan triangle), the
+  /// triangle's three scene point ids and the hit's barycentric weights of
+  /// those points (for interpolating point data such as normals).
   struct HitRecord
   {
     bool Hit;
     double Distance;
     vtkIdType Cell;
     double Normal[3];
+    vtkIdType PointIds[3];
+    double Weights[3];
   };
 
   /// Closest hit along origin + t * direction (unit), 0 < t < tmax.
   /// Thread-safe; valid during Compute() only.
   bool TraceRay(const double origin[3], const double direction[3], double tmax,
     HitRecord& hit) const;
+
+  /// Whether any triangle lies along origin + t * direction (unit),
+  /// 0 < t < tmax (a shadow ray: any hit, not the closest). Thread-safe;
+  /// valid during Compute() only.
+  bool IsOccluded(const double origin[3], const double direction[3], double tmax) const;
+
+  /// The self-intersection offset for a ray leaving `point`: RelativeOffset
+  /// * (scene diagonal + |point - scene centre|). Valid during Compute() only.
+  double GetRayOffset(const double point[3]) const;
+
+  /// Checks the parameters before anything else; false (after an error)
+  /// stops Compute(). Here: Radius must be positive and finite.
+  virtual bool CheckParameters();
+
+  /// Called once per Compute() after the capture was validated and the
+  /// Embree scene built, before any ray: subclasses read what they need from
+  /// the capture and the scene. False (after an error) stops Compute().
+  virtual bool PrepareCompute(vtkImageData* capture);
+
+  /// Output array whose per-pixel maximum over components is the pixel's
+  /// standard error in GetMeanStandardError()/GetMaximumStandardError().
+  virtual const char* GetStandardErrorArrayName() const { return "StandardError"; }
 
   /// Uniform random number in [0, 1) for (pixel, sample, dimension); a
   /// counter-based hash of Seed and the three indices.
@@ -276,6 +304,9 @@ protected:
 
   /// Farthest distance a sample ray needs (Radius here).
   virtual double GetMaximumRayDistance() const { return this->Radius; }
+
+  /// Samples Compute() takes per pixel (SamplesPerPixel here).
+  virtual int GetNumberOfSamplesPerPixel() const { return this->SamplesPerPixel; }
 
   double Radius;
   double Bias;

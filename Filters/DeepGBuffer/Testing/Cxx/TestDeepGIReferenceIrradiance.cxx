@@ -1,0 +1,743 @@
+// Tests vtkDeepGIReferenceIrradiance, the Embree ground truth of one-bounce
+// diffuse indirect irradiance, on synthetic captures (no rendering): every
+// pixel of a camera looking straight down at the plane z = 0 gets the plane's
+// exact depth and the normal +z; the plane itself is not part of the scene
+// unless a test adds it.
+//
+//  1. analytic: a horizontal square (half side s) at height h facing down,
+//     lit from below by a directional light with n.l = 1, so L = rho I; for a
+//     point under it E = pi L F with F the view factor of the parallel
+//     rectangles (closed form, four corner rectangles). Per pixel and channel
+//     |E - exact| < 4.5 SE + 1e-6, mean difference within 4 SE of the mean.
+//     The same square wound the other way (seen from behind) gives the same E
+//     with TwoSidedLighting on and E = 0 with it off; point normals that
+//     point up (away from the light) give E = 0 (the shading normal is used).
+//     MaximumDistance r: E = 0 for r < h, and E = pi L R^2 / (R^2 + h^2),
+//     R^2 = r^2 - h^2 (a coaxial disc) where that disc lies inside the square;
+//  2. a white floor beside a red wall: E red (r > g, b), larger near the wall;
+//  3. a roof shading the wall: with Shadows on the wall is dark and E = 0,
+//     with Shadows off E is the lit wall's;
+//  4. two seeds agree within 4.5 combined standard errors;
+//  5. scenes, cameras and lights scaled by 1e-4 and 1e4 (and moved away from
+//     the origin): the same E within noise;
+//  6. lights from a vtkRenderer (headlight, camera light, scene light, a
+//     switched-off light, automatic headlight); bad input: no lights (warning,
+//     E = 0), no scene, NaN and negative MaximumDistance (errors).
+
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDeepGIReferenceIrradiance.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkRenderer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace
+{
+int Failures = 0;
+
+void Check(bool ok, const std::string& what)
+{
+  std::cout << (ok ? "ok: " : "FAILED: ") << what << "\n";
+  Failures += ok ? 0 : 1;
+}
+
+class EventCounter : public vtkCommand
+{
+public:
+  static EventCounter* New() { return new EventCounter; }
+  void Execute(vtkObject*, unsigned long event, void*) override
+  {
+    this->Errors += event == vtkCommand::ErrorEvent;
+    this->Warnings += event == vtkCommand::WarningEvent;
+  }
+  int Errors = 0;
+  int Warnings = 0;
+};
+
+// Lengths of a test are multiplied by Scale and shifted by Shift.
+struct Frame
+{
+  double Scale = 1.0;
+  double Shift[3] = { 0, 0, 0 };
+  void Apply(const double in[3], double out[3]) const
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      out[c] = in[c] * this->Scale + this->Shift[c];
+    }
+  }
+};
+
+// A scene of quads, each with an RGB colour (cell data "Colors").
+class SceneBuilder
+{
+public:
+  explicit SceneBuilder(const Frame& f)
+    : F(f)
+  {
+    this->Colors->SetName("Colors");
+    this->Colors->SetNumberOfComponents(3);
+  }
+  void Quad(const std::array<std::array<double, 3>, 4>& corners, const unsigned char rgb[3])
+  {
+    vtkIdType ids[4];
+    for (int k = 0; k < 4; ++k)
+    {
+      double p[3];
+      this->F.Apply(corners[k].data(), p);
+      ids[k] = this->Points->InsertNextPoint(p);
+    }
+    this->Polys->InsertNextCell(4, ids);
+    this->Colors->InsertNextTypedTuple(rgb);
+  }
+  vtkSmartPointer<vtkPolyData> Build()
+  {
+    auto scene = vtkSmartPointer<vtkPolyData>::New();
+    scene->SetPoints(this->Points);
+    scene->SetPolys(this->Polys);
+    scene->GetCellData()->AddArray(this->Colors);
+    return scene;
+  }
+
+private:
+  Frame F;
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkCellArray> Polys;
+  vtkNew<vtkUnsignedCharArray> Colors;
+};
+
+// A w x h capture of the plane z = 0 seen from (cx, cy, height) looking down
+// (perspective, 40 degrees) with exact depth, normal +z and Albedo_0;
+// positions receives each pixel's unscaled point.
+vtkSmartPointer<vtkImageData> MakeCapture(const Frame& f, int w, int h, double cx, double cy,
+  double height, const double albedo[3], std::vector<std::array<double, 3>>& positions)
+{
+  vtkNew<vtkCamera> camera;
+  const double eye[3] = { cx, cy, height }, target[3] = { cx, cy, 0 };
+  double e[3], t[3];
+  f.Apply(eye, e);
+  f.Apply(target, t);
+  camera->SetPosition(e);
+  camera->SetFocalPoint(t);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(40.0);
+  camera->SetClippingRange(0.1 * height * f.Scale, 2.0 * height * f.Scale);
+  vtkMatrix4x4* view = camera->GetModelViewTransformMatrix();
+  vtkMatrix4x4* projection =
+    camera->GetProjectionTransformMatrix(static_cast<double>(w) / h, -1, 1);
+  vtkNew<vtkMatrix4x4> inverseView, inverseProjection;
+  vtkMatrix4x4::Invert(view, inverseView);
+  vtkMatrix4x4::Invert(projection, inverseProjection);
+
+  auto capture = vtkSmartPointer<vtkImageData>::New();
+  capture->SetDimensions(w, h, 1);
+  vtkNew<vtkFloatArray> depth, normal, alb;
+  vtkNew<vtkUnsignedCharArray> valid;
+  depth->SetName("Depth_0");
+  depth->SetNumberOfTuples(w * h);
+  normal->SetName("Normal_0");
+  normal->SetNumberOfComponents(3);
+  normal->SetNumberOfTuples(w * h);
+  alb->SetName("Albedo_0");
+  alb->SetNumberOfComponents(3);
+  alb->SetNumberOfTuples(w * h);
+  valid->SetName("Valid_0");
+  valid->SetNumberOfTuples(w * h);
+  positions.assign(w * h, { 0, 0, 0 });
+  double up[4] = { 0, 0, 1, 0 }, nc[4];
+  view->MultiplyPoint(up, nc);
+  for (int j = 0; j < h; ++j)
+  {
+    for (int i = 0; i < w; ++i)
+    {
+      const vtkIdType p = j * w + i;
+      double a[4] = { (i + 0.5) / w * 2 - 1, (j + 0.5) / h * 2 - 1, -1, 1 };
+      double b[4] = { a[0], a[1], 1, 1 };
+      inverseProjection->MultiplyPoint(a, a);
+      inverseProjection->MultiplyPoint(b, b);
+      for (int c = 0; c < 3; ++c)
+      {
+        a[c] /= a[3];
+        b[c] /= b[3];
+      }
+      a[3] = b[3] = 1.0;
+      double wa[4], wb[4];
+      inverseView->MultiplyPoint(a, wa);
+      inverseView->MultiplyPoint(b, wb);
+      const double s = (f.Shift[2] - wa[2]) / (wb[2] - wa[2]);
+      double x[4] = { 0, 0, 0, 1 }, xc[4];
+      for (int c = 0; c < 3; ++c)
+      {
+        x[c] = wa[c] + s * (wb[c] - wa[c]);
+      }
+      view->MultiplyPoint(x, xc);
+      depth->SetValue(p, static_cast<float>(-xc[2]));
+      valid->SetValue(p, 1);
+      for (int c = 0; c < 3; ++c)
+      {
+        normal->SetComponent(p, c, nc[c]);
+        alb->SetComponent(p, c, albedo[c]);
+        positions[p][c] = (x[c] - f.Shift[c]) / f.Scale;
+      }
+    }
+  }
+  capture->GetPointData()->AddArray(depth);
+  capture->GetPointData()->AddArray(normal);
+  capture->GetPointData()->AddArray(alb);
+  capture->GetPointData()->AddArray(valid);
+  for (auto m :
+    { std::make_pair("ViewMatrix", view), std::make_pair("ProjectionMatrix", projection) })
+  {
+    vtkNew<vtkDoubleArray> values;
+    values->SetName(m.first);
+    values->SetNumberOfComponents(16);
+    values->InsertNextTuple(&m.second->Element[0][0]);
+    capture->GetFieldData()->AddArray(values);
+  }
+  return capture;
+}
+
+// View factor from a differential area to a parallel rectangle at height h
+// whose corner lies straight above it, sides a and b.
+double CornerViewFactor(double a, double b, double h)
+{
+  const double x = a / h, y = b / h;
+  const double sx = std::sqrt(1 + x * x), sy = std::sqrt(1 + y * y);
+  return (x / sx * std::atan(y / sx) + y / sy * std::atan(x / sy)) / (2 * vtkMath::Pi());
+}
+
+// ... to the square [-s, s]^2 at height h from the point (px, py), under it.
+double SquareViewFactor(double px, double py, double s, double h)
+{
+  double f = 0;
+  for (double a : { s - px, s + px })
+  {
+    for (double b : { s - py, s + py })
+    {
+      f += CornerViewFactor(a, b, h);
+    }
+  }
+  return f;
+}
+
+vtkFloatArray* Array(vtkDeepGIReferenceIrradiance* reference, const char* name)
+{
+  return vtkFloatArray::SafeDownCast(reference->GetOutput()->GetPointData()->GetArray(name));
+}
+
+// Compares E per pixel and channel with exact(p, c); returns the number of
+// compared values.
+int CompareExact(vtkDeepGIReferenceIrradiance* reference,
+  const std::function<double(vtkIdType, int)>& exact, const std::string& what)
+{
+  vtkFloatArray* e = Array(reference, "IndirectIrradiance");
+  vtkFloatArray* se = Array(reference, "IndirectIrradianceStandardError");
+  if (!e || !se)
+  {
+    Check(false, what + ": output arrays missing");
+    return 0;
+  }
+  int n = 0, bad = 0;
+  double sumDiff = 0, sumVar = 0, maxRatio = 0;
+  for (vtkIdType p = 0; p < e->GetNumberOfTuples(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double x = exact(p, c);
+      if (!(x >= 0))
+      {
+        continue; // not comparable here
+      }
+      const double diff = e->GetComponent(p, c) - x;
+      const double tolerance = 4.5 * se->GetComponent(p, c) + 1e-6;
+      bad += std::fabs(diff) > tolerance;
+      maxRatio = std::max(maxRatio, std::fabs(diff) / tolerance);
+      sumDiff += diff;
+      sumVar += se->GetComponent(p, c) * se->GetComponent(p, c);
+      ++n;
+    }
+  }
+  const double meanDiff = n ? sumDiff / n : 0, meanSE = n ? std::sqrt(sumVar) / n : 0;
+  std::cout << what << ": " << n << " values, mean E - exact " << meanDiff
+            << " (its standard error " << meanSE << "), max |diff| / tolerance " << maxRatio
+            << ", mean SE " << reference->GetMeanStandardError() << ", "
+            << reference->GetComputeTime() << " s\n";
+  Check(n > 0, what + ": values compared");
+  Check(bad == 0, what + ": " + std::to_string(bad) + " values beyond 4.5 standard errors");
+  Check(std::fabs(meanDiff) < 4 * meanSE + 1e-6, what + ": mean difference within 4 SE");
+  return n;
+}
+
+double MaxIrradiance(vtkDeepGIReferenceIrradiance* reference)
+{
+  vtkFloatArray* e = Array(reference, "IndirectIrradiance");
+  double m = 0;
+  for (vtkIdType i = 0; e && i < e->GetNumberOfValues(); ++i)
+  {
+    m = std::max(m, static_cast<double>(std::fabs(e->GetValue(i))));
+  }
+  return e ? m : -1;
+}
+
+// Scene of test 1: the square [-s, s]^2 at height h, facing down (or up).
+const double SquareHalf = 2.0, SquareHeight = 1.0;
+const unsigned char SquareColor[3] = { 200, 100, 50 };
+const double LightColor[3] = { 1.0, 0.9, 0.7 }, LightIntensity = 0.8;
+
+vtkSmartPointer<vtkPolyData> SquareScene(const Frame& f, bool facingDown)
+{
+  SceneBuilder b(f);
+  const double s = SquareHalf, h = SquareHeight;
+  if (facingDown)
+  {
+    b.Quad({ { { -s, -s, h }, { -s, s, h }, { s, s, h }, { s, -s, h } } }, SquareColor);
+  }
+  else
+  {
+    b.Quad({ { { -s, -s, h }, { s, -s, h }, { s, s, h }, { -s, s, h } } }, SquareColor);
+  }
+  return b.Build();
+}
+
+// A scene light; directional lights shine from `from` towards `to`.
+vtkSmartPointer<vtkLight> SceneLight(const Frame& f, const double from[3], const double to[3],
+  bool positional, double intensity, const double color[3])
+{
+  auto light = vtkSmartPointer<vtkLight>::New();
+  light->SetLightTypeToSceneLight();
+  double p[3], q[3];
+  f.Apply(from, p);
+  f.Apply(to, q);
+  light->SetPosition(p);
+  light->SetFocalPoint(q);
+  light->SetPositional(positional);
+  light->SetConeAngle(180);
+  light->SetIntensity(intensity);
+  light->SetDiffuseColor(color[0], color[1], color[2]);
+  return light;
+}
+
+// Wall scene of tests 2-5: white floor z = 0 for x > 0 (not seen from floor
+// points, it is their own plane), red wall x = 0 (height 2, facing +x),
+// optionally a roof at z = 5 over x in [-1, 6] facing up.
+const unsigned char White[3] = { 255, 255, 255 };
+const unsigned char Red[3] = { 160, 17, 13 }; // Cornell box red .63/.065/.05
+
+vtkSmartPointer<vtkPolyData> WallScene(const Frame& f, bool roof)
+{
+  SceneBuilder b(f);
+  const double e = 20;
+  b.Quad({ { { 0, -e, 0 }, { e, -e, 0 }, { e, e, 0 }, { 0, e, 0 } } }, White);
+  b.Quad({ { { 0, -e, 0 }, { 0, e, 0 }, { 0, e, 2 }, { 0, -e, 2 } } }, Red);
+  if (roof)
+  {
+    b.Quad({ { { -1, -e, 5 }, { 6, -e, 5 }, { 6, e, 5 }, { -1, e, 5 } } }, White);
+  }
+  return b.Build();
+}
+}
+
+int TestDeepGIReferenceIrradiance(int, char*[])
+{
+  const double white[3] = { 1, 1, 1 };
+  const double albedoX[3] = { 0.5, 0.6, 0.7 };
+  const Frame unit;
+
+  // 1. Analytic: parallel square lit from below.
+  std::vector<std::array<double, 3>> squarePositions;
+  auto squareCapture = MakeCapture(unit, 16, 16, 0.3, -0.2, 3.0, albedoX, squarePositions);
+  double squareL[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    squareL[c] = SquareColor[c] / 255.0 * LightIntensity * LightColor[c];
+  }
+  const double below[3] = { 0, 0, -1 }, origin[3] = { 0, 0, 0 };
+  auto squareExact = [&](vtkIdType p, int c)
+  {
+    return vtkMath::Pi() * squareL[c] *
+      SquareViewFactor(squarePositions[p][0], squarePositions[p][1], SquareHalf, SquareHeight);
+  };
+  vtkNew<vtkDeepGIReferenceIrradiance> reference;
+  reference->SetScene(SquareScene(unit, true));
+  reference->AddLight(SceneLight(unit, below, origin, false, LightIntensity, LightColor));
+  reference->SetSamplesPerPixel(1024);
+  Check(reference->Compute(squareCapture), "square: Compute");
+  CompareExact(reference, squareExact, "square facing down (closed form)");
+  // IndirectRadiance = rho_X E / pi.
+  {
+    vtkFloatArray* e = Array(reference, "IndirectIrradiance");
+    vtkFloatArray* l = Array(reference, "IndirectRadiance");
+    double maxError = l ? 0 : 1;
+    for (vtkIdType p = 0; l && p < e->GetNumberOfTuples(); ++p)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        maxError = std::max(maxError,
+          std::fabs(l->GetComponent(p, c) - albedoX[c] * e->GetComponent(p, c) / vtkMath::Pi()));
+      }
+    }
+    Check(maxError < 1e-6,
+      "IndirectRadiance = rho_X E / pi (max error " + std::to_string(maxError) + ")");
+  }
+  // Seen from behind: two-sided lighting flips the normal (same E), one-sided
+  // lighting makes it black.
+  {
+    vtkNew<vtkDeepGIReferenceIrradiance> back;
+    back->SetScene(SquareScene(unit, false));
+    back->AddLight(SceneLight(unit, below, origin, false, LightIntensity, LightColor));
+    back->SetSamplesPerPixel(1024);
+    Check(back->Compute(squareCapture), "square from behind: Compute");
+    CompareExact(back, squareExact, "square facing up, two-sided lighting (closed form)");
+    back->TwoSidedLightingOff();
+    back->Compute(squareCapture);
+    Check(MaxIrradiance(back) == 0.0, "square facing up, one-sided lighting: E = 0");
+  }
+  // Point normals are the shading normals: pointing up (away from the light
+  // below) they leave the front face unlit.
+  {
+    auto scene = SquareScene(unit, true);
+    vtkNew<vtkFloatArray> normals;
+    normals->SetNumberOfComponents(3);
+    for (int k = 0; k < 4; ++k)
+    {
+      normals->InsertNextTuple3(0, 0, 1);
+    }
+    scene->GetPointData()->SetNormals(normals);
+    vtkNew<vtkDeepGIReferenceIrradiance> shaded;
+    shaded->SetScene(scene);
+    shaded->AddLight(SceneLight(unit, below, origin, false, LightIntensity, LightColor));
+    shaded->SetSamplesPerPixel(64);
+    shaded->Compute(squareCapture);
+    Check(MaxIrradiance(shaded) == 0.0, "point normals facing away from the light: E = 0");
+    for (int k = 0; k < 4; ++k)
+    {
+      normals->SetTuple3(k, 0, 0, -1);
+    }
+    normals->Modified();
+    shaded->SetSamplesPerPixel(1024);
+    shaded->Compute(squareCapture);
+    CompareExact(shaded, squareExact, "point normals facing the light (closed form)");
+  }
+  // MaximumDistance: a coaxial disc of radius R = sqrt(r^2 - h^2).
+  {
+    reference->SetMaximumDistance(0.9 * SquareHeight);
+    reference->Compute(squareCapture);
+    Check(MaxIrradiance(reference) == 0.0, "MaximumDistance < h: E = 0");
+    const double r = 1.6 * SquareHeight;
+    const double r2 = r * r - SquareHeight * SquareHeight;
+    reference->SetMaximumDistance(r);
+    reference->Compute(squareCapture);
+    CompareExact(
+      reference,
+      [&](vtkIdType p, int c)
+      {
+        const double R = std::sqrt(r2);
+        if (std::fabs(squarePositions[p][0]) + R >= SquareHalf ||
+          std::fabs(squarePositions[p][1]) + R >= SquareHalf)
+        {
+          return -1.0; // the disc leaves the square
+        }
+        return vtkMath::Pi() * squareL[c] * r2 / (r2 + SquareHeight * SquareHeight);
+      },
+      "MaximumDistance 1.6 h (coaxial disc)");
+    reference->SetMaximumDistance(std::numeric_limits<double>::infinity());
+  }
+  // A "Diffuse" field array scales rho_Y.
+  {
+    auto scene = SquareScene(unit, true);
+    vtkNew<vtkDoubleArray> diffuse;
+    diffuse->SetName("Diffuse");
+    diffuse->InsertNextValue(0.5);
+    scene->GetFieldData()->AddArray(diffuse);
+    vtkNew<vtkDeepGIReferenceIrradiance> half;
+    half->SetScene(scene);
+    half->AddLight(SceneLight(unit, below, origin, false, LightIntensity, LightColor));
+    half->SetSamplesPerPixel(1024);
+    half->Compute(squareCapture);
+    CompareExact(
+      half, [&](vtkIdType p, int c) { return 0.5 * squareExact(p, c); },
+      "field data Diffuse 0.5 (closed form)");
+  }
+
+  // 2. White floor beside a red wall, sun from above +x.
+  const double sunFrom[3] = { 1, 0, 1 };
+  std::vector<std::array<double, 3>> wallPositions;
+  auto wallCapture = MakeCapture(unit, 24, 8, 3.4, 0.0, 3.0, white, wallPositions);
+  vtkNew<vtkDeepGIReferenceIrradiance> wall;
+  wall->SetScene(WallScene(unit, false));
+  wall->AddLight(SceneLight(unit, sunFrom, origin, false, 1.0, white));
+  wall->SetSamplesPerPixel(1024);
+  wall->SetSeed(1);
+  Check(wall->Compute(wallCapture), "wall: Compute");
+  vtkNew<vtkImageData> wallResult;
+  wallResult->DeepCopy(wall->GetOutput());
+  {
+    vtkFloatArray* e = Array(wall, "IndirectIrradiance");
+    vtkFloatArray* se = Array(wall, "IndirectIrradianceStandardError");
+    int notRed = 0;
+    double nearSum = 0, farSum = 0, nearVar = 0, farVar = 0;
+    int nearN = 0, farN = 0;
+    for (vtkIdType p = 0; p < e->GetNumberOfTuples(); ++p)
+    {
+      const double r = e->GetComponent(p, 0);
+      notRed += !(r > e->GetComponent(p, 1) && r > e->GetComponent(p, 2));
+      const double d = wallPositions[p][0];
+      const double s = se->GetComponent(p, 0);
+      if (d > 0 && d < 0.8)
+      {
+        nearSum += r;
+        nearVar += s * s;
+        ++nearN;
+      }
+      else if (d > 2.4)
+      {
+        farSum += r;
+        farVar += s * s;
+        ++farN;
+      }
+    }
+    const double nearMean = nearSum / nearN, farMean = farSum / farN;
+    const double sigma = std::sqrt(nearVar / (nearN * nearN) + farVar / (farN * farN));
+    std::cout << "red wall: mean E_r at d < 0.8: " << nearMean << ", at d > 2.4: " << farMean
+              << " (difference standard error " << sigma << ")\n";
+    Check(
+      notRed == 0, "red wall: E_r > E_g, E_b on every pixel (" + std::to_string(notRed) + " not)");
+    Check(nearMean - farMean > 10 * sigma, "red wall: more irradiance near the wall");
+  }
+
+  // 3. Shadows: a roof shades the wall from the sun.
+  {
+    vtkNew<vtkDeepGIReferenceIrradiance> roof;
+    roof->SetScene(WallScene(unit, true));
+    roof->AddLight(SceneLight(unit, sunFrom, origin, false, 1.0, white));
+    roof->SetSamplesPerPixel(256);
+    Check(roof->Compute(wallCapture), "roof, shadows off: Compute");
+    const double lit = MaxIrradiance(roof);
+    const double litMean = roof->GetMeanStandardError();
+    roof->ShadowsOn();
+    Check(roof->Compute(wallCapture), "roof, shadows on: Compute");
+    const double shadowed = MaxIrradiance(roof);
+    std::cout << "roof: max E shadows off " << lit << " (mean SE " << litMean << "), on "
+              << shadowed << "\n";
+    Check(lit > 0.1, "roof, shadows off: the wall lights the floor");
+    Check(shadowed == 0.0, "roof, shadows on: wall and roof underside dark, E = 0");
+    // Without the roof, shadow rays must not darken anything.
+    wall->ShadowsOn();
+    wall->Compute(wallCapture);
+    vtkFloatArray* a = Array(wall, "IndirectIrradiance");
+    auto b =
+      vtkFloatArray::SafeDownCast(wallResult->GetPointData()->GetArray("IndirectIrradiance"));
+    double maxDiff = 0;
+    for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
+    {
+      maxDiff = std::max(maxDiff, static_cast<double>(std::fabs(a->GetValue(i) - b->GetValue(i))));
+    }
+    Check(maxDiff == 0.0,
+      "no roof: shadows on and off identical (max diff " + std::to_string(maxDiff) + ")");
+    wall->ShadowsOff();
+  }
+
+  // 4. Two seeds agree within noise.
+  auto compareResults = [](vtkImageData* a, vtkImageData* b, double k, const std::string& what)
+  {
+    auto ea = vtkFloatArray::SafeDownCast(a->GetPointData()->GetArray("IndirectIrradiance"));
+    auto sa =
+      vtkFloatArray::SafeDownCast(a->GetPointData()->GetArray("IndirectIrradianceStandardError"));
+    auto eb = vtkFloatArray::SafeDownCast(b->GetPointData()->GetArray("IndirectIrradiance"));
+    auto sb =
+      vtkFloatArray::SafeDownCast(b->GetPointData()->GetArray("IndirectIrradianceStandardError"));
+    int bad = 0, identical = 0, n = 0;
+    double maxZ = 0;
+    for (vtkIdType i = 0; i < ea->GetNumberOfValues(); ++i)
+    {
+      const double sigma = std::hypot(sa->GetValue(i), sb->GetValue(i));
+      const double diff = std::fabs(ea->GetValue(i) - eb->GetValue(i));
+      bad += diff > k * sigma + 1e-6 * std::fabs(eb->GetValue(i)) + 1e-7;
+      identical += diff == 0 && sigma > 0;
+      maxZ = std::max(maxZ, diff / std::max(sigma, 1e-12));
+      ++n;
+    }
+    std::cout << what << ": max |diff| / combined SE " << maxZ << "\n";
+    Check(bad == 0, what + ": " + std::to_string(bad) + " values differ beyond the noise");
+    return identical < n / 4;
+  };
+  {
+    vtkNew<vtkDeepGIReferenceIrradiance> other;
+    other->SetScene(wall->GetScene());
+    other->AddLight(SceneLight(unit, sunFrom, origin, false, 1.0, white));
+    other->SetSamplesPerPixel(1024);
+    other->SetSeed(2);
+    other->Compute(wallCapture);
+    Check(compareResults(other->GetOutput(), wallResult, 4.5, "seeds 1 vs 2"),
+      "seeds 1 vs 2: the seed changes the samples");
+  }
+
+  // 5. Scale invariance, with a positional light (no attenuation) too.
+  {
+    const double lamp[3] = { 3, 1, 4 };
+    vtkNew<vtkDeepGIReferenceIrradiance> base;
+    base->SetScene(WallScene(unit, false));
+    base->AddLight(SceneLight(unit, sunFrom, origin, false, 0.5, white));
+    base->AddLight(SceneLight(unit, lamp, origin, true, 0.7, LightColor));
+    base->SetSamplesPerPixel(1024);
+    base->SetSeed(3);
+    base->ShadowsOn();
+    base->Compute(wallCapture);
+    vtkNew<vtkImageData> baseResult;
+    baseResult->DeepCopy(base->GetOutput());
+    for (double scale : { 1e-4, 1e4 })
+    {
+      Frame f;
+      f.Scale = scale;
+      f.Shift[0] = 3e4 * scale;
+      f.Shift[1] = -2e4 * scale;
+      f.Shift[2] = 1e4 * scale;
+      std::vector<std::array<double, 3>> positions;
+      auto capture = MakeCapture(f, 24, 8, 3.4, 0.0, 3.0, white, positions);
+      vtkNew<vtkDeepGIReferenceIrradiance> scaled;
+      scaled->SetScene(WallScene(f, false));
+      scaled->AddLight(SceneLight(f, sunFrom, origin, false, 0.5, white));
+      scaled->AddLight(SceneLight(f, lamp, origin, true, 0.7, LightColor));
+      scaled->SetSamplesPerPixel(1024);
+      scaled->SetSeed(3);
+      scaled->ShadowsOn();
+      Check(scaled->Compute(capture), "scale " + std::to_string(scale) + ": Compute");
+      compareResults(scaled->GetOutput(), baseResult, 4.5, "scale " + std::to_string(scale));
+    }
+    // The square at other scales against the closed form.
+    for (double scale : { 1e-4, 1e4 })
+    {
+      Frame f;
+      f.Scale = scale;
+      f.Shift[0] = -1e4 * scale;
+      f.Shift[2] = 2e4 * scale;
+      std::vector<std::array<double, 3>> positions;
+      auto capture = MakeCapture(f, 16, 16, 0.3, -0.2, 3.0, albedoX, positions);
+      vtkNew<vtkDeepGIReferenceIrradiance> scaled;
+      scaled->SetScene(SquareScene(f, true));
+      scaled->AddLight(SceneLight(f, below, origin, false, LightIntensity, LightColor));
+      scaled->SetSamplesPerPixel(1024);
+      scaled->Compute(capture);
+      CompareExact(
+        scaled,
+        [&](vtkIdType p, int c)
+        {
+          return vtkMath::Pi() * squareL[c] *
+            SquareViewFactor(positions[p][0], positions[p][1], SquareHalf, SquareHeight);
+        },
+        "square at scale " + std::to_string(scale) + " (closed form)");
+    }
+  }
+
+  // 6a. Lights from a renderer.
+  {
+    vtkNew<vtkRenderer> renderer;
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->SetPosition(1, 2, 10);
+    camera->SetFocalPoint(1, 2, 0);
+    camera->SetViewUp(0, 1, 0);
+    vtkNew<vtkLight> headlight, cameraLight, off;
+    headlight->SetLightTypeToHeadlight();
+    cameraLight->SetLightTypeToCameraLight(); // at (0, 0, 1) towards (0, 0, 0)
+    cameraLight->SetIntensity(0.5);
+    off->SwitchOff();
+    renderer->AddLight(headlight);
+    renderer->AddLight(cameraLight);
+    renderer->AddLight(off);
+    renderer->AddLight(SceneLight(unit, sunFrom, origin, false, 1.0, white));
+    vtkNew<vtkDeepGIReferenceIrradiance> fromRenderer;
+    fromRenderer->SetLightsFromRenderer(renderer);
+    Check(fromRenderer->GetNumberOfLights() == 3, "renderer: 3 switched-on lights");
+    double p[3], d[3], c[3];
+    bool positional;
+    fromRenderer->GetLight(0, p, d, c, positional);
+    Check(std::fabs(p[0] - 1) + std::fabs(p[1] - 2) + std::fabs(p[2] - 10) < 1e-9 &&
+        std::fabs(d[2] + 1) < 1e-9,
+      "headlight at the camera, looking along its view direction");
+    fromRenderer->GetLight(1, p, d, c, positional);
+    Check(std::fabs(p[0] - 1) + std::fabs(p[1] - 2) + std::fabs(p[2] - 10) < 1e-9 &&
+        std::fabs(d[2] + 1) < 1e-9 && std::fabs(c[0] - 0.5) < 1e-12,
+      "camera light (0,0,1)->(0,0,0) at the camera, intensity 0.5");
+    fromRenderer->GetLight(2, p, d, c, positional);
+    Check(std::fabs(d[0] + std::sqrt(0.5)) < 1e-9 && std::fabs(d[2] + std::sqrt(0.5)) < 1e-9,
+      "scene light direction in world space");
+    vtkNew<vtkRenderer> empty;
+    empty->GetActiveCamera()->SetPosition(0, 0, 5);
+    fromRenderer->SetLightsFromRenderer(empty);
+    Check(fromRenderer->GetNumberOfLights() == 1, "no lights on: VTK's automatic headlight");
+    empty->AutomaticLightCreationOff();
+    fromRenderer->SetLightsFromRenderer(empty);
+    Check(fromRenderer->GetNumberOfLights() == 0, "no automatic light creation: no light");
+    vtkNew<vtkLight> cameraOnly;
+    cameraOnly->SetLightTypeToHeadlight();
+    vtkNew<EventCounter> events;
+    fromRenderer->AddObserver(vtkCommand::WarningEvent, events);
+    Check(!fromRenderer->AddLight(cameraOnly) && events->Warnings == 1,
+      "headlight without a camera: skipped with a warning");
+    fromRenderer->Print(std::cout);
+  }
+
+  // 6b. Bad input.
+  {
+    vtkNew<EventCounter> events;
+    vtkNew<vtkDeepGIReferenceIrradiance> bad;
+    bad->AddObserver(vtkCommand::ErrorEvent, events);
+    bad->AddObserver(vtkCommand::WarningEvent, events);
+    Check(!bad->Compute(squareCapture) && events->Errors == 1, "no scene: error");
+    bad->SetScene(SquareScene(unit, true));
+    Check(bad->Compute(squareCapture) && events->Warnings == 1 && MaxIrradiance(bad) == 0.0,
+      "no lights: a warning and E = 0");
+    bad->AddLight(SceneLight(unit, below, origin, false, LightIntensity, LightColor));
+    bad->SetMaximumDistance(std::numeric_limits<double>::quiet_NaN());
+    Check(!bad->Compute(squareCapture) && events->Errors == 2, "NaN MaximumDistance: error");
+    bad->SetMaximumDistance(-1);
+    Check(!bad->Compute(squareCapture) && events->Errors == 3, "negative MaximumDistance: error");
+    bad->SetMaximumDistance(std::numeric_limits<double>::infinity());
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double nanPoint[3] = { nan, 0, 0 };
+    Check(
+      !bad->AddLight(SceneLight(unit, nanPoint, origin, false, 1, white)) && events->Warnings == 2,
+      "light with a NaN position: skipped with a warning");
+    Check(
+      !bad->AddLight(SceneLight(unit, origin, origin, false, 1, white)) && events->Warnings == 3,
+      "light without a direction: skipped with a warning");
+    bad->GetScene()->GetCellData()->RemoveArray("Colors");
+    Check(bad->Compute(squareCapture) && events->Warnings == 4, "no Colors: a warning");
+    bad->SetDiffuseCoefficient(7);
+    Check(bad->GetDiffuseCoefficient() == 1.0, "DiffuseCoefficient clamped");
+    vtkNew<vtkImageData> noAlbedo;
+    noAlbedo->DeepCopy(squareCapture);
+    noAlbedo->GetPointData()->RemoveArray("Albedo_0");
+    Check(bad->Compute(noAlbedo) && events->Warnings == 6 &&
+        !bad->GetOutput()->GetPointData()->GetArray("IndirectRadiance"),
+      "no Albedo_0: warnings, no IndirectRadiance");
+    Check(!bad->Compute(nullptr) && events->Errors == 4, "null capture: error");
+  }
+
+  if (Failures)
+  {
+    std::cerr << Failures << " failures\n";
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
+}

@@ -1,0 +1,262 @@
+/**
+ * @class   vtkDeepGIReferenceIrradiance
+ * @brief   ray-traced (Embree) ground truth of one-bounce diffuse indirect
+ *          light on the pixels of a deep G-buffer capture
+ *
+ * The reference for the screen-space radiosity of the paper (section 3.2,
+ * eq. 3-7): for the surface point X and normal n_X of each pixel of layer
+ * `Layer` of a capture (vtkDeepGBufferPass::CaptureLayers, or built by hand
+ * as for vtkDeepGIReferenceObscurance), it integrates the light that the
+ * scene's directly lit diffuse surfaces send to X, by Monte Carlo ray casting
+ * against ALL the scene's triangles (Intel Embree 3, through the base class).
+ *
+ * ## Units and the quantity
+ *
+ * VTK's pixel colour is outgoing radiance. The direct diffuse radiance that
+ * leaves a scene point Y (VTK's diffuse term, without ambient and specular) is
+ *
+ *   L_direct(Y) = rho_Y * sum_lights color_k * intensity_k * a_k(Y) * max(0, n_Y . l_k)
+ *
+ * with l_k the unit direction from Y to light k (minus the light's direction
+ * for directional lights) and a_k VTK's positional attenuation
+ * 1 / (c0 + c1 d + c2 d^2) times the spot factor (cos^Exponent inside
+ * ConeAngle, 0 outside, only when ConeAngle < 90, as VTK 9.1's shader does);
+ * a_k = 1 for directional lights. The albedo rho_Y is the hit triangle's
+ * cell-data "Colors" (unsigned char scaled by 1/255; float or double taken as
+ * they are; 1 component = grey; missing: white with a warning) times its
+ * diffuse coefficient: cell-data "Diffuse" if the scene has it, else field
+ * data "Diffuse", else DiffuseCoefficient. This is VTK's diffuseColor =
+ * Diffuse * DiffuseColor, the value the G-buffer's Albedo_j stores.
+ *
+ * n_Y is the shading normal VTK would use: the scene's point normals
+ * interpolated with the hit's barycentric weights and normalised, else its
+ * cell normals, else the triangle's winding normal. Back faces: VTK 9.1's
+ * OpenGL2 polydata shader flips the normal of every back-facing fragment
+ * (gl_FrontFacing false; faces without normals are oriented towards the
+ * viewer) whatever vtkRenderer::TwoSidedLighting says, so a back face is lit
+ * like a front face with the flipped normal. With TwoSidedLighting on
+ * (default) the reference does exactly that: a ray that hits a triangle from
+ * behind sees n_Y flipped. With it off, a back face sends no light (L = 0),
+ * the one-sided convention of the paper's optional n_Y test.
+ *
+ * Indirect irradiance at X, with Y(w) the first surface along X + t w:
+ *
+ *   E(X) = integral over the hemisphere of L_direct(Y(w)) max(0, n_X . w) dw
+ *
+ * (0 for rays that escape, and for hits farther than MaximumDistance from X
+ * when it is finite). Directions are cosine-weighted (density cos / pi), so
+ * each sample is pi * L_direct(Y) and E is their mean; the reflected
+ * one-bounce radiance is L_indirect(X) = rho_X * E(X) / pi with rho_X the
+ * capture's Albedo_j (the diffuse BRDF rho / pi).
+ *
+ * Shadows (default off): VTK's default rendering, and therefore the radiance
+ * layers the screen-space pass gathers, has no shadows; with Shadows on a
+ * shadow ray from Y to each light (to infinity for directional lights) must
+ * be free for the light to count, which is physically right but no longer
+ * what the screen-space input shows.
+ *
+ * ## Relation to the screen-space radiosity and where it differs
+ *
+ * This is eq. 3 of the paper with B(Y) / pi = L_direct(Y): the paper's B is
+ * radiosity, VTK's pixel is radiance L = B / pi, and eq. 6's reflected
+ * B(X) = rho_X E(X) is the radiance rho_X E / pi (boost = 1). The screen-space
+ * estimator (eq. 4-5) integrates the same E(X) from taps Y of the captured
+ * layers, whose direct diffuse radiance is Radiance_j - Ambient_j. By design
+ * it differs: it sees only the captured layers inside the frustum; it assumes
+ * X and Y see each other (no first-hit test: a surface behind a nearer one
+ * still counts there); the optional back-face test of eq. 5 drops taps with
+ * n_Y . w >= 0 (compare with TwoSidedLighting off, where a back face sends no
+ * light; with the test omitted a back-facing tap counts with its front-face
+ * radiance, which neither setting reproduces); and it gathers only within a
+ * world-space radius r: set MaximumDistance = r to remove that difference
+ * (both then ignore light from farther than r), leave it infinite for the
+ * true one-bounce irradiance.
+ *
+ * ## Output
+ *
+ * Point arrays (float, same dimensions as the capture): "IndirectIrradiance"
+ * (RGB E, 0 where the layer is empty), "IndirectIrradianceStandardError"
+ * (RGB), "IndirectRadiance" and "IndirectRadianceStandardError" (RGB,
+ * rho_X E / pi; only when the capture has Albedo_j, otherwise a warning) and
+ * "Valid". GetMeanStandardError()/GetMaximumStandardError() use the largest
+ * of the three irradiance standard errors per pixel. Radius, Bias and
+ * Epsilon of the base class are not used.
+ *
+ * Typical use:
+ * @code
+ * vtkNew<vtkDeepGIReferenceIrradiance> reference;
+ * reference->SetScene(demoScene->GetScenePolyData());
+ * reference->SetDiffuseCoefficient(0.9); // the demo scene's actors' Diffuse
+ * reference->SetLightsFromRenderer(renderer);
+ * reference->SetSamplesPerPixel(256);
+ * reference->Compute(capture); // from vtkDeepGBufferPass::CaptureLayers
+ * vtkImageData* e = reference->GetOutput();
+ * @endcode
+ *
+ * @sa vtkDeepGIReferenceObscurance vtkDeepGBufferPass
+ */
+
+#ifndef vtkDeepGIReferenceIrradiance_h
+#define vtkDeepGIReferenceIrradiance_h
+
+#include "vtkDeepGIFiltersModule.h" // for export macro
+#include "vtkDeepGIReferenceObscurance.h"
+
+#include <memory> // for std::unique_ptr
+
+class vtkCamera;
+class vtkLight;
+class vtkRenderer;
+
+class VTKDEEPGIFILTERS_EXPORT vtkDeepGIReferenceIrradiance : public vtkDeepGIReferenceObscurance
+{
+public:
+  static vtkDeepGIReferenceIrradiance* New();
+  vtkTypeMacro(vtkDeepGIReferenceIrradiance, vtkDeepGIReferenceObscurance);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Lights. The class keeps a copy of each light resolved to world space at
+   * the time it is added (later changes to the vtkLight or the camera have
+   * no effect until the lights are set again).
+   *
+   * SetLightsFromRenderer replaces the lights with the switched-on lights of
+   * the renderer's vtkLightCollection, placed the way VTK 9.1 places them
+   * for rendering: scene lights at their transformed position and focal
+   * point; headlights at the active camera's position looking at its focal
+   * point; camera lights through the camera's light transform (inverse view,
+   * scaled by the camera distance, shifted by -1 along z). When the renderer's
+   * LightFollowCamera is off, VTK does not move headlights and camera lights,
+   * and neither does this. When no light is switched on and the renderer's
+   * AutomaticLightCreation is on, VTK renders with an automatic white headlight
+   * of intensity 1: it is added here too. A user light transform
+   * (vtkOpenGLRenderer::SetUserLightTransform) is not applied.
+   *
+   * AddLight adds one light; headlights and camera lights are resolved with
+   * `camera` (required for them: without it they are skipped with a warning).
+   * Switched-off lights, and lights with non-finite values or a zero-length
+   * direction, are skipped (the latter with a warning). Returns whether the
+   * light was added.
+   */
+  void SetLightsFromRenderer(vtkRenderer* renderer);
+  bool AddLight(vtkLight* light, vtkCamera* camera = nullptr);
+  void RemoveAllLights();
+  int GetNumberOfLights() const;
+  ///@}
+
+  ///@{
+  /**
+   * A resolved light (index in [0, GetNumberOfLights())): world position,
+   * unit direction of the light (from position towards focal point), colour
+   * times intensity, and whether it is positional. Out-of-range indices
+   * return false.
+   */
+  bool GetLight(
+    int index, double position[3], double direction[3], double color[3], bool& positional) const;
+  ///@}
+
+  /// What Compute() evaluates.
+  enum QuantityType
+  {
+    INDIRECT_IRRADIANCE = 0,
+    DIRECT_RADIANCE = 1
+  };
+
+  ///@{
+  /**
+   * INDIRECT_IRRADIANCE (default): the one-bounce quantities above.
+   * DIRECT_RADIANCE: L_direct at each pixel's own surface point as seen from
+   * the capture's camera (the ray from just in front of X towards X gives the
+   * triangle, its albedo and its shading normal), in the point array
+   * "DirectRadiance" (RGB; 0 where empty or where that ray finds no
+   * triangle) with "Valid". One sample per pixel (the value is exact, its
+   * standard error 0). It checks the light model against VTK's rendering:
+   * a capture's Radiance_j - Ambient_j is VTK's diffuse (plus specular) term.
+   */
+  vtkSetClampMacro(Quantity, int, INDIRECT_IRRADIANCE, DIRECT_RADIANCE);
+  vtkGetMacro(Quantity, int);
+  void SetQuantityToIndirectIrradiance() { this->SetQuantity(INDIRECT_IRRADIANCE); }
+  void SetQuantityToDirectRadiance() { this->SetQuantity(DIRECT_RADIANCE); }
+  ///@}
+
+  ///@{
+  /**
+   * Shadow rays from each hit point Y to each light. Default off (VTK's
+   * default rendering, and so the screen-space input, has no shadows).
+   */
+  vtkSetMacro(Shadows, bool);
+  vtkGetMacro(Shadows, bool);
+  vtkBooleanMacro(Shadows, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Back faces hit by a ray are lit with the flipped normal (on, default:
+   * what VTK 9.1's OpenGL2 renderer always does) or send no light (off).
+   */
+  vtkSetMacro(TwoSidedLighting, bool);
+  vtkGetMacro(TwoSidedLighting, bool);
+  vtkBooleanMacro(TwoSidedLighting, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Only surfaces within this distance of X count (world units; (0, inf];
+   * default infinity: the full one-bounce irradiance). Set it to the
+   * screen-space gather radius r to compare with a gather limited to r.
+   * Compute() fails with an error when it is NaN or not positive.
+   */
+  vtkSetMacro(MaximumDistance, double);
+  vtkGetMacro(MaximumDistance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Diffuse coefficient (VTK's vtkProperty::Diffuse) multiplied into the
+   * "Colors" albedo when the scene carries no "Diffuse" cell or field array.
+   * [0, 1]; default 1. vtkDeepGBufferDemoScene and vtkDeepGBufferSceneLoader
+   * give their actors Diffuse 0.9: set 0.9 for their scenes.
+   */
+  vtkSetClampMacro(DiffuseCoefficient, double, 0.0, 1.0);
+  vtkGetMacro(DiffuseCoefficient, double);
+  ///@}
+
+protected:
+  vtkDeepGIReferenceIrradiance();
+  ~vtkDeepGIReferenceIrradiance() override;
+
+  int GetNumberOfSampleComponents() const override { return 3; }
+  void EvaluateSample(const SurfacePoint& x, const double direction[3], const HitRecord& hit,
+    int sample, double* values) const override;
+  void AllocateOutput(vtkImageData* output, vtkIdType pixels) override;
+  void FinishPixel(vtkImageData* output, vtkIdType pixel, const double* mean,
+    const double* standardError) override;
+  double GetMaximumRayDistance() const override;
+  bool CheckParameters() override;
+  bool PrepareCompute(vtkImageData* capture) override;
+  const char* GetStandardErrorArrayName() const override
+  {
+    return "IndirectIrradianceStandardError";
+  }
+  int GetNumberOfSamplesPerPixel() const override;
+
+  int Quantity;
+  bool Shadows;
+  bool TwoSidedLighting;
+  double MaximumDistance;
+  double DiffuseCoefficient;
+
+private:
+  vtkDeepGIReferenceIrradiance(const vtkDeepGIReferenceIrradiance&) = delete;
+  void operator=(const vtkDeepGIReferenceIrradiance&) = delete;
+
+  /// Direct diffuse radiance leaving the hit (seen from direction w).
+  void DirectRadiance(
+    const double y[3], const double w[3], const HitRecord& hit, double radiance[3]) const;
+
+  struct Lighting;
+  std::unique_ptr<Lighting> Data;
+};
+
+#endif
