@@ -3,6 +3,7 @@
 #include "vtkActor.h"
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
+#include "vtkDataArray.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -211,6 +212,7 @@ public:
   vtkOpenGLQuadHelper* TraceQuads[NUMBER_OF_ENVIRONMENTS] = { nullptr, nullptr, nullptr };
   vtkOpenGLQuadHelper* CompositeQuad = nullptr;
   bool WarnedUnsupported = false;
+  bool WarnedMappedEnvironment = false;
   // Whether the last frame of each renderer drawn by this pass had a
   // reflective prop. The G-buffer writes reflectivity while any has, so that
   // renderers sharing the pass do not rebuild every shader on each frame.
@@ -524,6 +526,19 @@ void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
   vtkTextureObject* environmentObject = nullptr;
   if (environment)
   {
+    // VTK uploads float or 16-bit texels as they are only in direct-scalars
+    // mode; otherwise an HDR environment is mapped to 8-bit colours.
+    vtkImageData* input = environment->GetInput();
+    vtkDataArray* texels = input ? input->GetPointData()->GetScalars() : nullptr;
+    if (texels && texels->GetDataType() != VTK_UNSIGNED_CHAR &&
+      environment->GetColorMode() != VTK_COLOR_MODE_DIRECT_SCALARS &&
+      !in.WarnedMappedEnvironment)
+    {
+      in.WarnedMappedEnvironment = true;
+      vtkWarningMacro("The environment texture's texels are not 8-bit and its ColorMode is not "
+                      "direct scalars: VTK maps them through a lookup table. Call "
+                      "SetColorModeToDirectScalars() on it to reflect the HDR values.");
+    }
     environment->Render(renderer); // loads (if needed) and binds it
     environmentObject = environment->GetTextureObject();
     if (environmentObject && environmentObject->GetHandle())
