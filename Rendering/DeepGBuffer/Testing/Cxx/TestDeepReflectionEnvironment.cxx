@@ -5,9 +5,10 @@
 // each pixel's reflected radiance must be the texel VTK's image-based
 // lighting convention gives for the exact world mirror direction r:
 // u = atan2(r.z, r.x) / (2 pi) + 0.5, v = asin(r.y) / pi + 0.5.
-// (2) No environment texture: the background colour. (3) A gradient
-// background: mix(Background, Background2, 0.5 + 0.5 r_y), r_y the
-// camera-space up component. 200 x 150 px.
+// (2) A cube map with one colour per face: the face of the mirror
+// direction. (3) No environment texture: the background colour. (4) A
+// gradient background: mix(Background, Background2, 0.5 + 0.5 r_y), r_y
+// the camera-space up component. 200 x 150 px.
 
 #include "DeepReflectionTestUtilities.h"
 
@@ -145,6 +146,7 @@ int TestDeepReflectionEnvironment(int, char*[])
     return { (i + 0.5) / EnvWidth, (j + 0.5) / EnvHeight, 0.25 };
   };
   // One texel of slack: the shader reflects about the Oct16 normal.
+  const double exact[3] = { 1e-3, 1e-3, 1e-3 };
   const double oneTexel[3] = { 1.0 / EnvWidth + 1e-3, 1.0 / EnvHeight + 1e-3, 1e-3 };
   Comparison c = Compare(reflections, equirectangular, oneTexel);
   std::printf("equirectangular: %ld traced pixels, %ld environment, %ld exact texel, %ld within "
@@ -162,12 +164,71 @@ int TestDeepReflectionEnvironment(int, char*[])
   Check(decoded.Exact >= 0.995 * decoded.Pixels,
     "99.5 % show exactly the texel of the direction about the stored normal");
 
+  // A cube map: one colour per face (GL's face order +x, -x, +y, -y, +z,
+  // -z); the face is the largest component of e (its sign), e reflected
+  // about the stored normal. Pixels whose direction lies within 0.001 of a
+  // face border are left out (float rounding decides there).
+  const double faceColors[6][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 1, 0 },
+    { 0, 1, 1 }, { 1, 0, 1 } };
+  vtkNew<vtkTexture> cube;
+  cube->CubeMapOn();
+  for (int f = 0; f < 6; ++f)
+  {
+    vtkNew<vtkImageData> face;
+    face->SetDimensions(4, 4, 1);
+    vtkNew<vtkUnsignedCharArray> rgb;
+    rgb->SetNumberOfComponents(3);
+    rgb->SetNumberOfTuples(16);
+    for (int t = 0; t < 16; ++t)
+    {
+      rgb->SetTuple3(t, 255 * faceColors[f][0], 255 * faceColors[f][1], 255 * faceColors[f][2]);
+    }
+    face->GetPointData()->SetScalars(rgb);
+    cube->SetInputData(f, face);
+  }
+  renderer->SetEnvironmentTexture(cube);
+  // A steeper view, so that mirror directions cross from the -z face to +y.
+  camera->SetPosition(0.3, 4.0, 2.0);
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->ResetCameraClippingRange();
+  window->Render();
+  pass->CaptureReflections(reflections, renderer);
+  long borderPixels = 0;
+  long faceCount[6] = { 0, 0, 0, 0, 0, 0 };
+  auto cubeFace = [&](const Vector& r, const Vector&) -> Vector {
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+    {
+      axis = std::abs(r[k]) > std::abs(r[axis]) ? k : axis;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      if (k != axis && std::abs(std::abs(r[k]) - std::abs(r[axis])) < 0.001)
+      {
+        ++borderPixels;
+        return { -1.0, -1.0, -1.0 }; // never matches: counted separately
+      }
+    }
+    const int face = 2 * axis + (r[axis] < 0.0 ? 1 : 0);
+    ++faceCount[face];
+    const double* c = faceColors[face];
+    return { c[0], c[1], c[2] };
+  };
+  pass->GetGBufferPass()->CaptureLayers(layers, renderer);
+  c = Compare(reflections, cubeFace, exact, Layer(layers, "Normal", 0));
+  std::printf("cube map: %ld of %ld pixels exact (%ld near a face border)\n", c.Exact, c.Pixels,
+    borderPixels);
+  std::printf("  pixels per face +x -x +y -y +z -z: %ld %ld %ld %ld %ld %ld\n", faceCount[0],
+    faceCount[1], faceCount[2], faceCount[3], faceCount[4], faceCount[5]);
+  Check(c.Pixels > 10000 && c.Exact + borderPixels == c.Pixels && borderPixels < 0.05 * c.Pixels &&
+      faceCount[2] > 1000 && faceCount[5] > 1000,
+    "a cube map environment gives the face of the mirror direction (+y and -z faces seen)");
+
   // No environment texture: the background colour.
   renderer->SetEnvironmentTexture(nullptr);
   window->Render();
   pass->CaptureReflections(reflections, renderer);
   auto plain = [](const Vector&, const Vector&) -> Vector { return { 0.2, 0.4, 0.6 }; };
-  const double exact[3] = { 1e-3, 1e-3, 1e-3 };
   c = Compare(reflections, plain, exact);
   std::printf("background: %ld of %ld pixels exact\n", c.Exact, c.Pixels);
   Check(c.Pixels > 10000 && c.Exact == c.Pixels, "without an environment texture: the background colour");
