@@ -636,6 +636,26 @@ void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
   const int radianceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::RADIANCE);
   const int reflectivityUnit =
     gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::REFLECTIVITY);
+  auto deactivate = [&]() {
+    for (int quantity : { vtkDeepGBufferPass::REFLECTIVITY, vtkDeepGBufferPass::RADIANCE,
+           vtkDeepGBufferPass::NORMAL, vtkDeepGBufferPass::DEPTH })
+    {
+      gbuffer->DeactivateTexture(renderer, quantity);
+    }
+  };
+  if (distanceUnit < 0 || normalUnit < 0 || radianceUnit < 0 || reflectivityUnit < 0)
+  {
+    vtkErrorMacro("No free texture units for the reflections; rendering without them.");
+    deactivate();
+    if (environment)
+    {
+      environment->PostRender(renderer);
+    }
+    gbuffer->ResolveToFramebuffer(s);
+    this->LastFrameTraced = false;
+    state.HasFrame = true;
+    return;
+  }
   {
     vtkOpenGLState::ScopedglViewport savedViewport(ostate);
     vtkOpenGLState::ScopedglEnableDisable savedScissor(ostate, GL_SCISSOR_TEST);
@@ -714,11 +734,7 @@ void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
     in.CompositeQuad->Render();
     state.Targets[REFLECTED]->Deactivate();
   }
-  for (int quantity : { vtkDeepGBufferPass::REFLECTIVITY, vtkDeepGBufferPass::RADIANCE,
-         vtkDeepGBufferPass::NORMAL, vtkDeepGBufferPass::DEPTH })
-  {
-    gbuffer->DeactivateTexture(renderer, quantity);
-  }
+  deactivate();
   state.HasFrame = true;
   state.Traced = true;
   vtkOpenGLCheckErrorMacro("failed after vtkDeepReflectionPass");
