@@ -1665,7 +1665,8 @@ bool vtkDeepGBufferPass::CaptureLayers(vtkImageData* output, vtkRenderer* render
         const size_t q = base + p;
         for (int c = 0; c < 3; ++c)
         {
-          refl->SetTypedComponent(p, c, distance[q] > 0.0f ? reflectivity[4 * q + c] / 255.0f : 0.0f);
+          refl->SetTypedComponent(
+            p, c, distance[q] > 0.0f ? reflectivity[4 * q + c] / 255.0f : 0.0f);
         }
       }
       pd->AddArray(refl);

@@ -337,8 +337,8 @@ void vtkDeepReflectionPass::SetThickness(double thickness)
 {
   if (!std::isfinite(thickness))
   {
-    vtkWarningMacro("Thickness " << thickness << " is not finite; keeping " << this->Thickness
-                                 << ".");
+    vtkWarningMacro(
+      "Thickness " << thickness << " is not finite; keeping " << this->Thickness << ".");
     return;
   }
   if (thickness < 0.0)
@@ -520,8 +520,7 @@ void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
   }
 
   // The environment: VTK's environment texture if any, else the background.
-  vtkOpenGLTexture* environment =
-    vtkOpenGLTexture::SafeDownCast(renderer->GetEnvironmentTexture());
+  vtkOpenGLTexture* environment = vtkOpenGLTexture::SafeDownCast(renderer->GetEnvironmentTexture());
   int environmentKind = ENVIRONMENT_BACKGROUND;
   vtkTextureObject* environmentObject = nullptr;
   if (environment)
@@ -531,8 +530,7 @@ void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
     vtkImageData* input = environment->GetInput();
     vtkDataArray* texels = input ? input->GetPointData()->GetScalars() : nullptr;
     if (texels && texels->GetDataType() != VTK_UNSIGNED_CHAR &&
-      environment->GetColorMode() != VTK_COLOR_MODE_DIRECT_SCALARS &&
-      !in.WarnedMappedEnvironment)
+      environment->GetColorMode() != VTK_COLOR_MODE_DIRECT_SCALARS && !in.WarnedMappedEnvironment)
     {
       in.WarnedMappedEnvironment = true;
       vtkWarningMacro("The environment texture's texels are not 8-bit and its ColorMode is not "
@@ -634,9 +632,9 @@ void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
   const int distanceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
   const int normalUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::NORMAL);
   const int radianceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::RADIANCE);
-  const int reflectivityUnit =
-    gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::REFLECTIVITY);
-  auto deactivate = [&]() {
+  const int reflectivityUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::REFLECTIVITY);
+  auto deactivate = [&]()
+  {
     for (int quantity : { vtkDeepGBufferPass::REFLECTIVITY, vtkDeepGBufferPass::RADIANCE,
            vtkDeepGBufferPass::NORMAL, vtkDeepGBufferPass::DEPTH })
     {
@@ -688,8 +686,8 @@ void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
     program->SetUniformMatrix4x4("deepProjection", projectionGL);
     // +infinity is a valid t_max (cut at the view frustum in the shader).
     program->SetUniformf("deepMaxDistance",
-      static_cast<float>(std::min(maximumDistance,
-        static_cast<double>(std::numeric_limits<float>::max()))));
+      static_cast<float>(
+        std::min(maximumDistance, static_cast<double>(std::numeric_limits<float>::max()))));
     program->SetUniformf("deepThickness", static_cast<float>(thickness));
     program->SetUniformi("deepMaxSteps", this->NumberOfSteps);
     program->SetUniformf("deepPixelStride", static_cast<float>(this->PixelStride));

@@ -44,9 +44,8 @@ int TestDeepReflectionDemoImage(int argc, char* argv[])
       scene->GetMaterialColor(m, sphereColor);
     }
   }
-  auto same = [](const double* a, const double* b) {
-    return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
-  };
+  auto same = [](const double* a, const double* b)
+  { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; };
   int changed = 0;
   vtkActorCollection* actors = renderer->GetActors();
   actors->InitTraversal();
@@ -87,7 +86,8 @@ int TestDeepReflectionDemoImage(int argc, char* argv[])
   }
   std::printf("%ld traced pixels, %ld hits\n", traced, hits);
   Check(AllFinite(capture), "reflection capture is finite");
-  Check(traced >= 0.2 * 300 * 225 && hits >= traced / 2, "the floor and the sphere reflect the room");
+  Check(
+    traced >= 0.2 * 300 * 225 && hits >= traced / 2, "the floor and the sphere reflect the room");
 
   const int result = vtkRegressionTestImageThreshold(window, 0.5);
   pass->ReleaseGraphicsResources(window);

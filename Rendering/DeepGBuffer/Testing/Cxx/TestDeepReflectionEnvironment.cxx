@@ -32,8 +32,8 @@ constexpr int EnvHeight = 32;
 struct Comparison
 {
   long Pixels = 0;
-  long Exact = 0;  // within 1e-3 on every channel
-  long Near = 0;   // within `nearTolerance` on every channel
+  long Exact = 0;       // within 1e-3 on every channel
+  long Near = 0;        // within `nearTolerance` on every channel
   long Environment = 0; // hit layer -1
 };
 
@@ -41,8 +41,8 @@ struct Comparison
 // camera r), r the mirror direction about the exact floor normal, or about
 // the G-buffer's decoded (Oct16) camera-space normal when `normals` is given.
 Comparison Compare(vtkImageData* reflections,
-  const std::function<Vector(const Vector&, const Vector&)>& expected, const double nearTolerance[3],
-  vtkDataArray* normals = nullptr)
+  const std::function<Vector(const Vector&, const Vector&)>& expected,
+  const double nearTolerance[3], vtkDataArray* normals = nullptr)
 {
   Comparison result;
   const Camera cam(reflections);
@@ -71,7 +71,8 @@ Comparison Compare(vtkImageData* reflections,
         Vector n;
         for (int k = 0; k < 3; ++k)
         {
-          n[k] = cam.View[k] * normals->GetComponent(p, 0) + cam.View[4 + k] * normals->GetComponent(p, 1) +
+          n[k] = cam.View[k] * normals->GetComponent(p, 0) +
+            cam.View[4 + k] * normals->GetComponent(p, 1) +
             cam.View[8 + k] * normals->GetComponent(p, 2);
         }
         r = Reflect(v, Normalized(n));
@@ -138,7 +139,8 @@ int TestDeepReflectionEnvironment(int, char*[])
   vtkNew<vtkImageData> reflections;
   pass->CaptureReflections(reflections, renderer);
   Check(AllFinite(reflections), "reflection capture is finite");
-  auto equirectangular = [](const Vector& r, const Vector&) -> Vector {
+  auto equirectangular = [](const Vector& r, const Vector&) -> Vector
+  {
     const double u = std::atan2(r[2], r[0]) / (2.0 * vtkMath::Pi()) + 0.5;
     const double v = std::asin(std::min(1.0, std::max(-1.0, r[1]))) / vtkMath::Pi() + 0.5;
     const int i = std::min(EnvWidth - 1, static_cast<int>(std::floor(u * EnvWidth)));
@@ -153,14 +155,17 @@ int TestDeepReflectionEnvironment(int, char*[])
               "one texel\n",
     c.Pixels, c.Environment, c.Exact, c.Near);
   Check(c.Pixels > 10000 && c.Environment == c.Pixels, "every ray leaves the image");
-  Check(c.Near == c.Pixels, "every pixel shows the environment within one texel of the exact direction");
+  Check(c.Near == c.Pixels,
+    "every pixel shows the environment within one texel of the exact direction");
   // About the normal the shader used (Oct16-decoded), the texel is exact
   // but where float rounding puts the direction on the other side of a
   // texel border.
   vtkNew<vtkImageData> layers;
   pass->GetGBufferPass()->CaptureLayers(layers, renderer);
-  const Comparison decoded = Compare(reflections, equirectangular, oneTexel, Layer(layers, "Normal", 0));
-  std::printf("about the G-buffer's normals: %ld of %ld exact texel\n", decoded.Exact, decoded.Pixels);
+  const Comparison decoded =
+    Compare(reflections, equirectangular, oneTexel, Layer(layers, "Normal", 0));
+  std::printf(
+    "about the G-buffer's normals: %ld of %ld exact texel\n", decoded.Exact, decoded.Pixels);
   Check(decoded.Exact >= 0.995 * decoded.Pixels,
     "99.5 % show exactly the texel of the direction about the stored normal");
 
@@ -168,8 +173,8 @@ int TestDeepReflectionEnvironment(int, char*[])
   // -z); the face is the largest component of e (its sign), e reflected
   // about the stored normal. Pixels whose direction lies within 0.001 of a
   // face border are left out (float rounding decides there).
-  const double faceColors[6][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 1, 0 },
-    { 0, 1, 1 }, { 1, 0, 1 } };
+  const double faceColors[6][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 1, 0 }, { 0, 1, 1 },
+    { 1, 0, 1 } };
   vtkNew<vtkTexture> cube;
   cube->CubeMapOn();
   for (int f = 0; f < 6; ++f)
@@ -195,7 +200,8 @@ int TestDeepReflectionEnvironment(int, char*[])
   pass->CaptureReflections(reflections, renderer);
   long borderPixels = 0;
   long faceCount[6] = { 0, 0, 0, 0, 0, 0 };
-  auto cubeFace = [&](const Vector& r, const Vector&) -> Vector {
+  auto cubeFace = [&](const Vector& r, const Vector&) -> Vector
+  {
     int axis = 0;
     for (int k = 1; k < 3; ++k)
     {
@@ -231,21 +237,24 @@ int TestDeepReflectionEnvironment(int, char*[])
   auto plain = [](const Vector&, const Vector&) -> Vector { return { 0.2, 0.4, 0.6 }; };
   c = Compare(reflections, plain, exact);
   std::printf("background: %ld of %ld pixels exact\n", c.Exact, c.Pixels);
-  Check(c.Pixels > 10000 && c.Exact == c.Pixels, "without an environment texture: the background colour");
+  Check(c.Pixels > 10000 && c.Exact == c.Pixels,
+    "without an environment texture: the background colour");
 
   // Gradient background: Background at the bottom, Background2 at the top.
   renderer->GradientBackgroundOn();
   renderer->SetBackground2(1.0, 0.0, 0.0);
   window->Render();
   pass->CaptureReflections(reflections, renderer);
-  auto gradient = [](const Vector&, const Vector& rc) -> Vector {
+  auto gradient = [](const Vector&, const Vector& rc) -> Vector
+  {
     const double t = 0.5 + 0.5 * rc[1];
     return { 0.2 + t * 0.8, 0.4 - t * 0.4, 0.6 - t * 0.6 };
   };
   const double gradientTolerance[3] = { 0.01, 0.01, 0.01 };
   c = Compare(reflections, gradient, gradientTolerance);
   std::printf("gradient: %ld of %ld pixels within 0.01\n", c.Near, c.Pixels);
-  Check(c.Pixels > 10000 && c.Near == c.Pixels, "gradient background follows the ray's camera-space elevation");
+  Check(c.Pixels > 10000 && c.Near == c.Pixels,
+    "gradient background follows the ray's camera-space elevation");
 
   pass->ReleaseGraphicsResources(window);
   std::printf("%d failure(s)\n", CheckFailures());

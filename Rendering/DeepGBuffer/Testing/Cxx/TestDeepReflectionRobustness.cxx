@@ -73,7 +73,8 @@ Summary Summarize(vtkDeepReflectionPass* pass, vtkRenderer* renderer, vtkImageDa
 
 bool SameArrays(vtkImageData* a, vtkImageData* b)
 {
-  for (const char* name : { "ReflectedRadiance", "HitLayer", "HitDistance", "Reflectivity", "Valid" })
+  for (const char* name :
+    { "ReflectedRadiance", "HitLayer", "HitDistance", "Reflectivity", "Valid" })
   {
     vtkDataArray* x = a->GetPointData()->GetArray(name);
     vtkDataArray* y = b->GetPointData()->GetArray(name);
@@ -136,7 +137,8 @@ int TestDeepReflectionRobustness(int, char*[])
     floor->GetProperty()->SetRoughness(1.0);
     window->Render();
     const bool rough = pass->GetLastFrameTraced();
-    Check(!unlit && !black && !rough, "unlit, black-specular and roughness-1 PBR props do not reflect");
+    Check(
+      !unlit && !black && !rough, "unlit, black-specular and roughness-1 PBR props do not reflect");
 
     // A smooth metal reflects; when it stops, the texture is freed again.
     floor->GetProperty()->SetRoughness(0.0);
@@ -186,28 +188,32 @@ int TestDeepReflectionRobustness(int, char*[])
   vtkNew<vtkImageData> capture;
   Summary s = Summarize(pass, renderer, capture);
   std::printf("MaximumDistance 0: %ld traced, %ld hits\n", s.Traced, s.Hits);
-  Check(s.Finite && s.Traced > 1000 && s.Hits == 0, "MaximumDistance 0: every ray takes the environment");
+  Check(s.Finite && s.Traced > 1000 && s.Hits == 0,
+    "MaximumDistance 0: every ray takes the environment");
 
   pass->SetNumberOfSteps(0);
   Check(warnings.Count == 3 && pass->GetNumberOfSteps() == 1, "NumberOfSteps 0: warning, 1");
   pass->SetNumberOfSteps(1 << 30);
-  Check(warnings.Count == 4 && pass->GetNumberOfSteps() == vtkDeepReflectionPass::MAXIMUM_NUMBER_OF_STEPS,
+  Check(warnings.Count == 4 &&
+      pass->GetNumberOfSteps() == vtkDeepReflectionPass::MAXIMUM_NUMBER_OF_STEPS,
     "NumberOfSteps 2^30: warning, the maximum");
   pass->SetThickness(inf);
-  Check(warnings.Count == 5 && pass->GetAutomaticThickness(), "Thickness inf: warning, automatic kept");
+  Check(
+    warnings.Count == 5 && pass->GetAutomaticThickness(), "Thickness inf: warning, automatic kept");
   pass->SetThickness(-1.0);
   Check(warnings.Count == 6 && pass->GetThickness() == 0.0, "Thickness -1: warning, 0");
   pass->SetPixelStride(0.0);
   pass->SetPixelStride(nan);
-  Check(warnings.Count == 8 && pass->GetPixelStride() == 2.0, "PixelStride 0 and NaN: warnings, kept");
+  Check(
+    warnings.Count == 8 && pass->GetPixelStride() == 2.0, "PixelStride 0 and NaN: warnings, kept");
   pass->SetPixelStride(1e-9);
   Check(warnings.Count == 9 && pass->GetPixelStride() == 0.01, "PixelStride 1e-9: warning, 0.01");
   pass->SetMaximumDistance(1e30);
   Check(warnings.Count == 9, "MaximumDistance 1e30 is accepted (the frustum cuts the ray)");
   window->Render();
   s = Summarize(pass, renderer, capture);
-  std::printf("thickness 0, 1024 steps, 0.01 px, distance 1e30: %ld traced, %ld hits\n", s.Traced,
-    s.Hits);
+  std::printf(
+    "thickness 0, 1024 steps, 0.01 px, distance 1e30: %ld traced, %ld hits\n", s.Traced, s.Hits);
   Check(s.Finite && s.Traced > 1000, "extreme settings: finite captures");
   pass->SetMaximumDistance(inf);
   pass->AutomaticThicknessOn();

@@ -57,8 +57,9 @@ int TestDeepReflectionSecondLayer(int, char*[])
   for (vtkIdType p = 0; p < layers->GetNumberOfPoints(); ++p)
   {
     redLayer0 += IsRed(Layer(layers, "Radiance", 0), p, 0.02) ? 1 : 0;
-    redLayer1 += IsRed(Layer(layers, "Radiance", 1), p, 0.02) &&
-        Layer(layers, "Valid", 1)->GetTuple1(p) ? 1 : 0;
+    redLayer1 +=
+      IsRed(Layer(layers, "Radiance", 1), p, 0.02) && Layer(layers, "Valid", 1)->GetTuple1(p) ? 1
+                                                                                              : 0;
   }
   std::printf("red pixels: layer 0 %ld, layer 1 %ld\n", redLayer0, redLayer1);
   Check(redLayer0 == 0 && redLayer1 > 100, "the box is hidden in layer 0 and seen in layer 1");
@@ -100,11 +101,13 @@ int TestDeepReflectionSecondLayer(int, char*[])
   for (vtkIdType p : boxPixels)
   {
     stillRed += IsRed(radiance, p, 0.1) ? 1 : 0;
-    background += hitLayer->GetTuple1(p) == -1.0 && std::abs(radiance->GetComponent(p, 2) - 1.0) <
-          1e-3 && radiance->GetComponent(p, 0) < 1e-3 ? 1 : 0;
+    background += hitLayer->GetTuple1(p) == -1.0 &&
+        std::abs(radiance->GetComponent(p, 2) - 1.0) < 1e-3 && radiance->GetComponent(p, 0) < 1e-3
+      ? 1
+      : 0;
   }
-  std::printf("one layer: of those pixels %ld red, %ld show the background\n", stillRed,
-    background);
+  std::printf(
+    "one layer: of those pixels %ld red, %ld show the background\n", stillRed, background);
   Check(stillRed == 0, "without layer 1 the box is not reflected");
   Check(background == static_cast<long>(boxPixels.size()),
     "without layer 1 those rays fall back to the background colour");

@@ -111,7 +111,8 @@ int TestDeepReflectionWall(int, char*[])
       double error = 0.0;
       for (int c = 0; c < 3; ++c)
       {
-        error = std::max(error, std::abs(reflected->GetComponent(p, c) - radiance->GetComponent(q, c)));
+        error =
+          std::max(error, std::abs(reflected->GetComponent(p, c) - radiance->GetComponent(q, c)));
       }
       worstColor = std::max(worstColor, error);
       sumColor += error;
@@ -157,8 +158,11 @@ int TestDeepReflectionWall(int, char*[])
     for (int c = 0; c < 3; ++c)
     {
       const double expected = std::min(1.0,
-        radiance->GetComponent(p, c) + reflectivity->GetComponent(p, c) * reflected->GetComponent(p, c));
-      ok = ok && std::abs(rgb->GetPointData()->GetScalars()->GetComponent(p, c) / 255.0 - expected) <= 1.01 / 255.0;
+        radiance->GetComponent(p, c) +
+          reflectivity->GetComponent(p, c) * reflected->GetComponent(p, c));
+      ok = ok &&
+        std::abs(rgb->GetPointData()->GetScalars()->GetComponent(p, c) / 255.0 - expected) <=
+          1.01 / 255.0;
     }
     compositeOk += ok ? 1 : 0;
   }
