@@ -25,11 +25,13 @@
  * to face the camera), v the view direction (X / |X|, or -z for a parallel
  * projection), r = reflect(v, n). The ray X + t r, t in (0, t_max], is
  * marched in camera space with a uniform step: t_max is MaximumDistance,
- * cut where the ray crosses the near or far clipping plane; the number of
- * steps is ceil(L / PixelStride) clamped to [1, NumberOfSteps], L the length
- * in pixels of the ray's projection, so short rays take few steps and every
- * step advances about PixelStride pixels until the NumberOfSteps cap. Each
- * point Q is projected into the image; its distance s = -Q.z is compared
+ * cut where the ray leaves the view frustum (solved exactly: the clip
+ * coordinates are linear in t); the number of steps is
+ * max(ceil(L / PixelStride), ceil(2 t_max |r.z| / dz)) clamped to
+ * [1, NumberOfSteps], L the length in pixels of the ray's projection: a
+ * step advances about PixelStride pixels on screen and at most dz / 2 in
+ * depth (so no layer's band is stepped over), until the NumberOfSteps cap.
+ * Each point Q is projected into the image; its distance s = -Q.z is compared
  * with every layer j of the G-buffer at Q's texel: a hit where
  * d_j <= s <= d_j + dz (dz = Thickness, by default the G-buffer's effective
  * minimum separation) and the surface faces the ray (n_j . r < 0, which
@@ -39,8 +41,8 @@
  * [d_j, d_j + dz]. The reflected radiance is that layer's RADIANCE at the
  * hit texel (mirror: outgoing = incoming radiance along r).
  *
- * Misses (the ray leaves the image, goes behind the camera, reaches t_max
- * or the clipping planes without a hit) take the environment, as VTK
+ * Misses (the ray leaves the view frustum or reaches t_max without a hit)
+ * take the environment, as VTK
  * defines it: the renderer's environment texture (vtkRenderer::
  * SetEnvironmentTexture) when set: a cube map, or an equirectangular 2D
  * texture (float textures keep their range) looked up like VTK's
@@ -121,7 +123,7 @@ public:
    * AutomaticMaximumDistance off. NaN is rejected with a warning (the
    * previous setting stays); negative values are clamped to 0 with a
    * warning (every reflection then shows the environment); +infinity is
-   * accepted: the ray is still cut at the clipping planes.
+   * accepted: the ray is still cut where it leaves the view frustum.
    */
   void SetMaximumDistance(double distance);
   vtkGetMacro(MaximumDistance, double);
@@ -168,8 +170,9 @@ public:
   ///@{
   /**
    * Wanted screen-space length of a step, pixels (> 0, default 2): a ray
-   * whose projection is L pixels long takes ceil(L / PixelStride) steps,
-   * at most NumberOfSteps. Non-finite or non-positive values are refused
+   * whose projection is L pixels long takes at least ceil(L / PixelStride)
+   * steps (more where its depth changes faster than dz / 2 per step), at
+   * most NumberOfSteps. Non-finite or non-positive values are refused
    * with a warning; values below 0.01 are clamped to 0.01.
    */
   void SetPixelStride(double pixels);

@@ -4,6 +4,7 @@
 // - bad parameters (NaN, negative, zero, huge): a warning and a clamped
 //   value, and every capture stays finite;
 // - ReleaseGraphicsResources, then rendering again gives the same result;
+// - a resize;
 // - two renderers sharing the pass keep their own results.
 // 160 x 120 px.
 
@@ -238,6 +239,19 @@ int TestDeepReflectionRobustness(int, char*[])
   window->Render();
   Summarize(pass, renderer, after);
   Check(SameArrays(before, after), "after ReleaseGraphicsResources the same reflections");
+
+  // A resize reallocates the targets.
+  window->SetSize(120, 90);
+  window->Render();
+  vtkNew<vtkImageData> resized;
+  const Summary small = Summarize(pass, renderer, resized);
+  int smallDims[3];
+  resized->GetDimensions(smallDims);
+  std::printf("after a resize to 120 x 90: capture %d x %d, %ld hits\n", smallDims[0], smallDims[1],
+    small.Hits);
+  Check(small.Finite && smallDims[0] == 120 && smallDims[1] == 90 && small.Hits > 500,
+    "after a resize the reflections follow the new size");
+  window->SetSize(160, 120);
 
   // 4. Two renderers sharing the pass: the left one has a mirror, the right one not.
   renderer->SetViewport(0.0, 0.0, 0.5, 1.0);
