@@ -1334,7 +1334,9 @@ void vtkDeepGBufferPass::ResolveToFramebuffer(const vtkRenderState* s)
   }
 
   vtkTextureUnitManager* units = window->GetTextureUnitManager();
-  const GLuint textures[3] = { state.Textures[this->DisplayQuantity], state.Textures[DEPTH],
+  // The optional REFLECTIVITY may not exist in this frame: show RADIANCE.
+  const int quantity = state.Textures[this->DisplayQuantity] ? this->DisplayQuantity : RADIANCE;
+  const GLuint textures[3] = { state.Textures[quantity], state.Textures[DEPTH],
     state.DepthTexture };
   const char* names[3] = { "deepQuantityTexture", "deepDistance", "deepHardwareDepth" };
   int boundUnits[3];
@@ -1347,7 +1349,7 @@ void vtkDeepGBufferPass::ResolveToFramebuffer(const vtkRenderState* s)
   }
   const int layer = std::min(this->DisplayLayer, state.RenderedLayers - 1);
   program->SetUniformi("deepLayer", layer);
-  program->SetUniformi("deepQuantity", this->DisplayQuantity);
+  program->SetUniformi("deepQuantity", quantity);
   float range[2] = { static_cast<float>(state.ClippingRange[0]),
     static_cast<float>(state.ClippingRange[1]) };
   program->SetUniform2f("deepDistanceRange", range);

@@ -207,10 +207,11 @@ public:
    * Debug display: which quantity and which layer the pass shows on screen.
    * Default RADIANCE of layer 0, i.e. the normal image. DEPTH is shown as
    * distance normalised to the camera's clipping range (near black, far
-   * white), NORMAL as n * 0.5 + 0.5.
+   * white), NORMAL as n * 0.5 + 0.5. REFLECTIVITY is shown while it is
+   * written (WriteReflectivity), RADIANCE otherwise.
    * Empty pixels keep the renderer's background.
    */
-  vtkSetClampMacro(DisplayQuantity, int, RADIANCE, AMBIENT);
+  vtkSetClampMacro(DisplayQuantity, int, RADIANCE, REFLECTIVITY);
   vtkGetMacro(DisplayQuantity, int);
   vtkSetClampMacro(DisplayLayer, int, 0, MAXIMUM_NUMBER_OF_LAYERS - 1);
   vtkGetMacro(DisplayLayer, int);

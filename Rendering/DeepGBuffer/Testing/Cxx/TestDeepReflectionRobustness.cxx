@@ -124,6 +124,14 @@ int TestDeepReflectionRobustness(int, char*[])
     const double difference = MaximumColorDifference(plainImage, reflectionImage);
     std::printf("largest colour difference to vtkDeepGBufferPass: %g\n", difference);
     Check(difference == 0.0, "no reflective prop: the image equals vtkDeepGBufferPass's exactly");
+    // The debug display of REFLECTIVITY falls back to RADIANCE when it is not written.
+    pass->GetGBufferPass()->SetDisplayQuantity(vtkDeepGBufferPass::REFLECTIVITY);
+    window->Render();
+    vtkNew<vtkImageData> fallbackImage;
+    ReadWindow(window, fallbackImage, nullptr);
+    Check(MaximumColorDifference(plainImage, fallbackImage) == 0.0,
+      "display of an unwritten REFLECTIVITY shows RADIANCE");
+    pass->GetGBufferPass()->SetDisplayQuantity(vtkDeepGBufferPass::RADIANCE);
 
     // Materials that cannot reflect: lighting off, black specular colour, PBR roughness 1.
     floor->GetProperty()->SetSpecular(1.0);
@@ -233,6 +241,33 @@ int TestDeepReflectionRobustness(int, char*[])
   vtkNew<vtkImageData> before, after;
   s = Summarize(pass, renderer, before);
   Check(s.Finite && s.Hits > 1000, "default settings: the wall and sphere are reflected");
+
+  // The debug display of REFLECTIVITY: white (1) on the mirror, black elsewhere.
+  pass->GetGBufferPass()->SetDisplayQuantity(vtkDeepGBufferPass::REFLECTIVITY);
+  window->Render();
+  vtkNew<vtkImageData> reflectivityImage;
+  ReadWindow(window, reflectivityImage, nullptr);
+  pass->GetGBufferPass()->SetDisplayQuantity(vtkDeepGBufferPass::RADIANCE);
+  long displayOk = 0, displayTraced = 0;
+  vtkDataArray* tracedMask = before->GetPointData()->GetArray("Valid");
+  vtkDataArray* shown = reflectivityImage->GetPointData()->GetScalars();
+  for (vtkIdType p = 0; p < tracedMask->GetNumberOfTuples(); ++p)
+  {
+    const bool traced = tracedMask->GetTuple1(p) != 0;
+    displayTraced += traced ? 1 : 0;
+    // Reflectivity 1 on the mirror; 0 on the other props and the (black) background.
+    const double expected = traced ? 255.0 : 0.0;
+    bool ok = true;
+    for (int c = 0; c < 3; ++c)
+    {
+      ok = ok && shown->GetComponent(p, c) == expected;
+    }
+    displayOk += ok ? 1 : 0;
+  }
+  std::printf("REFLECTIVITY display: %ld of %ld pixels as expected (%ld traced)\n", displayOk,
+    tracedMask->GetNumberOfTuples(), displayTraced);
+  Check(displayOk == tracedMask->GetNumberOfTuples(),
+    "REFLECTIVITY display: 1 on the mirror, 0 elsewhere");
 
   // 3. ReleaseGraphicsResources, then render again: the same result.
   pass->ReleaseGraphicsResources(window);
