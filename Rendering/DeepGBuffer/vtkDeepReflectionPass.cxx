@@ -513,7 +513,8 @@ void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
 
   if (!this->LastFrameTraced)
   {
-    // Nothing reflects: exactly the G-buffer's image.
+    // Nothing reflects: exactly the G-buffer's image, and no targets kept.
+    state.Release(window);
     gbuffer->ResolveToFramebuffer(s);
     state.HasFrame = true;
     return;

@@ -13,7 +13,9 @@
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkDeepReflectionPass.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkSphereSource.h"
+#include "vtkTextureUnitManager.h"
 
 #include <limits>
 
@@ -168,11 +170,22 @@ int TestDeepReflectionRobustness(int, char*[])
     Check(pass->GetLastFrameTraced() && metal.Traced > 1000 &&
         std::abs(pbrReflectivity - 204.0 / 255.0) < 1e-6,
       "a PBR metal reflects with F0 = base colour");
+    // The result texture for composite passes.
+    vtkTextureUnitManager* units =
+      vtkOpenGLRenderWindow::SafeDownCast(window)->GetTextureUnitManager();
+    const int unit = pass->ActivateReflectionTexture(renderer);
+    const bool bound = unit >= 0 && units->IsAllocated(unit);
+    pass->DeactivateReflectionTexture(renderer);
+    Check(pass->GetReflectionTextureHandle(renderer) != 0 && bound && !units->IsAllocated(unit),
+      "the reflection texture can be activated and deactivated");
     floor->GetProperty()->SetRoughness(1.0);
     window->Render();
     Check(!pass->GetLastFrameTraced() &&
         pass->GetGBufferPass()->GetTextureHandle(renderer, vtkDeepGBufferPass::REFLECTIVITY) == 0,
       "when nothing reflects any more, REFLECTIVITY is freed");
+    Check(pass->GetReflectionTextureHandle(renderer) == 0 &&
+        pass->ActivateReflectionTexture(renderer) == -1,
+      "... and the pass keeps no reflection texture");
     pass->ReleaseGraphicsResources(window);
     plain->ReleaseGraphicsResources(window);
   }
