@@ -62,7 +62,8 @@
  * RADIANCE), alpha kept; elsewhere the resolved G-buffer image is left as
  * it is. It applies when the G-buffer displays RADIANCE.
  *
- * Textures (per renderer, the viewport's size):
+ * Textures (per renderer, the viewport's size; freed in frames that trace
+ * nothing):
  * | texture   | format  | content                                          |
  * |-----------|---------|--------------------------------------------------|
  * | REFLECTED | RGBA16F | L_r (rgb, not weighted), a = 1 where traced       |

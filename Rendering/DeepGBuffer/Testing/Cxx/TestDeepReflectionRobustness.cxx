@@ -18,6 +18,7 @@
 #include "vtkTextureUnitManager.h"
 
 #include <limits>
+#include <sstream>
 
 using namespace DeepGBufferTest;
 using namespace DeepReflectionTest;
@@ -322,6 +323,11 @@ int TestDeepReflectionRobustness(int, char*[])
     "each renderer keeps its own reflections");
   Check(warnings.Count == 9, "no further warnings");
 
+  std::ostringstream printed;
+  pass->Print(printed);
+  Check(printed.str().find("EffectiveThickness") != std::string::npos &&
+      printed.str().find("RefinementSteps") != std::string::npos,
+    "PrintSelf prints the parameters and the frame's state");
   pass->ReleaseGraphicsResources(window);
   std::printf("%d failure(s)\n", CheckFailures());
   return CheckFailures() ? 1 : 0;
