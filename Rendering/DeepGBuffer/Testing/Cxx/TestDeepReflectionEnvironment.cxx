@@ -13,6 +13,7 @@
 #include "DeepReflectionTestUtilities.h"
 
 #include "vtkCamera.h"
+#include "vtkCommand.h"
 #include "vtkDeepReflectionPass.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
@@ -255,6 +256,16 @@ int TestDeepReflectionEnvironment(int, char*[])
   std::printf("gradient: %ld of %ld pixels within 0.01\n", c.Near, c.Pixels);
   Check(c.Pixels > 10000 && c.Near == c.Pixels,
     "gradient background follows the ray's camera-space elevation");
+
+  // A float environment in VTK's default colour mode is mapped to 8 bits
+  // through a lookup table by VTK: one warning says so.
+  EventCounter warnings(pass, vtkCommand::WarningEvent);
+  vtkNew<vtkTexture> mapped;
+  mapped->SetInputData(image);
+  renderer->SetEnvironmentTexture(mapped);
+  window->Render();
+  window->Render();
+  Check(warnings.Count == 1, "one warning for a float environment that VTK maps to 8 bits");
 
   pass->ReleaseGraphicsResources(window);
   std::printf("%d failure(s)\n", CheckFailures());
