@@ -121,14 +121,18 @@ enum TestMode
 };
 
 const char* const OracleNames[] = { "DEPTH_PEEL", "PREVIOUS", "REPROJECT", "PREDICT", "DELAY" };
-const char* const QuantityNames[] = { "RADIANCE", "ALBEDO", "NORMAL", "DEPTH", "AMBIENT" };
+const char* const QuantityNames[] = { "RADIANCE", "ALBEDO", "NORMAL", "DEPTH", "AMBIENT",
+  "REFLECTIVITY" };
+
+// Quantities every G-buffer has; REFLECTIVITY, the last one, is optional.
+constexpr int BaseQuantities = vtkDeepGBufferPass::REFLECTIVITY;
 
 // Internal formats of the quantities, in the order of the Quantity enum.
 const GLenum QuantityInternalFormats[] = { GL_RGBA16F, GL_RGBA8, GL_RG8, GL_R32F,
-  GL_R11F_G11F_B10F };
-const GLenum QuantityFormats[] = { GL_RGBA, GL_RGBA, GL_RG, GL_RED, GL_RGB };
+  GL_R11F_G11F_B10F, GL_RGBA8 };
+const GLenum QuantityFormats[] = { GL_RGBA, GL_RGBA, GL_RG, GL_RED, GL_RGB, GL_RGBA };
 const GLenum QuantityTypes[] = { GL_HALF_FLOAT, GL_UNSIGNED_BYTE, GL_UNSIGNED_BYTE, GL_FLOAT,
-  GL_FLOAT };
+  GL_FLOAT, GL_UNSIGNED_BYTE };
 
 // Upper bound of the number of floats a VTK polydata vertex shader passes on
 // per vertex (position, normal, colour, texture coordinates, clip distances,
@@ -148,7 +152,7 @@ struct vtkDeepGBufferRendererState
   int Height = 0;
   int Slots = 0;        // array layers: k, plus one oracle layer for PREDICT/DELAY
   int HistoryLayers = 0; // max(1, k - 1)
-  GLuint Textures[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES] = { 0, 0, 0, 0, 0 };
+  GLuint Textures[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES] = { 0, 0, 0, 0, 0, 0 };
   GLuint DepthTexture = 0;
   GLuint HistoryTexture = 0; // R32F array: the oracle's distances of the previous frame
   GLuint LayeredFramebuffer = 0;
@@ -312,6 +316,7 @@ void vtkDeepGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AutomaticMinimumSeparation: " << this->AutomaticMinimumSeparation << "\n";
   os << indent << "AutomaticSeparationFraction: " << this->AutomaticSeparationFraction << "\n";
   os << indent << "DeepLayerBackfaceCulling: " << this->DeepLayerBackfaceCulling << "\n";
+  os << indent << "WriteReflectivity: " << this->WriteReflectivity << "\n";
   os << indent << "EffectiveMinimumSeparation: " << this->EffectiveMinimumSeparation << "\n";
   os << indent << "EffectiveNumberOfLayers: " << this->EffectiveNumberOfLayers << "\n";
   os << indent << "EffectiveOracle: " << GetOracleAsString(this->EffectiveOracle) << "\n";
@@ -390,6 +395,17 @@ void vtkDeepGBufferPass::SetMinimumSeparation(double dz)
   {
     this->MinimumSeparation = dz;
     this->AutomaticMinimumSeparation = false;
+    this->Modified();
+  }
+}
+
+void vtkDeepGBufferPass::SetWriteReflectivity(bool write)
+{
+  if (write != this->WriteReflectivity)
+  {
+    this->WriteReflectivity = write;
+    // The fragment shaders gain or lose their REFLECTIVITY output.
+    this->Internals->ShaderStageTime.Modified();
     this->Modified();
   }
 }
@@ -534,6 +550,7 @@ bool vtkDeepGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
     "    gl_FragData[2] = vec4(0.0);\n"
     "    gl_FragData[3] = vec4(deepDistance, 0.0, 0.0, 1.0);\n"
     "    gl_FragData[4] = vec4(0.0);\n"
+    "    //VTK::DeepGBuffer::OracleReflectivity\n"
     "    return;\n"
     "  }\n"
     "  if (deepLayer > 0 && deepCullBackFaces != 0 && gl_FrontFacing == false) { discard; }\n"
@@ -559,6 +576,8 @@ bool vtkDeepGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
     "    }\n"
     "  }\n";
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::DepthPeeling::PreColor", test, false);
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::DeepGBuffer::OracleReflectivity",
+    this->WriteReflectivity ? "gl_FragData[5] = vec4(0.0);" : "", false);
 
   // The G-buffer outputs go after texturing, where VTK's albedo is final.
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::TCoord::Impl",
@@ -622,8 +641,31 @@ bool vtkDeepGBufferPass::PostReplaceShaderValues(std::string& vtkNotUsed(vertexS
       "), 0.0, 1.0);\n"
       "  gl_FragData[3] = vec4(deepDistance, 0.0, 0.0, 1.0);\n"
       "  gl_FragData[4] = vec4(max(" +
-      ambient + ", vec3(0.0)), 1.0);\n",
+      ambient + ", vec3(0.0)), 1.0);\n"
+      "  //VTK::DeepGBuffer::Reflectivity\n",
     false);
+  if (this->WriteReflectivity)
+  {
+    // Mirror reflectance from VTK's material (see SetWriteReflectivity). PBR:
+    // Fresnel at normal incidence, F0 as VTK's PBR lighting computes it
+    // (its F0 where lit; the base-layer default 0.04 where unlit), fading
+    // to 0 as the surface gets rough. Phong/Gouraud: VTK's specularColor,
+    // i.e. Specular x SpecularColor; props without lighting have none.
+    std::string reflectivity = "vec3(0.0)";
+    if (pbr)
+    {
+      const std::string f0 = fragmentShader.find("vec3 F0 =") != std::string::npos
+        ? "F0"
+        : "mix(vec3(0.04), albedo, metallic)";
+      reflectivity = f0 + " * ((1.0 - roughness) * (1.0 - roughness))";
+    }
+    else if (fragmentShader.find("vec3 specularColor =") != std::string::npos)
+    {
+      reflectivity = "specularColor";
+    }
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::DeepGBuffer::Reflectivity",
+      "gl_FragData[5] = vec4(clamp(" + reflectivity + ", 0.0, 1.0), 1.0);", false);
+  }
   return true;
 }
 
@@ -773,7 +815,7 @@ static bool AllocateTargets(vtkDeepGBufferRendererState& state, vtkOpenGLState* 
   state.Height = height;
   state.Slots = slots;
   state.HistoryLayers = historyLayers;
-  for (int q = 0; q < vtkDeepGBufferPass::NUMBER_OF_QUANTITIES; ++q)
+  for (int q = 0; q < BaseQuantities; ++q)
   {
     state.Textures[q] = NewArrayTexture(
       QuantityInternalFormats[q], QuantityFormats[q], QuantityTypes[q], width, height, slots);
@@ -787,12 +829,12 @@ static bool AllocateTargets(vtkDeepGBufferRendererState& state, vtkOpenGLState* 
   // The draw buffers are framebuffer state, set once here with raw GL:
   // vtkOpenGLState caches them across framebuffers, so setting them through
   // it after a bind may be skipped.
-  const GLenum drawBuffers[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES] = { GL_COLOR_ATTACHMENT0,
-    GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3, GL_COLOR_ATTACHMENT4 };
+  const GLenum drawBuffers[BaseQuantities] = { GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1,
+    GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3, GL_COLOR_ATTACHMENT4 };
   auto attach = [&](GLuint framebuffer, int layer) {
     ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    glDrawBuffers(vtkDeepGBufferPass::NUMBER_OF_QUANTITIES, drawBuffers);
-    for (int q = 0; q < vtkDeepGBufferPass::NUMBER_OF_QUANTITIES; ++q)
+    glDrawBuffers(BaseQuantities, drawBuffers);
+    for (int q = 0; q < BaseQuantities; ++q)
     {
       if (layer < 0)
       {
@@ -825,6 +867,59 @@ static bool AllocateTargets(vtkDeepGBufferRendererState& state, vtkOpenGLState* 
   }
   ostate->PopFramebufferBindings();
   state.HistoryValid = false;
+  return complete;
+}
+
+//------------------------------------------------------------------------------
+// Adds or removes the optional REFLECTIVITY target of a renderer's G-buffer
+// (attachment BaseQuantities of every framebuffer) without touching the
+// other targets, so the oracles' history survives the change.
+static bool UpdateReflectivityTarget(vtkDeepGBufferRendererState& state, vtkOpenGLState* ostate,
+  bool write)
+{
+  GLuint& texture = state.Textures[vtkDeepGBufferPass::REFLECTIVITY];
+  if (write == (texture != 0))
+  {
+    return true;
+  }
+  if (write)
+  {
+    texture = NewArrayTexture(QuantityInternalFormats[vtkDeepGBufferPass::REFLECTIVITY],
+      QuantityFormats[vtkDeepGBufferPass::REFLECTIVITY],
+      QuantityTypes[vtkDeepGBufferPass::REFLECTIVITY], state.Width, state.Height, state.Slots);
+  }
+  const GLenum drawBuffers[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES] = { GL_COLOR_ATTACHMENT0,
+    GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3, GL_COLOR_ATTACHMENT4,
+    GL_COLOR_ATTACHMENT5 };
+  const int count = write ? vtkDeepGBufferPass::NUMBER_OF_QUANTITIES : BaseQuantities;
+  ostate->PushFramebufferBindings();
+  bool complete = true;
+  auto attach = [&](GLuint framebuffer, int layer) {
+    ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    if (layer < 0)
+    {
+      glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + BaseQuantities, texture, 0);
+    }
+    else
+    {
+      glFramebufferTextureLayer(
+        GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + BaseQuantities, texture, 0, layer);
+    }
+    glDrawBuffers(count, drawBuffers);
+    complete = complete && glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  };
+  const GLuint removed = write ? 0 : texture;
+  texture = write ? texture : 0; // attaching 0 detaches
+  attach(state.LayeredFramebuffer, -1);
+  for (int j = 0; j < static_cast<int>(state.LayerFramebuffers.size()); ++j)
+  {
+    attach(state.LayerFramebuffers[j], j);
+  }
+  ostate->PopFramebufferBindings();
+  if (removed)
+  {
+    glDeleteTextures(1, &removed);
+  }
   return complete;
 }
 
@@ -981,7 +1076,8 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
   }
   vtkDeepGBufferRendererState& state = *slot;
   vtkOpenGLClearErrorMacro();
-  if (!AllocateTargets(state, ostate, width, height, slots, std::max(1, layers - 1)))
+  if (!AllocateTargets(state, ostate, width, height, slots, std::max(1, layers - 1)) ||
+    !UpdateReflectivityTarget(state, ostate, this->WriteReflectivity))
   {
     in.WarnOnce(this, 3, "The deep G-buffer's framebuffer is incomplete; rendering without it.");
     state.ReleaseTextures();
@@ -1081,7 +1177,10 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
   const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
   for (int q = 0; q < NUMBER_OF_QUANTITIES; ++q)
   {
-    glClearBufferfv(GL_COLOR, q, zero);
+    if (state.Textures[q])
+    {
+      glClearBufferfv(GL_COLOR, q, zero);
+    }
   }
   const float farDepth = 1.0f;
   glClearBufferfv(GL_DEPTH, 0, &farDepth);
@@ -1235,7 +1334,9 @@ void vtkDeepGBufferPass::ResolveToFramebuffer(const vtkRenderState* s)
   }
 
   vtkTextureUnitManager* units = window->GetTextureUnitManager();
-  const GLuint textures[3] = { state.Textures[this->DisplayQuantity], state.Textures[DEPTH],
+  // The optional REFLECTIVITY may not exist in this frame: show RADIANCE.
+  const int quantity = state.Textures[this->DisplayQuantity] ? this->DisplayQuantity : RADIANCE;
+  const GLuint textures[3] = { state.Textures[quantity], state.Textures[DEPTH],
     state.DepthTexture };
   const char* names[3] = { "deepQuantityTexture", "deepDistance", "deepHardwareDepth" };
   int boundUnits[3];
@@ -1248,7 +1349,7 @@ void vtkDeepGBufferPass::ResolveToFramebuffer(const vtkRenderState* s)
   }
   const int layer = std::min(this->DisplayLayer, state.RenderedLayers - 1);
   program->SetUniformi("deepLayer", layer);
-  program->SetUniformi("deepQuantity", this->DisplayQuantity);
+  program->SetUniformi("deepQuantity", quantity);
   float range[2] = { static_cast<float>(state.ClippingRange[0]),
     static_cast<float>(state.ClippingRange[1]) };
   program->SetUniform2f("deepDistanceRange", range);
@@ -1491,6 +1592,12 @@ bool vtkDeepGBufferPass::CaptureLayers(vtkImageData* output, vtkRenderer* render
   download(state->Textures[NORMAL], GL_RG, GL_UNSIGNED_BYTE, normal.data());
   download(state->Textures[DEPTH], GL_RED, GL_FLOAT, distance.data());
   download(state->Textures[AMBIENT], GL_RGB, GL_FLOAT, ambient.data());
+  std::vector<unsigned char> reflectivity;
+  if (state->Textures[REFLECTIVITY])
+  {
+    reflectivity.resize(slotPixels * 4);
+    download(state->Textures[REFLECTIVITY], GL_RGBA, GL_UNSIGNED_BYTE, reflectivity.data());
+  }
   glBindTexture(GL_TEXTURE_2D_ARRAY, previous);
   ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
 
@@ -1549,6 +1656,23 @@ bool vtkDeepGBufferPass::CaptureLayers(vtkImageData* output, vtkRenderer* render
     pd->AddArray(dist);
     pd->AddArray(amb);
     pd->AddArray(valid);
+    if (!reflectivity.empty())
+    {
+      vtkNew<vtkFloatArray> refl;
+      refl->SetName(("Reflectivity" + suffix).c_str());
+      refl->SetNumberOfComponents(3);
+      refl->SetNumberOfTuples(pixels);
+      for (size_t p = 0; p < pixels; ++p)
+      {
+        const size_t q = base + p;
+        for (int c = 0; c < 3; ++c)
+        {
+          refl->SetTypedComponent(
+            p, c, distance[q] > 0.0f ? reflectivity[4 * q + c] / 255.0f : 0.0f);
+        }
+      }
+      pd->AddArray(refl);
+    }
   }
   vtkNew<vtkDoubleArray> separation;
   separation->SetName("MinimumSeparation");

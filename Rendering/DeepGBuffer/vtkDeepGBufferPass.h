@@ -41,6 +41,7 @@
  * | NORMAL    | RG8 (Oct16)       | 2        | camera-space normal, paper Table 1    |
  * | DEPTH     | R32F              | 4        | camera-space distance, 0 = empty      |
  * | AMBIENT   | R11F_G11F_B10F    | 4        | the ambient part of RADIANCE          |
+ * | REFLECTIVITY | RGBA8 (optional) | 4      | mirror reflectance, only while requested |
  * | (z-test)  | DEPTH_COMPONENT32F| 4        | hardware depth per layer              |
  * Reads: nothing but the props. Writes: the renderer's colour and depth.
  *
@@ -90,7 +91,8 @@ public:
     NORMAL = 2,
     DEPTH = 3,
     AMBIENT = 4,
-    NUMBER_OF_QUANTITIES = 5
+    REFLECTIVITY = 5, ///< optional: allocated and written only with WriteReflectivity on
+    NUMBER_OF_QUANTITIES = 6
   };
 
   /// The largest layer count this class supports (the GPU may allow fewer).
@@ -166,6 +168,25 @@ public:
   vtkBooleanMacro(DeepLayerBackfaceCulling, bool);
   ///@}
 
+  ///@{
+  /**
+   * When on, the G-buffer also stores REFLECTIVITY (RGBA8 per layer): the
+   * mirror reflectance of each surface, from VTK's material settings.
+   * PBR interpolation: F0 (1 - roughness)^2 with
+   * F0 = mix(vec3(base F0), albedo, metallic), base F0 the property's
+   * reflectance of the base layer (0.04 for VTK's default base IOR 1.5),
+   * roughness and metallic after the material texture. Phong, Gouraud and
+   * flat: Specular x SpecularColor (0 for unlit props). Off by default: the
+   * texture, its draw buffer and the shader output exist only while a
+   * consumer (vtkDeepReflectionPass) turns this on, so other users of the
+   * G-buffer pay nothing. Turning it on or off rebuilds the props' shaders
+   * once.
+   */
+  void SetWriteReflectivity(bool write);
+  vtkGetMacro(WriteReflectivity, bool);
+  vtkBooleanMacro(WriteReflectivity, bool);
+  ///@}
+
   /// The dz used by the last rendered frame (world units).
   vtkGetMacro(EffectiveMinimumSeparation, double);
 
@@ -186,10 +207,11 @@ public:
    * Debug display: which quantity and which layer the pass shows on screen.
    * Default RADIANCE of layer 0, i.e. the normal image. DEPTH is shown as
    * distance normalised to the camera's clipping range (near black, far
-   * white), NORMAL as n * 0.5 + 0.5.
+   * white), NORMAL as n * 0.5 + 0.5. REFLECTIVITY is shown while it is
+   * written (WriteReflectivity), RADIANCE otherwise.
    * Empty pixels keep the renderer's background.
    */
-  vtkSetClampMacro(DisplayQuantity, int, RADIANCE, AMBIENT);
+  vtkSetClampMacro(DisplayQuantity, int, RADIANCE, REFLECTIVITY);
   vtkGetMacro(DisplayQuantity, int);
   vtkSetClampMacro(DisplayLayer, int, 0, MAXIMUM_NUMBER_OF_LAYERS - 1);
   vtkGetMacro(DisplayLayer, int);
@@ -203,7 +225,8 @@ public:
    * float), "Normal_j" (decoded camera-space normal, float), "Depth_j"
    * (camera-space distance, float, 0 where empty), "Ambient_j" (RGB float:
    * the part of Radiance_j that VTK's ambient term contributes, so that
-   * Radiance_j - Ambient_j is the direct radiance from the lights) and
+   * Radiance_j - Ambient_j is the direct radiance from the lights),
+   * "Reflectivity_j" (RGB float, only while WriteReflectivity is on) and
    * "Valid_j" (unsigned char, 1 where layer j has a surface). Field data "MinimumSeparation",
    * "NumberOfLayers" and "Oracle" describe the frame; "ViewMatrix" and
    * "ProjectionMatrix" (16 components, row-major) are its camera, so that
@@ -304,6 +327,7 @@ protected:
   bool AutomaticMinimumSeparation = true;
   double AutomaticSeparationFraction = 0.015;
   bool DeepLayerBackfaceCulling = true;
+  bool WriteReflectivity = false;
   int DisplayQuantity = RADIANCE;
   int DisplayLayer = 0;
 

@@ -44,7 +44,7 @@ void main()
     float t = (distance - deepDistanceRange.x) / max(deepDistanceRange.y - deepDistanceRange.x, 1e-30);
     color = vec4(vec3(clamp(t, 0.0, 1.0)), 1.0);
   }
-  else // ALBEDO, AMBIENT
+  else // ALBEDO, AMBIENT, REFLECTIVITY
   {
     color = vec4(value.rgb, 1.0);
   }

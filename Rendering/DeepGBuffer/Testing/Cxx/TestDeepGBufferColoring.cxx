@@ -236,10 +236,13 @@ int TestDeepGBufferColoring(int, char*[])
   // Texture access for consuming passes.
   vtkOpenGLRenderWindow* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
   bool handles = true;
-  for (int q = 0; q < vtkDeepGBufferPass::NUMBER_OF_QUANTITIES; ++q)
+  for (int q = 0; q < vtkDeepGBufferPass::REFLECTIVITY; ++q)
   {
     handles = handles && pass->GetTextureHandle(renderer, q) != 0;
   }
+  // The optional quantity exists only while a consumer asks for it.
+  Check(pass->GetTextureHandle(renderer, vtkDeepGBufferPass::REFLECTIVITY) == 0,
+    "no REFLECTIVITY texture unless WriteReflectivity is on");
   const int unit = pass->ActivateTexture(renderer, vtkDeepGBufferPass::NORMAL);
   const bool allocated = unit >= 0 && glWindow->GetTextureUnitManager()->IsAllocated(unit);
   pass->DeactivateTexture(renderer, vtkDeepGBufferPass::NORMAL);

@@ -1,0 +1,926 @@
+#include "vtkDeepReflectionPass.h"
+
+#include "vtkActor.h"
+#include "vtkAssemblyNode.h"
+#include "vtkAssemblyPath.h"
+#include "vtkDataArray.h"
+#include "vtkDeepGBufferPass.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkIntArray.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLTexture.h"
+#include "vtkPointData.h"
+#include "vtkProperty.h"
+#include "vtkRenderState.h"
+#include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"
+#include "vtkTextureUnitManager.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWeakPointer.h"
+#include "vtk_glew.h"
+
+#include "vtkDeepAmbientObscuranceCommon.h"
+#include "vtkDeepGBufferCommon.h"
+#include "vtkDeepReflectionCompositeFS.h"
+#include "vtkDeepReflectionFS.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkDeepReflectionPass);
+
+//------------------------------------------------------------------------------
+// The opaque step handed to vtkDeepGBufferPass::RenderFrame: calls back into
+// the reflection pass, so that the camera, clear, lights and the later steps
+// stay the G-buffer pass's.
+class vtkDeepReflectionOpaqueStep : public vtkRenderPass
+{
+public:
+  static vtkDeepReflectionOpaqueStep* New();
+  vtkTypeMacro(vtkDeepReflectionOpaqueStep, vtkRenderPass);
+  vtkDeepReflectionPass* Owner = nullptr;
+  void Render(const vtkRenderState* s) override
+  {
+    this->NumberOfRenderedProps = 0;
+    if (this->Owner)
+    {
+      this->Owner->RenderOpaque(s);
+    }
+  }
+
+protected:
+  vtkDeepReflectionOpaqueStep() = default;
+  ~vtkDeepReflectionOpaqueStep() override = default;
+
+private:
+  vtkDeepReflectionOpaqueStep(const vtkDeepReflectionOpaqueStep&) = delete;
+  void operator=(const vtkDeepReflectionOpaqueStep&) = delete;
+};
+vtkStandardNewMacro(vtkDeepReflectionOpaqueStep);
+
+namespace
+{
+enum Target
+{
+  REFLECTED = 0, // RGBA16F: L_r, alpha 1 where traced
+  HIT = 1,       // RG32F: hit layer (-1 environment), hit distance
+  NUMBER_OF_TARGETS = 2
+};
+
+// Kinds of environment the trace shader is compiled for (DEEP_ENVIRONMENT).
+enum Environment
+{
+  ENVIRONMENT_BACKGROUND = 0,
+  ENVIRONMENT_EQUIRECTANGULAR = 1,
+  ENVIRONMENT_CUBE_MAP = 2,
+  NUMBER_OF_ENVIRONMENTS = 3
+};
+
+double SceneDiagonal(vtkRenderer* renderer)
+{
+  double bounds[6];
+  renderer->ComputeVisiblePropBounds(bounds);
+  if (!vtkMath::AreBoundsInitialized(bounds))
+  {
+    return 0.0;
+  }
+  const double extent[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
+  return vtkMath::Norm(extent);
+}
+
+// Whether an actor's material can give a non-zero REFLECTIVITY (the mapping
+// of vtkDeepGBufferPass::SetWriteReflectivity). Only opaque geometry is in
+// the G-buffer.
+bool ActorReflects(vtkActor* actor)
+{
+  if (!actor || !actor->GetVisibility() || !actor->GetMapper() || !actor->HasOpaqueGeometry())
+  {
+    return false;
+  }
+  vtkProperty* property = actor->GetProperty();
+  if (property->GetInterpolation() == VTK_PBR)
+  {
+    // (1 - roughness)^2 vanishes only at roughness 1, unless a material
+    // texture scales the roughness down per pixel.
+    return property->GetRoughness() < 1.0 || property->GetTexture("materialTex") != nullptr;
+  }
+  const double* color = property->GetSpecularColor();
+  return property->GetLighting() && property->GetSpecular() > 0.0 &&
+    std::max({ color[0], color[1], color[2] }) > 0.0;
+}
+
+// Whether any prop of the frame (actors, also inside assemblies) reflects.
+bool SceneReflects(const vtkRenderState* s)
+{
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    if (!prop->GetVisibility())
+    {
+      continue;
+    }
+    prop->InitPathTraversal();
+    while (vtkAssemblyPath* path = prop->GetNextPath())
+    {
+      if (ActorReflects(vtkActor::SafeDownCast(path->GetLastNode()->GetViewProp())))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+bool ReadyQuad(vtkOpenGLQuadHelper*& quad, vtkOpenGLRenderWindow* window, const char* source,
+  int environment = ENVIRONMENT_BACKGROUND)
+{
+  if (!quad)
+  {
+    std::string fs = source;
+    vtkShaderProgram::Substitute(fs, "//VTK::DeepReflection::Environment",
+      "#define DEEP_ENVIRONMENT " + std::to_string(environment));
+    vtkShaderProgram::Substitute(fs, "//VTK::DeepGBuffer::Common", vtkDeepGBufferCommon);
+    vtkShaderProgram::Substitute(fs, "//VTK::DeepAO::Common", vtkDeepAmbientObscuranceCommon);
+    quad = new vtkOpenGLQuadHelper(
+      window, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), "");
+  }
+  else
+  {
+    window->GetShaderCache()->ReadyShaderProgram(quad->Program);
+  }
+  return quad->Program && quad->Program->GetCompiled();
+}
+}
+
+//------------------------------------------------------------------------------
+// The reflection targets of one renderer.
+struct vtkDeepReflectionRendererState
+{
+  vtkWeakPointer<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkTextureObject> Targets[NUMBER_OF_TARGETS];
+  int Width = 0;
+  int Height = 0;
+  bool HasFrame = false; // the targets hold this renderer's last frame
+  bool Traced = false;
+  double MaximumDistance = 0.0;
+  double Thickness = 0.0;
+  double View[16];
+  double Projection[16];
+
+  void Release(vtkWindow* w)
+  {
+    for (auto& t : this->Targets)
+    {
+      if (t)
+      {
+        t->ReleaseGraphicsResources(w);
+        t = nullptr;
+      }
+    }
+    this->Width = this->Height = 0;
+    this->HasFrame = false;
+    this->Traced = false;
+  }
+};
+
+class vtkDeepReflectionPass::vtkInternals
+{
+public:
+  vtkDeepReflectionOpaqueStep* OpaqueStep = nullptr;
+  std::map<vtkRenderer*, std::unique_ptr<vtkDeepReflectionRendererState>> States;
+  vtkRenderer* FirstRenderer = nullptr;
+  vtkOpenGLFramebufferObject* Framebuffer = nullptr;
+  vtkOpenGLQuadHelper* TraceQuads[NUMBER_OF_ENVIRONMENTS] = { nullptr, nullptr, nullptr };
+  vtkOpenGLQuadHelper* CompositeQuad = nullptr;
+  bool WarnedUnsupported = false;
+  bool WarnedMappedEnvironment = false;
+  // Whether the last frame of each renderer drawn by this pass had a
+  // reflective prop. The G-buffer writes reflectivity while any has, so that
+  // renderers sharing the pass do not rebuild every shader on each frame.
+  std::map<vtkRenderer*, std::pair<vtkWeakPointer<vtkRenderer>, bool>> Reflects;
+
+  bool AnyReflects()
+  {
+    bool any = false;
+    for (auto it = this->Reflects.begin(); it != this->Reflects.end();)
+    {
+      if (!it->second.first)
+      {
+        it = this->Reflects.erase(it);
+        continue;
+      }
+      any = any || it->second.second;
+      ++it;
+    }
+    return any;
+  }
+
+  vtkDeepReflectionRendererState* Find(vtkRenderer* renderer)
+  {
+    auto it = this->States.find(renderer ? renderer : this->FirstRenderer);
+    return (it == this->States.end() || !it->second->HasFrame) ? nullptr : it->second.get();
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkDeepReflectionPass::vtkDeepReflectionPass()
+  : Internals(new vtkInternals)
+{
+  this->GBufferPass = vtkDeepGBufferPass::New();
+  this->Internals->OpaqueStep = vtkDeepReflectionOpaqueStep::New();
+  this->Internals->OpaqueStep->Owner = this;
+}
+
+//------------------------------------------------------------------------------
+vtkDeepReflectionPass::~vtkDeepReflectionPass()
+{
+  vtkInternals& in = *this->Internals;
+  if (in.CompositeQuad || in.Framebuffer || !in.States.empty())
+  {
+    vtkWarningMacro("Destroyed without ReleaseGraphicsResources(); OpenGL objects are leaked "
+                    "unless the context was destroyed first.");
+  }
+  for (vtkOpenGLQuadHelper* quad : in.TraceQuads)
+  {
+    delete quad;
+  }
+  delete in.CompositeQuad;
+  if (in.Framebuffer)
+  {
+    in.Framebuffer->Delete();
+  }
+  in.OpaqueStep->Owner = nullptr;
+  in.OpaqueStep->Delete();
+  this->GBufferPass->Delete();
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepReflectionPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "GBufferPass: " << this->GBufferPass << "\n";
+  os << indent << "MaximumDistance: " << this->MaximumDistance << "\n";
+  os << indent << "AutomaticMaximumDistance: " << (this->AutomaticMaximumDistance ? "On" : "Off")
+     << "\n";
+  os << indent << "AutomaticDistanceFraction: " << this->AutomaticDistanceFraction << "\n";
+  os << indent << "Thickness: " << this->Thickness << "\n";
+  os << indent << "AutomaticThickness: " << (this->AutomaticThickness ? "On" : "Off") << "\n";
+  os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
+  os << indent << "PixelStride: " << this->PixelStride << "\n";
+  os << indent << "RefinementSteps: " << this->RefinementSteps << "\n";
+  os << indent << "EffectiveMaximumDistance: " << this->EffectiveMaximumDistance << "\n";
+  os << indent << "EffectiveThickness: " << this->EffectiveThickness << "\n";
+  os << indent << "LastFrameTraced: " << this->LastFrameTraced << "\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepReflectionPass::SetGBufferPass(vtkDeepGBufferPass* pass)
+{
+  if (!pass)
+  {
+    vtkWarningMacro("SetGBufferPass(nullptr) ignored: the pass needs a G-buffer.");
+    return;
+  }
+  if (pass == this->GBufferPass)
+  {
+    return;
+  }
+  pass->Register(this);
+  this->GBufferPass->UnRegister(this);
+  this->GBufferPass = pass;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepReflectionPass::SetMaximumDistance(double distance)
+{
+  if (std::isnan(distance))
+  {
+    vtkWarningMacro("MaximumDistance is NaN; keeping " << this->MaximumDistance << ".");
+    return;
+  }
+  if (distance < 0.0)
+  {
+    vtkWarningMacro("MaximumDistance " << distance
+                                       << " is negative; using 0 (reflections show the "
+                                          "environment only).");
+    distance = 0.0;
+  }
+  if (distance != this->MaximumDistance || this->AutomaticMaximumDistance)
+  {
+    this->MaximumDistance = distance;
+    this->AutomaticMaximumDistance = false;
+    this->Modified();
+  }
+}
+
+void vtkDeepReflectionPass::SetThickness(double thickness)
+{
+  if (!std::isfinite(thickness))
+  {
+    vtkWarningMacro(
+      "Thickness " << thickness << " is not finite; keeping " << this->Thickness << ".");
+    return;
+  }
+  if (thickness < 0.0)
+  {
+    vtkWarningMacro("Thickness " << thickness << " is negative; using 0.");
+    thickness = 0.0;
+  }
+  if (thickness != this->Thickness || this->AutomaticThickness)
+  {
+    this->Thickness = thickness;
+    this->AutomaticThickness = false;
+    this->Modified();
+  }
+}
+
+void vtkDeepReflectionPass::SetNumberOfSteps(int steps)
+{
+  const int clamped = std::min(std::max(steps, 1), static_cast<int>(MAXIMUM_NUMBER_OF_STEPS));
+  if (clamped != steps)
+  {
+    vtkWarningMacro("NumberOfSteps " << steps << " is outside [1, " << MAXIMUM_NUMBER_OF_STEPS
+                                     << "]; using " << clamped << ".");
+  }
+  if (clamped != this->NumberOfSteps)
+  {
+    this->NumberOfSteps = clamped;
+    this->Modified();
+  }
+}
+
+void vtkDeepReflectionPass::SetPixelStride(double pixels)
+{
+  if (!std::isfinite(pixels) || pixels <= 0.0)
+  {
+    vtkWarningMacro("PixelStride must be a positive number of pixels (got "
+      << pixels << "); keeping " << this->PixelStride << ".");
+    return;
+  }
+  if (pixels < 0.01)
+  {
+    vtkWarningMacro("PixelStride " << pixels << " is below 0.01 pixel; using 0.01.");
+    pixels = 0.01;
+  }
+  if (pixels != this->PixelStride)
+  {
+    this->PixelStride = pixels;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepReflectionPass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  // Compute only what the scene requires: the G-buffer stores reflectivity
+  // (and rays are traced) only while some visible prop can reflect.
+  this->LastFrameTraced = SceneReflects(s);
+  vtkRenderer* renderer = s->GetRenderer();
+  this->Internals->Reflects[renderer] = { renderer, this->LastFrameTraced };
+  this->GBufferPass->SetWriteReflectivity(this->Internals->AnyReflects());
+  this->GBufferPass->RenderFrame(s, this->Internals->OpaqueStep);
+  this->NumberOfRenderedProps = this->GBufferPass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+bool AllocateTarget(vtkSmartPointer<vtkTextureObject>& texture, vtkOpenGLRenderWindow* window,
+  int width, int height, int target)
+{
+  if (texture && texture->GetWidth() == static_cast<unsigned int>(width) &&
+    texture->GetHeight() == static_cast<unsigned int>(height))
+  {
+    return true;
+  }
+  if (!texture)
+  {
+    const int components = target == REFLECTED ? 4 : 2;
+    texture = vtkSmartPointer<vtkTextureObject>::New();
+    texture->SetContext(window);
+    texture->SetInternalFormat(target == REFLECTED ? GL_RGBA16F : GL_RG32F);
+    texture->SetFormat(target == REFLECTED ? GL_RGBA : GL_RG);
+    texture->SetDataType(GL_FLOAT);
+    texture->SetMinificationFilter(vtkTextureObject::Nearest);
+    texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    texture->SetWrapS(vtkTextureObject::ClampToEdge);
+    texture->SetWrapT(vtkTextureObject::ClampToEdge);
+    return texture->Allocate2D(width, height, components, VTK_FLOAT);
+  }
+  texture->Resize(width, height);
+  return true;
+}
+
+// GLSL mat3 uniform (column-major) of a row-major 3x3.
+void ToColumnMajor3(const double m[3][3], float out[9])
+{
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      out[c * 3 + r] = static_cast<float>(m[r][c]);
+    }
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
+{
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLRenderer* renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  vtkDeepGBufferPass* gbuffer = this->GBufferPass;
+  auto existing = in.States.find(renderer);
+  if (existing != in.States.end())
+  {
+    existing->second->HasFrame = false;
+  }
+  if (!gbuffer->RenderLayers(s))
+  {
+    // The opaque props have been drawn the plain way.
+    if (!renderer->GetSelector() && !in.WarnedUnsupported)
+    {
+      in.WarnedUnsupported = true;
+      vtkWarningMacro("The deep G-buffer is unavailable; rendering without reflections.");
+    }
+    this->LastFrameTraced = false;
+    return;
+  }
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  vtkOpenGLState* ostate = window->GetState();
+  vtkOpenGLClearErrorMacro();
+
+  double view[16], projection[16];
+  const int layers = gbuffer->GetLayerCamera(renderer, view, projection);
+  int size[2] = { 0, 0 };
+  s->GetWindowSize(size);
+  const int width = size[0], height = size[1];
+
+  // Effective parameters of the frame.
+  const double diagonal = SceneDiagonal(renderer);
+  const double maximumDistance = this->AutomaticMaximumDistance
+    ? this->AutomaticDistanceFraction * diagonal
+    : this->MaximumDistance;
+  double thickness = this->Thickness;
+  if (this->AutomaticThickness)
+  {
+    thickness = gbuffer->GetEffectiveMinimumSeparation();
+    if (!(thickness > 0.0))
+    {
+      thickness = 0.005 * diagonal;
+    }
+  }
+  this->EffectiveMaximumDistance = maximumDistance;
+  this->EffectiveThickness = thickness;
+
+  auto& slot = in.States[renderer];
+  if (!slot)
+  {
+    slot.reset(new vtkDeepReflectionRendererState);
+    slot->Renderer = renderer;
+  }
+  if (!in.FirstRenderer || !in.States.count(in.FirstRenderer))
+  {
+    in.FirstRenderer = renderer;
+  }
+  vtkDeepReflectionRendererState& state = *slot;
+  state.Traced = false;
+  std::copy(view, view + 16, state.View);
+  std::copy(projection, projection + 16, state.Projection);
+  state.MaximumDistance = maximumDistance;
+  state.Thickness = thickness;
+
+  if (!this->LastFrameTraced)
+  {
+    // Nothing reflects: exactly the G-buffer's image, and no targets kept.
+    state.Release(window);
+    gbuffer->ResolveToFramebuffer(s);
+    state.HasFrame = true;
+    return;
+  }
+
+  // The environment: VTK's environment texture if any, else the background.
+  vtkOpenGLTexture* environment = vtkOpenGLTexture::SafeDownCast(renderer->GetEnvironmentTexture());
+  int environmentKind = ENVIRONMENT_BACKGROUND;
+  vtkTextureObject* environmentObject = nullptr;
+  if (environment)
+  {
+    // VTK uploads float or 16-bit texels as they are only in direct-scalars
+    // mode; otherwise an HDR environment is mapped to 8-bit colours.
+    vtkImageData* input = environment->GetInput();
+    vtkDataArray* texels = input ? input->GetPointData()->GetScalars() : nullptr;
+    if (texels && texels->GetDataType() != VTK_UNSIGNED_CHAR &&
+      environment->GetColorMode() != VTK_COLOR_MODE_DIRECT_SCALARS && !in.WarnedMappedEnvironment)
+    {
+      in.WarnedMappedEnvironment = true;
+      vtkWarningMacro("The environment texture's texels are not 8-bit and its ColorMode is not "
+                      "direct scalars: VTK maps them through a lookup table. Call "
+                      "SetColorModeToDirectScalars() on it to reflect the HDR values.");
+    }
+    environment->Render(renderer); // loads (if needed) and binds it
+    environmentObject = environment->GetTextureObject();
+    if (environmentObject && environmentObject->GetHandle())
+    {
+      environmentKind = environmentObject->GetTarget() == GL_TEXTURE_CUBE_MAP
+        ? ENVIRONMENT_CUBE_MAP
+        : ENVIRONMENT_EQUIRECTANGULAR;
+    }
+    else
+    {
+      environment->PostRender(renderer);
+      environment = nullptr;
+      environmentObject = nullptr;
+    }
+  }
+
+  bool allocated = true;
+  for (int t = 0; t < NUMBER_OF_TARGETS; ++t)
+  {
+    allocated = allocated && AllocateTarget(state.Targets[t], window, width, height, t);
+  }
+  if (!in.Framebuffer)
+  {
+    in.Framebuffer = vtkOpenGLFramebufferObject::New();
+    in.Framebuffer->SetContext(window);
+  }
+  const bool traceReady =
+    ReadyQuad(in.TraceQuads[environmentKind], window, vtkDeepReflectionFS, environmentKind);
+  const bool compositeReady = ReadyQuad(in.CompositeQuad, window, vtkDeepReflectionCompositeFS);
+  if (!allocated || !traceReady || !compositeReady)
+  {
+    vtkErrorMacro("The reflection targets or shaders are unavailable; rendering without "
+                  "reflections.");
+    if (environment)
+    {
+      environment->PostRender(renderer);
+    }
+    gbuffer->ResolveToFramebuffer(s);
+    this->LastFrameTraced = false;
+    return;
+  }
+  state.Width = width;
+  state.Height = height;
+
+  // Projection terms of deepPositionFromDistance (row-major P) and the
+  // full projection for projecting ray points (column-major for GLSL).
+  const float projXY[4] = { static_cast<float>(projection[0]), static_cast<float>(projection[5]),
+    static_cast<float>(projection[2]), static_cast<float>(projection[6]) };
+  const float projT[4] = { static_cast<float>(projection[3]), static_cast<float>(projection[7]),
+    static_cast<float>(projection[14]), static_cast<float>(projection[15]) };
+  float projectionGL[16];
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      projectionGL[c * 4 + r] = static_cast<float>(projection[r * 4 + c]);
+    }
+  }
+  // Camera space -> environment frame: rows right, up, front of the
+  // renderer's environment frame times the inverse view rotation.
+  vtkNew<vtkMatrix4x4> inverseView;
+  inverseView->DeepCopy(view);
+  inverseView->Invert();
+  double up[3], right[3], front[3];
+  renderer->GetEnvironmentUp(up);
+  renderer->GetEnvironmentRight(right);
+  vtkMath::Normalize(up);
+  vtkMath::Normalize(right);
+  vtkMath::Cross(right, up, front);
+  const double* frame[3] = { right, up, front };
+  double toEnvironment[3][3];
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      toEnvironment[r][c] = 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        toEnvironment[r][c] += frame[r][k] * inverseView->GetElement(k, c);
+      }
+    }
+  }
+  float toEnvironmentGL[9];
+  ToColumnMajor3(toEnvironment, toEnvironmentGL);
+  double background[3], background2[3];
+  renderer->GetBackground(background);
+  renderer->GetBackground2(background2);
+  const float backgroundGL[3] = { static_cast<float>(background[0]),
+    static_cast<float>(background[1]), static_cast<float>(background[2]) };
+  const float background2GL[3] = { static_cast<float>(background2[0]),
+    static_cast<float>(background2[1]), static_cast<float>(background2[2]) };
+
+  const int distanceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
+  const int normalUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::NORMAL);
+  const int radianceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::RADIANCE);
+  const int reflectivityUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::REFLECTIVITY);
+  auto deactivate = [&]()
+  {
+    for (int quantity : { vtkDeepGBufferPass::REFLECTIVITY, vtkDeepGBufferPass::RADIANCE,
+           vtkDeepGBufferPass::NORMAL, vtkDeepGBufferPass::DEPTH })
+    {
+      gbuffer->DeactivateTexture(renderer, quantity);
+    }
+  };
+  if (distanceUnit < 0 || normalUnit < 0 || radianceUnit < 0 || reflectivityUnit < 0)
+  {
+    vtkErrorMacro("No free texture units for the reflections; rendering without them.");
+    deactivate();
+    if (environment)
+    {
+      environment->PostRender(renderer);
+    }
+    gbuffer->ResolveToFramebuffer(s);
+    this->LastFrameTraced = false;
+    state.HasFrame = true;
+    return;
+  }
+  {
+    vtkOpenGLState::ScopedglViewport savedViewport(ostate);
+    vtkOpenGLState::ScopedglEnableDisable savedScissor(ostate, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
+    ostate->vtkglDisable(GL_SCISSOR_TEST);
+    ostate->vtkglDisable(GL_BLEND);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    ostate->PushFramebufferBindings();
+    in.Framebuffer->Bind();
+    in.Framebuffer->AddColorAttachment(REFLECTED, state.Targets[REFLECTED]);
+    in.Framebuffer->AddColorAttachment(HIT, state.Targets[HIT]);
+    in.Framebuffer->ActivateDrawBuffers(NUMBER_OF_TARGETS);
+    ostate->vtkglViewport(0, 0, width, height);
+    // Untraced pixels: no radiance, hit layer -1.
+    const float clearReflected[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+    const float clearHit[4] = { -1.0f, 0.0f, 0.0f, 0.0f };
+    glClearBufferfv(GL_COLOR, REFLECTED, clearReflected);
+    glClearBufferfv(GL_COLOR, HIT, clearHit);
+
+    vtkShaderProgram* program = in.TraceQuads[environmentKind]->Program;
+    window->GetShaderCache()->ReadyShaderProgram(program);
+    program->SetUniformi("deepDistance", distanceUnit);
+    program->SetUniformi("deepNormal", normalUnit);
+    program->SetUniformi("deepRadiance", radianceUnit);
+    program->SetUniformi("deepReflectivity", reflectivityUnit);
+    program->SetUniformi("deepLayers", std::max(1, layers));
+    program->SetUniform4f("deepProjXY", projXY);
+    program->SetUniform4f("deepProjT", projT);
+    program->SetUniformMatrix4x4("deepProjection", projectionGL);
+    // +infinity is a valid t_max (cut at the view frustum in the shader).
+    program->SetUniformf("deepMaxDistance",
+      static_cast<float>(
+        std::min(maximumDistance, static_cast<double>(std::numeric_limits<float>::max()))));
+    program->SetUniformf("deepThickness", static_cast<float>(thickness));
+    program->SetUniformi("deepMaxSteps", this->NumberOfSteps);
+    program->SetUniformf("deepPixelStride", static_cast<float>(this->PixelStride));
+    program->SetUniformi("deepRefinements", this->RefinementSteps);
+    program->SetUniformMatrix3x3("deepViewToEnvironment", toEnvironmentGL);
+    program->SetUniform3f("deepBackground", backgroundGL);
+    program->SetUniform3f("deepBackground2", background2GL);
+    program->SetUniformi("deepGradient", renderer->GetGradientBackground() ? 1 : 0);
+    if (environmentObject)
+    {
+      program->SetUniformi("deepEnvironment", environmentObject->GetTextureUnit());
+    }
+    in.TraceQuads[environmentKind]->Render();
+    in.Framebuffer->RemoveColorAttachment(HIT);
+    in.Framebuffer->RemoveColorAttachment(REFLECTED);
+    ostate->PopFramebufferBindings();
+  }
+  if (environment)
+  {
+    environment->PostRender(renderer);
+  }
+
+  // Composite: layer-0 image and depth, then RADIANCE + REFLECTIVITY x L_r
+  // where traced (alpha kept).
+  gbuffer->ResolveToFramebuffer(s);
+  if (gbuffer->GetDisplayQuantity() == vtkDeepGBufferPass::RADIANCE)
+  {
+    vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
+    vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(ostate);
+    ostate->vtkglEnable(GL_BLEND);
+    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ZERO, GL_ZERO, GL_ONE);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    ostate->vtkglDepthMask(GL_FALSE);
+    vtkShaderProgram* program = in.CompositeQuad->Program;
+    window->GetShaderCache()->ReadyShaderProgram(program);
+    state.Targets[REFLECTED]->Activate();
+    program->SetUniformi("deepReflected", state.Targets[REFLECTED]->GetTextureUnit());
+    program->SetUniformi("deepRadiance", radianceUnit);
+    program->SetUniformi("deepReflectivity", reflectivityUnit);
+    in.CompositeQuad->Render();
+    state.Targets[REFLECTED]->Deactivate();
+  }
+  deactivate();
+  state.HasFrame = true;
+  state.Traced = true;
+  vtkOpenGLCheckErrorMacro("failed after vtkDeepReflectionPass");
+}
+
+//------------------------------------------------------------------------------
+unsigned int vtkDeepReflectionPass::GetReflectionTextureHandle(vtkRenderer* renderer)
+{
+  vtkDeepReflectionRendererState* state = this->Internals->Find(renderer);
+  return state && state->Traced ? state->Targets[REFLECTED]->GetHandle() : 0;
+}
+
+int vtkDeepReflectionPass::ActivateReflectionTexture(vtkRenderer* renderer)
+{
+  vtkDeepReflectionRendererState* state = this->Internals->Find(renderer);
+  if (!state || !state->Traced)
+  {
+    return -1;
+  }
+  state->Targets[REFLECTED]->Activate();
+  return state->Targets[REFLECTED]->GetTextureUnit();
+}
+
+void vtkDeepReflectionPass::DeactivateReflectionTexture(vtkRenderer* renderer)
+{
+  vtkDeepReflectionRendererState* state = this->Internals->Find(renderer);
+  if (state && state->Traced)
+  {
+    state->Targets[REFLECTED]->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepReflectionPass::CaptureReflections(vtkImageData* output, vtkRenderer* renderer)
+{
+  vtkDeepReflectionRendererState* state = this->Internals->Find(renderer);
+  if (!output || !state || !state->Renderer)
+  {
+    vtkErrorMacro("CaptureReflections: no reflections have been rendered for this renderer.");
+    return false;
+  }
+  vtkRenderer* ren = state->Renderer;
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  window->MakeCurrent();
+  vtkOpenGLState* ostate = window->GetState();
+  vtkOpenGLClearErrorMacro();
+
+  int w = state->Width, h = state->Height;
+  if (!state->Traced)
+  {
+    // Nothing traced: the image of the G-buffer's size, all invalid.
+    double view[16], projection[16];
+    if (!this->GBufferPass->GetLayerCamera(ren, view, projection))
+    {
+      vtkErrorMacro("CaptureReflections: no G-buffer for this renderer.");
+      return false;
+    }
+    const int* size = ren->GetSize();
+    w = size[0];
+    h = size[1];
+  }
+  const size_t pixels = static_cast<size_t>(w) * h;
+  std::vector<float> reflected(pixels * 4, 0.0f), hit(pixels * 2, 0.0f);
+  std::vector<unsigned char> reflectivity(pixels * 4, 0);
+  if (state->Traced)
+  {
+    ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+    vtkOpenGLState::ScopedglActiveTexture savedUnit(ostate);
+    GLint previous2D = 0, previousArray = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous2D);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &previousArray);
+    glBindTexture(GL_TEXTURE_2D, state->Targets[REFLECTED]->GetHandle());
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, reflected.data());
+    glBindTexture(GL_TEXTURE_2D, state->Targets[HIT]->GetHandle());
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RG, GL_FLOAT, hit.data());
+    glBindTexture(GL_TEXTURE_2D, previous2D);
+    // Layer 0 of the G-buffer's reflectivity array is its first w x h texels.
+    const GLuint handle =
+      this->GBufferPass->GetTextureHandle(ren, vtkDeepGBufferPass::REFLECTIVITY);
+    if (handle)
+    {
+      GLint depth = 0;
+      glBindTexture(GL_TEXTURE_2D_ARRAY, handle);
+      glGetTexLevelParameteriv(GL_TEXTURE_2D_ARRAY, 0, GL_TEXTURE_DEPTH, &depth);
+      std::vector<unsigned char> all(pixels * 4 * std::max(1, static_cast<int>(depth)));
+      glGetTexImage(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA, GL_UNSIGNED_BYTE, all.data());
+      std::copy(all.begin(), all.begin() + pixels * 4, reflectivity.begin());
+    }
+    glBindTexture(GL_TEXTURE_2D_ARRAY, previousArray);
+    ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
+  }
+
+  output->Initialize();
+  output->SetDimensions(w, h, 1);
+  output->SetSpacing(1.0, 1.0, 1.0);
+  output->SetOrigin(0.0, 0.0, 0.0);
+  vtkNew<vtkFloatArray> radiance, layer, distance, reflectance;
+  vtkNew<vtkUnsignedCharArray> valid;
+  radiance->SetName("ReflectedRadiance");
+  radiance->SetNumberOfComponents(3);
+  radiance->SetNumberOfTuples(pixels);
+  layer->SetName("HitLayer");
+  layer->SetNumberOfTuples(pixels);
+  distance->SetName("HitDistance");
+  distance->SetNumberOfTuples(pixels);
+  reflectance->SetName("Reflectivity");
+  reflectance->SetNumberOfComponents(3);
+  reflectance->SetNumberOfTuples(pixels);
+  valid->SetName("Valid");
+  valid->SetNumberOfTuples(pixels);
+  for (size_t p = 0; p < pixels; ++p)
+  {
+    const bool traced = reflected[4 * p + 3] > 0.0f;
+    valid->SetValue(p, traced ? 1 : 0);
+    layer->SetValue(p, traced ? hit[2 * p] : -1.0f);
+    distance->SetValue(p, traced && hit[2 * p] >= 0.0f ? hit[2 * p + 1] : 0.0f);
+    for (int c = 0; c < 3; ++c)
+    {
+      radiance->SetTypedComponent(p, c, traced ? reflected[4 * p + c] : 0.0f);
+      reflectance->SetTypedComponent(p, c, reflectivity[4 * p + c] / 255.0f);
+    }
+  }
+  vtkPointData* pd = output->GetPointData();
+  pd->AddArray(radiance);
+  pd->AddArray(layer);
+  pd->AddArray(distance);
+  pd->AddArray(reflectance);
+  pd->AddArray(valid);
+
+  vtkFieldData* fd = output->GetFieldData();
+  for (auto value : { std::make_pair("MaximumDistance", state->MaximumDistance),
+         std::make_pair("Thickness", state->Thickness) })
+  {
+    vtkNew<vtkDoubleArray> array;
+    array->SetName(value.first);
+    array->InsertNextValue(value.second);
+    fd->AddArray(array);
+  }
+  vtkNew<vtkIntArray> traced;
+  traced->SetName("Traced");
+  traced->InsertNextValue(state->Traced ? 1 : 0);
+  fd->AddArray(traced);
+  for (auto matrix : { std::make_pair("ViewMatrix", state->View),
+         std::make_pair("ProjectionMatrix", state->Projection) })
+  {
+    vtkNew<vtkDoubleArray> values;
+    values->SetName(matrix.first);
+    values->SetNumberOfComponents(16);
+    values->InsertNextTuple(matrix.second);
+    fd->AddArray(values);
+  }
+  vtkOpenGLCheckErrorMacro("failed after capturing the reflections");
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepReflectionPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  vtkInternals& in = *this->Internals;
+  for (auto& entry : in.States)
+  {
+    entry.second->Release(w);
+  }
+  in.States.clear();
+  in.Reflects.clear();
+  in.FirstRenderer = nullptr;
+  for (vtkOpenGLQuadHelper*& quad : in.TraceQuads)
+  {
+    if (quad)
+    {
+      quad->ReleaseGraphicsResources(w);
+      delete quad;
+      quad = nullptr;
+    }
+  }
+  if (in.CompositeQuad)
+  {
+    in.CompositeQuad->ReleaseGraphicsResources(w);
+    delete in.CompositeQuad;
+    in.CompositeQuad = nullptr;
+  }
+  if (in.Framebuffer)
+  {
+    in.Framebuffer->ReleaseGraphicsResources(w);
+    in.Framebuffer->Delete();
+    in.Framebuffer = nullptr;
+  }
+  this->GBufferPass->ReleaseGraphicsResources(w);
+  this->Superclass::ReleaseGraphicsResources(w);
+}
