@@ -5,6 +5,8 @@
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkIntArray.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
@@ -29,6 +31,11 @@ vtkStandardNewMacro(vtkDeepGBufferDemoScene);
 
 namespace
 {
+// The lighting coefficients of every actor made here (VTK's Ambient and
+// Diffuse); the scene polydata carries the diffuse one as field data.
+constexpr double MaterialAmbient = 0.1;
+constexpr double MaterialDiffuse = 0.9;
+
 using Vec3 = std::array<double, 3>;
 
 Vec3 operator+(const Vec3& a, const Vec3& b)
@@ -599,6 +606,11 @@ vtkPolyData* vtkDeepGBufferDemoScene::GetScenePolyData()
     append->Update();
     this->ScenePolyData = vtkSmartPointer<vtkPolyData>::New();
     this->ScenePolyData->ShallowCopy(append->GetOutput());
+    // The actors' diffuse coefficient, for references that light the scene.
+    vtkNew<vtkDoubleArray> diffuse;
+    diffuse->SetName("Diffuse");
+    diffuse->InsertNextValue(MaterialDiffuse);
+    this->ScenePolyData->GetFieldData()->AddArray(diffuse);
   }
   return this->ScenePolyData;
 }
@@ -676,8 +688,8 @@ void vtkDeepGBufferDemoScene::AddActors(vtkRenderer* renderer)
     vtkProperty* property = actor->GetProperty();
     property->SetDiffuseColor(Materials[i].Color[0], Materials[i].Color[1], Materials[i].Color[2]);
     property->SetAmbientColor(Materials[i].Color[0], Materials[i].Color[1], Materials[i].Color[2]);
-    property->SetAmbient(0.1);
-    property->SetDiffuse(0.9);
+    property->SetAmbient(MaterialAmbient);
+    property->SetDiffuse(MaterialDiffuse);
     property->SetSpecular(0.0);
     property->SetInterpolationToPhong();
     renderer->AddActor(actor);

@@ -149,7 +149,8 @@ public:
    * All geometry appended into one polydata: triangles, point normals
    * "Normals" (if ComputeNormals), cell data "Colors" (unsigned char RGB, the
    * diffuse albedo of the triangle's material) and "MaterialId" (int, a
-   * Material value). Owned by the scene; rebuilt when parameters change.
+   * Material value), field data "Diffuse" (the actors' diffuse coefficient,
+   * 0.9). Owned by the scene; rebuilt when parameters change.
    */
   vtkPolyData* GetScenePolyData();
 

@@ -10,6 +10,8 @@
 #include "vtkCleanPolyData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkExecutive.h"
 #include "vtkFlyingEdges3D.h"
 #include "vtkFloatArray.h"
@@ -60,6 +62,11 @@ vtkStandardNewMacro(vtkDeepGBufferSceneLoader);
 
 namespace
 {
+// The lighting coefficients of every actor made here (VTK's Ambient and
+// Diffuse); the scene polydata carries the diffuse one as field data.
+constexpr double MaterialAmbient = 0.1;
+constexpr double MaterialDiffuse = 0.9;
+
 struct Part
 {
   std::string Name;
@@ -1571,6 +1578,11 @@ vtkPolyData* vtkDeepGBufferSceneLoader::GetScenePolyData()
     append->Update();
     this->Internals->Scene = vtkSmartPointer<vtkPolyData>::New();
     this->Internals->Scene->ShallowCopy(append->GetOutput());
+    // The actors' diffuse coefficient, for references that light the scene.
+    vtkNew<vtkDoubleArray> diffuse;
+    diffuse->SetName("Diffuse");
+    diffuse->InsertNextValue(MaterialDiffuse);
+    this->Internals->Scene->GetFieldData()->AddArray(diffuse);
   }
   return this->Internals->Scene;
 }
@@ -1594,8 +1606,8 @@ int vtkDeepGBufferSceneLoader::Populate(vtkRenderer* renderer)
     vtkProperty* property = actor->GetProperty();
     property->SetDiffuseColor(part.Color[0], part.Color[1], part.Color[2]);
     property->SetAmbientColor(part.Color[0], part.Color[1], part.Color[2]);
-    property->SetAmbient(0.1);
-    property->SetDiffuse(0.9);
+    property->SetAmbient(MaterialAmbient);
+    property->SetDiffuse(MaterialDiffuse);
     property->SetSpecular(0.0);
     property->SetInterpolationToPhong();
     renderer->AddActor(actor);

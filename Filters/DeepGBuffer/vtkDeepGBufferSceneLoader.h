@@ -176,7 +176,8 @@ public:
 
   /**
    * All parts appended into one polydata with cell data "Colors" (unsigned
-   * char RGB, the part's diffuse albedo) and "PartId" (int), and point
+   * char RGB, the part's diffuse albedo) and "PartId" (int), field data
+   * "Diffuse" (the actors' diffuse coefficient, 0.9), and point
    * "Normals" if every part has them. Owned by the loader; nullptr when
    * nothing is loaded.
    */

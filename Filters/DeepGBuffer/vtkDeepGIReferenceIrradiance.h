@@ -85,8 +85,7 @@
  * Typical use:
  * @code
  * vtkNew<vtkDeepGIReferenceIrradiance> reference;
- * reference->SetScene(demoScene->GetScenePolyData());
- * reference->SetDiffuseCoefficient(0.9); // the demo scene's actors' Diffuse
+ * reference->SetScene(demoScene->GetScenePolyData()); // carries "Diffuse"
  * reference->SetLightsFromRenderer(renderer);
  * reference->SetSamplesPerPixel(256);
  * reference->Compute(capture); // from vtkDeepGBufferPass::CaptureLayers
@@ -215,8 +214,8 @@ public:
   /**
    * Diffuse coefficient (VTK's vtkProperty::Diffuse) multiplied into the
    * "Colors" albedo when the scene carries no "Diffuse" cell or field array.
-   * [0, 1]; default 1. vtkDeepGBufferDemoScene and vtkDeepGBufferSceneLoader
-   * give their actors Diffuse 0.9: set 0.9 for their scenes.
+   * [0, 1]; default 1. The scene polydata of vtkDeepGBufferDemoScene and
+   * vtkDeepGBufferSceneLoader carry their actors' Diffuse as field data.
    */
   vtkSetClampMacro(DiffuseCoefficient, double, 0.0, 1.0);
   vtkGetMacro(DiffuseCoefficient, double);

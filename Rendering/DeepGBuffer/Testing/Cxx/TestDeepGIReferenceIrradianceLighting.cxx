@@ -67,7 +67,7 @@ int TestDeepGIReferenceIrradianceLighting(int, char*[])
 
   vtkNew<vtkDeepGIReferenceIrradiance> reference;
   reference->SetScene(scene->GetScenePolyData());
-  reference->SetDiffuseCoefficient(0.9);
+  Check(reference->GetDiffuseCoefficient() == 1.0, "the scene's own Diffuse is used");
   reference->SetLightsFromRenderer(renderer);
   reference->SetQuantityToDirectRadiance();
   Check(reference->GetNumberOfLights() == 5, "five lights from the renderer");
