@@ -759,6 +759,7 @@ void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
       static_cast<float>(this->EffectiveEnvironmentIrradiance[1]),
       static_cast<float>(this->EffectiveEnvironmentIrradiance[2]) };
     program->SetUniform3f("deepEnvironment", environment);
+    program->SetUniformf("deepIrradianceLimit", static_cast<float>(IRRADIANCE_LIMIT));
     in.TemporalQuad->Render();
     unbindPair(state.History[previous]);
     unbindPair(state.Targets[FILTERED]);
@@ -929,6 +930,7 @@ bool vtkDeepRadiosityPass::CaptureIrradiance(vtkImageData* output, vtkRenderer* 
     vtkFloatArray* e = makeArray("Irradiance", 3);
     vtkFloatArray* l = makeArray("IndirectRadiance", 3);
     vtkFloatArray* c = makeArray("Confidence", 1);
+    vtkFloatArray* fe = makeArray("FilteredIrradiance", 3);
     vtkFloatArray* re = makeArray("RawIrradiance", 3);
     vtkFloatArray* rc = makeArray("RawConfidence", 1);
     vtkNew<vtkUnsignedCharArray> valid;
@@ -944,6 +946,7 @@ bool vtkDeepRadiosityPass::CaptureIrradiance(vtkImageData* output, vtkRenderer* 
         e->SetTypedComponent(p, k, isValid ? irradiance[4 * p + k] : 0.0f);
         l->SetTypedComponent(p, k, isValid ? indirect[4 * p + k] : 0.0f);
         re->SetTypedComponent(p, k, isValid ? raw[4 * p + k] : 0.0f);
+        fe->SetTypedComponent(p, k, isValid ? filtered[4 * p + k] : 0.0f);
       }
       c->SetValue(p, isValid ? filtered[4 * p + 3] : 0.0f);
       rc->SetValue(p, isValid ? raw[4 * p + 3] : 0.0f);

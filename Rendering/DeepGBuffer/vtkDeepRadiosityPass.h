@@ -129,6 +129,11 @@ public:
   /// within about 0.009; it is rejected rather than counted in M.
   static constexpr double COSINE_EPSILON = 0.01;
 
+  /// Upper bound of E (irradiance units): a float guard that keeps a
+  /// divergent configuration (rho = 1, delta = 1 in a closed room, whose
+  /// true radiosity is infinite) finite.
+  static constexpr double IRRADIANCE_LIMIT = 1e30;
+
   /// The outputs accessible with ActivateTexture.
   enum Quantity
   {
@@ -357,8 +362,10 @@ public:
    * the viewport's size, with float point-data arrays per layer j = 0, 1:
    * "Irradiance_j" (RGB, E_t after both filters), "IndirectRadiance_j"
    * (RGB, L_ind with the fallback when it is on), "Confidence_j" (filtered
-   * M / N), "RawIrradiance_j" (RGB) and "RawConfidence_j" (eq. 4 and M / N
-   * of this frame's gather before any filter), all 0 where layer j is
+   * M / N), "FilteredIrradiance_j" (RGB, this frame's E after the bilateral
+   * filter, before the temporal one), "RawIrradiance_j" (RGB) and
+   * "RawConfidence_j" (eq. 4 and M / N of this frame's gather before any
+   * filter), all 0 where layer j is
    * empty, and unsigned char "Valid_j". Field data: "Radius",
    * "NumberOfSamples", "NumberOfLayers", "ReprojectionTolerance",
    * "EnvironmentIrradiance" (3) and "Frames" (frames since the history was

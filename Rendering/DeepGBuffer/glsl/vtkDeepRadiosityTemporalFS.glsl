@@ -31,6 +31,7 @@ uniform float deepAlpha;
 uniform int deepBoost;
 uniform int deepFallback;
 uniform vec3 deepEnvironment;     // environment irradiance E_env
+uniform float deepIrradianceLimit;
 
 //VTK::DeepGBuffer::Common
 
@@ -66,6 +67,10 @@ void filterLayer(ivec2 pixel, vec2 size, int layer, out vec4 history, out vec4 i
       }
     }
   }
+  // A float guard, not a physical limit: with rho = 1 and delta = 1 in a
+  // closed room the bounces grow without bound (as the true radiosity would),
+  // and the clamp keeps them finite.
+  E = min(E, vec3(deepIrradianceLimit));
   history = vec4(E, d);
   vec3 rho = texelFetch(deepAlbedo, ivec3(pixel, layer), 0).rgb;
   vec3 L = deepReflectance(rho, deepBoost != 0) * E / deepPi;
