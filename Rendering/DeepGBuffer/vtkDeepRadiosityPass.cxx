@@ -540,10 +540,12 @@ void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
     std::copy(this->EnvironmentIrradiance, this->EnvironmentIrradiance + 3,
       this->EffectiveEnvironmentIrradiance);
   }
-  if (!AnyLightOn(renderer) && !state.WarnedNoLights)
+  const bool hasLights = AnyLightOn(renderer);
+  if (!hasLights && !state.WarnedNoLights)
   {
     state.WarnedNoLights = true;
-    vtkWarningMacro("The renderer has no light switched on: there is no direct light to bounce.");
+    vtkWarningMacro("The renderer has no light switched on: VTK draws the props unlit and there "
+                    "is no direct light to bounce.");
   }
 
   // History: reset on a resize, a new layer count, and when this renderer
@@ -688,6 +690,7 @@ void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
     program->SetUniformf("deepTolerance", static_cast<float>(tolerance));
     program->SetUniformf("deepDamping", static_cast<float>(this->Damping));
     program->SetUniformi("deepBoost", this->UseColorBoost ? 1 : 0);
+    program->SetUniformi("deepHasLights", hasLights ? 1 : 0);
     in.BounceQuad->Render();
     unbindPair(state.History[previous]);
 

@@ -94,7 +94,9 @@
  * environment irradiance, a sample count outside 1..98 and alpha or delta
  * outside [0, 1] are reported with vtkWarningMacro and replaced by the
  * nearest valid value; an empty scene (automatic radius 0) and a frame
- * without lights are reported once per renderer and give L_ind = 0.
+ * without lights are reported once per renderer and give L_ind = 0 (VTK
+ * draws props unlit at their full colour when no light is on; that colour
+ * is not bounced).
  *
  * @sa vtkDeepGBufferPass vtkDeepAmbientObscurancePass
  */

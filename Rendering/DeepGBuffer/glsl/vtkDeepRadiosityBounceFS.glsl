@@ -28,6 +28,7 @@ uniform mat4 deepPrevProjection;
 uniform float deepTolerance;      // world units
 uniform float deepDamping;        // delta
 uniform int deepBoost;            // eq. 7 on/off
+uniform int deepHasLights;        // 0: VTK drew the props unlit, no direct light
 
 //VTK::DeepGBuffer::Common
 
@@ -42,8 +43,12 @@ vec3 bounceInput(ivec2 pixel, vec2 size, int layer)
   {
     return vec3(0.0);
   }
-  vec3 direct = max(texelFetch(deepRadiance, ivec3(pixel, layer), 0).rgb -
-      texelFetch(deepAmbient, ivec3(pixel, layer), 0).rgb, vec3(0.0));
+  // Without a light VTK draws props unlit at their full colour: that is no
+  // light arriving from a source, so nothing is bounced.
+  vec3 direct = deepHasLights == 0 ? vec3(0.0)
+                                   : max(texelFetch(deepRadiance, ivec3(pixel, layer), 0).rgb -
+                                         texelFetch(deepAmbient, ivec3(pixel, layer), 0).rgb,
+                                       vec3(0.0));
   if (deepHasHistory == 0 || deepDamping <= 0.0)
   {
     return direct;
