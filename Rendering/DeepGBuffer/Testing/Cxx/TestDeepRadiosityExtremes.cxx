@@ -12,6 +12,7 @@
 //   delta = 0.45 every L_ind stays below 2 rho D / (1 - 2 rho delta) = 20 D;
 //   with delta = 1 (a divergent configuration: the true radiosity of a
 //   closed white room is infinite) every value stays finite;
+// - a shared one-layer G-buffer: layer 0 lit, layer 1 empty and 0;
 // - bad parameters (NaN, infinite, negative, out of range) warn once each
 //   and keep or clamp the value.
 
@@ -234,6 +235,30 @@ void TestClosedBox()
   }
 }
 
+// A shared G-buffer pass with one layer: layer 0 gathers, layer 1 is empty.
+void TestOneLayer()
+{
+  vtkNew<vtkDeepGBufferPass> gbuffer;
+  gbuffer->SetNumberOfLayers(1);
+  vtkNew<vtkDeepRadiosityPass> pass;
+  pass->SetGBufferPass(gbuffer);
+  Frame f;
+  if (!RenderFrames([](vtkRenderer* r) { RedWallScene(r); }, pass, 3, f, 96, 72))
+  {
+    return;
+  }
+  Healthy(f, "one layer");
+  const double layers = f.Radiosity->GetFieldData()->GetArray("NumberOfLayers")->GetTuple1(0);
+  std::printf("one G-buffer layer: %g radiosity layer(s), %g valid layer-1 px, largest L_ind %.3f\n",
+    layers, Total(f.Radiosity, "Valid_1"), Maximum(f.Radiosity, "IndirectRadiance_0"));
+  Check(pass->GetGBufferPass() == gbuffer.GetPointer(), "shared G-buffer pass");
+  Check(layers == 1 && Total(f.Radiosity, "Valid_1") == 0 &&
+      Maximum(f.Radiosity, "IndirectRadiance_1") == 0 &&
+      Maximum(f.Radiosity, "IndirectRadiance_0") > 0.05,
+    "one layer: layer 0 lit, layer 1 empty");
+  pass->ReleaseGraphicsResources(f.Window);
+}
+
 void TestBadParameters()
 {
   vtkNew<vtkDeepRadiosityPass> pass;
@@ -284,6 +309,7 @@ int TestDeepRadiosityExtremes(int, char*[])
   TestParameters();
   TestDark();
   TestClosedBox();
+  TestOneLayer();
   TestBadParameters();
   std::printf("%d check(s) failed\n", CheckFailures());
   return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
