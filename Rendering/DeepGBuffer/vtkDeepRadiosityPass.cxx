@@ -680,6 +680,7 @@ void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
     program->SetUniformi("deepRadiance", units[vtkDeepGBufferPass::RADIANCE]);
     program->SetUniformi("deepAmbient", units[vtkDeepGBufferPass::AMBIENT]);
     program->SetUniformi("deepAlbedo", units[vtkDeepGBufferPass::ALBEDO]);
+    program->SetUniformi("deepNormal", normalUnit);
     program->SetUniform4f("deepProjXY", projXY);
     program->SetUniform4f("deepProjT", projT);
     bindPair(program, "deepHistory", state.History[previous]);
@@ -747,6 +748,7 @@ void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
     bindPair(program, "deepInput", state.Targets[FILTERED]);
     bindPair(program, "deepHistory", state.History[previous]);
     program->SetUniformi("deepDistance", distanceUnit);
+    program->SetUniformi("deepNormal", normalUnit);
     program->SetUniformi("deepAlbedo", units[vtkDeepGBufferPass::ALBEDO]);
     program->SetUniform4f("deepProjXY", projXY);
     program->SetUniform4f("deepProjT", projT);

@@ -9,13 +9,16 @@
 // its lights), L_ind,t-1 = rho boost(rho) E_t-1 / pi (eq. 6) from last
 // frame's final irradiance E_t-1, reverse-reprojected to Y and taken from
 // whichever previous layer lies within deepTolerance (world units, camera
-// depth difference) of the reprojected point; 0 where neither does or
-// there is no history (the first frame gives the single bounce).
+// depth difference) of the reprojected surface (its plane extrapolated to
+// the previous texel's centre, deepExpectedPreviousDistance); 0 where
+// neither does or there is no history (the first frame gives the single
+// bounce).
 //=========================================================================
 
 in vec2 texCoord;
 
 uniform sampler2DArray deepDistance;
+uniform sampler2DArray deepNormal;
 uniform sampler2DArray deepRadiance;
 uniform sampler2DArray deepAmbient;
 uniform sampler2DArray deepAlbedo;
@@ -60,10 +63,13 @@ vec3 bounceInput(ivec2 pixel, vec2 size, int layer)
   {
     return direct;
   }
+  vec3 n = deepDecodeOct16(texelFetch(deepNormal, ivec3(pixel, layer), 0).rg);
+  float expected =
+    deepExpectedPreviousDistance(X, n, deepToPrevious, deepPrevProjection, texel, size);
   vec4 h0 = texelFetch(deepHistory0, texel, 0);
   vec4 h1 = texelFetch(deepHistory1, texel, 0);
-  float e0 = h0.a > 0.0 ? abs(h0.a - dr) : 1e30;
-  float e1 = h1.a > 0.0 ? abs(h1.a - dr) : 1e30;
+  float e0 = h0.a > 0.0 ? abs(h0.a - expected) : 1e30;
+  float e1 = h1.a > 0.0 ? abs(h1.a - expected) : 1e30;
   float best = min(e0, e1);
   if (!(best <= deepTolerance))
   {

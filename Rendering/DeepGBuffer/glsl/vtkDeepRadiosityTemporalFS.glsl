@@ -4,9 +4,10 @@
 // Temporal filter and outgoing indirect radiance of deep screen-space
 // radiosity (Mara et al. 2016, sections 3.2-3.3), layers 0 and 1 at once.
 //   E_t = E (1 - alpha) + reproject(E_t-1) alpha
-// where the reprojected point lies within deepTolerance (world units,
-// camera depth difference) of either of last frame's layers (the nearer
-// one is used), else E_t = E. Outputs:
+// where the reprojected surface (its plane extrapolated to the previous
+// texel's centre, deepExpectedPreviousDistance) lies within deepTolerance
+// (world units, camera depth difference) of either of last frame's layers
+// (the nearer one is used), else E_t = E. Outputs:
 //   0, 1: the history of layers 0, 1: (E_t, distance), 0 where empty;
 //   2, 3: (L, confidence) of layers 0, 1 with the outgoing indirect
 //         radiance L = rho boost(rho) E_t / pi (eq. 6), blended with the
@@ -21,6 +22,7 @@ uniform sampler2D deepInput1;
 uniform sampler2D deepHistory0;   // last frame's (E, distance) of layer 0
 uniform sampler2D deepHistory1;
 uniform sampler2DArray deepDistance;
+uniform sampler2DArray deepNormal;
 uniform sampler2DArray deepAlbedo;
 uniform int deepLayers;
 uniform int deepHasHistory;
@@ -57,10 +59,13 @@ void filterLayer(ivec2 pixel, vec2 size, int layer, out vec4 history, out vec4 i
     float dr;
     if (deepReproject(X, deepToPrevious, deepPrevProjection, size, texel, dr))
     {
+      vec3 n = deepDecodeOct16(texelFetch(deepNormal, ivec3(pixel, layer), 0).rg);
+      float expected =
+        deepExpectedPreviousDistance(X, n, deepToPrevious, deepPrevProjection, texel, size);
       vec4 h0 = texelFetch(deepHistory0, texel, 0);
       vec4 h1 = texelFetch(deepHistory1, texel, 0);
-      float e0 = h0.a > 0.0 ? abs(h0.a - dr) : 1e30;
-      float e1 = h1.a > 0.0 ? abs(h1.a - dr) : 1e30;
+      float e0 = h0.a > 0.0 ? abs(h0.a - expected) : 1e30;
+      float e1 = h1.a > 0.0 ? abs(h1.a - expected) : 1e30;
       if (min(e0, e1) <= deepTolerance)
       {
         E = mix(E, e0 <= e1 ? h0.rgb : h1.rgb, deepAlpha);

@@ -143,3 +143,38 @@ vec3 deepReflectance(vec3 rho, bool useBoost)
   float lo = min(rho.r, min(rho.g, rho.b));
   return hi > 0.0 ? rho * ((hi - lo) / hi) : vec3(0.0);
 }
+
+// Camera-space point at distance d on the ray through `ndc` of a camera
+// with projection m (GLSL column-major: m[c][r] = P_rc).
+vec3 deepRayPoint(vec2 ndc, float d, mat4 m)
+{
+  float z = -d;
+  float w = m[2][3] * z + m[3][3];
+  return vec3((ndc.x * w - m[2][0] * z - m[3][0]) / m[0][0],
+    (ndc.y * w - m[2][1] * z - m[3][1]) / m[1][1], z);
+}
+
+// The distance that a reprojected surface should have at the centre of
+// the previous texel it fell into: the plane through the current point X
+// with the current normal n, both moved into the previous camera, met by
+// the ray through that texel's centre. A reprojected point is generally
+// not at the texel centre, and on a slanted surface the stored distance
+// there differs from the point's own by up to half a pixel's footprint
+// times the slope; comparing with this extrapolation instead keeps the
+// history of planar surfaces under camera motion. At grazing angles
+// (|n.ray| < 0.05) the point's own distance is used.
+float deepExpectedPreviousDistance(vec3 X, vec3 n, mat4 toPrevious, mat4 prevProjection,
+  ivec2 texel, vec2 size)
+{
+  vec3 P = (toPrevious * vec4(X, 1.0)).xyz;
+  vec3 np = mat3(toPrevious) * n;
+  vec2 ndc = (vec2(texel) + 0.5) / size * 2.0 - 1.0;
+  vec3 A = deepRayPoint(ndc, 0.0, prevProjection);
+  vec3 B = deepRayPoint(ndc, 1.0, prevProjection) - A;
+  float nb = dot(np, B);
+  if (!(abs(nb) >= 0.05 * length(B)))
+  {
+    return -P.z;
+  }
+  return dot(np, P - A) / nb;
+}
