@@ -46,7 +46,11 @@
  * with L_ind,t-1 = rho boost E_t-1 / pi from the last frame's final
  * irradiance, reverse-reprojected to Y and taken from whichever of the last
  * frame's layers lies within the reprojection tolerance of it (0 where
- * none does). Frame t therefore adds the t-th bounce (Figure 4) and
+ * none does). The comparison is made at the centre of the previous texel
+ * the point falls into: Y's plane (its current normal) is met with that
+ * texel's ray, so that a slanted surface is not rejected for the sub-pixel
+ * offset of the reprojection (at grazing angles, |n.ray| < 0.05, Y's own
+ * depth is used). Frame t therefore adds the t-th bounce (Figure 4) and
  * propagates light across both layers (Figure 5). delta = Damping.
  * Temporal filter: E_t = E (1 - alpha) + reproject(E_t-1) alpha where the
  * reprojected point lies within the tolerance of either previous layer,
