@@ -171,7 +171,7 @@ struct vtkDeepRadiosityRendererState
     }
     return quantity == vtkDeepRadiosityPass::IRRADIANCE ? this->History[this->HistoryCurrent][layer]
       : quantity == vtkDeepRadiosityPass::INDIRECT_RADIANCE ? this->Targets[INDIRECT][layer]
-                                                             : nullptr;
+                                                            : nullptr;
   }
 };
 
@@ -250,17 +250,18 @@ void vtkDeepRadiosityPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Damping: " << this->Damping << "\n";
   os << indent << "TemporalAlpha: " << this->TemporalAlpha << "\n";
   os << indent << "ReprojectionTolerance: " << this->ReprojectionTolerance << "\n";
-  os << indent << "AutomaticReprojectionTolerance: "
-     << (this->AutomaticReprojectionTolerance ? "On" : "Off") << "\n";
-  os << indent << "AutomaticReprojectionFraction: " << this->AutomaticReprojectionFraction
+  os << indent
+     << "AutomaticReprojectionTolerance: " << (this->AutomaticReprojectionTolerance ? "On" : "Off")
      << "\n";
+  os << indent << "AutomaticReprojectionFraction: " << this->AutomaticReprojectionFraction << "\n";
   os << indent << "EffectiveReprojectionTolerance: " << this->EffectiveReprojectionTolerance
      << "\n";
   os << indent << "ConfidenceFallback: " << (this->ConfidenceFallback ? "On" : "Off") << "\n";
   os << indent << "EnvironmentIrradiance: (" << this->EnvironmentIrradiance[0] << ", "
      << this->EnvironmentIrradiance[1] << ", " << this->EnvironmentIrradiance[2] << ")\n";
-  os << indent << "AutomaticEnvironmentIrradiance: "
-     << (this->AutomaticEnvironmentIrradiance ? "On" : "Off") << "\n";
+  os << indent
+     << "AutomaticEnvironmentIrradiance: " << (this->AutomaticEnvironmentIrradiance ? "On" : "Off")
+     << "\n";
   os << indent << "EffectiveEnvironmentIrradiance: (" << this->EffectiveEnvironmentIrradiance[0]
      << ", " << this->EffectiveEnvironmentIrradiance[1] << ", "
      << this->EffectiveEnvironmentIrradiance[2] << ")\n";
@@ -551,8 +552,7 @@ void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
   // History: reset on a resize, a new layer count, and when this renderer
   // was rendered without this pass since the history's frame.
   const bool consecutive = state.Renders.Consecutive();
-  if (!consecutive || state.Width != width || state.Height != height ||
-    state.LayerCount != layers)
+  if (!consecutive || state.Width != width || state.Height != height || state.LayerCount != layers)
   {
     state.ResetHistory();
   }
@@ -609,8 +609,8 @@ void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
   float projXY[4], projT[4];
   vtkDeepScreenSpace::ProjectionUniforms(projection, projXY, projT);
   float toPrevious[16], previousProjection[16];
-  vtkDeepScreenSpace::ReprojectionUniforms(view, projection, state.HistoryValid,
-    state.PreviousView, state.PreviousProjection, toPrevious, previousProjection);
+  vtkDeepScreenSpace::ReprojectionUniforms(view, projection, state.HistoryValid, state.PreviousView,
+    state.PreviousProjection, toPrevious, previousProjection);
   int units[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES];
   for (int q : GBufferQuantities)
   {
@@ -630,21 +630,24 @@ void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
   // Binds `textures` (per layer) of this frame to units and sets the
   // sampler uniforms name0, name1.
   auto bindPair = [](vtkShaderProgram* program, const char* name,
-                    vtkSmartPointer<vtkTextureObject>(&textures)[Layers]) {
+                    vtkSmartPointer<vtkTextureObject>(&textures)[Layers])
+  {
     for (int j = 0; j < Layers; ++j)
     {
       textures[j]->Activate();
       program->SetUniformi((name + std::to_string(j)).c_str(), textures[j]->GetTextureUnit());
     }
   };
-  auto unbindPair = [](vtkSmartPointer<vtkTextureObject>(&textures)[Layers]) {
+  auto unbindPair = [](vtkSmartPointer<vtkTextureObject>(&textures)[Layers])
+  {
     for (auto& t : textures)
     {
       t->Deactivate();
     }
   };
   auto attach = [&](vtkSmartPointer<vtkTextureObject>(&a)[Layers],
-                  vtkSmartPointer<vtkTextureObject>(*b)[Layers]) {
+                  vtkSmartPointer<vtkTextureObject>(*b)[Layers])
+  {
     int n = 0;
     for (auto& t : a)
     {
@@ -901,7 +904,8 @@ bool vtkDeepRadiosityPass::CaptureIrradiance(vtkImageData* output, vtkRenderer* 
   GLint previous2D = 0, previousArray = 0;
   glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous2D);
   glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &previousArray);
-  auto download = [&](vtkTextureObject* texture) {
+  auto download = [&](vtkTextureObject* texture)
+  {
     std::vector<float> values(pixels * 4);
     glBindTexture(GL_TEXTURE_2D, texture->GetHandle());
     glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, values.data());
@@ -924,7 +928,8 @@ bool vtkDeepRadiosityPass::CaptureIrradiance(vtkImageData* output, vtkRenderer* 
     const std::vector<float> filtered = download(state->Targets[FILTERED][j]);
     const std::vector<float> raw = download(state->Targets[RAW][j]);
     const std::string suffix = "_" + std::to_string(j);
-    auto makeArray = [&](const char* name, int components) {
+    auto makeArray = [&](const char* name, int components)
+    {
       vtkNew<vtkFloatArray> array;
       array->SetName((name + suffix).c_str());
       array->SetNumberOfComponents(components);
@@ -944,7 +949,8 @@ bool vtkDeepRadiosityPass::CaptureIrradiance(vtkImageData* output, vtkRenderer* 
     output->GetPointData()->AddArray(valid);
     for (size_t p = 0; p < pixels; ++p)
     {
-      const bool isValid = j < state->LayerCount && j < arrayDepth && distance[j * pixels + p] > 0.0f;
+      const bool isValid =
+        j < state->LayerCount && j < arrayDepth && distance[j * pixels + p] > 0.0f;
       valid->SetValue(p, isValid ? 1 : 0);
       for (int k = 0; k < 3; ++k)
       {
@@ -961,7 +967,8 @@ bool vtkDeepRadiosityPass::CaptureIrradiance(vtkImageData* output, vtkRenderer* 
   glBindTexture(GL_TEXTURE_2D_ARRAY, previousArray);
   ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
 
-  auto addField = [&](const char* name, std::initializer_list<double> values) {
+  auto addField = [&](const char* name, std::initializer_list<double> values)
+  {
     vtkNew<vtkDoubleArray> array;
     array->SetName(name);
     for (double v : values)

@@ -96,8 +96,7 @@ double VisiblePropDiagonal(vtkRenderer* renderer)
   {
     return 0.0;
   }
-  const double extent[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2],
-    bounds[5] - bounds[4] };
+  const double extent[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
   const double diagonal = vtkMath::Norm(extent);
   return std::isfinite(diagonal) ? diagonal : 0.0;
 }

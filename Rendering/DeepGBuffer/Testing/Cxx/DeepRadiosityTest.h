@@ -106,8 +106,9 @@ inline bool RenderFrames(const Scene& scene, vtkDeepRadiosityPass* pass, int fra
 inline double At(vtkImageData* image, const std::string& name, int i, int j, int c = 0)
 {
   const int w = image->GetDimensions()[0];
-  return image->GetPointData()->GetArray(name.c_str())->GetComponent(
-    static_cast<vtkIdType>(j) * w + i, c);
+  return image->GetPointData()
+    ->GetArray(name.c_str())
+    ->GetComponent(static_cast<vtkIdType>(j) * w + i, c);
 }
 
 // Sum of the RGB components of `name` over every pixel.

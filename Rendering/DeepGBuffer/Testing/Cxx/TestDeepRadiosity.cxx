@@ -55,8 +55,9 @@ Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerC
     return g;
   }
   const double eps = vtkDeepRadiosityPass::COSINE_EPSILON;
-  const double* P = vtkDoubleArray::SafeDownCast(
-    layers->GetFieldData()->GetArray("ProjectionMatrix"))->GetPointer(0);
+  const double* P =
+    vtkDoubleArray::SafeDownCast(layers->GetFieldData()->GetArray("ProjectionMatrix"))
+      ->GetPointer(0);
   double nX[3];
   Layer(layers, "Normal", layer)->GetTuple(static_cast<vtkIdType>(j) * W + i, nX);
   const double rp = radius * P[5] * 0.5 * H / (P[14] * X0[2] + P[15]);
@@ -161,7 +162,8 @@ void TestReference(int preset)
   pass->SetPreset(preset);
   Frame f;
   // A white box in front of the corner puts floor and wall into layer 1.
-  auto scene = [](vtkRenderer* r) {
+  auto scene = [](vtkRenderer* r)
+  {
     RedWallScene(r);
     const double center[3] = { 1.6, 0.5, 0.6 }, size[3] = { 0.6, 1.0, 0.6 };
     Diffuse(AddBox(r, center, size), 1, 1, 1);
@@ -171,8 +173,8 @@ void TestReference(int preset)
     return;
   }
   Check(AllFinite(f.Radiosity), "radiosity finite");
-  const int layerCount = static_cast<int>(
-    f.Radiosity->GetFieldData()->GetArray("NumberOfLayers")->GetTuple1(0));
+  const int layerCount =
+    static_cast<int>(f.Radiosity->GetFieldData()->GetArray("NumberOfLayers")->GetTuple1(0));
   Check(layerCount == 2, "two layers");
   int finest = 0;
   while ((std::max(f.Width, f.Height) >> (finest + 1)) > 0)
@@ -196,9 +198,9 @@ void TestReference(int preset)
           continue;
         }
         ++compared;
-        const Gather g = ReferenceGather(f.Layers, i, j, layer, layerCount,
-          pass->GetNumberOfSamples(), radius, pass->GetMipThreshold(), minMip, maxMip,
-          pass->GetUseNormalTest());
+        const Gather g =
+          ReferenceGather(f.Layers, i, j, layer, layerCount, pass->GetNumberOfSamples(), radius,
+            pass->GetMipThreshold(), minMip, maxMip, pass->GetUseNormalTest());
         bool same = std::abs(At(f.Radiosity, "RawConfidence" + suffix, i, j) - g.Confidence) < 1e-6;
         for (int c = 0; c < 3; ++c)
         {
@@ -300,9 +302,8 @@ void TestBleeding()
       if (At(g.Radiosity, "Valid_0", i, j) == 0)
       {
         ++background;
-        wrongBackground += pixels->GetComponent(p, 0) + pixels->GetComponent(p, 1) +
-              pixels->GetComponent(p, 2) >
-            0
+        wrongBackground +=
+          pixels->GetComponent(p, 0) + pixels->GetComponent(p, 1) + pixels->GetComponent(p, 2) > 0
           ? 1
           : 0;
         continue;
@@ -383,8 +384,10 @@ void TestNormalTest()
 
 void TestBoost()
 {
-  auto floorScene = [](double r, double g, double b) {
-    return [=](vtkRenderer* renderer) {
+  auto floorScene = [](double r, double g, double b)
+  {
+    return [=](vtkRenderer* renderer)
+    {
       RedWallScene(renderer);
       vtkActor* floor = vtkActor::SafeDownCast(renderer->GetActors()->GetItemAsObject(0));
       Diffuse(floor, r, g, b);
@@ -410,8 +413,7 @@ void TestBoost()
     {
       double p[3];
       const vtkIdType pixel = static_cast<vtkIdType>(j) * plain.Width + i;
-      if (!WorldPosition(plain.Layers, 0, i, j, p) || std::abs(p[1]) > 1e-3 ||
-        p[0] < 0.01)
+      if (!WorldPosition(plain.Layers, 0, i, j, p) || std::abs(p[1]) > 1e-3 || p[0] < 0.01)
       {
         continue; // not the floor
       }
@@ -423,8 +425,8 @@ void TestBoost()
         // Eq. 7 of the stored (8-bit) albedo: (max - min) / max.
         double rho[3];
         Layer(boosted.Layers, "Albedo", 0)->GetTuple(pixel, rho);
-        const double boost = (std::max({ rho[0], rho[1], rho[2] }) -
-                               std::min({ rho[0], rho[1], rho[2] })) /
+        const double boost =
+          (std::max({ rho[0], rho[1], rho[2] }) - std::min({ rho[0], rho[1], rho[2] })) /
           std::max({ rho[0], rho[1], rho[2] });
         ratio = At(boosted.Radiosity, "IndirectRadiance_0", i, j, 0) / a;
         worst = std::max(worst, std::abs(ratio - boost));
@@ -472,7 +474,8 @@ void TestFallback()
           Layer(b.Layers, "Albedo", 0)->GetComponent(static_cast<vtkIdType>(j) * a.Width + i, k);
         const double expected = c * At(a.Radiosity, "IndirectRadiance_0", i, j, k) +
           (1.0 - c) * rho * environment[k] / Pi;
-        worst = std::max(worst, std::abs(At(b.Radiosity, "IndirectRadiance_0", i, j, k) - expected));
+        worst =
+          std::max(worst, std::abs(At(b.Radiosity, "IndirectRadiance_0", i, j, k) - expected));
       }
     }
   }
@@ -486,7 +489,8 @@ void TestFallback()
   auto automatic = SingleBouncePass(1.0);
   Frame c;
   RenderFrames(
-    [](vtkRenderer* r) {
+    [](vtkRenderer* r)
+    {
       RedWallScene(r);
       r->SetAmbient(0.2, 0.3, 0.4);
     },
@@ -527,13 +531,13 @@ void TestPresets()
   Check(warnings.Count == 1 && pass->GetNumberOfSamples() == 30, "unknown preset ignored");
   std::ostringstream os;
   pass->Print(os);
-  for (const char* name : { "Radius", "AutomaticRadius", "AutomaticRadiusFraction",
-         "EffectiveRadius", "NumberOfSamples", "UseNormalTest", "UseColorBoost", "FilterTaps",
-         "BlurPlaneTolerance", "BlurNormalPower", "MipThreshold", "MinimumMipLevel",
-         "MaximumMipLevel", "Damping", "TemporalAlpha", "ReprojectionTolerance",
-         "AutomaticReprojectionTolerance", "AutomaticReprojectionFraction",
-         "EffectiveReprojectionTolerance", "ConfidenceFallback", "EnvironmentIrradiance",
-         "AutomaticEnvironmentIrradiance", "EffectiveEnvironmentIrradiance", "GBufferPass" })
+  for (const char* name :
+    { "Radius", "AutomaticRadius", "AutomaticRadiusFraction", "EffectiveRadius", "NumberOfSamples",
+      "UseNormalTest", "UseColorBoost", "FilterTaps", "BlurPlaneTolerance", "BlurNormalPower",
+      "MipThreshold", "MinimumMipLevel", "MaximumMipLevel", "Damping", "TemporalAlpha",
+      "ReprojectionTolerance", "AutomaticReprojectionTolerance", "AutomaticReprojectionFraction",
+      "EffectiveReprojectionTolerance", "ConfidenceFallback", "EnvironmentIrradiance",
+      "AutomaticEnvironmentIrradiance", "EffectiveEnvironmentIrradiance", "GBufferPass" })
   {
     Check(os.str().find(std::string(name) + ":") != std::string::npos,
       std::string("PrintSelf prints ") + name);

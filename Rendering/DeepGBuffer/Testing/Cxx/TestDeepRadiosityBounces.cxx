@@ -91,8 +91,8 @@ void TestEnergy(double alpha)
     pass->CaptureIrradiance(radiosity, renderer);
     total[k] = Total(radiosity, "IndirectRadiance_0") + Total(radiosity, "IndirectRadiance_1");
     layer1[k] = Total(radiosity, "IndirectRadiance_1");
-    largest = std::max(
-      { largest, Maximum(radiosity, "IndirectRadiance_0"), Maximum(radiosity, "IndirectRadiance_1") });
+    largest = std::max({ largest, Maximum(radiosity, "IndirectRadiance_0"),
+      Maximum(radiosity, "IndirectRadiance_1") });
     finite = finite && AllFinite(radiosity) && Minimum(radiosity, "IndirectRadiance_0") >= 0.0;
     if (k > 0 && total[k] < total[k - 1] * (1.0 - 1e-5))
     {
@@ -175,8 +175,8 @@ void TestReprojection()
         expected = e0 <= e1 ? "Irradiance_0" : "Irradiance_1";
         (e0 <= e1 ? kept : fromLayer1)++;
       }
-      vtkImageData* from = std::string(expected) == "FilteredIrradiance_0" ? after.GetPointer()
-                                                                          : before.GetPointer();
+      vtkImageData* from =
+        std::string(expected) == "FilteredIrradiance_0" ? after.GetPointer() : before.GetPointer();
       for (int c = 0; c < 3; ++c)
       {
         if (std::abs(At(after, "Irradiance_0", i, j, c) - At(from, expected, i, j, c)) >
@@ -247,7 +247,8 @@ void TestMotion()
         for (int c = 0; c < 3; ++c)
         {
           fresh = fresh &&
-            At(radiosity, "Irradiance_0", i, j, c) == At(radiosity, "FilteredIrradiance_0", i, j, c);
+            At(radiosity, "Irradiance_0", i, j, c) ==
+              At(radiosity, "FilteredIrradiance_0", i, j, c);
         }
         // Pixels without light (E = 0 both ways) say nothing.
         fresh = fresh && At(radiosity, "FilteredIrradiance_0", i, j, 0) > 0.0;

@@ -122,12 +122,12 @@ int TestDeepRadiosityDemoImage(int argc, char* argv[])
   const double fraction = static_cast<double>(confident) / std::max(surface, 1L);
   const double meanConfidence = confidenceSum / std::max(surface, 1L);
   const double growth = Total(last, "IndirectRadiance_0") / Total(first, "IndirectRadiance_0");
-  std::printf("demo scene: %ld surface px (radius %.4g, N %d), mean L_ind %.4f, largest %.4f, "
-              "mean confidence %.3f, > 0.25 on %.3f, total frame %d / frame 1 = %.4f, change since the "
-              "displayed frame %.2e\n",
+  std::printf(
+    "demo scene: %ld surface px (radius %.4g, N %d), mean L_ind %.4f, largest %.4f, "
+    "mean confidence %.3f, > 0.25 on %.3f, total frame %d / frame 1 = %.4f, change since the "
+    "displayed frame %.2e\n",
     surface, pass->GetEffectiveRadius(), pass->GetNumberOfSamples(), mean, largest, meanConfidence,
-    fraction,
-    frames, growth, changed);
+    fraction, frames, growth, changed);
   Check(AllFinite(last) && Minimum(last, "IndirectRadiance_0") >= 0.0, "finite, non-negative");
   Check(surface > W * H / 2, "the scene fills the view");
   Check(mean >= 0.09 && mean <= 0.13, "mean L_ind in the measured range (0.108)");

@@ -107,7 +107,8 @@ void TestParameters()
     { "HIGH_QUALITY", [](vtkDeepRadiosityPass* p) { p->SetPresetToHighQuality(); } },
     { "HIGH_PERFORMANCE", [](vtkDeepRadiosityPass* p) { p->SetPresetToHighPerformance(); } },
     { "no filter, MIP 0..0",
-      [](vtkDeepRadiosityPass* p) {
+      [](vtkDeepRadiosityPass* p)
+      {
         p->SetFilterTaps(1);
         p->SetMinimumMipLevel(0);
         p->SetMaximumMipLevel(0);
@@ -150,8 +151,8 @@ void ExpectDark(const char* what, const Scene& scene, const Configure& setup, in
     return;
   }
   Healthy(f, what);
-  const double largest =
-    std::max(Maximum(f.Radiosity, "IndirectRadiance_0"), Maximum(f.Radiosity, "IndirectRadiance_1"));
+  const double largest = std::max(
+    Maximum(f.Radiosity, "IndirectRadiance_0"), Maximum(f.Radiosity, "IndirectRadiance_1"));
   std::printf("%s: largest L_ind %g, %d warning(s)\n", what, largest, warnings.Count);
   Check(largest == 0.0, std::string(what) + ": no indirect light");
   Check(warnings.Count == expectedWarnings, std::string(what) + ": warnings");
@@ -160,15 +161,19 @@ void ExpectDark(const char* what, const Scene& scene, const Configure& setup, in
 
 void TestDark()
 {
-  ExpectDark("no lights",
-    [](vtkRenderer* r) {
+  ExpectDark(
+    "no lights",
+    [](vtkRenderer* r)
+    {
       RedWallScene(r);
       r->RemoveAllLights();
       r->AutomaticLightCreationOff();
     },
     [](vtkDeepRadiosityPass*) {}, 1);
-  ExpectDark("black scene",
-    [](vtkRenderer* r) {
+  ExpectDark(
+    "black scene",
+    [](vtkRenderer* r)
+    {
       RedWallScene(r);
       for (int a = 0; a < r->GetActors()->GetNumberOfItems(); ++a)
       {
@@ -176,10 +181,11 @@ void TestDark()
       }
     },
     [](vtkDeepRadiosityPass*) {}, 0);
-  ExpectDark("radius 0", [](vtkRenderer* r) { RedWallScene(r); },
+  ExpectDark(
+    "radius 0", [](vtkRenderer* r) { RedWallScene(r); },
     [](vtkDeepRadiosityPass* p) { p->SetRadius(0.0); }, 0);
-  ExpectDark("empty scene", [](vtkRenderer* r) { AddSun(r, 1, 1, 1); },
-    [](vtkDeepRadiosityPass*) {}, 1);
+  ExpectDark(
+    "empty scene", [](vtkRenderer* r) { AddSun(r, 1, 1, 1); }, [](vtkDeepRadiosityPass*) {}, 1);
 }
 
 // Six white quads facing inwards (4 x 3 x 4), lit by a sun (VTK's lights
@@ -249,8 +255,9 @@ void TestOneLayer()
   }
   Healthy(f, "one layer");
   const double layers = f.Radiosity->GetFieldData()->GetArray("NumberOfLayers")->GetTuple1(0);
-  std::printf("one G-buffer layer: %g radiosity layer(s), %g valid layer-1 px, largest L_ind %.3f\n",
-    layers, Total(f.Radiosity, "Valid_1"), Maximum(f.Radiosity, "IndirectRadiance_0"));
+  std::printf(
+    "one G-buffer layer: %g radiosity layer(s), %g valid layer-1 px, largest L_ind %.3f\n", layers,
+    Total(f.Radiosity, "Valid_1"), Maximum(f.Radiosity, "IndirectRadiance_0"));
   Check(pass->GetGBufferPass() == gbuffer.GetPointer(), "shared G-buffer pass");
   Check(layers == 1 && Total(f.Radiosity, "Valid_1") == 0 &&
       Maximum(f.Radiosity, "IndirectRadiance_1") == 0 &&
@@ -266,7 +273,8 @@ void TestBadParameters()
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   int expected = 0;
-  auto expect = [&](bool ok, const std::string& what) {
+  auto expect = [&](bool ok, const std::string& what)
+  {
     ++expected;
     Check(ok && warnings.Count == expected, what);
   };
@@ -295,8 +303,8 @@ void TestBadParameters()
   pass->SetEnvironmentIrradiance(nan, 1.0, 1.0);
   expect(pass->GetAutomaticEnvironmentIrradiance(), "NaN environment keeps the automatic one");
   pass->SetEnvironmentIrradiance(-1.0, 0.5, 0.25);
-  expect(pass->GetEnvironmentIrradiance()[0] == 0.0 &&
-      pass->GetEnvironmentIrradiance()[1] == 0.5 && !pass->GetAutomaticEnvironmentIrradiance(),
+  expect(pass->GetEnvironmentIrradiance()[0] == 0.0 && pass->GetEnvironmentIrradiance()[1] == 0.5 &&
+      !pass->GetAutomaticEnvironmentIrradiance(),
     "negative environment component becomes 0");
   pass->SetGBufferPass(nullptr);
   expect(pass->GetGBufferPass() != nullptr, "null G-buffer pass refused");
