@@ -76,14 +76,6 @@ vtkStandardNewMacro(vtkDeepAmbientObscuranceOpaqueStep);
 
 namespace
 {
-// Mara et al. 2016, Listing 3: tau[N - 1] is the discrepancy-minimising
-// number of spiral turns for N samples, N = 1..98.
-const int SpiralTurns[vtkDeepAmbientObscurancePass::MAXIMUM_NUMBER_OF_SAMPLES] = { 1, 1, 2, 3,
-  2, 5, 2, 3, 2, 3, 3, 5, 5, 3, 4, 7, 5, 5, 7, 9, 8, 5, 5, 7, 7, 7, 8, 5, 8, 11, 12, 7, 10, 13, 8,
-  11, 8, 7, 14, 11, 11, 13, 12, 13, 19, 17, 13, 11, 18, 19, 11, 11, 14, 17, 21, 15, 16, 17, 18, 13,
-  17, 11, 17, 19, 18, 25, 18, 19, 19, 29, 21, 19, 27, 31, 29, 21, 18, 17, 29, 31, 31, 23, 18, 25,
-  26, 25, 23, 19, 34, 19, 27, 21, 25, 39, 29, 17, 21, 27 };
-
 enum Target
 {
   RAW = 0,
@@ -257,11 +249,7 @@ void vtkDeepAmbientObscurancePass::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 int vtkDeepAmbientObscurancePass::GetSpiralTurns(int numberOfSamples)
 {
-  if (numberOfSamples < 1 || numberOfSamples > MAXIMUM_NUMBER_OF_SAMPLES)
-  {
-    return 0;
-  }
-  return SpiralTurns[numberOfSamples - 1];
+  return vtkDeepScreenSpace::SpiralTurns(numberOfSamples);
 }
 
 //------------------------------------------------------------------------------

@@ -1,6 +1,5 @@
 #include "vtkDeepRadiosityPass.h"
 
-#include "vtkDeepAmbientObscurancePass.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -238,7 +237,7 @@ void vtkDeepRadiosityPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AutomaticRadiusFraction: " << this->AutomaticRadiusFraction << "\n";
   os << indent << "EffectiveRadius: " << this->EffectiveRadius << "\n";
   os << indent << "NumberOfSamples: " << this->NumberOfSamples << " (spiral turns "
-     << vtkDeepAmbientObscurancePass::GetSpiralTurns(this->NumberOfSamples) << ")\n";
+     << vtkDeepScreenSpace::SpiralTurns(this->NumberOfSamples) << ")\n";
   os << indent << "UseNormalTest: " << (this->UseNormalTest ? "On" : "Off") << "\n";
   os << indent << "UseColorBoost: " << (this->UseColorBoost ? "On" : "Off") << "\n";
   os << indent << "FilterTaps: " << this->FilterTaps << "\n";
@@ -709,8 +708,8 @@ void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
     bindPair(program, "deepBounce", state.Targets[BOUNCE]);
     program->SetUniformi("deepLayers", layers);
     program->SetUniformi("deepSamples", this->NumberOfSamples);
-    program->SetUniformf("deepTurns",
-      static_cast<float>(vtkDeepAmbientObscurancePass::GetSpiralTurns(this->NumberOfSamples)));
+    program->SetUniformf(
+      "deepTurns", static_cast<float>(vtkDeepScreenSpace::SpiralTurns(this->NumberOfSamples)));
     program->SetUniformf("deepRadius", static_cast<float>(radius));
     program->SetUniformf("deepMipThreshold", static_cast<float>(this->MipThreshold));
     program->SetUniformi("deepMinMip", minMip);

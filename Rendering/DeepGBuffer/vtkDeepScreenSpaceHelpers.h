@@ -22,6 +22,10 @@ class vtkWindow;
 
 namespace vtkDeepScreenSpace
 {
+/// Number of spiral turns tau for N samples, the paper's Listing 3
+/// (N = 1..98); 0 outside that range.
+int SpiralTurns(int numberOfSamples);
+
 /// Builds (first call) or readies a full-screen quad whose fragment shader
 /// `source` may use //VTK::DeepGBuffer::Common and
 /// //VTK::DeepScreenSpace::Common. True when the program compiled.
