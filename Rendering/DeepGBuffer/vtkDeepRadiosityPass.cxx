@@ -486,7 +486,51 @@ void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
     }
     return;
   }
+  if (!this->UpdateRadiosity(s))
+  {
+    gbuffer->ResolveToFramebuffer(s);
+    return;
+  }
 
+  // Composite: layer-0 image and depth, then colour = RADIANCE + L_ind.
+  gbuffer->ResolveToFramebuffer(s);
+  if (gbuffer->GetDisplayQuantity() != vtkDeepGBufferPass::RADIANCE)
+  {
+    return;
+  }
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  vtkOpenGLState* ostate = window->GetState();
+  vtkDeepRadiosityRendererState& state = *in.States[renderer];
+  vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
+  vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(ostate);
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ZERO, GL_ZERO, GL_ONE);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDepthMask(GL_FALSE);
+  vtkShaderProgram* program = in.CompositeQuad->Program;
+  window->GetShaderCache()->ReadyShaderProgram(program);
+  vtkTextureObject* indirect = state.Targets[INDIRECT][0];
+  indirect->Activate();
+  const int distanceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
+  const int radianceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::RADIANCE);
+  program->SetUniformi("deepIndirect", indirect->GetTextureUnit());
+  program->SetUniformi("deepDistance", distanceUnit);
+  program->SetUniformi("deepRadiance", radianceUnit);
+  in.CompositeQuad->Render();
+  gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::RADIANCE);
+  gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
+  indirect->Deactivate();
+  vtkOpenGLCheckErrorMacro("failed after the radiosity composite");
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
+{
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLRenderer* renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  vtkDeepGBufferPass* gbuffer = this->GBufferPass;
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   vtkOpenGLState* ostate = window->GetState();
   vtkOpenGLClearErrorMacro();
@@ -582,8 +626,7 @@ void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
   if (!allocated)
   {
     vtkErrorMacro("Could not allocate the radiosity targets.");
-    gbuffer->ResolveToFramebuffer(s);
-    return;
+    return false;
   }
   state.Width = width;
   state.Height = height;
@@ -601,8 +644,7 @@ void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
   if (!ready)
   {
     vtkErrorMacro("The radiosity shaders failed to compile.");
-    gbuffer->ResolveToFramebuffer(s);
-    return;
+    return false;
   }
 
   float projXY[4], projT[4];
@@ -781,28 +823,6 @@ void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
   std::copy(view, view + 16, state.PreviousView);
   std::copy(projection, projection + 16, state.PreviousProjection);
 
-  // Composite: layer-0 image and depth, then colour = RADIANCE + L_ind.
-  gbuffer->ResolveToFramebuffer(s);
-  if (gbuffer->GetDisplayQuantity() == vtkDeepGBufferPass::RADIANCE)
-  {
-    vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
-    vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(ostate);
-    ostate->vtkglEnable(GL_BLEND);
-    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ZERO, GL_ZERO, GL_ONE);
-    ostate->vtkglDisable(GL_DEPTH_TEST);
-    ostate->vtkglDepthMask(GL_FALSE);
-    vtkShaderProgram* program = in.CompositeQuad->Program;
-    window->GetShaderCache()->ReadyShaderProgram(program);
-    vtkTextureObject* indirect = state.Targets[INDIRECT][0];
-    indirect->Activate();
-    program->SetUniformi("deepIndirect", indirect->GetTextureUnit());
-    program->SetUniformi("deepDistance", distanceUnit);
-    program->SetUniformi("deepRadiance", units[vtkDeepGBufferPass::RADIANCE]);
-    in.CompositeQuad->Render();
-    indirect->Deactivate();
-  }
   for (int q : GBufferQuantities)
   {
     if (units[q] >= 0)
@@ -817,6 +837,7 @@ void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
   std::copy(this->EffectiveEnvironmentIrradiance, this->EffectiveEnvironmentIrradiance + 3,
     state.Environment);
   vtkOpenGLCheckErrorMacro("failed after vtkDeepRadiosityPass");
+  return true;
 }
 
 //------------------------------------------------------------------------------

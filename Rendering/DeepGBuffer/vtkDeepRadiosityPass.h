@@ -380,6 +380,18 @@ public:
    */
   bool CaptureIrradiance(vtkImageData* output, vtkRenderer* renderer = nullptr);
 
+  /**
+   * Computes this frame's radiosity textures (bounce input, gather,
+   * filters, history, INDIRECT_RADIANCE) for the renderer of `s` from the
+   * layers GetGBufferPass() has just built, without drawing into the
+   * renderer's framebuffer. Render() calls it between RenderLayers and its
+   * composite; a pass that composites the radiosity itself calls it after
+   * its own GetGBufferPass()->RenderLayers(s) returned true, then reads the
+   * textures with ActivateTexture. Returns false (with an error) when the
+   * targets or shaders are unavailable.
+   */
+  bool UpdateRadiosity(const vtkRenderState* s);
+
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 

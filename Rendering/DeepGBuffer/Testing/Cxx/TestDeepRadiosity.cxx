@@ -18,17 +18,62 @@
 //   boost(rho) = 0.498 times the light of boost 1 (1e-5), a white floor none;
 // - the confidence fallback is c L + (1 - c) rho E_env / pi (1e-5), and the
 //   automatic E_env is pi times the renderer's ambient colour;
+// - UpdateRadiosity and ActivateTexture called from another pass's opaque
+//   step give Render's radiosity (1e-6) and leave the framebuffer to it;
 // - presets set Table 2's values; PrintSelf prints every parameter.
 
 #include "DeepRadiosityTest.h"
 
 #include "vtkDeepAmbientObscurancePass.h"
+#include "vtkObjectFactory.h"
+#include "vtkRenderState.h"
 
 #include <algorithm>
 #include <sstream>
 #include <vector>
 
 using namespace DeepRadiosityTest;
+
+// A composite pass of its own, as vtkDeepGIPass will be: its opaque step
+// builds the layers, calls UpdateRadiosity, binds INDIRECT_RADIANCE and
+// draws only the plain G-buffer image.
+class ExternalOpaqueStep : public vtkRenderPass
+{
+public:
+  static ExternalOpaqueStep* New();
+  vtkTypeMacro(ExternalOpaqueStep, vtkRenderPass);
+  vtkDeepRadiosityPass* Radiosity = nullptr;
+  int Units = 0;   // frames in which INDIRECT_RADIANCE could be bound
+  int Updates = 0; // frames in which UpdateRadiosity succeeded
+  void Render(const vtkRenderState* s) override
+  {
+    vtkDeepGBufferPass* gbuffer = this->Radiosity->GetGBufferPass();
+    if (gbuffer->RenderLayers(s) && this->Radiosity->UpdateRadiosity(s))
+    {
+      ++this->Updates;
+      const int unit = this->Radiosity->ActivateTexture(
+        s->GetRenderer(), vtkDeepRadiosityPass::INDIRECT_RADIANCE, 0);
+      this->Units += unit >= 0 ? 1 : 0;
+      this->Radiosity->DeactivateTexture(
+        s->GetRenderer(), vtkDeepRadiosityPass::INDIRECT_RADIANCE, 0);
+      gbuffer->ResolveToFramebuffer(s);
+    }
+  }
+};
+vtkStandardNewMacro(ExternalOpaqueStep);
+
+class ExternalComposite : public vtkRenderPass
+{
+public:
+  static ExternalComposite* New();
+  vtkTypeMacro(ExternalComposite, vtkRenderPass);
+  vtkNew<ExternalOpaqueStep> Step;
+  void Render(const vtkRenderState* s) override
+  {
+    this->Step->Radiosity->GetGBufferPass()->RenderFrame(s, this->Step);
+  }
+};
+vtkStandardNewMacro(ExternalComposite);
 
 namespace
 {
@@ -504,6 +549,64 @@ void TestFallback()
   automatic->ReleaseGraphicsResources(c.Window);
 }
 
+// UpdateRadiosity from another pass gives the same radiosity as Render and
+// leaves the framebuffer to that pass (here: the plain G-buffer image).
+void TestExternalComposite()
+{
+  auto own = SingleBouncePass(1.5);
+  auto used = SingleBouncePass(1.5);
+  Frame a, b;
+  vtkNew<ExternalComposite> composite;
+  composite->Step->Radiosity = used;
+  if (!RenderFrames([](vtkRenderer* r) { RedWallScene(r); }, own, 2, a))
+  {
+    return;
+  }
+  b.Width = a.Width;
+  b.Height = a.Height;
+  b.Window = MakeWindow(b.Width, b.Height);
+  b.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  b.Window->AddRenderer(b.Renderer);
+  RedWallScene(b.Renderer);
+  b.Renderer->ResetCameraClippingRange();
+  b.Renderer->SetPass(composite);
+  b.Window->Render();
+  b.Window->Render();
+  const bool ok = used->CaptureIrradiance(b.Radiosity, b.Renderer) &&
+    used->GetGBufferPass()->CaptureLayers(b.Layers, b.Renderer);
+  Check(ok && composite->Step->Updates == 2 && composite->Step->Units == 2,
+    "UpdateRadiosity and ActivateTexture from another pass");
+  if (!ok)
+  {
+    return;
+  }
+  vtkDataArray* x = a.Radiosity->GetPointData()->GetArray("IndirectRadiance_0");
+  vtkDataArray* y = b.Radiosity->GetPointData()->GetArray("IndirectRadiance_0");
+  double worst = 0.0, image = 0.0;
+  vtkNew<vtkImageData> rgb;
+  ReadWindow(b.Window, rgb, nullptr);
+  for (vtkIdType p = 0; p < x->GetNumberOfTuples(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      worst = std::max(worst, std::abs(x->GetComponent(p, c) - y->GetComponent(p, c)));
+      if (Layer(b.Layers, "Valid", 0)->GetTuple1(p) != 0)
+      {
+        image = std::max(image,
+          std::abs(rgb->GetPointData()->GetScalars()->GetComponent(p, c) -
+            255.0 * std::min(1.0, Layer(b.Layers, "Radiance", 0)->GetComponent(p, c))));
+      }
+    }
+  }
+  std::printf("external composite: largest |L_ind - L_ind of Render| %.3g, largest |image - "
+              "RADIANCE| %.2f levels\n",
+    worst, image);
+  Check(worst <= 1e-6, "UpdateRadiosity = Render's radiosity");
+  Check(image <= 1.0, "the framebuffer is the other pass's (plain RADIANCE)");
+  own->ReleaseGraphicsResources(a.Window);
+  used->ReleaseGraphicsResources(b.Window);
+}
+
 void TestPresets()
 {
   vtkNew<vtkDeepRadiosityPass> pass;
@@ -553,6 +656,7 @@ int TestDeepRadiosity(int, char*[])
   TestNormalTest();
   TestBoost();
   TestFallback();
+  TestExternalComposite();
   TestPresets();
   std::printf("%d check(s) failed\n", CheckFailures());
   return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
