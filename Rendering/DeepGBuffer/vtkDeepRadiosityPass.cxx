@@ -537,6 +537,12 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
 
   double view[16], projection[16];
   const int layers = std::min(gbuffer->GetLayerCamera(renderer, view, projection), Layers);
+  if (layers <= 0)
+  {
+    vtkErrorMacro("UpdateRadiosity: the G-buffer pass has no layers for this renderer; call "
+                  "GetGBufferPass()->RenderLayers first.");
+    return false;
+  }
   int size[2] = { 0, 0 };
   s->GetWindowSize(size);
   const int width = size[0], height = size[1];
