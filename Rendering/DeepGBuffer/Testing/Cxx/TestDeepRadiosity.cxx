@@ -20,6 +20,7 @@
 //   automatic E_env is pi times the renderer's ambient colour;
 // - UpdateRadiosity and ActivateTexture called from another pass's opaque
 //   step give Render's radiosity (1e-6) and leave the framebuffer to it;
+//   without layers UpdateRadiosity fails with one error;
 // - presets set Table 2's values; PrintSelf prints every parameter.
 
 #include "DeepRadiosityTest.h"
@@ -603,6 +604,14 @@ void TestExternalComposite()
     worst, image);
   Check(worst <= 1e-6, "UpdateRadiosity = Render's radiosity");
   Check(image <= 1.0, "the framebuffer is the other pass's (plain RADIANCE)");
+  // A renderer the G-buffer never saw: an error, no crash.
+  vtkNew<vtkRenderer> other;
+  b.Window->AddRenderer(other);
+  b.Window->MakeCurrent();
+  EventCounter errors(used, vtkCommand::ErrorEvent);
+  vtkRenderState otherState(other);
+  Check(!used->UpdateRadiosity(&otherState) && errors.Count == 1,
+    "UpdateRadiosity without layers: false and one error");
   own->ReleaseGraphicsResources(a.Window);
   used->ReleaseGraphicsResources(b.Window);
 }
