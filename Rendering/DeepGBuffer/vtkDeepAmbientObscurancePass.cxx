@@ -34,12 +34,11 @@
 #include "vtk_glew.h"
 
 #include "vtkDeepAmbientObscuranceBlurFS.h"
-#include "vtkDeepAmbientObscuranceCommon.h"
 #include "vtkDeepAmbientObscuranceCompositeFS.h"
 #include "vtkDeepAmbientObscuranceFS.h"
 #include "vtkDeepAmbientObscuranceMinifyFS.h"
 #include "vtkDeepAmbientObscuranceTemporalFS.h"
-#include "vtkDeepGBufferCommon.h"
+#include "vtkDeepScreenSpaceHelpers.h"
 
 #include <algorithm>
 #include <cmath>
@@ -80,14 +79,6 @@ vtkStandardNewMacro(vtkDeepAmbientObscuranceOpaqueStep);
 
 namespace
 {
-// Mara et al. 2016, Listing 3: tau[N - 1] is the discrepancy-minimising
-// number of spiral turns for N samples, N = 1..98.
-const int SpiralTurns[vtkDeepAmbientObscurancePass::MAXIMUM_NUMBER_OF_SAMPLES] = { 1, 1, 2, 3,
-  2, 5, 2, 3, 2, 3, 3, 5, 5, 3, 4, 7, 5, 5, 7, 9, 8, 5, 5, 7, 7, 7, 8, 5, 8, 11, 12, 7, 10, 13, 8,
-  11, 8, 7, 14, 11, 11, 13, 12, 13, 19, 17, 13, 11, 18, 19, 11, 11, 14, 17, 21, 15, 16, 17, 18, 13,
-  17, 11, 17, 19, 18, 25, 18, 19, 19, 29, 21, 19, 27, 31, 29, 21, 18, 17, 29, 31, 31, 23, 18, 25,
-  26, 25, 23, 19, 34, 19, 27, 21, 25, 39, 29, 17, 21, 27 };
-
 enum Target
 {
   RAW = 0,
@@ -118,40 +109,16 @@ struct vtkDeepAmbientObscuranceRendererState
   int MipHeight = 0;
   // Temporal accumulation: ping-pong RG32F (AV, layer-0 distance) textures,
   // History[HistoryCurrent] is the last frame's; the camera it was drawn
-  // with; the renderer's render count (StartEvent observer) to detect a
-  // render of this renderer that did not go through this pass.
+  // with; the renderer's renders, to detect a render of this renderer that
+  // did not go through this pass.
   vtkSmartPointer<vtkTextureObject> History[2];
   int HistoryCurrent = 0;
   bool HistoryValid = false;
   bool Temporal = false; // the last frame accumulated (AV is in History)
   double PreviousView[16];
   double PreviousProjection[16];
-  unsigned long RenderCount = 0;
-  unsigned long LastRenderCount = 0;
-  unsigned long ObserverTag = 0;
-  vtkSmartPointer<vtkCallbackCommand> Observer;
+  vtkDeepScreenSpace::RenderCounter Renders;
   unsigned int FrameIndex = 0;
-
-  static void CountRender(vtkObject*, unsigned long, void* clientData, void*)
-  {
-    ++static_cast<vtkDeepAmbientObscuranceRendererState*>(clientData)->RenderCount;
-  }
-
-  void Observe(vtkRenderer* renderer)
-  {
-    this->Observer = vtkSmartPointer<vtkCallbackCommand>::New();
-    this->Observer->SetClientData(this);
-    this->Observer->SetCallback(&vtkDeepAmbientObscuranceRendererState::CountRender);
-    this->ObserverTag = renderer->AddObserver(vtkCommand::StartEvent, this->Observer);
-  }
-
-  ~vtkDeepAmbientObscuranceRendererState()
-  {
-    if (this->Observer && this->Renderer)
-    {
-      this->Renderer->RemoveObserver(this->ObserverTag);
-    }
-  }
 
   void ResetHistory(vtkWindow* w)
   {
@@ -282,11 +249,7 @@ void vtkDeepAmbientObscurancePass::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 int vtkDeepAmbientObscurancePass::GetSpiralTurns(int numberOfSamples)
 {
-  if (numberOfSamples < 1 || numberOfSamples > MAXIMUM_NUMBER_OF_SAMPLES)
-  {
-    return 0;
-  }
-  return SpiralTurns[numberOfSamples - 1];
+  return vtkDeepScreenSpace::SpiralTurns(numberOfSamples);
 }
 
 //------------------------------------------------------------------------------
@@ -415,51 +378,11 @@ void vtkDeepAmbientObscurancePass::Render(const vtkRenderState* s)
   this->NumberOfRenderedProps = this->GBufferPass->GetNumberOfRenderedProps();
 }
 
-//------------------------------------------------------------------------------
+using vtkDeepScreenSpace::AllocateTarget;
+using vtkDeepScreenSpace::ReadyQuad;
+
 namespace
 {
-bool ReadyQuad(vtkOpenGLQuadHelper*& quad, vtkOpenGLRenderWindow* window, const char* source)
-{
-  if (!quad)
-  {
-    std::string fs = source;
-    vtkShaderProgram::Substitute(fs, "//VTK::DeepGBuffer::Common", vtkDeepGBufferCommon);
-    vtkShaderProgram::Substitute(fs, "//VTK::DeepAO::Common", vtkDeepAmbientObscuranceCommon);
-    quad = new vtkOpenGLQuadHelper(
-      window, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), "");
-  }
-  else
-  {
-    window->GetShaderCache()->ReadyShaderProgram(quad->Program);
-  }
-  return quad->Program && quad->Program->GetCompiled();
-}
-
-bool AllocateTarget(vtkSmartPointer<vtkTextureObject>& texture, vtkOpenGLRenderWindow* window,
-  int width, int height, int components = 1)
-{
-  if (texture && texture->GetWidth() == static_cast<unsigned int>(width) &&
-    texture->GetHeight() == static_cast<unsigned int>(height))
-  {
-    return true;
-  }
-  if (!texture)
-  {
-    texture = vtkSmartPointer<vtkTextureObject>::New();
-    texture->SetContext(window);
-    texture->SetInternalFormat(components == 2 ? GL_RG32F : GL_R32F);
-    texture->SetFormat(components == 2 ? GL_RG : GL_RED);
-    texture->SetDataType(GL_FLOAT);
-    texture->SetMinificationFilter(vtkTextureObject::Nearest);
-    texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    texture->SetWrapS(vtkTextureObject::ClampToEdge);
-    texture->SetWrapT(vtkTextureObject::ClampToEdge);
-    return texture->Allocate2D(width, height, components, VTK_FLOAT);
-  }
-  texture->Resize(width, height);
-  return true;
-}
-
 // True when a visible actor with opaque geometry has an ambient term, i.e.
 // when the G-buffer's AMBIENT quantity can be non-zero somewhere.
 bool HasAmbientTerm(vtkRenderer* renderer)
@@ -522,16 +445,7 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
   double radius = this->Radius;
   if (this->AutomaticRadius)
   {
-    double bounds[6];
-    renderer->ComputeVisiblePropBounds(bounds);
-    double diagonal = 0.0;
-    if (vtkMath::AreBoundsInitialized(bounds))
-    {
-      const double extent[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2],
-        bounds[5] - bounds[4] };
-      diagonal = vtkMath::Norm(extent);
-    }
-    radius = this->AutomaticRadiusFraction * diagonal;
+    radius = this->AutomaticRadiusFraction * vtkDeepScreenSpace::VisiblePropDiagonal(renderer);
   }
   this->EffectiveRadius = radius;
 
@@ -540,7 +454,7 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
   {
     slot.reset(new vtkDeepAmbientObscuranceRendererState);
     slot->Renderer = renderer;
-    slot->Observe(renderer);
+    slot->Renders.Observe(renderer);
   }
   if (!in.FirstRenderer || !in.States.count(in.FirstRenderer))
   {
@@ -550,8 +464,7 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
   state.HasFrame = false;
   // Temporal history: reset when off, on a resize, and when this renderer
   // was rendered without this pass since the history's frame.
-  const bool consecutive = state.RenderCount == state.LastRenderCount + 1;
-  state.LastRenderCount = state.RenderCount;
+  const bool consecutive = state.Renders.Consecutive();
   const bool temporal = this->TemporalAlpha > 0.0 && layers > 0;
   if (!temporal || !consecutive || state.Width != width || state.Height != height)
   {
@@ -568,7 +481,7 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
   }
   for (auto& t : state.Targets)
   {
-    if (!AllocateTarget(t, window, width, height))
+    if (!AllocateTarget(t, window, width, height, 1))
     {
       vtkErrorMacro("Could not allocate the ambient obscurance targets.");
       gbuffer->ResolveToFramebuffer(s);
@@ -597,10 +510,8 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
   }
 
   // Projection terms of deepPositionFromDistance (row-major P).
-  const float projXY[4] = { static_cast<float>(projection[0]), static_cast<float>(projection[5]),
-    static_cast<float>(projection[2]), static_cast<float>(projection[6]) };
-  const float projT[4] = { static_cast<float>(projection[3]), static_cast<float>(projection[7]),
-    static_cast<float>(projection[14]), static_cast<float>(projection[15]) };
+  float projXY[4], projT[4];
+  vtkDeepScreenSpace::ProjectionUniforms(projection, projXY, projT);
 
   const int distanceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
   const int normalUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::NORMAL);
@@ -690,26 +601,9 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
         vtkTextureObject* history = state.History[state.HistoryCurrent];
         input->Activate();
         history->Activate();
-        // Current camera -> previous camera: V_prev * inverse(V_now), in
-        // double; GLSL matrices are column-major.
-        vtkNew<vtkMatrix4x4> toPrevious, inverseView;
-        inverseView->DeepCopy(view);
-        inverseView->Invert();
         float toPreviousGL[16], previousProjectionGL[16];
-        if (state.HistoryValid)
-        {
-          vtkMatrix4x4::Multiply4x4(state.PreviousView, &inverseView->Element[0][0],
-            &toPrevious->Element[0][0]);
-        }
-        for (int r = 0; r < 4; ++r)
-        {
-          for (int c = 0; c < 4; ++c)
-          {
-            toPreviousGL[c * 4 + r] = static_cast<float>(toPrevious->GetElement(r, c));
-            previousProjectionGL[c * 4 + r] = static_cast<float>(
-              state.HistoryValid ? state.PreviousProjection[r * 4 + c] : projection[r * 4 + c]);
-          }
-        }
+        vtkDeepScreenSpace::ReprojectionUniforms(view, projection, state.HistoryValid,
+          state.PreviousView, state.PreviousProjection, toPreviousGL, previousProjectionGL);
         program->SetUniformi("deepInput", input->GetTextureUnit());
         program->SetUniformi("deepHistory", history->GetTextureUnit());
         program->SetUniformi("deepDistance", distanceUnit);
@@ -964,12 +858,7 @@ void vtkDeepAmbientObscurancePass::ReleaseGraphicsResources(vtkWindow* w)
   for (vtkOpenGLQuadHelper** quad :
     { &in.AOQuad, &in.BlurQuad, &in.CompositeQuad, &in.MinifyQuad, &in.TemporalQuad })
   {
-    if (*quad)
-    {
-      (*quad)->ReleaseGraphicsResources(w);
-      delete *quad;
-      *quad = nullptr;
-    }
+    vtkDeepScreenSpace::ReleaseQuad(*quad, w);
   }
   if (in.Framebuffer)
   {

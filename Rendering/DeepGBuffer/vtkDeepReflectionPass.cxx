@@ -5,6 +5,7 @@
 #include "vtkAssemblyPath.h"
 #include "vtkDataArray.h"
 #include "vtkDeepGBufferPass.h"
+#include "vtkDeepScreenSpaceHelpers.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -34,8 +35,6 @@
 #include "vtkWeakPointer.h"
 #include "vtk_glew.h"
 
-#include "vtkDeepAmbientObscuranceCommon.h"
-#include "vtkDeepGBufferCommon.h"
 #include "vtkDeepReflectionCompositeFS.h"
 #include "vtkDeepReflectionFS.h"
 
@@ -153,21 +152,10 @@ bool SceneReflects(const vtkRenderState* s)
 bool ReadyQuad(vtkOpenGLQuadHelper*& quad, vtkOpenGLRenderWindow* window, const char* source,
   int environment = ENVIRONMENT_BACKGROUND)
 {
-  if (!quad)
-  {
-    std::string fs = source;
-    vtkShaderProgram::Substitute(fs, "//VTK::DeepReflection::Environment",
-      "#define DEEP_ENVIRONMENT " + std::to_string(environment));
-    vtkShaderProgram::Substitute(fs, "//VTK::DeepGBuffer::Common", vtkDeepGBufferCommon);
-    vtkShaderProgram::Substitute(fs, "//VTK::DeepAO::Common", vtkDeepAmbientObscuranceCommon);
-    quad = new vtkOpenGLQuadHelper(
-      window, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), "");
-  }
-  else
-  {
-    window->GetShaderCache()->ReadyShaderProgram(quad->Program);
-  }
-  return quad->Program && quad->Program->GetCompiled();
+  std::string fs = source;
+  vtkShaderProgram::Substitute(fs, "//VTK::DeepReflection::Environment",
+    "#define DEEP_ENVIRONMENT " + std::to_string(environment));
+  return vtkDeepScreenSpace::ReadyQuad(quad, window, fs.c_str());
 }
 }
 

@@ -21,7 +21,7 @@ uniform float deepNormalPower;
 
 //VTK::DeepGBuffer::Common
 
-//VTK::DeepAO::Common
+//VTK::DeepScreenSpace::Common
 
 //VTK::Output::Dec
 
@@ -61,10 +61,7 @@ void main()
     }
     vec3 Y = deepPositionFromDistance(vec2(tap) + 0.5, size, dy);
     vec3 ny = deepDecodeOct16(texelFetch(deepNormal, ivec3(tap, 0), 0).rg);
-    float plane = max(0.0, 1.0 - abs(dot(Y - X, n)) / tolerance);
-    float facing = max(0.0, dot(n, ny));
-    float normalWeight = deepNormalPower > 0.0 ? pow(facing, deepNormalPower) : 1.0;
-    float w = exp(-float(k * k) / (2.0 * sigma * sigma)) * plane * normalWeight;
+    float w = deepBilateralWeight(k, sigma, X, n, Y, ny, tolerance, deepNormalPower);
     sum += w * texelFetch(deepInput, tap, 0).r;
     weights += w;
   }

@@ -24,11 +24,9 @@ uniform float deepRotationOffset; // radians added to phi (0 unless temporal)
 
 //VTK::DeepGBuffer::Common
 
-//VTK::DeepAO::Common
+//VTK::DeepScreenSpace::Common
 
 //VTK::Output::Dec
-
-const float deepPi = 3.14159265358979;
 
 void main()
 {
@@ -46,46 +44,31 @@ void main()
   float r2 = deepRadius * deepRadius;
 
   // Screen-space radius r_p: r projected at X's depth (section 3.4).
-  float rp = deepRadius * deepProjXY.y * 0.5 * size.y / deepClipW(d);
+  float rp = deepScreenRadius(deepRadius, d, size);
 
-  // Per-pixel rotation: interleaved gradient noise of (x, y).
-  float phi = 2.0 * deepPi *
-    fract(52.9829189 * fract(dot(vec2(pixel), vec2(0.06711056, 0.00583715))));
-  // Temporal accumulation: a frame-dependent offset (0 when it is off, so
+  // Per-pixel rotation: interleaved gradient noise of (x, y), plus a
+  // frame-dependent offset while accumulating temporally (0 otherwise, so
   // phi is unchanged bit for bit).
-  phi += deepRotationOffset;
+  float phi = deepSpiralRotation(pixel) + deepRotationOffset;
 
   float sum = 0.0;
   float invN = 1.0 / float(deepSamples);
   for (int i = 0; i < deepSamples; ++i)
   {
-    float kappa = (float(i) + 0.5) * invN;
-    float h = rp * kappa;
-    float theta = 2.0 * deepPi * kappa * deepTurns + phi;
-    vec2 tapPoint = center + h * vec2(cos(theta), sin(theta));
-    ivec2 tap = ivec2(floor(tapPoint));
+    float h;
+    ivec2 tap = ivec2(floor(deepSpiralTap(i, deepSamples, deepTurns, rp, phi, center, h)));
     if (any(lessThan(tap, ivec2(0))) || any(greaterThanEqual(tap, ivec2(size))))
     {
       continue;
     }
-    // MIP level m_i = clamp(floor(log2(h_i / q)), 0, deepMaxMip) (section
-    // 3.4). The coarse texel holds the distance of one level-0 texel (the
-    // rotated grid's choice); the tap's point is reconstructed at THAT
-    // texel's centre, so it is an exact surface point (SAO reconstructs at
-    // the tap's own centre with the coarse distance instead).
-    int m = 0;
-    if (deepMaxMip > 0 && h >= 2.0 * deepMipThreshold)
-    {
-      m = min(int(floor(log2(h / deepMipThreshold))), deepMaxMip);
-    }
-    ivec2 coarse = min(tap >> m, max(ivec2(size) >> m, ivec2(1)) - 1);
-    ivec2 source = coarse;
-    for (int k = m; k > 0; --k)
-    {
-      source = min(2 * source + ivec2(source.y & 1, source.x & 1),
-        max(ivec2(size) >> (k - 1), ivec2(1)) - 1);
-    }
-    vec2 tapCenter = vec2(source) + 0.5;
+    // MIP level m_i (section 3.4). The coarse texel holds the distance of
+    // one level-0 texel (the rotated grid's choice); the tap's point is
+    // reconstructed at THAT texel's centre, so it is an exact surface point
+    // (SAO reconstructs at the tap's own centre with the coarse distance
+    // instead).
+    int m = deepTapMipLevel(h, deepMipThreshold, 0, deepMaxMip);
+    ivec2 coarse = deepCoarseTexel(tap, m, ivec2(size));
+    vec2 tapCenter = vec2(deepRotatedGridSource(coarse, m, ivec2(size))) + 0.5;
     float best = 0.0; // max(0, A_i^0, A_i^1, ...)
     for (int j = 0; j < deepLayers; ++j)
     {

@@ -26,7 +26,7 @@ uniform float deepTolerance;        // relative distance tolerance
 
 //VTK::DeepGBuffer::Common
 
-//VTK::DeepAO::Common
+//VTK::DeepScreenSpace::Common
 
 //VTK::Output::Dec
 
@@ -45,20 +45,14 @@ void main()
   if (deepHasHistory != 0)
   {
     vec3 X = deepPositionFromDistance(vec2(pixel) + 0.5, size, d);
-    vec4 P = deepToPrevious * vec4(X, 1.0);
-    float dr = -P.z; // reprojected distance
-    vec4 clip = deepPrevProjection * P;
-    if (dr > 0.0 && clip.w > 0.0)
+    ivec2 texel;
+    float dr; // reprojected distance
+    if (deepReproject(X, deepToPrevious, deepPrevProjection, size, texel, dr))
     {
-      vec2 prev = (clip.xy / clip.w * 0.5 + 0.5) * size;
-      if (all(greaterThanEqual(prev, vec2(0.0))) && all(lessThan(prev, size)))
+      vec2 history = texelFetch(deepHistory, texel, 0).rg;
+      if (history.g > 0.0 && abs(history.g - dr) <= deepTolerance * dr)
       {
-        ivec2 texel = min(ivec2(floor(prev)), ivec2(size) - 1);
-        vec2 history = texelFetch(deepHistory, texel, 0).rg;
-        if (history.g > 0.0 && abs(history.g - dr) <= deepTolerance * dr)
-        {
-          av = mix(now, history.r, deepAlpha);
-        }
+        av = mix(now, history.r, deepAlpha);
       }
     }
   }

@@ -38,7 +38,7 @@ uniform samplerCube deepEnvironment;
 #endif
 
 //VTK::DeepGBuffer::Common
-//VTK::DeepAO::Common
+//VTK::DeepScreenSpace::Common
 
 //VTK::Output::Dec
 

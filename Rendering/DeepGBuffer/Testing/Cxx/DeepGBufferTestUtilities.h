@@ -4,12 +4,18 @@
 #define DeepGBufferTestUtilities_h
 
 #include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCubeSource.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkPlaneSource.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDeepGIRenderWindowFactory.h"
 #include "vtkImageData.h"
+#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
@@ -24,6 +30,7 @@
 #include <cstdlib>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace DeepGBufferTest
 {
@@ -68,6 +75,42 @@ inline vtkActor* AddSourceActor(vtkRenderer* renderer, vtkAlgorithm* source)
   return actor;
 }
 
+// Adds a quad (vtkPlaneSource from origin to p1 and p2; its normal is
+// (p1 - origin) x (p2 - origin)) with default properties.
+inline vtkActor* AddQuad(
+  vtkRenderer* renderer, const double origin[3], const double p1[3], const double p2[3])
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(origin[0], origin[1], origin[2]);
+  plane->SetPoint1(p1[0], p1[1], p1[2]);
+  plane->SetPoint2(p2[0], p2[1], p2[2]);
+  return AddSourceActor(renderer, plane);
+}
+
+// Adds an axis-aligned box with default properties.
+inline vtkActor* AddBox(vtkRenderer* renderer, const double center[3], const double size[3])
+{
+  vtkNew<vtkCubeSource> cube;
+  cube->SetCenter(center[0], center[1], center[2]);
+  cube->SetXLength(size[0]);
+  cube->SetYLength(size[1]);
+  cube->SetZLength(size[2]);
+  return AddSourceActor(renderer, cube);
+}
+
+// A camera at p looking at f, y up, 40 degree view angle (parallel scale 3).
+inline void SetCamera(vtkRenderer* renderer, double px, double py, double pz, double fx, double fy,
+  double fz, bool parallel = false)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(px, py, pz);
+  camera->SetFocalPoint(fx, fy, fz);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetViewAngle(40.0);
+  camera->SetParallelProjection(parallel);
+  camera->SetParallelScale(3.0);
+}
+
 // An offscreen window without multisampling, so images are deterministic:
 // X11 when a display answers, else the project's EGL window.
 inline vtkSmartPointer<vtkRenderWindow> MakeWindow(int width, int height)
@@ -110,6 +153,50 @@ inline bool AllFinite(vtkImageData* image)
 inline vtkDataArray* Layer(vtkImageData* image, const char* quantity, int layer)
 {
   return image->GetPointData()->GetArray((std::string(quantity) + "_" + std::to_string(layer)).c_str());
+}
+
+// Camera-space position of the centre of texel (floor(i), floor(j)) of
+// layer `layer` of a vtkDeepGBufferPass::CaptureLayers image, reconstructed
+// from its depth and ProjectionMatrix as the shaders do; false where empty.
+inline bool CameraPosition(vtkImageData* layers, int layer, double i, double j, double out[3])
+{
+  const int* dims = layers->GetDimensions();
+  const int ii = static_cast<int>(std::floor(i)), jj = static_cast<int>(std::floor(j));
+  const double d = Layer(layers, "Depth", layer)->GetTuple1(static_cast<vtkIdType>(jj) * dims[0] + ii);
+  if (!(d > 0.0))
+  {
+    return false;
+  }
+  const double* P = vtkDoubleArray::SafeDownCast(
+    layers->GetFieldData()->GetArray("ProjectionMatrix"))->GetPointer(0);
+  const double ndc[2] = { (ii + 0.5) / dims[0] * 2.0 - 1.0, (jj + 0.5) / dims[1] * 2.0 - 1.0 };
+  const double z = -d, w = P[14] * z + P[15];
+  out[0] = (ndc[0] * w - P[2] * z - P[3]) / P[0];
+  out[1] = (ndc[1] * w - P[6] * z - P[7]) / P[5];
+  out[2] = z;
+  return true;
+}
+
+// World position of texel (i, j) of layer `layer` (CameraPosition through
+// the inverse of the capture's ViewMatrix); false where empty.
+inline bool WorldPosition(vtkImageData* layers, int layer, int i, int j, double world[3])
+{
+  double c[4] = { 0, 0, 0, 1 };
+  if (!CameraPosition(layers, layer, i, j, c))
+  {
+    return false;
+  }
+  vtkNew<vtkMatrix4x4> view;
+  view->DeepCopy(vtkDoubleArray::SafeDownCast(layers->GetFieldData()->GetArray("ViewMatrix"))
+                   ->GetPointer(0));
+  view->Invert();
+  double out[4];
+  view->MultiplyPoint(c, out);
+  for (int k = 0; k < 3; ++k)
+  {
+    world[k] = out[k] / out[3];
+  }
+  return true;
 }
 
 struct SeparationReport

@@ -49,33 +49,6 @@ constexpr int Width = 240;
 constexpr int Height = 200;
 constexpr double Pi = 3.14159265358979323846;
 
-void AddQuad(vtkRenderer* renderer, const double origin[3], const double p1[3], const double p2[3])
-{
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(origin[0], origin[1], origin[2]);
-  plane->SetPoint1(p1[0], p1[1], p1[2]);
-  plane->SetPoint2(p2[0], p2[1], p2[2]);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(plane->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  renderer->AddActor(actor);
-}
-
-void AddBox(vtkRenderer* renderer, const double center[3], const double size[3])
-{
-  vtkNew<vtkCubeSource> cube;
-  cube->SetCenter(center[0], center[1], center[2]);
-  cube->SetXLength(size[0]);
-  cube->SetYLength(size[1]);
-  cube->SetZLength(size[2]);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(cube->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  renderer->AddActor(actor);
-}
-
 using Scene = std::function<void(vtkRenderer*)>;
 
 struct Result
@@ -110,46 +83,6 @@ float Value(vtkImageData* image, const char* name, int i, int j)
 {
   return static_cast<float>(
     image->GetPointData()->GetArray(name)->GetComponent(static_cast<vtkIdType>(j) * Width + i, 0));
-}
-
-// Camera-space position of pixel (i, j) of layer `layer` (as the shader does).
-bool CameraPosition(vtkImageData* layers, int layer, double i, double j, double out[3])
-{
-  const int ii = static_cast<int>(std::floor(i)), jj = static_cast<int>(std::floor(j));
-  const double d = Layer(layers, "Depth", layer)->GetTuple1(static_cast<vtkIdType>(jj) * Width + ii);
-  if (!(d > 0.0))
-  {
-    return false;
-  }
-  const double* P = vtkDoubleArray::SafeDownCast(
-    layers->GetFieldData()->GetArray("ProjectionMatrix"))->GetPointer(0);
-  const double ndc[2] = { (ii + 0.5) / Width * 2.0 - 1.0, (jj + 0.5) / Height * 2.0 - 1.0 };
-  const double z = -d, w = P[14] * z + P[15];
-  out[0] = (ndc[0] * w - P[2] * z - P[3]) / P[0];
-  out[1] = (ndc[1] * w - P[6] * z - P[7]) / P[5];
-  out[2] = z;
-  return true;
-}
-
-// World position of layer-0 pixel (i, j).
-bool WorldPosition(vtkImageData* layers, int i, int j, double world[3])
-{
-  double c[4] = { 0, 0, 0, 1 };
-  if (!CameraPosition(layers, 0, i, j, c))
-  {
-    return false;
-  }
-  vtkNew<vtkMatrix4x4> view;
-  view->DeepCopy(vtkDoubleArray::SafeDownCast(layers->GetFieldData()->GetArray("ViewMatrix"))
-                   ->GetPointer(0));
-  view->Invert();
-  double out[4];
-  view->MultiplyPoint(c, out);
-  for (int k = 0; k < 3; ++k)
-  {
-    world[k] = out[k] / out[3];
-  }
-  return true;
 }
 
 // Eq. 1-2 on the CPU, in double precision, with the documented taps and hash
@@ -226,18 +159,6 @@ vtkSmartPointer<vtkDeepAmbientObscurancePass> MakePass(double radius)
   auto pass = vtkSmartPointer<vtkDeepAmbientObscurancePass>::New();
   pass->SetRadius(radius);
   return pass;
-}
-
-void SetCamera(vtkRenderer* renderer, double px, double py, double pz, double fx, double fy,
-  double fz, bool parallel = false)
-{
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(px, py, pz);
-  camera->SetFocalPoint(fx, fy, fz);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetViewAngle(40.0);
-  camera->SetParallelProjection(parallel);
-  camera->SetParallelScale(3.0);
 }
 
 // Floor y = 0 (z in [-2, 4]) meeting a wall z = -2.
@@ -339,7 +260,7 @@ void TestCorner()
     for (int i = 0; i < Width; ++i)
     {
       double p[3];
-      if (!WorldPosition(r.Layers, i, j, p) || std::abs(p[1]) > 1e-3 || std::abs(p[0]) > 3.0)
+      if (!WorldPosition(r.Layers, 0, i, j, p) || std::abs(p[1]) > 1e-3 || std::abs(p[0]) > 3.0)
       {
         continue;
       }

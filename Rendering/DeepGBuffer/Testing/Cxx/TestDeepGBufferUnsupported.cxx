@@ -1,7 +1,7 @@
 // An OpenGL that lacks what the G-buffer needs. CTest runs this test with
 // Mesa told to expose OpenGL 4.1 without ARB_copy_image (no
-// glCopyImageSubData). Each pass (vtkDeepGBufferPass and
-// vtkDeepAmbientObscurancePass) must say so once with a warning over three
+// glCopyImageSubData). Each pass (vtkDeepGBufferPass,
+// vtkDeepAmbientObscurancePass and vtkDeepRadiosityPass) must say so once with a warning over three
 // frames and render VTK's plain image exactly; a capture fails with one
 // error, not a crash; rendering after ReleaseGraphicsResources still works
 // (the check, and its warning, are made again for the released context).
@@ -10,6 +10,7 @@
 #include "DeepGBufferTestUtilities.h"
 
 #include "vtkDeepAmbientObscurancePass.h"
+#include "vtkDeepRadiosityPass.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkSphereSource.h"
@@ -85,5 +86,9 @@ int TestDeepGBufferUnsupported(int, char*[])
   const int aoResult = CheckPass(ao, [&](vtkImageData* out, vtkRenderer* renderer) {
     return ao->CaptureAmbientVisibility(out, renderer);
   });
-  return (gbufferResult == 0 && aoResult == 0) ? 0 : 1;
+  vtkNew<vtkDeepRadiosityPass> radiosity;
+  const int radiosityResult = CheckPass(radiosity, [&](vtkImageData* out, vtkRenderer* renderer) {
+    return radiosity->CaptureIrradiance(out, renderer);
+  });
+  return (gbufferResult == 0 && aoResult == 0 && radiosityResult == 0) ? 0 : 1;
 }

@@ -1,0 +1,672 @@
+// Single-bounce properties of vtkDeepRadiosityPass on small lit scenes
+// (160 x 120 px, Damping 0 and TemporalAlpha 0 unless stated):
+// - the raw gather (eq. 4-5, both layers, confidence M / N) equals an
+//   independent CPU evaluation with the documented taps, MIP texels and
+//   layer choice on the captured G-buffer, for the BALANCED (n_Y test, MIP
+//   level >= 2) and HIGH_PERFORMANCE (no n_Y test, level >= 3) presets:
+//   |E difference| <= 1e-3 (1 + |E|) and the same M on >= 99 % of the
+//   valid pixels of each layer (float vs double may move a tap across a
+//   texel border);
+// - a white floor beside a lit red wall receives red light: L_ind.r > 0.02
+//   next to the wall, green and blue < 2 % of red, decreasing with the
+//   distance from the wall, and the raw E exactly 0 beyond the radius r;
+// - a blue panel whose lit face looks away from the floor adds no blue to
+//   the floor behind it with the n_Y test (<= 1e-5) and some without it;
+// - the composite is RADIANCE + L_ind (8-bit rounding: <= 2 levels),
+//   background kept;
+// - eq. 7's boost: a (1, 0.5, 0.5) floor (stored as 8-bit 128 / 255) gets
+//   boost(rho) = 0.498 times the light of boost 1 (1e-5), a white floor none;
+// - the confidence fallback is c L + (1 - c) rho E_env / pi (1e-5), and the
+//   automatic E_env is pi times the renderer's ambient colour;
+// - UpdateRadiosity and ActivateTexture called from another pass's opaque
+//   step give Render's radiosity (1e-6) and leave the framebuffer to it;
+//   without layers UpdateRadiosity fails with one error;
+// - presets set Table 2's values; PrintSelf prints every parameter.
+
+#include "DeepRadiosityTest.h"
+
+#include "vtkDeepAmbientObscurancePass.h"
+#include "vtkObjectFactory.h"
+#include "vtkRenderState.h"
+
+#include <algorithm>
+#include <sstream>
+#include <vector>
+
+using namespace DeepRadiosityTest;
+
+// A composite pass of its own, as vtkDeepGIPass will be: its opaque step
+// builds the layers, calls UpdateRadiosity, binds INDIRECT_RADIANCE and
+// draws only the plain G-buffer image.
+class ExternalOpaqueStep : public vtkRenderPass
+{
+public:
+  static ExternalOpaqueStep* New();
+  vtkTypeMacro(ExternalOpaqueStep, vtkRenderPass);
+  vtkDeepRadiosityPass* Radiosity = nullptr;
+  int Units = 0;   // frames in which INDIRECT_RADIANCE could be bound
+  int Updates = 0; // frames in which UpdateRadiosity succeeded
+  void Render(const vtkRenderState* s) override
+  {
+    vtkDeepGBufferPass* gbuffer = this->Radiosity->GetGBufferPass();
+    if (gbuffer->RenderLayers(s) && this->Radiosity->UpdateRadiosity(s))
+    {
+      ++this->Updates;
+      const int unit = this->Radiosity->ActivateTexture(
+        s->GetRenderer(), vtkDeepRadiosityPass::INDIRECT_RADIANCE, 0);
+      this->Units += unit >= 0 ? 1 : 0;
+      this->Radiosity->DeactivateTexture(
+        s->GetRenderer(), vtkDeepRadiosityPass::INDIRECT_RADIANCE, 0);
+      gbuffer->ResolveToFramebuffer(s);
+    }
+  }
+};
+vtkStandardNewMacro(ExternalOpaqueStep);
+
+class ExternalComposite : public vtkRenderPass
+{
+public:
+  static ExternalComposite* New();
+  vtkTypeMacro(ExternalComposite, vtkRenderPass);
+  vtkNew<ExternalOpaqueStep> Step;
+  void Render(const vtkRenderState* s) override
+  {
+    this->Step->Radiosity->GetGBufferPass()->RenderFrame(s, this->Step);
+  }
+};
+vtkStandardNewMacro(ExternalComposite);
+
+namespace
+{
+struct Gather
+{
+  double E[3] = { 0, 0, 0 };
+  double Confidence = 0.0;
+};
+
+// Eq. 4-5 on the CPU in double precision for the surface of layer `layer`
+// at pixel (i, j), following the class documentation: taps of section 3.4
+// with r_p from layer 0's depth, MIP level clamp(floor(log2(h / q)), lo,
+// hi) and its rotated-grid level-0 texel, candidates of every layer, the
+// cosine tests with COSINE_EPSILON, the larger contribution per tap.
+Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerCount, int n,
+  double radius, double q, int minMip, int maxMip, bool normalTest)
+{
+  Gather g;
+  const int* dims = layers->GetDimensions();
+  const int W = dims[0], H = dims[1];
+  double X[3], X0[3];
+  if (!CameraPosition(layers, layer, i, j, X) || !CameraPosition(layers, 0, i, j, X0))
+  {
+    return g;
+  }
+  const double eps = vtkDeepRadiosityPass::COSINE_EPSILON;
+  const double* P =
+    vtkDoubleArray::SafeDownCast(layers->GetFieldData()->GetArray("ProjectionMatrix"))
+      ->GetPointer(0);
+  double nX[3];
+  Layer(layers, "Normal", layer)->GetTuple(static_cast<vtkIdType>(j) * W + i, nX);
+  const double rp = radius * P[5] * 0.5 * H / (P[14] * X0[2] + P[15]);
+  const double ign = 52.9829189 * std::fmod(0.06711056 * i + 0.00583715 * j, 1.0);
+  const double phi = 2.0 * Pi * (ign - std::floor(ign));
+  const int tau = vtkDeepAmbientObscurancePass::GetSpiralTurns(n);
+  int used = 0;
+  for (int s = 0; s < n; ++s)
+  {
+    const double kappa = (s + 0.5) / n;
+    const double theta = 2.0 * Pi * kappa * tau + phi;
+    const double h = rp * kappa;
+    const double tx = i + 0.5 + h * std::cos(theta), ty = j + 0.5 + h * std::sin(theta);
+    if (tx < 0 || ty < 0 || tx >= W || ty >= H)
+    {
+      continue;
+    }
+    int m = minMip;
+    if (maxMip > 0 && h >= 2.0 * q)
+    {
+      m = std::max(m, static_cast<int>(std::floor(std::log2(h / q))));
+    }
+    m = std::min(m, maxMip);
+    int cx = std::min(static_cast<int>(tx) >> m, std::max(W >> m, 1) - 1);
+    int cy = std::min(static_cast<int>(ty) >> m, std::max(H >> m, 1) - 1);
+    for (int k = m; k > 0; --k)
+    {
+      const int nx = std::min(2 * cx + (cy & 1), std::max(W >> (k - 1), 1) - 1);
+      const int ny = std::min(2 * cy + (cx & 1), std::max(H >> (k - 1), 1) - 1);
+      cx = nx;
+      cy = ny;
+    }
+    const vtkIdType source = static_cast<vtkIdType>(cy) * W + cx;
+    double bestScore = 0.0, best[3] = { 0, 0, 0 };
+    for (int k = 0; k < layerCount; ++k)
+    {
+      double Y[3];
+      if (!CameraPosition(layers, k, cx, cy, Y))
+      {
+        continue;
+      }
+      const double v[3] = { Y[0] - X[0], Y[1] - X[1], Y[2] - X[2] };
+      const double vv = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+      if (!(vv < radius * radius) || !(vv > 0.0))
+      {
+        continue;
+      }
+      const double len = std::sqrt(vv);
+      const double w[3] = { v[0] / len, v[1] / len, v[2] / len };
+      const double cosX = w[0] * nX[0] + w[1] * nX[1] + w[2] * nX[2];
+      double nY[3];
+      Layer(layers, "Normal", k)->GetTuple(source, nY);
+      if (!(cosX > eps) || (normalTest && !(w[0] * nY[0] + w[1] * nY[1] + w[2] * nY[2] < -eps)))
+      {
+        continue;
+      }
+      double c[3], score = 1.0;
+      for (int a = 0; a < 3; ++a)
+      {
+        const double B = std::max(Layer(layers, "Radiance", k)->GetComponent(source, a) -
+            Layer(layers, "Ambient", k)->GetComponent(source, a),
+          0.0);
+        c[a] = B * cosX;
+        score += c[a] * c[a];
+      }
+      if (score > bestScore)
+      {
+        bestScore = score;
+        std::copy(c, c + 3, best);
+      }
+    }
+    if (bestScore > 0.0)
+    {
+      ++used;
+      for (int a = 0; a < 3; ++a)
+      {
+        g.E[a] += best[a];
+      }
+    }
+  }
+  for (double& e : g.E)
+  {
+    e = used > 0 ? 2.0 * Pi / used * e : 0.0;
+  }
+  g.Confidence = static_cast<double>(used) / n;
+  return g;
+}
+
+vtkSmartPointer<vtkDeepRadiosityPass> SingleBouncePass(double radius)
+{
+  auto pass = vtkSmartPointer<vtkDeepRadiosityPass>::New();
+  pass->SetRadius(radius);
+  pass->SetDamping(0.0);
+  pass->SetTemporalAlpha(0.0);
+  return pass;
+}
+
+void TestReference(int preset)
+{
+  const double radius = 1.5;
+  auto pass = SingleBouncePass(radius);
+  pass->SetPreset(preset);
+  Frame f;
+  // A white box in front of the corner puts floor and wall into layer 1.
+  auto scene = [](vtkRenderer* r)
+  {
+    RedWallScene(r);
+    const double center[3] = { 1.6, 0.5, 0.6 }, size[3] = { 0.6, 1.0, 0.6 };
+    Diffuse(AddBox(r, center, size), 1, 1, 1);
+  };
+  if (!RenderFrames(scene, pass, 1, f))
+  {
+    return;
+  }
+  Check(AllFinite(f.Radiosity), "radiosity finite");
+  const int layerCount =
+    static_cast<int>(f.Radiosity->GetFieldData()->GetArray("NumberOfLayers")->GetTuple1(0));
+  Check(layerCount == 2, "two layers");
+  int finest = 0;
+  while ((std::max(f.Width, f.Height) >> (finest + 1)) > 0)
+  {
+    ++finest;
+  }
+  const int maxMip =
+    std::min(std::max(pass->GetMaximumMipLevel(), pass->GetMinimumMipLevel()), finest);
+  const int minMip = std::min(pass->GetMinimumMipLevel(), maxMip);
+  for (int layer = 0; layer < layerCount; ++layer)
+  {
+    const std::string suffix = "_" + std::to_string(layer);
+    long compared = 0, mismatched = 0, withLight = 0;
+    double worst = 0.0;
+    for (int j = 0; j < f.Height; ++j)
+    {
+      for (int i = 0; i < f.Width; ++i)
+      {
+        if (At(f.Radiosity, "Valid" + suffix, i, j) == 0)
+        {
+          continue;
+        }
+        ++compared;
+        const Gather g =
+          ReferenceGather(f.Layers, i, j, layer, layerCount, pass->GetNumberOfSamples(), radius,
+            pass->GetMipThreshold(), minMip, maxMip, pass->GetUseNormalTest());
+        bool same = std::abs(At(f.Radiosity, "RawConfidence" + suffix, i, j) - g.Confidence) < 1e-6;
+        for (int c = 0; c < 3; ++c)
+        {
+          const double d = std::abs(At(f.Radiosity, "RawIrradiance" + suffix, i, j, c) - g.E[c]);
+          same = same && d <= 1e-3 * (1.0 + std::abs(g.E[c]));
+          worst = std::max(worst, d);
+        }
+        withLight += g.E[0] > 0.01 ? 1 : 0;
+        mismatched += same ? 0 : 1;
+      }
+    }
+    std::printf("%s layer %d: %ld pixels, %ld with E.r > 0.01, %ld differ from the CPU "
+                "(largest |dE| %.3g)\n",
+      vtkDeepRadiosityPass::GetPresetAsString(preset), layer, compared, withLight, mismatched,
+      worst);
+    Check(compared > (layer == 0 ? f.Width * f.Height / 2 : 50), "layer has surface pixels");
+    Check(withLight > compared / 20, "some pixels gather light");
+    Check(mismatched <= compared / 100, "GPU gather equals the CPU eq. 4-5 on >= 99 % of pixels");
+  }
+  pass->ReleaseGraphicsResources(f.Window);
+}
+
+void TestBleeding()
+{
+  const double radius = 1.5;
+  auto pass = SingleBouncePass(radius);
+  Frame f;
+  if (!RenderFrames([](vtkRenderer* r) { RedWallScene(r); }, pass, 1, f))
+  {
+    return;
+  }
+  // Floor pixels of layer 0, binned by the distance x from the wall.
+  const double edges[] = { 0.0, 0.3, 0.6, 0.9, 1.2, 1.5, 4.0 };
+  constexpr int bins = 6;
+  double sum[bins][3] = {}, beyond = 0.0;
+  long count[bins] = {};
+  for (int j = 0; j < f.Height; ++j)
+  {
+    for (int i = 0; i < f.Width; ++i)
+    {
+      double p[3];
+      if (!WorldPosition(f.Layers, 0, i, j, p) || std::abs(p[1]) > 1e-3 || std::abs(p[2]) > 2.0)
+      {
+        continue;
+      }
+      for (int b = 0; b < bins; ++b)
+      {
+        if (p[0] >= edges[b] && p[0] < edges[b + 1])
+        {
+          ++count[b];
+          for (int c = 0; c < 3; ++c)
+          {
+            sum[b][c] += At(f.Radiosity, "IndirectRadiance_0", i, j, c);
+          }
+        }
+      }
+      if (p[0] > radius + 0.05)
+      {
+        beyond = std::max(beyond, At(f.Radiosity, "RawIrradiance_0", i, j, 0));
+      }
+    }
+  }
+  double mean[bins][3];
+  for (int b = 0; b < bins; ++b)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      mean[b][c] = count[b] ? sum[b][c] / count[b] : 0.0;
+    }
+    std::printf("floor x in [%.1f, %.1f): %ld px, mean L_ind (%.4f, %.4f, %.4f)\n", edges[b],
+      edges[b + 1], count[b], mean[b][0], mean[b][1], mean[b][2]);
+    Check(count[b] > 20, "floor bin has pixels");
+  }
+  Check(mean[0][0] > 0.02, "red light next to the red wall");
+  Check(mean[0][1] < 0.02 * mean[0][0] && mean[0][2] < 0.02 * mean[0][0],
+    "green and blue < 2 % of red next to the wall");
+  Check(mean[0][0] > mean[2][0] && mean[2][0] > mean[4][0], "red light falls off with distance");
+  std::printf("largest raw E.r farther than r + 0.05 from the wall: %.3g\n", beyond);
+  Check(beyond == 0.0, "no indirect light beyond the radius");
+  pass->ReleaseGraphicsResources(f.Window);
+
+  // Composite: RADIANCE + L_ind of layer 0, background kept.
+  auto composite = SingleBouncePass(radius);
+  Frame g;
+  if (!RenderFrames([](vtkRenderer* r) { RedWallScene(r); }, composite, 1, g))
+  {
+    return;
+  }
+  vtkNew<vtkImageData> rgb;
+  ReadWindow(g.Window, rgb, nullptr);
+  vtkDataArray* pixels = rgb->GetPointData()->GetScalars();
+  double worst = 0.0;
+  long background = 0, wrongBackground = 0;
+  for (int j = 0; j < g.Height; ++j)
+  {
+    for (int i = 0; i < g.Width; ++i)
+    {
+      const vtkIdType p = static_cast<vtkIdType>(j) * g.Width + i;
+      if (At(g.Radiosity, "Valid_0", i, j) == 0)
+      {
+        ++background;
+        wrongBackground +=
+          pixels->GetComponent(p, 0) + pixels->GetComponent(p, 1) + pixels->GetComponent(p, 2) > 0
+          ? 1
+          : 0;
+        continue;
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        const double expected = 255.0 *
+          std::min(1.0,
+            Layer(g.Layers, "Radiance", 0)->GetComponent(p, c) +
+              At(g.Radiosity, "IndirectRadiance_0", i, j, c));
+        worst = std::max(worst, std::abs(pixels->GetComponent(p, c) - expected));
+      }
+    }
+  }
+  std::printf("composite: largest difference from RADIANCE + L_ind %.2f levels; %ld background "
+              "pixels, %ld not black\n",
+    worst, background, wrongBackground);
+  Check(worst <= 2.0, "composite = RADIANCE + L_ind");
+  Check(background > 0 && wrongBackground == 0, "background kept");
+  composite->ReleaseGraphicsResources(g.Window);
+}
+
+// Floor pixels (both layers) behind the blue panel, within r of it: their
+// largest and mean blue excess b - (r + g) / 2 of the raw E (the bilateral
+// filter rightly blends in the light of the floor in front of the panel,
+// which is the same plane).
+void BlueExcess(Frame& f, double& largest, double& mean, long& pixels)
+{
+  largest = mean = 0.0;
+  pixels = 0;
+  for (int layer = 0; layer < 2; ++layer)
+  {
+    const std::string name = "RawIrradiance_" + std::to_string(layer);
+    for (int j = 0; j < f.Height; ++j)
+    {
+      for (int i = 0; i < f.Width; ++i)
+      {
+        double p[3];
+        if (!WorldPosition(f.Layers, layer, i, j, p) || std::abs(p[1]) > 1e-3 || p[0] < 1.2 ||
+          p[0] > 2.45 || std::abs(p[2]) > 1.0)
+        {
+          continue;
+        }
+        const double excess = At(f.Radiosity, name, i, j, 2) -
+          0.5 * (At(f.Radiosity, name, i, j, 0) + At(f.Radiosity, name, i, j, 1));
+        largest = std::max(largest, excess);
+        mean += excess;
+        ++pixels;
+      }
+    }
+  }
+  mean = pixels ? mean / pixels : 0.0;
+}
+
+void TestNormalTest()
+{
+  double largest[2], mean[2];
+  long pixels[2];
+  for (int on = 0; on < 2; ++on)
+  {
+    auto pass = SingleBouncePass(1.5);
+    pass->SetUseNormalTest(on != 0);
+    Frame f;
+    if (!RenderFrames([](vtkRenderer* r) { BlueBackScene(r); }, pass, 1, f))
+    {
+      return;
+    }
+    BlueExcess(f, largest[on], mean[on], pixels[on]);
+    std::printf("n_Y test %s: %ld floor pixels behind the panel, blue excess mean %.4g, largest "
+                "%.4g\n",
+      on ? "on" : "off", pixels[on], mean[on], largest[on]);
+    pass->ReleaseGraphicsResources(f.Window);
+  }
+  Check(pixels[1] > 50, "floor pixels behind the panel");
+  Check(largest[1] <= 1e-5, "n_Y test: a face looking away sends no light");
+  Check(mean[0] > 0.005, "without the n_Y test the face looking away sends light");
+}
+
+void TestBoost()
+{
+  auto floorScene = [](double r, double g, double b)
+  {
+    return [=](vtkRenderer* renderer)
+    {
+      RedWallScene(renderer);
+      vtkActor* floor = vtkActor::SafeDownCast(renderer->GetActors()->GetItemAsObject(0));
+      Diffuse(floor, r, g, b);
+    };
+  };
+  double ratio = 0.0, worst = 0.0, whiteFloor = 0.0;
+  long compared = 0;
+  Frame plain, boosted, white;
+  auto p1 = SingleBouncePass(1.5);
+  auto p2 = SingleBouncePass(1.5);
+  p2->UseColorBoostOn();
+  auto p3 = SingleBouncePass(1.5);
+  p3->UseColorBoostOn();
+  if (!RenderFrames(floorScene(1, 0.5, 0.5), p1, 1, plain) ||
+    !RenderFrames(floorScene(1, 0.5, 0.5), p2, 1, boosted) ||
+    !RenderFrames(floorScene(1, 1, 1), p3, 1, white))
+  {
+    return;
+  }
+  for (int j = 0; j < plain.Height; ++j)
+  {
+    for (int i = 0; i < plain.Width; ++i)
+    {
+      double p[3];
+      const vtkIdType pixel = static_cast<vtkIdType>(j) * plain.Width + i;
+      if (!WorldPosition(plain.Layers, 0, i, j, p) || std::abs(p[1]) > 1e-3 || p[0] < 0.01)
+      {
+        continue; // not the floor
+      }
+      whiteFloor = std::max(whiteFloor, At(white.Radiosity, "IndirectRadiance_0", i, j, 0));
+      const double a = At(plain.Radiosity, "IndirectRadiance_0", i, j, 0);
+      if (a > 1e-3)
+      {
+        ++compared;
+        // Eq. 7 of the stored (8-bit) albedo: (max - min) / max.
+        double rho[3];
+        Layer(boosted.Layers, "Albedo", 0)->GetTuple(pixel, rho);
+        const double boost =
+          (std::max({ rho[0], rho[1], rho[2] }) - std::min({ rho[0], rho[1], rho[2] })) /
+          std::max({ rho[0], rho[1], rho[2] });
+        ratio = At(boosted.Radiosity, "IndirectRadiance_0", i, j, 0) / a;
+        worst = std::max(worst, std::abs(ratio - boost));
+      }
+    }
+  }
+  std::printf("boost: %ld floor pixels, largest |L_boost / L - boost(rho)| %.3g; white floor "
+              "largest "
+              "L_ind %.3g\n",
+    compared, worst, whiteFloor);
+  Check(compared > 50 && worst <= 1e-5, "L_boost = boost(rho) L for a (1, 0.5, 0.5) floor");
+  Check(whiteFloor == 0.0, "boost of a white floor is 0");
+  p1->ReleaseGraphicsResources(plain.Window);
+  p2->ReleaseGraphicsResources(boosted.Window);
+  p3->ReleaseGraphicsResources(white.Window);
+}
+
+void TestFallback()
+{
+  const double environment[3] = { 0.3 * Pi, 0.2 * Pi, 0.1 * Pi };
+  auto off = SingleBouncePass(1.0);
+  auto on = SingleBouncePass(1.0);
+  on->ConfidenceFallbackOn();
+  on->SetEnvironmentIrradiance(environment);
+  Frame a, b;
+  if (!RenderFrames([](vtkRenderer* r) { RedWallScene(r); }, off, 1, a) ||
+    !RenderFrames([](vtkRenderer* r) { RedWallScene(r); }, on, 1, b))
+  {
+    return;
+  }
+  double worst = 0.0, lowest = 1.0;
+  for (int j = 0; j < a.Height; ++j)
+  {
+    for (int i = 0; i < a.Width; ++i)
+    {
+      if (At(a.Radiosity, "Valid_0", i, j) == 0)
+      {
+        continue;
+      }
+      const double c = At(b.Radiosity, "Confidence_0", i, j);
+      lowest = std::min(lowest, c);
+      for (int k = 0; k < 3; ++k)
+      {
+        const double rho =
+          Layer(b.Layers, "Albedo", 0)->GetComponent(static_cast<vtkIdType>(j) * a.Width + i, k);
+        const double expected = c * At(a.Radiosity, "IndirectRadiance_0", i, j, k) +
+          (1.0 - c) * rho * environment[k] / Pi;
+        worst =
+          std::max(worst, std::abs(At(b.Radiosity, "IndirectRadiance_0", i, j, k) - expected));
+      }
+    }
+  }
+  std::printf("fallback: lowest confidence %.3f, largest difference from c L + (1 - c) rho E/pi "
+              "%.3g\n",
+    lowest, worst);
+  Check(lowest < 0.5, "some pixels have a low confidence");
+  Check(worst <= 1e-5, "fallback = c L + (1 - c) rho E_env / pi");
+
+  // Automatic environment: pi times the renderer's ambient colour.
+  auto automatic = SingleBouncePass(1.0);
+  Frame c;
+  RenderFrames(
+    [](vtkRenderer* r)
+    {
+      RedWallScene(r);
+      r->SetAmbient(0.2, 0.3, 0.4);
+    },
+    automatic, 1, c);
+  const double* e = automatic->GetEffectiveEnvironmentIrradiance();
+  Check(std::abs(e[0] - 0.2 * Pi) < 1e-12 && std::abs(e[1] - 0.3 * Pi) < 1e-12 &&
+      std::abs(e[2] - 0.4 * Pi) < 1e-12,
+    "automatic environment irradiance = pi x ambient colour");
+  off->ReleaseGraphicsResources(a.Window);
+  on->ReleaseGraphicsResources(b.Window);
+  automatic->ReleaseGraphicsResources(c.Window);
+}
+
+// UpdateRadiosity from another pass gives the same radiosity as Render and
+// leaves the framebuffer to that pass (here: the plain G-buffer image).
+void TestExternalComposite()
+{
+  auto own = SingleBouncePass(1.5);
+  auto used = SingleBouncePass(1.5);
+  Frame a, b;
+  vtkNew<ExternalComposite> composite;
+  composite->Step->Radiosity = used;
+  if (!RenderFrames([](vtkRenderer* r) { RedWallScene(r); }, own, 2, a))
+  {
+    return;
+  }
+  b.Width = a.Width;
+  b.Height = a.Height;
+  b.Window = MakeWindow(b.Width, b.Height);
+  b.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  b.Window->AddRenderer(b.Renderer);
+  RedWallScene(b.Renderer);
+  b.Renderer->ResetCameraClippingRange();
+  b.Renderer->SetPass(composite);
+  b.Window->Render();
+  b.Window->Render();
+  const bool ok = used->CaptureIrradiance(b.Radiosity, b.Renderer) &&
+    used->GetGBufferPass()->CaptureLayers(b.Layers, b.Renderer);
+  Check(ok && composite->Step->Updates == 2 && composite->Step->Units == 2,
+    "UpdateRadiosity and ActivateTexture from another pass");
+  if (!ok)
+  {
+    return;
+  }
+  vtkDataArray* x = a.Radiosity->GetPointData()->GetArray("IndirectRadiance_0");
+  vtkDataArray* y = b.Radiosity->GetPointData()->GetArray("IndirectRadiance_0");
+  double worst = 0.0, image = 0.0;
+  vtkNew<vtkImageData> rgb;
+  ReadWindow(b.Window, rgb, nullptr);
+  for (vtkIdType p = 0; p < x->GetNumberOfTuples(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      worst = std::max(worst, std::abs(x->GetComponent(p, c) - y->GetComponent(p, c)));
+      if (Layer(b.Layers, "Valid", 0)->GetTuple1(p) != 0)
+      {
+        image = std::max(image,
+          std::abs(rgb->GetPointData()->GetScalars()->GetComponent(p, c) -
+            255.0 * std::min(1.0, Layer(b.Layers, "Radiance", 0)->GetComponent(p, c))));
+      }
+    }
+  }
+  std::printf("external composite: largest |L_ind - L_ind of Render| %.3g, largest |image - "
+              "RADIANCE| %.2f levels\n",
+    worst, image);
+  Check(worst <= 1e-6, "UpdateRadiosity = Render's radiosity");
+  Check(image <= 1.0, "the framebuffer is the other pass's (plain RADIANCE)");
+  // A renderer the G-buffer never saw: an error, no crash.
+  vtkNew<vtkRenderer> other;
+  b.Window->AddRenderer(other);
+  b.Window->MakeCurrent();
+  EventCounter errors(used, vtkCommand::ErrorEvent);
+  vtkRenderState otherState(other);
+  Check(!used->UpdateRadiosity(&otherState) && errors.Count == 1,
+    "UpdateRadiosity without layers: false and one error");
+  own->ReleaseGraphicsResources(a.Window);
+  used->ReleaseGraphicsResources(b.Window);
+}
+
+void TestPresets()
+{
+  vtkNew<vtkDeepRadiosityPass> pass;
+  struct Expected
+  {
+    int Preset, Samples, Taps;
+    bool Test;
+    int Mip;
+  };
+  const Expected table[] = { { vtkDeepRadiosityPass::HIGH_PERFORMANCE, 13, 9, false, 3 },
+    { vtkDeepRadiosityPass::BALANCED, 14, 11, true, 2 },
+    { vtkDeepRadiosityPass::HIGH_QUALITY, 30, 13, true, 0 } };
+  Check(pass->GetNumberOfSamples() == 14 && pass->GetFilterTaps() == 11 &&
+      pass->GetUseNormalTest() && pass->GetMinimumMipLevel() == 2,
+    "defaults are BALANCED");
+  for (const Expected& e : table)
+  {
+    pass->SetPreset(e.Preset);
+    Check(pass->GetNumberOfSamples() == e.Samples && pass->GetFilterTaps() == e.Taps &&
+        pass->GetUseNormalTest() == e.Test && pass->GetMinimumMipLevel() == e.Mip,
+      std::string("preset ") + vtkDeepRadiosityPass::GetPresetAsString(e.Preset));
+  }
+  EventCounter warnings(pass, vtkCommand::WarningEvent);
+  pass->SetPreset(7);
+  Check(warnings.Count == 1 && pass->GetNumberOfSamples() == 30, "unknown preset ignored");
+  std::ostringstream os;
+  pass->Print(os);
+  for (const char* name :
+    { "Radius", "AutomaticRadius", "AutomaticRadiusFraction", "EffectiveRadius", "NumberOfSamples",
+      "UseNormalTest", "UseColorBoost", "FilterTaps", "BlurPlaneTolerance", "BlurNormalPower",
+      "MipThreshold", "MinimumMipLevel", "MaximumMipLevel", "Damping", "TemporalAlpha",
+      "ReprojectionTolerance", "AutomaticReprojectionTolerance", "AutomaticReprojectionFraction",
+      "EffectiveReprojectionTolerance", "ConfidenceFallback", "EnvironmentIrradiance",
+      "AutomaticEnvironmentIrradiance", "EffectiveEnvironmentIrradiance", "GBufferPass" })
+  {
+    Check(os.str().find(std::string(name) + ":") != std::string::npos,
+      std::string("PrintSelf prints ") + name);
+  }
+}
+}
+
+int TestDeepRadiosity(int, char*[])
+{
+  TestReference(vtkDeepRadiosityPass::BALANCED);
+  TestReference(vtkDeepRadiosityPass::HIGH_PERFORMANCE);
+  TestBleeding();
+  TestNormalTest();
+  TestBoost();
+  TestFallback();
+  TestExternalComposite();
+  TestPresets();
+  std::printf("%d check(s) failed\n", CheckFailures());
+  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

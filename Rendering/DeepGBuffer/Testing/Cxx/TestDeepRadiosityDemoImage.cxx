@@ -1,0 +1,143 @@
+// Regression image of vtkDeepRadiosityPass on the demo scene (20k
+// triangles, default view, automatic radius, BALANCED, Damping 0.5,
+// TemporalAlpha 0 so that the progressive bounces converge to a fixed
+// image): one 640 x 240 window, left the composite RADIANCE + L_ind, right
+// L_ind itself (layer 0, x 2, clamped, nearest-neighbour) so the indirect
+// light is part of the baseline independently of the direct light.
+// Threshold 0.5, as for the other demo-scene images: VTK's metric sums
+// per-pixel excesses over 105 of 255.
+// Numeric checks on the captured radiosity carry the expectations (ranges
+// around the values measured when the baseline was made, margins about
+// 20 %): mean L_ind over the surface pixels (0.108), the mean confidence
+// (0.107: most taps land on the tap's own plane and are rejected) and the
+// fraction of surface pixels above 0.25 (0.116), the growth of the total
+// indirect light from frame 1 (single bounce) to frame 20 (x 1.31), finite
+// and non-negative values, and the L_ind shown equals the final frame's
+// (converged: 1e-5).
+
+#include "DeepRadiosityTest.h"
+
+#include "vtkDeepGBufferDemoScene.h"
+#include "vtkImageActor.h"
+#include "vtkImageProperty.h"
+#include "vtkRegressionTestImage.h"
+
+#include <algorithm>
+
+using namespace DeepRadiosityTest;
+
+int TestDeepRadiosityDemoImage(int argc, char* argv[])
+{
+  constexpr int W = 320, H = 240, frames = 20;
+  auto window = MakeWindow(2 * W, H);
+  vtkNew<vtkRenderer> lit, view;
+  lit->SetViewport(0.0, 0.0, 0.5, 1.0);
+  view->SetViewport(0.5, 0.0, 1.0, 1.0);
+  lit->SetBackground(0.1, 0.1, 0.15);
+  view->SetBackground(0.1, 0.1, 0.15);
+  window->AddRenderer(lit);
+  window->AddRenderer(view);
+  vtkNew<vtkDeepGBufferDemoScene> scene;
+  scene->SetTargetNumberOfTriangles(20000);
+  scene->Populate(lit);
+  scene->SetCameraToDefaultView(lit->GetActiveCamera());
+  lit->ResetCameraClippingRange();
+  vtkNew<vtkDeepRadiosityPass> pass;
+  pass->SetTemporalAlpha(0.0);
+  pass->SetDamping(0.5);
+  lit->SetPass(pass);
+
+  // The L_ind viewport: a parallel camera showing pixel (i, j) at (i, j).
+  vtkNew<vtkImageData> rgb;
+  rgb->SetDimensions(W, H, 1);
+  rgb->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  std::fill_n(static_cast<unsigned char*>(rgb->GetScalarPointer()), 3 * W * H, 0);
+  vtkNew<vtkImageActor> image;
+  image->SetInputData(rgb);
+  image->InterpolateOff();
+  image->GetProperty()->SetColorWindow(255.0);
+  image->GetProperty()->SetColorLevel(127.5);
+  view->AddActor(image);
+  vtkCamera* camera = view->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  camera->SetFocalPoint(0.5 * (W - 1), 0.5 * (H - 1), 0.0);
+  camera->SetPosition(0.5 * (W - 1), 0.5 * (H - 1), 1000.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetParallelScale(0.5 * H);
+  camera->SetClippingRange(1.0, 2000.0);
+
+  vtkNew<vtkImageData> first, shown, last;
+  window->Render();
+  bool ok = pass->CaptureIrradiance(first, lit);
+  for (int k = 1; k < frames && ok; ++k)
+  {
+    window->Render();
+  }
+  ok = ok && pass->CaptureIrradiance(shown, lit);
+  if (ok)
+  {
+    vtkDataArray* l = shown->GetPointData()->GetArray("IndirectRadiance_0");
+    unsigned char* out = static_cast<unsigned char*>(rgb->GetScalarPointer());
+    for (vtkIdType p = 0; p < l->GetNumberOfTuples(); ++p)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        out[3 * p + c] = static_cast<unsigned char>(
+          std::lround(255.0 * std::min(1.0, std::max(0.0, 2.0 * l->GetComponent(p, c)))));
+      }
+    }
+    rgb->Modified();
+    window->Render();
+    ok = pass->CaptureIrradiance(last, lit);
+  }
+  if (!ok)
+  {
+    std::printf("capture FAILED\n");
+    return EXIT_FAILURE;
+  }
+
+  vtkDataArray* l = last->GetPointData()->GetArray("IndirectRadiance_0");
+  vtkDataArray* before = shown->GetPointData()->GetArray("IndirectRadiance_0");
+  vtkDataArray* confidence = last->GetPointData()->GetArray("Confidence_0");
+  vtkDataArray* valid = last->GetPointData()->GetArray("Valid_0");
+  long surface = 0, confident = 0;
+  double sum = 0.0, changed = 0.0, largest = 0.0, confidenceSum = 0.0;
+  for (vtkIdType p = 0; p < l->GetNumberOfTuples(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      changed = std::max(changed, std::abs(l->GetComponent(p, c) - before->GetComponent(p, c)));
+      largest = std::max(largest, l->GetComponent(p, c));
+    }
+    if (valid->GetTuple1(p) == 0)
+    {
+      continue;
+    }
+    ++surface;
+    sum += (l->GetComponent(p, 0) + l->GetComponent(p, 1) + l->GetComponent(p, 2)) / 3.0;
+    confident += confidence->GetTuple1(p) > 0.25 ? 1 : 0;
+    confidenceSum += confidence->GetTuple1(p);
+  }
+  const double mean = sum / std::max(surface, 1L);
+  const double fraction = static_cast<double>(confident) / std::max(surface, 1L);
+  const double meanConfidence = confidenceSum / std::max(surface, 1L);
+  const double growth = Total(last, "IndirectRadiance_0") / Total(first, "IndirectRadiance_0");
+  std::printf(
+    "demo scene: %ld surface px (radius %.4g, N %d), mean L_ind %.4f, largest %.4f, "
+    "mean confidence %.3f, > 0.25 on %.3f, total frame %d / frame 1 = %.4f, change since the "
+    "displayed frame %.2e\n",
+    surface, pass->GetEffectiveRadius(), pass->GetNumberOfSamples(), mean, largest, meanConfidence,
+    fraction, frames, growth, changed);
+  Check(AllFinite(last) && Minimum(last, "IndirectRadiance_0") >= 0.0, "finite, non-negative");
+  Check(surface > W * H / 2, "the scene fills the view");
+  Check(mean >= 0.09 && mean <= 0.13, "mean L_ind in the measured range (0.108)");
+  Check(meanConfidence >= 0.085 && meanConfidence <= 0.13,
+    "mean confidence in the measured range (0.107)");
+  Check(fraction >= 0.09 && fraction <= 0.14, "fraction with confidence > 0.25 (0.116)");
+  Check(growth >= 1.2 && growth <= 1.45, "bounces add light (x 1.31)");
+  Check(changed <= 1e-5 * std::max(largest, 1.0), "converged: the image shows the final L_ind");
+  const int result = vtkRegressionTestImageThreshold(window, 0.5);
+  pass->ReleaseGraphicsResources(window);
+  return (CheckFailures() == 0 && result == vtkRegressionTester::PASSED) ? EXIT_SUCCESS
+                                                                         : EXIT_FAILURE;
+}

@@ -1,0 +1,89 @@
+//VTK::System::Dec
+
+//=========================================================================
+// Input radiosity B of deep screen-space radiosity (Mara et al. 2016,
+// sections 3.2-3.3, Table 1's "previous bounce radiosity"), for layers 0
+// and 1 at once:
+//   B(Y) = direct(Y) + delta * L_ind,t-1(Y)
+// direct = RADIANCE - AMBIENT of the layer (VTK's outgoing radiance from
+// its lights), L_ind,t-1 = rho boost(rho) E_t-1 / pi (eq. 6) from last
+// frame's final irradiance E_t-1, reverse-reprojected to Y and taken from
+// whichever previous layer lies within deepTolerance (world units, camera
+// depth difference) of the reprojected surface (its plane extrapolated to
+// the previous texel's centre, deepExpectedPreviousDistance); 0 where
+// neither does or there is no history (the first frame gives the single
+// bounce).
+//=========================================================================
+
+in vec2 texCoord;
+
+uniform sampler2DArray deepDistance;
+uniform sampler2DArray deepNormal;
+uniform sampler2DArray deepRadiance;
+uniform sampler2DArray deepAmbient;
+uniform sampler2DArray deepAlbedo;
+uniform sampler2D deepHistory0;   // (E, distance) of last frame's layer 0
+uniform sampler2D deepHistory1;   // (E, distance) of last frame's layer 1
+uniform int deepLayers;           // 1 or 2
+uniform int deepHasHistory;
+uniform mat4 deepToPrevious;
+uniform mat4 deepPrevProjection;
+uniform float deepTolerance;      // world units
+uniform float deepDamping;        // delta
+uniform int deepBoost;            // eq. 7 on/off
+uniform int deepHasLights;        // 0: VTK drew the props unlit, no direct light
+
+//VTK::DeepGBuffer::Common
+
+//VTK::DeepScreenSpace::Common
+
+//VTK::Output::Dec
+
+vec3 bounceInput(ivec2 pixel, vec2 size, int layer)
+{
+  float d = texelFetch(deepDistance, ivec3(pixel, layer), 0).r;
+  if (layer >= deepLayers || !(d > 0.0))
+  {
+    return vec3(0.0);
+  }
+  // Without a light VTK draws props unlit at their full colour: that is no
+  // light arriving from a source, so nothing is bounced.
+  vec3 direct = deepHasLights == 0 ? vec3(0.0)
+                                   : max(texelFetch(deepRadiance, ivec3(pixel, layer), 0).rgb -
+                                         texelFetch(deepAmbient, ivec3(pixel, layer), 0).rgb,
+                                       vec3(0.0));
+  if (deepHasHistory == 0 || deepDamping <= 0.0)
+  {
+    return direct;
+  }
+  vec3 X = deepPositionFromDistance(vec2(pixel) + 0.5, size, d);
+  ivec2 texel;
+  float dr;
+  if (!deepReproject(X, deepToPrevious, deepPrevProjection, size, texel, dr))
+  {
+    return direct;
+  }
+  vec3 n = deepDecodeOct16(texelFetch(deepNormal, ivec3(pixel, layer), 0).rg);
+  float expected =
+    deepExpectedPreviousDistance(X, n, deepToPrevious, deepPrevProjection, texel, size);
+  vec4 h0 = texelFetch(deepHistory0, texel, 0);
+  vec4 h1 = texelFetch(deepHistory1, texel, 0);
+  float e0 = h0.a > 0.0 ? abs(h0.a - expected) : 1e30;
+  float e1 = h1.a > 0.0 ? abs(h1.a - expected) : 1e30;
+  float best = min(e0, e1);
+  if (!(best <= deepTolerance))
+  {
+    return direct;
+  }
+  vec3 previousE = e0 <= e1 ? h0.rgb : h1.rgb;
+  vec3 rho = texelFetch(deepAlbedo, ivec3(pixel, layer), 0).rgb;
+  return direct + deepDamping * deepReflectance(rho, deepBoost != 0) * previousE / deepPi;
+}
+
+void main()
+{
+  vec2 size = vec2(textureSize(deepDistance, 0).xy);
+  ivec2 pixel = min(ivec2(texCoord * size), ivec2(size) - 1);
+  gl_FragData[0] = vec4(bounceInput(pixel, size, 0), 1.0);
+  gl_FragData[1] = vec4(bounceInput(pixel, size, 1), 1.0);
+}

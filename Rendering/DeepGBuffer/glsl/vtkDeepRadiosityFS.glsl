@@ -1,0 +1,157 @@
+//VTK::System::Dec
+
+//=========================================================================
+// Deep screen-space radiosity gather (Mara et al. 2016, section 3.2,
+// equations 3-5, with the spiral taps of section 3.4), for the surfaces of
+// layers 0 and 1 of each pixel (propagation across layers, section 3.3,
+// Figure 5). Writes, per output layer, (E, M / N):
+//   E(X) = 2 pi / M sum_i B(Y_i) (w_i . n_X)          (eq. 4)
+// over the M of the N taps that pass eq. 5. The taps are the same screen
+// positions for both output layers (r_p from layer 0's depth). At a tap,
+// every layer's surface Y is a candidate; a candidate passes when
+// |Y - X| < r, w.n_X > epsilon and, with the n_Y test, w.n_Y < -epsilon
+// (epsilon = deepCosineEpsilon absorbs the Oct16 quantisation of normals,
+// so that taps on X's own plane are rejected instead of counted with a
+// cosine of +-0.005). Of the passing candidates the tap uses the one with
+// the larger contribution |B (w.n_X)| (the paper's supplementary shader
+// does the same); a tap with no passing candidate is rejected. M = 0 gives
+// E = 0. Taps outside the image are rejected.
+//=========================================================================
+
+in vec2 texCoord;
+
+uniform sampler2DArray deepDistance;
+uniform sampler2DArray deepNormal;
+uniform sampler2D deepBounce0;     // B of layer 0
+uniform sampler2D deepBounce1;     // B of layer 1
+uniform int deepLayers;            // 1 or 2
+uniform int deepSamples;           // N
+uniform float deepTurns;           // tau(N), Listing 3
+uniform float deepRadius;          // r, world units
+uniform float deepMipThreshold;    // q, pixels
+uniform int deepMinMip;            // Table 2's minimum MIP level
+uniform int deepMaxMip;
+uniform int deepNormalTest;        // the n_Y test of eq. 5
+uniform float deepCosineEpsilon;
+uniform float deepRotationOffset;  // radians added to phi (temporal)
+
+//VTK::DeepGBuffer::Common
+
+//VTK::DeepScreenSpace::Common
+
+//VTK::Output::Dec
+
+void main()
+{
+  vec2 size = vec2(textureSize(deepDistance, 0).xy);
+  ivec2 isize = ivec2(size);
+  ivec2 pixel = min(ivec2(texCoord * size), isize - 1);
+  float d0 = texelFetch(deepDistance, ivec3(pixel, 0), 0).r;
+  gl_FragData[0] = vec4(0.0);
+  gl_FragData[1] = vec4(0.0);
+  if (!(d0 > 0.0) || !(deepRadius > 0.0))
+  {
+    return;
+  }
+  vec2 center = vec2(pixel) + 0.5;
+  vec3 X[2];
+  vec3 nX[2];
+  bool valid[2];
+  for (int j = 0; j < 2; ++j)
+  {
+    float d = j < deepLayers ? texelFetch(deepDistance, ivec3(pixel, j), 0).r : 0.0;
+    valid[j] = d > 0.0;
+    X[j] = deepPositionFromDistance(center, size, max(d, 0.0));
+    nX[j] = deepDecodeOct16(texelFetch(deepNormal, ivec3(pixel, j), 0).rg);
+  }
+  float r2 = deepRadius * deepRadius;
+  float rp = deepScreenRadius(deepRadius, d0, size);
+  float phi = deepSpiralRotation(pixel) + deepRotationOffset;
+
+  vec3 sum[2] = vec3[2](vec3(0.0), vec3(0.0));
+  float used[2] = float[2](0.0, 0.0);
+  for (int i = 0; i < deepSamples; ++i)
+  {
+    float h;
+    ivec2 tap = ivec2(floor(deepSpiralTap(i, deepSamples, deepTurns, rp, phi, center, h)));
+    if (any(lessThan(tap, ivec2(0))) || any(greaterThanEqual(tap, isize)))
+    {
+      continue;
+    }
+    int m = deepTapMipLevel(h, deepMipThreshold, deepMinMip, deepMaxMip);
+    ivec2 source = deepRotatedGridSource(deepCoarseTexel(tap, m, isize), m, isize);
+    vec2 sourceCenter = vec2(source) + 0.5;
+
+    // The candidates of this tap: the surface of every layer.
+    vec3 Y[2];
+    vec3 nY[2];
+    vec3 B[2];
+    bool present[2];
+    for (int k = 0; k < 2; ++k)
+    {
+      float dy = k < deepLayers ? texelFetch(deepDistance, ivec3(source, k), 0).r : 0.0;
+      present[k] = dy > 0.0;
+      Y[k] = deepPositionFromDistance(sourceCenter, size, max(dy, 0.0));
+      nY[k] = deepNormalTest != 0 ? deepDecodeOct16(texelFetch(deepNormal, ivec3(source, k), 0).rg)
+                                  : vec3(0.0);
+      B[k] = k == 0 ? texelFetch(deepBounce0, source, 0).rgb : texelFetch(deepBounce1, source, 0).rgb;
+    }
+
+    for (int j = 0; j < 2; ++j)
+    {
+      if (!valid[j])
+      {
+        continue;
+      }
+      float bestScore = 0.0;
+      vec3 best = vec3(0.0);
+      for (int k = 0; k < 2; ++k)
+      {
+        if (!present[k])
+        {
+          continue;
+        }
+        vec3 v = Y[k] - X[j];
+        float vv = dot(v, v);
+        if (!(vv < r2) || !(vv > 0.0))
+        {
+          continue;
+        }
+        vec3 w = v * inversesqrt(vv);
+        float cosX = dot(w, nX[j]);
+        // Equation 5.
+        if (!(cosX > deepCosineEpsilon) ||
+          (deepNormalTest != 0 && !(dot(w, nY[k]) < -deepCosineEpsilon)))
+        {
+          continue;
+        }
+        vec3 c = B[k] * cosX;
+        float score = dot(c, c) + 1.0;
+        if (score > bestScore)
+        {
+          bestScore = score;
+          best = c;
+        }
+      }
+      if (bestScore > 0.0)
+      {
+        sum[j] += best;
+        used[j] += 1.0;
+      }
+    }
+  }
+  for (int j = 0; j < 2; ++j)
+  {
+    // Equation 4 and the confidence M / N.
+    vec3 E = used[j] > 0.0 ? (2.0 * deepPi / used[j]) * sum[j] : vec3(0.0);
+    vec4 result = valid[j] ? vec4(E, used[j] / float(deepSamples)) : vec4(0.0);
+    if (j == 0)
+    {
+      gl_FragData[0] = result;
+    }
+    else
+    {
+      gl_FragData[1] = result;
+    }
+  }
+}

@@ -1,0 +1,180 @@
+//=========================================================================
+// Shared GLSL for the screen-space passes over the deep G-buffer (ambient
+// obscurance, radiosity): camera-space position reconstruction, the
+// section 3.4 spiral taps with their rotation and MIP level, the
+// rotated-grid texel a MIP level stands for, and reverse reprojection into
+// the previous frame.
+//=========================================================================
+
+// Camera-space position of the surface at distance d (along -z, z = -d)
+// seen through window pixel coordinate p (pixel centres at +0.5) of an
+// image of size `size`. deepProjXY = (P00, P11, P02, P12),
+// deepProjT = (P03, P13, P32, P33) of the projection the layers were
+// rasterised with (perspective: P32 = -1, P33 = 0; parallel: P32 = 0,
+// P33 = 1): clip.x = P00 x + P02 z + P03, clip.w = P32 z + P33.
+uniform vec4 deepProjXY;
+uniform vec4 deepProjT;
+
+const float deepPi = 3.14159265358979;
+
+float deepClipW(float d)
+{
+  return -deepProjT.z * d + deepProjT.w;
+}
+
+vec3 deepPositionFromDistance(vec2 p, vec2 size, float d)
+{
+  vec2 ndc = p / size * 2.0 - 1.0;
+  float z = -d;
+  float w = deepClipW(d);
+  return vec3((ndc.x * w - deepProjXY.z * z - deepProjT.x) / deepProjXY.x,
+    (ndc.y * w - deepProjXY.w * z - deepProjT.y) / deepProjXY.y, z);
+}
+
+// Screen-space radius r_p in pixels of the world radius r at distance d
+// (section 3.4): r projected at the point's depth.
+float deepScreenRadius(float r, float d, vec2 size)
+{
+  return r * deepProjXY.y * 0.5 * size.y / deepClipW(d);
+}
+
+// Per-pixel rotation phi of the spiral: 2 pi times Jimenez's interleaved
+// gradient noise of the integer pixel coordinates.
+float deepSpiralRotation(ivec2 pixel)
+{
+  return 2.0 * deepPi *
+    fract(52.9829189 * fract(dot(vec2(pixel), vec2(0.06711056, 0.00583715))));
+}
+
+// Tap i of N (section 3.4): kappa = (i + 0.5) / N, h = r_p kappa,
+// theta = 2 pi kappa tau + phi; returns the tap point in window pixels and
+// h, its distance from `center` in pixels.
+vec2 deepSpiralTap(int i, int n, float turns, float rp, float phi, vec2 center, out float h)
+{
+  float kappa = (float(i) + 0.5) / float(n);
+  h = rp * kappa;
+  float theta = 2.0 * deepPi * kappa * turns + phi;
+  return center + h * vec2(cos(theta), sin(theta));
+}
+
+// MIP level of a tap at h pixels: clamp(floor(log2(h / q)), minLevel,
+// maxLevel) (section 3.4; minLevel is Table 2's minimum MIP level).
+int deepTapMipLevel(float h, float q, int minLevel, int maxLevel)
+{
+  int m = minLevel;
+  if (maxLevel > 0 && h >= 2.0 * q)
+  {
+    m = max(m, int(floor(log2(h / q))));
+  }
+  return min(m, maxLevel);
+}
+
+// The level-0 texel that the rotated-grid pyramid (SAO's minification:
+// level m + 1 texel (x, y) is level m texel (2x + (y & 1), 2y + (x & 1)),
+// clamped) stores at texel `coarse` of level m. Reading level-0 data there
+// is exactly reading level m of a pyramid built that way.
+ivec2 deepRotatedGridSource(ivec2 coarse, int m, ivec2 size)
+{
+  ivec2 source = coarse;
+  for (int k = m; k > 0; --k)
+  {
+    source = min(2 * source + ivec2(source.y & 1, source.x & 1),
+      max(size >> (k - 1), ivec2(1)) - 1);
+  }
+  return source;
+}
+
+// The level-m texel containing window point `tap` (clamped to level m).
+ivec2 deepCoarseTexel(ivec2 tap, int m, ivec2 size)
+{
+  return min(tap >> m, max(size >> m, ivec2(1)) - 1);
+}
+
+// Reverse reprojection of the current camera-space point X into the
+// previous frame: toPrevious = V_prev * inverse(V_now), prevProjection the
+// previous projection. Returns false when the point is behind the previous
+// camera or outside the previous image; else the previous texel and the
+// point's distance (along -z) in the previous camera.
+bool deepReproject(vec3 X, mat4 toPrevious, mat4 prevProjection, vec2 size, out ivec2 texel,
+  out float distance)
+{
+  vec4 P = toPrevious * vec4(X, 1.0);
+  distance = -P.z;
+  vec4 clip = prevProjection * P;
+  texel = ivec2(0);
+  if (!(distance > 0.0) || !(clip.w > 0.0))
+  {
+    return false;
+  }
+  vec2 prev = (clip.xy / clip.w * 0.5 + 0.5) * size;
+  if (!(all(greaterThanEqual(prev, vec2(0.0))) && all(lessThan(prev, size))))
+  {
+    return false;
+  }
+  texel = min(ivec2(floor(prev)), ivec2(size) - 1);
+  return true;
+}
+
+// Weight of a bilateral reconstruction tap k pixels from the centre
+// (section 3.1: normal and plane weights, after [SGNS07]): a Gaussian of
+// k (sigma pixels) times a plane weight
+// max(0, 1 - |(Y - X).n| / tolerance) (Y's distance from the centre's
+// tangent plane) times a normal weight max(0, n.n_Y)^normalPower, so that
+// values do not blur across depth or normal discontinuities.
+float deepBilateralWeight(int k, float sigma, vec3 X, vec3 n, vec3 Y, vec3 nY, float tolerance,
+  float normalPower)
+{
+  float plane = max(0.0, 1.0 - abs(dot(Y - X, n)) / tolerance);
+  float facing = max(0.0, dot(n, nY));
+  float normalWeight = normalPower > 0.0 ? pow(facing, normalPower) : 1.0;
+  return exp(-float(k * k) / (2.0 * sigma * sigma)) * plane * normalWeight;
+}
+
+// rho * boost(rho) of the paper's eq. 6: with useBoost, eq. 7's
+// boost(rho) = (max rho - min rho) / max rho (0 for grey and black);
+// otherwise boost = 1, which conserves energy.
+vec3 deepReflectance(vec3 rho, bool useBoost)
+{
+  if (!useBoost)
+  {
+    return rho;
+  }
+  float hi = max(rho.r, max(rho.g, rho.b));
+  float lo = min(rho.r, min(rho.g, rho.b));
+  return hi > 0.0 ? rho * ((hi - lo) / hi) : vec3(0.0);
+}
+
+// Camera-space point at distance d on the ray through `ndc` of a camera
+// with projection m (GLSL column-major: m[c][r] = P_rc).
+vec3 deepRayPoint(vec2 ndc, float d, mat4 m)
+{
+  float z = -d;
+  float w = m[2][3] * z + m[3][3];
+  return vec3((ndc.x * w - m[2][0] * z - m[3][0]) / m[0][0],
+    (ndc.y * w - m[2][1] * z - m[3][1]) / m[1][1], z);
+}
+
+// The distance that a reprojected surface should have at the centre of
+// the previous texel it fell into: the plane through the current point X
+// with the current normal n, both moved into the previous camera, met by
+// the ray through that texel's centre. A reprojected point is generally
+// not at the texel centre, and on a slanted surface the stored distance
+// there differs from the point's own by up to half a pixel's footprint
+// times the slope; comparing with this extrapolation instead keeps the
+// history of planar surfaces under camera motion. At grazing angles
+// (|n.ray| < 0.05) the point's own distance is used.
+float deepExpectedPreviousDistance(vec3 X, vec3 n, mat4 toPrevious, mat4 prevProjection,
+  ivec2 texel, vec2 size)
+{
+  vec3 P = (toPrevious * vec4(X, 1.0)).xyz;
+  vec3 np = mat3(toPrevious) * n;
+  vec2 ndc = (vec2(texel) + 0.5) / size * 2.0 - 1.0;
+  vec3 A = deepRayPoint(ndc, 0.0, prevProjection);
+  vec3 B = deepRayPoint(ndc, 1.0, prevProjection) - A;
+  float nb = dot(np, B);
+  if (!(abs(nb) >= 0.05 * length(B)))
+  {
+    return -P.z;
+  }
+  return dot(np, P - A) / nb;
+}

@@ -1,0 +1,1022 @@
+#include "vtkDeepRadiosityPass.h"
+
+#include "vtkDeepGBufferPass.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkIntArray.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkPointData.h"
+#include "vtkRenderState.h"
+#include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWeakPointer.h"
+#include "vtk_glew.h"
+
+#include "vtkDeepRadiosityBlurFS.h"
+#include "vtkDeepRadiosityBounceFS.h"
+#include "vtkDeepRadiosityCompositeFS.h"
+#include "vtkDeepRadiosityFS.h"
+#include "vtkDeepRadiosityTemporalFS.h"
+#include "vtkDeepScreenSpaceHelpers.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkDeepRadiosityPass);
+
+//------------------------------------------------------------------------------
+// The opaque step handed to vtkDeepGBufferPass::RenderFrame: calls back into
+// the radiosity pass, so that the camera, clear, lights and the later steps
+// stay the G-buffer pass's.
+class vtkDeepRadiosityOpaqueStep : public vtkRenderPass
+{
+public:
+  static vtkDeepRadiosityOpaqueStep* New();
+  vtkTypeMacro(vtkDeepRadiosityOpaqueStep, vtkRenderPass);
+  vtkDeepRadiosityPass* Owner = nullptr;
+  void Render(const vtkRenderState* s) override
+  {
+    this->NumberOfRenderedProps = 0;
+    if (this->Owner)
+    {
+      this->Owner->RenderOpaque(s);
+    }
+  }
+
+protected:
+  vtkDeepRadiosityOpaqueStep() = default;
+  ~vtkDeepRadiosityOpaqueStep() override = default;
+
+private:
+  vtkDeepRadiosityOpaqueStep(const vtkDeepRadiosityOpaqueStep&) = delete;
+  void operator=(const vtkDeepRadiosityOpaqueStep&) = delete;
+};
+vtkStandardNewMacro(vtkDeepRadiosityOpaqueStep);
+
+namespace
+{
+using vtkDeepScreenSpace::AllocateTarget;
+using vtkDeepScreenSpace::ReadyQuad;
+using vtkDeepScreenSpace::ReleaseTarget;
+constexpr int Layers = vtkDeepRadiosityPass::NUMBER_OF_LAYERS;
+
+// Per-layer targets, in the order of the frame's passes.
+enum Target
+{
+  BOUNCE = 0,
+  RAW = 1,
+  BLUR_TEMP = 2,
+  FILTERED = 3,
+  INDIRECT = 4,
+  NUMBER_OF_TARGETS = 5
+};
+
+// The G-buffer quantities the passes read.
+const int GBufferQuantities[] = { vtkDeepGBufferPass::DEPTH, vtkDeepGBufferPass::NORMAL,
+  vtkDeepGBufferPass::RADIANCE, vtkDeepGBufferPass::AMBIENT, vtkDeepGBufferPass::ALBEDO };
+
+bool AnyLightOn(vtkRenderer* renderer)
+{
+  vtkLightCollection* lights = renderer->GetLights();
+  vtkCollectionSimpleIterator it;
+  lights->InitTraversal(it);
+  while (vtkLight* light = lights->GetNextLight(it))
+  {
+    if (light->GetSwitch() && light->GetIntensity() > 0.0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+}
+
+//------------------------------------------------------------------------------
+// The radiosity targets and history of one renderer.
+struct vtkDeepRadiosityRendererState
+{
+  vtkWeakPointer<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkTextureObject> Targets[NUMBER_OF_TARGETS][Layers];
+  // History[i][j]: (E_t, distance) of layer j; History[HistoryCurrent] is
+  // the last frame's.
+  vtkSmartPointer<vtkTextureObject> History[2][Layers];
+  int HistoryCurrent = 0;
+  bool HistoryValid = false;
+  double PreviousView[16];
+  double PreviousProjection[16];
+  vtkDeepScreenSpace::RenderCounter Renders;
+  unsigned int FrameIndex = 0; // frames since the history was reset
+  int Width = 0;
+  int Height = 0;
+  int LayerCount = 0;
+  bool HasFrame = false;
+  double Radius = 0.0;
+  int NumberOfSamples = 0;
+  double Tolerance = 0.0;
+  double Environment[3] = { 0.0, 0.0, 0.0 };
+  bool WarnedEmpty = false;
+  bool WarnedNoLights = false;
+
+  void ResetHistory()
+  {
+    this->HistoryValid = false;
+    this->FrameIndex = 0;
+  }
+
+  void Release(vtkWindow* w)
+  {
+    for (auto& perLayer : this->Targets)
+    {
+      for (auto& t : perLayer)
+      {
+        ReleaseTarget(t, w);
+      }
+    }
+    for (auto& ping : this->History)
+    {
+      for (auto& t : ping)
+      {
+        ReleaseTarget(t, w);
+      }
+    }
+    this->ResetHistory();
+    this->Width = this->Height = this->LayerCount = 0;
+    this->HasFrame = false;
+  }
+
+  vtkTextureObject* Output(int quantity, int layer)
+  {
+    if (!this->HasFrame || layer < 0 || layer >= Layers)
+    {
+      return nullptr;
+    }
+    return quantity == vtkDeepRadiosityPass::IRRADIANCE ? this->History[this->HistoryCurrent][layer]
+      : quantity == vtkDeepRadiosityPass::INDIRECT_RADIANCE ? this->Targets[INDIRECT][layer]
+                                                            : nullptr;
+  }
+};
+
+class vtkDeepRadiosityPass::vtkInternals
+{
+public:
+  vtkDeepRadiosityOpaqueStep* OpaqueStep = nullptr;
+  std::map<vtkRenderer*, std::unique_ptr<vtkDeepRadiosityRendererState>> States;
+  vtkRenderer* FirstRenderer = nullptr;
+  vtkOpenGLFramebufferObject* Framebuffer = nullptr;
+  vtkOpenGLQuadHelper* BounceQuad = nullptr;
+  vtkOpenGLQuadHelper* GatherQuad = nullptr;
+  vtkOpenGLQuadHelper* BlurQuad = nullptr;
+  vtkOpenGLQuadHelper* TemporalQuad = nullptr;
+  vtkOpenGLQuadHelper* CompositeQuad = nullptr;
+  bool WarnedUnsupported = false;
+
+  vtkDeepRadiosityRendererState* Find(vtkRenderer* renderer)
+  {
+    auto it = this->States.find(renderer ? renderer : this->FirstRenderer);
+    return (it == this->States.end() || !it->second->HasFrame) ? nullptr : it->second.get();
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkDeepRadiosityPass::vtkDeepRadiosityPass()
+  : Internals(new vtkInternals)
+{
+  this->GBufferPass = vtkDeepGBufferPass::New();
+  this->Internals->OpaqueStep = vtkDeepRadiosityOpaqueStep::New();
+  this->Internals->OpaqueStep->Owner = this;
+}
+
+//------------------------------------------------------------------------------
+vtkDeepRadiosityPass::~vtkDeepRadiosityPass()
+{
+  vtkInternals& in = *this->Internals;
+  if (in.GatherQuad || in.Framebuffer || !in.States.empty())
+  {
+    vtkWarningMacro("Destroyed without ReleaseGraphicsResources(); OpenGL objects are leaked "
+                    "unless the context was destroyed first.");
+  }
+  for (vtkOpenGLQuadHelper* quad :
+    { in.BounceQuad, in.GatherQuad, in.BlurQuad, in.TemporalQuad, in.CompositeQuad })
+  {
+    delete quad;
+  }
+  if (in.Framebuffer)
+  {
+    in.Framebuffer->Delete();
+  }
+  in.OpaqueStep->Owner = nullptr;
+  in.OpaqueStep->Delete();
+  this->GBufferPass->Delete();
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepRadiosityPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "GBufferPass: " << this->GBufferPass << "\n";
+  os << indent << "Radius: " << this->Radius << "\n";
+  os << indent << "AutomaticRadius: " << (this->AutomaticRadius ? "On" : "Off") << "\n";
+  os << indent << "AutomaticRadiusFraction: " << this->AutomaticRadiusFraction << "\n";
+  os << indent << "EffectiveRadius: " << this->EffectiveRadius << "\n";
+  os << indent << "NumberOfSamples: " << this->NumberOfSamples << " (spiral turns "
+     << vtkDeepScreenSpace::SpiralTurns(this->NumberOfSamples) << ")\n";
+  os << indent << "UseNormalTest: " << (this->UseNormalTest ? "On" : "Off") << "\n";
+  os << indent << "UseColorBoost: " << (this->UseColorBoost ? "On" : "Off") << "\n";
+  os << indent << "FilterTaps: " << this->FilterTaps << "\n";
+  os << indent << "BlurPlaneTolerance: " << this->BlurPlaneTolerance << "\n";
+  os << indent << "BlurNormalPower: " << this->BlurNormalPower << "\n";
+  os << indent << "MipThreshold: " << this->MipThreshold << "\n";
+  os << indent << "MinimumMipLevel: " << this->MinimumMipLevel << "\n";
+  os << indent << "MaximumMipLevel: " << this->MaximumMipLevel << "\n";
+  os << indent << "Damping: " << this->Damping << "\n";
+  os << indent << "TemporalAlpha: " << this->TemporalAlpha << "\n";
+  os << indent << "ReprojectionTolerance: " << this->ReprojectionTolerance << "\n";
+  os << indent
+     << "AutomaticReprojectionTolerance: " << (this->AutomaticReprojectionTolerance ? "On" : "Off")
+     << "\n";
+  os << indent << "AutomaticReprojectionFraction: " << this->AutomaticReprojectionFraction << "\n";
+  os << indent << "EffectiveReprojectionTolerance: " << this->EffectiveReprojectionTolerance
+     << "\n";
+  os << indent << "ConfidenceFallback: " << (this->ConfidenceFallback ? "On" : "Off") << "\n";
+  os << indent << "EnvironmentIrradiance: (" << this->EnvironmentIrradiance[0] << ", "
+     << this->EnvironmentIrradiance[1] << ", " << this->EnvironmentIrradiance[2] << ")\n";
+  os << indent
+     << "AutomaticEnvironmentIrradiance: " << (this->AutomaticEnvironmentIrradiance ? "On" : "Off")
+     << "\n";
+  os << indent << "EffectiveEnvironmentIrradiance: (" << this->EffectiveEnvironmentIrradiance[0]
+     << ", " << this->EffectiveEnvironmentIrradiance[1] << ", "
+     << this->EffectiveEnvironmentIrradiance[2] << ")\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepRadiosityPass::SetGBufferPass(vtkDeepGBufferPass* pass)
+{
+  if (!pass)
+  {
+    vtkWarningMacro("SetGBufferPass(nullptr) ignored: the pass needs a G-buffer.");
+    return;
+  }
+  if (pass == this->GBufferPass)
+  {
+    return;
+  }
+  pass->Register(this);
+  this->GBufferPass->UnRegister(this);
+  this->GBufferPass = pass;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepRadiosityPass::SetRadius(double radius)
+{
+  if (!std::isfinite(radius))
+  {
+    vtkWarningMacro("Radius " << radius << " is not finite; keeping " << this->Radius << ".");
+    return;
+  }
+  if (radius < 0.0)
+  {
+    vtkWarningMacro("Radius " << radius << " is negative; using 0 (no indirect light).");
+    radius = 0.0;
+  }
+  if (radius != this->Radius || this->AutomaticRadius)
+  {
+    this->Radius = radius;
+    this->AutomaticRadius = false;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepRadiosityPass::SetNumberOfSamples(int samples)
+{
+  if (samples < 1 || samples > MAXIMUM_NUMBER_OF_SAMPLES)
+  {
+    const int clamped = std::min(std::max(samples, 1), static_cast<int>(MAXIMUM_NUMBER_OF_SAMPLES));
+    vtkWarningMacro("NumberOfSamples "
+      << samples << " is outside 1.." << MAXIMUM_NUMBER_OF_SAMPLES
+      << " (the paper's Listing 3 gives spiral turns for N = 1..98); using " << clamped << ".");
+    samples = clamped;
+  }
+  if (samples != this->NumberOfSamples)
+  {
+    this->NumberOfSamples = samples;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// A value in [0, 1]: NaN keeps `current`, others are clamped; both warn.
+bool UnitInterval(vtkObject* self, const char* name, double& value, double current)
+{
+  if (std::isnan(value))
+  {
+    vtkWarningWithObjectMacro(self, << name << " is NaN; keeping " << current << ".");
+    return false;
+  }
+  if (value < 0.0 || value > 1.0)
+  {
+    const double clamped = std::min(std::max(value, 0.0), 1.0);
+    vtkWarningWithObjectMacro(
+      self, << name << " " << value << " is outside [0, 1]; using " << clamped << ".");
+    value = clamped;
+  }
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepRadiosityPass::SetDamping(double delta)
+{
+  if (UnitInterval(this, "Damping", delta, this->Damping) && delta != this->Damping)
+  {
+    this->Damping = delta;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepRadiosityPass::SetTemporalAlpha(double alpha)
+{
+  if (UnitInterval(this, "TemporalAlpha", alpha, this->TemporalAlpha) &&
+    alpha != this->TemporalAlpha)
+  {
+    this->TemporalAlpha = alpha;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepRadiosityPass::SetReprojectionTolerance(double tolerance)
+{
+  if (!std::isfinite(tolerance))
+  {
+    vtkWarningMacro("ReprojectionTolerance " << tolerance << " is not finite; keeping "
+                                             << this->ReprojectionTolerance << ".");
+    return;
+  }
+  if (tolerance < 0.0)
+  {
+    vtkWarningMacro("ReprojectionTolerance " << tolerance << " is negative; using 0.");
+    tolerance = 0.0;
+  }
+  if (tolerance != this->ReprojectionTolerance || this->AutomaticReprojectionTolerance)
+  {
+    this->ReprojectionTolerance = tolerance;
+    this->AutomaticReprojectionTolerance = false;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepRadiosityPass::SetEnvironmentIrradiance(double r, double g, double b)
+{
+  double e[3] = { r, g, b };
+  for (double& c : e)
+  {
+    if (!std::isfinite(c))
+    {
+      vtkWarningMacro("EnvironmentIrradiance (" << r << ", " << g << ", " << b
+                                                << ") is not finite; keeping the previous value.");
+      return;
+    }
+    if (c < 0.0)
+    {
+      vtkWarningMacro("EnvironmentIrradiance component " << c << " is negative; using 0.");
+      c = 0.0;
+    }
+  }
+  if (!std::equal(e, e + 3, this->EnvironmentIrradiance) || this->AutomaticEnvironmentIrradiance)
+  {
+    std::copy(e, e + 3, this->EnvironmentIrradiance);
+    this->AutomaticEnvironmentIrradiance = false;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepRadiosityPass::SetPreset(int preset)
+{
+  // Table 2 of the paper (the guard-band column has no counterpart here).
+  struct Settings
+  {
+    int Samples;
+    int FilterTaps;
+    bool NormalTest;
+    int MinimumMipLevel;
+  };
+  static const Settings presets[] = { { 13, 9, false, 3 }, { 14, 11, true, 2 },
+    { 30, 13, true, 0 } };
+  if (preset < HIGH_PERFORMANCE || preset > HIGH_QUALITY)
+  {
+    vtkWarningMacro("Unknown preset " << preset << "; the settings are unchanged.");
+    return;
+  }
+  const Settings& p = presets[preset];
+  this->NumberOfSamples = p.Samples;
+  this->FilterTaps = p.FilterTaps;
+  this->UseNormalTest = p.NormalTest;
+  this->MinimumMipLevel = p.MinimumMipLevel;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkDeepRadiosityPass::GetPresetAsString(int preset)
+{
+  switch (preset)
+  {
+    case HIGH_PERFORMANCE:
+      return "HIGH_PERFORMANCE";
+    case BALANCED:
+      return "BALANCED";
+    case HIGH_QUALITY:
+      return "HIGH_QUALITY";
+    default:
+      return "UNKNOWN";
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepRadiosityPass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  this->GBufferPass->RenderFrame(s, this->Internals->OpaqueStep);
+  this->NumberOfRenderedProps = this->GBufferPass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
+{
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLRenderer* renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  vtkDeepGBufferPass* gbuffer = this->GBufferPass;
+  if (!gbuffer->RenderLayers(s))
+  {
+    // The opaque props have been drawn the plain way.
+    if (!renderer->GetSelector() && !in.WarnedUnsupported)
+    {
+      in.WarnedUnsupported = true;
+      vtkWarningMacro("The deep G-buffer is unavailable; rendering without radiosity.");
+    }
+    auto it = in.States.find(renderer);
+    if (it != in.States.end())
+    {
+      it->second->HasFrame = false;
+      it->second->ResetHistory();
+    }
+    return;
+  }
+  if (!this->UpdateRadiosity(s))
+  {
+    gbuffer->ResolveToFramebuffer(s);
+    return;
+  }
+
+  // Composite: layer-0 image and depth, then colour = RADIANCE + L_ind.
+  gbuffer->ResolveToFramebuffer(s);
+  if (gbuffer->GetDisplayQuantity() != vtkDeepGBufferPass::RADIANCE)
+  {
+    return;
+  }
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  vtkOpenGLState* ostate = window->GetState();
+  vtkDeepRadiosityRendererState& state = *in.States[renderer];
+  vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
+  vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(ostate);
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ZERO, GL_ZERO, GL_ONE);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDepthMask(GL_FALSE);
+  vtkShaderProgram* program = in.CompositeQuad->Program;
+  window->GetShaderCache()->ReadyShaderProgram(program);
+  vtkTextureObject* indirect = state.Targets[INDIRECT][0];
+  indirect->Activate();
+  const int distanceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
+  const int radianceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::RADIANCE);
+  program->SetUniformi("deepIndirect", indirect->GetTextureUnit());
+  program->SetUniformi("deepDistance", distanceUnit);
+  program->SetUniformi("deepRadiance", radianceUnit);
+  in.CompositeQuad->Render();
+  gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::RADIANCE);
+  gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
+  indirect->Deactivate();
+  vtkOpenGLCheckErrorMacro("failed after the radiosity composite");
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
+{
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLRenderer* renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  vtkDeepGBufferPass* gbuffer = this->GBufferPass;
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  vtkOpenGLState* ostate = window->GetState();
+  vtkOpenGLClearErrorMacro();
+
+  double view[16], projection[16];
+  const int layers = std::min(gbuffer->GetLayerCamera(renderer, view, projection), Layers);
+  if (layers <= 0)
+  {
+    vtkErrorMacro("UpdateRadiosity: the G-buffer pass has no layers for this renderer; call "
+                  "GetGBufferPass()->RenderLayers first.");
+    return false;
+  }
+  int size[2] = { 0, 0 };
+  s->GetWindowSize(size);
+  const int width = size[0], height = size[1];
+
+  auto& slot = in.States[renderer];
+  if (!slot)
+  {
+    slot.reset(new vtkDeepRadiosityRendererState);
+    slot->Renderer = renderer;
+    slot->Renders.Observe(renderer);
+  }
+  if (!in.FirstRenderer || !in.States.count(in.FirstRenderer))
+  {
+    in.FirstRenderer = renderer;
+  }
+  vtkDeepRadiosityRendererState& state = *slot;
+  state.HasFrame = false;
+
+  // Scene-relative parameters.
+  const double diagonal = vtkDeepScreenSpace::VisiblePropDiagonal(renderer);
+  const double radius =
+    this->AutomaticRadius ? this->AutomaticRadiusFraction * diagonal : this->Radius;
+  this->EffectiveRadius = radius;
+  if (this->AutomaticRadius && !(diagonal > 0.0) && !state.WarnedEmpty)
+  {
+    state.WarnedEmpty = true;
+    vtkWarningMacro("The scene has no visible extent: the automatic radius is 0 and there is no "
+                    "indirect light.");
+  }
+  const double tolerance = this->AutomaticReprojectionTolerance
+    ? this->AutomaticReprojectionFraction * diagonal
+    : this->ReprojectionTolerance;
+  this->EffectiveReprojectionTolerance = tolerance;
+  if (this->AutomaticEnvironmentIrradiance)
+  {
+    const double* ambient = renderer->GetAmbient();
+    for (int c = 0; c < 3; ++c)
+    {
+      this->EffectiveEnvironmentIrradiance[c] =
+        std::isfinite(ambient[c]) ? vtkMath::Pi() * std::max(ambient[c], 0.0) : 0.0;
+    }
+  }
+  else
+  {
+    std::copy(this->EnvironmentIrradiance, this->EnvironmentIrradiance + 3,
+      this->EffectiveEnvironmentIrradiance);
+  }
+  const bool hasLights = AnyLightOn(renderer);
+  if (!hasLights && !state.WarnedNoLights)
+  {
+    state.WarnedNoLights = true;
+    vtkWarningMacro("The renderer has no light switched on: VTK draws the props unlit and there "
+                    "is no direct light to bounce.");
+  }
+
+  // History: reset on a resize, a new layer count, and when this renderer
+  // was rendered without this pass since the history's frame.
+  const bool consecutive = state.Renders.Consecutive();
+  if (!consecutive || state.Width != width || state.Height != height || state.LayerCount != layers)
+  {
+    state.ResetHistory();
+  }
+  ++state.FrameIndex;
+  double rotationOffset = 0.0;
+  if (this->TemporalAlpha > 0.0)
+  {
+    // Golden-ratio sequence of rotations: frame k adds 2 pi fract(k / golden ratio).
+    const double f = 0.6180339887498949 * static_cast<double>(state.FrameIndex % 1000003u);
+    rotationOffset = 2.0 * vtkMath::Pi() * (f - std::floor(f));
+  }
+
+  bool allocated = true;
+  for (auto& perLayer : state.Targets)
+  {
+    for (auto& t : perLayer)
+    {
+      allocated = allocated && AllocateTarget(t, window, width, height, 4);
+    }
+  }
+  for (auto& ping : state.History)
+  {
+    for (auto& t : ping)
+    {
+      allocated = allocated && AllocateTarget(t, window, width, height, 4);
+    }
+  }
+  if (!allocated)
+  {
+    vtkErrorMacro("Could not allocate the radiosity targets.");
+    return false;
+  }
+  state.Width = width;
+  state.Height = height;
+  state.LayerCount = layers;
+  if (!in.Framebuffer)
+  {
+    in.Framebuffer = vtkOpenGLFramebufferObject::New();
+    in.Framebuffer->SetContext(window);
+  }
+  const bool ready = ReadyQuad(in.BounceQuad, window, vtkDeepRadiosityBounceFS) &&
+    ReadyQuad(in.GatherQuad, window, vtkDeepRadiosityFS) &&
+    ReadyQuad(in.BlurQuad, window, vtkDeepRadiosityBlurFS) &&
+    ReadyQuad(in.TemporalQuad, window, vtkDeepRadiosityTemporalFS) &&
+    ReadyQuad(in.CompositeQuad, window, vtkDeepRadiosityCompositeFS);
+  if (!ready)
+  {
+    vtkErrorMacro("The radiosity shaders failed to compile.");
+    return false;
+  }
+
+  float projXY[4], projT[4];
+  vtkDeepScreenSpace::ProjectionUniforms(projection, projXY, projT);
+  float toPrevious[16], previousProjection[16];
+  vtkDeepScreenSpace::ReprojectionUniforms(view, projection, state.HistoryValid, state.PreviousView,
+    state.PreviousProjection, toPrevious, previousProjection);
+  int units[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES];
+  for (int q : GBufferQuantities)
+  {
+    units[q] = gbuffer->ActivateTexture(renderer, q);
+  }
+  const int distanceUnit = units[vtkDeepGBufferPass::DEPTH];
+  const int normalUnit = units[vtkDeepGBufferPass::NORMAL];
+  int finest = 0;
+  while ((std::max(width, height) >> (finest + 1)) > 0)
+  {
+    ++finest; // floor(log2(max(width, height)))
+  }
+  const int maxMip = std::min(std::max(this->MaximumMipLevel, this->MinimumMipLevel), finest);
+  const int minMip = std::min(this->MinimumMipLevel, maxMip);
+  const int previous = state.HistoryCurrent, next = 1 - state.HistoryCurrent;
+
+  // Binds `textures` (per layer) of this frame to units and sets the
+  // sampler uniforms name0, name1.
+  auto bindPair = [](vtkShaderProgram* program, const char* name,
+                    vtkSmartPointer<vtkTextureObject>(&textures)[Layers])
+  {
+    for (int j = 0; j < Layers; ++j)
+    {
+      textures[j]->Activate();
+      program->SetUniformi((name + std::to_string(j)).c_str(), textures[j]->GetTextureUnit());
+    }
+  };
+  auto unbindPair = [](vtkSmartPointer<vtkTextureObject>(&textures)[Layers])
+  {
+    for (auto& t : textures)
+    {
+      t->Deactivate();
+    }
+  };
+  auto attach = [&](vtkSmartPointer<vtkTextureObject>(&a)[Layers],
+                  vtkSmartPointer<vtkTextureObject>(*b)[Layers])
+  {
+    int n = 0;
+    for (auto& t : a)
+    {
+      in.Framebuffer->AddColorAttachment(n++, t);
+    }
+    if (b)
+    {
+      for (auto& t : *b)
+      {
+        in.Framebuffer->AddColorAttachment(n++, t);
+      }
+    }
+    in.Framebuffer->ActivateDrawBuffers(n);
+  };
+
+  {
+    vtkOpenGLState::ScopedglViewport savedViewport(ostate);
+    vtkOpenGLState::ScopedglEnableDisable savedScissor(ostate, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
+    ostate->vtkglDisable(GL_SCISSOR_TEST);
+    ostate->vtkglDisable(GL_BLEND);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    ostate->PushFramebufferBindings();
+    in.Framebuffer->Bind();
+    ostate->vtkglViewport(0, 0, width, height);
+
+    // 1. Bounce input B = direct + delta L_ind,t-1 (section 3.3).
+    attach(state.Targets[BOUNCE], nullptr);
+    vtkShaderProgram* program = in.BounceQuad->Program;
+    window->GetShaderCache()->ReadyShaderProgram(program);
+    program->SetUniformi("deepDistance", distanceUnit);
+    program->SetUniformi("deepRadiance", units[vtkDeepGBufferPass::RADIANCE]);
+    program->SetUniformi("deepAmbient", units[vtkDeepGBufferPass::AMBIENT]);
+    program->SetUniformi("deepAlbedo", units[vtkDeepGBufferPass::ALBEDO]);
+    program->SetUniformi("deepNormal", normalUnit);
+    program->SetUniform4f("deepProjXY", projXY);
+    program->SetUniform4f("deepProjT", projT);
+    bindPair(program, "deepHistory", state.History[previous]);
+    program->SetUniformi("deepLayers", layers);
+    program->SetUniformi("deepHasHistory", state.HistoryValid ? 1 : 0);
+    program->SetUniformMatrix4x4("deepToPrevious", toPrevious);
+    program->SetUniformMatrix4x4("deepPrevProjection", previousProjection);
+    program->SetUniformf("deepTolerance", static_cast<float>(tolerance));
+    program->SetUniformf("deepDamping", static_cast<float>(this->Damping));
+    program->SetUniformi("deepBoost", this->UseColorBoost ? 1 : 0);
+    program->SetUniformi("deepHasLights", hasLights ? 1 : 0);
+    in.BounceQuad->Render();
+    unbindPair(state.History[previous]);
+
+    // 2. Gather: eq. 4-5 into RAW (E, M / N).
+    attach(state.Targets[RAW], nullptr);
+    program = in.GatherQuad->Program;
+    window->GetShaderCache()->ReadyShaderProgram(program);
+    program->SetUniformi("deepDistance", distanceUnit);
+    program->SetUniformi("deepNormal", normalUnit);
+    program->SetUniform4f("deepProjXY", projXY);
+    program->SetUniform4f("deepProjT", projT);
+    bindPair(program, "deepBounce", state.Targets[BOUNCE]);
+    program->SetUniformi("deepLayers", layers);
+    program->SetUniformi("deepSamples", this->NumberOfSamples);
+    program->SetUniformf(
+      "deepTurns", static_cast<float>(vtkDeepScreenSpace::SpiralTurns(this->NumberOfSamples)));
+    program->SetUniformf("deepRadius", static_cast<float>(radius));
+    program->SetUniformf("deepMipThreshold", static_cast<float>(this->MipThreshold));
+    program->SetUniformi("deepMinMip", minMip);
+    program->SetUniformi("deepMaxMip", maxMip);
+    program->SetUniformi("deepNormalTest", this->UseNormalTest ? 1 : 0);
+    program->SetUniformf("deepCosineEpsilon", static_cast<float>(COSINE_EPSILON));
+    program->SetUniformf("deepRotationOffset", static_cast<float>(rotationOffset));
+    in.GatherQuad->Render();
+    unbindPair(state.Targets[BOUNCE]);
+
+    // 3. Separable bilateral reconstruction: RAW -> BLUR_TEMP -> FILTERED.
+    const int passes[2][3] = { { RAW, BLUR_TEMP, 0 }, { BLUR_TEMP, FILTERED, 1 } };
+    program = in.BlurQuad->Program;
+    for (const auto& pass : passes)
+    {
+      attach(state.Targets[pass[1]], nullptr);
+      window->GetShaderCache()->ReadyShaderProgram(program);
+      bindPair(program, "deepInput", state.Targets[pass[0]]);
+      program->SetUniformi("deepDistance", distanceUnit);
+      program->SetUniformi("deepNormal", normalUnit);
+      program->SetUniform4f("deepProjXY", projXY);
+      program->SetUniform4f("deepProjT", projT);
+      program->SetUniformi("deepLayers", layers);
+      const int axis[2] = { pass[2] == 0 ? 1 : 0, pass[2] == 0 ? 0 : 1 };
+      program->SetUniform2i("deepAxis", axis);
+      program->SetUniformi("deepBlurRadius", (this->FilterTaps - 1) / 2);
+      program->SetUniformf("deepPlaneTolerance", static_cast<float>(this->BlurPlaneTolerance));
+      program->SetUniformf("deepNormalPower", static_cast<float>(this->BlurNormalPower));
+      in.BlurQuad->Render();
+      unbindPair(state.Targets[pass[0]]);
+    }
+
+    // 4. Temporal filter and eq. 6 (+ fallback): FILTERED + History[previous]
+    // -> History[next], INDIRECT.
+    attach(state.History[next], &state.Targets[INDIRECT]);
+    program = in.TemporalQuad->Program;
+    window->GetShaderCache()->ReadyShaderProgram(program);
+    bindPair(program, "deepInput", state.Targets[FILTERED]);
+    bindPair(program, "deepHistory", state.History[previous]);
+    program->SetUniformi("deepDistance", distanceUnit);
+    program->SetUniformi("deepNormal", normalUnit);
+    program->SetUniformi("deepAlbedo", units[vtkDeepGBufferPass::ALBEDO]);
+    program->SetUniform4f("deepProjXY", projXY);
+    program->SetUniform4f("deepProjT", projT);
+    program->SetUniformi("deepLayers", layers);
+    program->SetUniformi("deepHasHistory", state.HistoryValid ? 1 : 0);
+    program->SetUniformMatrix4x4("deepToPrevious", toPrevious);
+    program->SetUniformMatrix4x4("deepPrevProjection", previousProjection);
+    program->SetUniformf("deepTolerance", static_cast<float>(tolerance));
+    program->SetUniformf("deepAlpha", static_cast<float>(this->TemporalAlpha));
+    program->SetUniformi("deepBoost", this->UseColorBoost ? 1 : 0);
+    program->SetUniformi("deepFallback", this->ConfidenceFallback ? 1 : 0);
+    const float environment[3] = { static_cast<float>(this->EffectiveEnvironmentIrradiance[0]),
+      static_cast<float>(this->EffectiveEnvironmentIrradiance[1]),
+      static_cast<float>(this->EffectiveEnvironmentIrradiance[2]) };
+    program->SetUniform3f("deepEnvironment", environment);
+    program->SetUniformf("deepIrradianceLimit", static_cast<float>(IRRADIANCE_LIMIT));
+    in.TemporalQuad->Render();
+    unbindPair(state.History[previous]);
+    unbindPair(state.Targets[FILTERED]);
+    for (int a = 0; a < 2 * Layers; ++a)
+    {
+      in.Framebuffer->RemoveColorAttachment(a);
+    }
+    ostate->PopFramebufferBindings();
+  }
+  state.HistoryCurrent = next;
+  state.HistoryValid = true;
+  std::copy(view, view + 16, state.PreviousView);
+  std::copy(projection, projection + 16, state.PreviousProjection);
+
+  for (int q : GBufferQuantities)
+  {
+    if (units[q] >= 0)
+    {
+      gbuffer->DeactivateTexture(renderer, q);
+    }
+  }
+  state.HasFrame = true;
+  state.Radius = radius;
+  state.NumberOfSamples = this->NumberOfSamples;
+  state.Tolerance = tolerance;
+  std::copy(this->EffectiveEnvironmentIrradiance, this->EffectiveEnvironmentIrradiance + 3,
+    state.Environment);
+  vtkOpenGLCheckErrorMacro("failed after vtkDeepRadiosityPass");
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkDeepRadiosityPass::ActivateTexture(vtkRenderer* renderer, int quantity, int layer)
+{
+  vtkDeepRadiosityRendererState* state = this->Internals->Find(renderer);
+  vtkTextureObject* texture = state ? state->Output(quantity, layer) : nullptr;
+  if (!texture)
+  {
+    return -1;
+  }
+  texture->Activate();
+  return texture->GetTextureUnit();
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepRadiosityPass::DeactivateTexture(vtkRenderer* renderer, int quantity, int layer)
+{
+  vtkDeepRadiosityRendererState* state = this->Internals->Find(renderer);
+  if (vtkTextureObject* texture = state ? state->Output(quantity, layer) : nullptr)
+  {
+    texture->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+unsigned int vtkDeepRadiosityPass::GetTextureHandle(vtkRenderer* renderer, int quantity, int layer)
+{
+  vtkDeepRadiosityRendererState* state = this->Internals->Find(renderer);
+  vtkTextureObject* texture = state ? state->Output(quantity, layer) : nullptr;
+  return texture ? texture->GetHandle() : 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepRadiosityPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  vtkInternals& in = *this->Internals;
+  for (auto& entry : in.States)
+  {
+    entry.second->Release(w);
+  }
+  in.States.clear();
+  in.FirstRenderer = nullptr;
+  for (vtkOpenGLQuadHelper** quad :
+    { &in.BounceQuad, &in.GatherQuad, &in.BlurQuad, &in.TemporalQuad, &in.CompositeQuad })
+  {
+    vtkDeepScreenSpace::ReleaseQuad(*quad, w);
+  }
+  if (in.Framebuffer)
+  {
+    in.Framebuffer->ReleaseGraphicsResources(w);
+    in.Framebuffer->Delete();
+    in.Framebuffer = nullptr;
+  }
+  this->GBufferPass->ReleaseGraphicsResources(w);
+  this->Superclass::ReleaseGraphicsResources(w);
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepRadiosityPass::CaptureIrradiance(vtkImageData* output, vtkRenderer* renderer)
+{
+  vtkDeepRadiosityRendererState* state = this->Internals->Find(renderer);
+  if (!output || !state || !state->Renderer)
+  {
+    vtkErrorMacro("CaptureIrradiance: no radiosity has been rendered for this renderer.");
+    return false;
+  }
+  vtkRenderer* ren = state->Renderer;
+  const GLuint distanceHandle = this->GBufferPass->GetTextureHandle(ren, vtkDeepGBufferPass::DEPTH);
+  if (!distanceHandle)
+  {
+    vtkErrorMacro("CaptureIrradiance: the G-buffer of this renderer is gone.");
+    return false;
+  }
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  window->MakeCurrent();
+  vtkOpenGLState* ostate = window->GetState();
+  vtkOpenGLClearErrorMacro();
+
+  const int w = state->Width, h = state->Height;
+  const size_t pixels = static_cast<size_t>(w) * h;
+  ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+  vtkOpenGLState::ScopedglActiveTexture savedUnit(ostate);
+  GLint previous2D = 0, previousArray = 0;
+  glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous2D);
+  glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &previousArray);
+  auto download = [&](vtkTextureObject* texture)
+  {
+    std::vector<float> values(pixels * 4);
+    glBindTexture(GL_TEXTURE_2D, texture->GetHandle());
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, values.data());
+    return values;
+  };
+  glBindTexture(GL_TEXTURE_2D_ARRAY, distanceHandle);
+  GLint arrayDepth = 1;
+  glGetTexLevelParameteriv(GL_TEXTURE_2D_ARRAY, 0, GL_TEXTURE_DEPTH, &arrayDepth);
+  std::vector<float> distance(pixels * std::max(1, arrayDepth));
+  glGetTexImage(GL_TEXTURE_2D_ARRAY, 0, GL_RED, GL_FLOAT, distance.data());
+
+  output->Initialize();
+  output->SetDimensions(w, h, 1);
+  output->SetSpacing(1.0, 1.0, 1.0);
+  output->SetOrigin(0.0, 0.0, 0.0);
+  for (int j = 0; j < Layers; ++j)
+  {
+    const std::vector<float> irradiance = download(state->History[state->HistoryCurrent][j]);
+    const std::vector<float> indirect = download(state->Targets[INDIRECT][j]);
+    const std::vector<float> filtered = download(state->Targets[FILTERED][j]);
+    const std::vector<float> raw = download(state->Targets[RAW][j]);
+    const std::string suffix = "_" + std::to_string(j);
+    auto makeArray = [&](const char* name, int components)
+    {
+      vtkNew<vtkFloatArray> array;
+      array->SetName((name + suffix).c_str());
+      array->SetNumberOfComponents(components);
+      array->SetNumberOfTuples(pixels);
+      output->GetPointData()->AddArray(array);
+      return array.GetPointer();
+    };
+    vtkFloatArray* e = makeArray("Irradiance", 3);
+    vtkFloatArray* l = makeArray("IndirectRadiance", 3);
+    vtkFloatArray* c = makeArray("Confidence", 1);
+    vtkFloatArray* fe = makeArray("FilteredIrradiance", 3);
+    vtkFloatArray* re = makeArray("RawIrradiance", 3);
+    vtkFloatArray* rc = makeArray("RawConfidence", 1);
+    vtkNew<vtkUnsignedCharArray> valid;
+    valid->SetName(("Valid" + suffix).c_str());
+    valid->SetNumberOfTuples(pixels);
+    output->GetPointData()->AddArray(valid);
+    for (size_t p = 0; p < pixels; ++p)
+    {
+      const bool isValid =
+        j < state->LayerCount && j < arrayDepth && distance[j * pixels + p] > 0.0f;
+      valid->SetValue(p, isValid ? 1 : 0);
+      for (int k = 0; k < 3; ++k)
+      {
+        e->SetTypedComponent(p, k, isValid ? irradiance[4 * p + k] : 0.0f);
+        l->SetTypedComponent(p, k, isValid ? indirect[4 * p + k] : 0.0f);
+        re->SetTypedComponent(p, k, isValid ? raw[4 * p + k] : 0.0f);
+        fe->SetTypedComponent(p, k, isValid ? filtered[4 * p + k] : 0.0f);
+      }
+      c->SetValue(p, isValid ? filtered[4 * p + 3] : 0.0f);
+      rc->SetValue(p, isValid ? raw[4 * p + 3] : 0.0f);
+    }
+  }
+  glBindTexture(GL_TEXTURE_2D, previous2D);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, previousArray);
+  ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
+
+  auto addField = [&](const char* name, std::initializer_list<double> values)
+  {
+    vtkNew<vtkDoubleArray> array;
+    array->SetName(name);
+    for (double v : values)
+    {
+      array->InsertNextValue(v);
+    }
+    output->GetFieldData()->AddArray(array);
+  };
+  addField("Radius", { state->Radius });
+  addField("ReprojectionTolerance", { state->Tolerance });
+  addField("EnvironmentIrradiance",
+    { state->Environment[0], state->Environment[1], state->Environment[2] });
+  vtkNew<vtkIntArray> samples, layerCount, frames;
+  samples->SetName("NumberOfSamples");
+  samples->InsertNextValue(state->NumberOfSamples);
+  layerCount->SetName("NumberOfLayers");
+  layerCount->InsertNextValue(state->LayerCount);
+  frames->SetName("Frames");
+  frames->InsertNextValue(static_cast<int>(state->FrameIndex));
+  output->GetFieldData()->AddArray(samples);
+  output->GetFieldData()->AddArray(layerCount);
+  output->GetFieldData()->AddArray(frames);
+  vtkOpenGLCheckErrorMacro("failed after capturing the radiosity");
+  return true;
+}

@@ -1,0 +1,439 @@
+/**
+ * @class   vtkDeepRadiosityPass
+ * @brief   Screen-space radiosity (one diffuse bounce per frame) over a deep G-buffer.
+ *
+ * Implements sections 3.2, 3.3 and 3.5 (equations 3-7, Table 2) of Mara,
+ * McGuire, Nowrouzezahrai and Luebke, "Deep G-Buffers for Stable Global
+ * Illumination Approximation" (HPG 2016), with the spiral taps of section
+ * 3.4. Put it on a renderer (`renderer->SetPass(pass)`) and it renders the
+ * whole frame like vtkDeepAmbientObscurancePass: camera, lights, the opaque
+ * props into the layers of a vtkDeepGBufferPass (GetGBufferPass();
+ * SetGBufferPass() shares one), the indirect light, the composite, then the
+ * G-buffer pass's translucent, volumetric and overlay steps.
+ *
+ * Quantities and units (those of the G-buffer): RADIANCE is VTK's outgoing
+ * radiance L_o; the direct radiance of a surface is RADIANCE - AMBIENT; rho
+ * is ALBEDO. For the surfaces X of layers 0 and 1 of every pixel:
+ *
+ *   E(X) ~= 2 pi / M sum_i B(Y_i) max(w_i . n_X, 0)        (eq. 4)
+ *   L_ind(X) = rho_X boost(rho_X) E(X) / pi                 (eq. 6)
+ *   boost(rho) = (max rho - min rho) / max rho  or 1        (eq. 7)
+ *
+ * E is the irradiance of eq. 3 with B / pi = L_o, i.e. the integral of the
+ * incoming radiance times the cosine over the hemisphere, estimated from N
+ * spiral taps (section 3.4: kappa_i = (i + 0.5) / N, h_i = r_p kappa_i
+ * pixels, theta_i = 2 pi kappa_i tau(N) + phi, phi the interleaved
+ * gradient noise of the pixel as in vtkDeepAmbientObscurancePass, r_p the
+ * world radius r projected at layer 0's depth; the same screen taps serve
+ * both layers). At each tap the surfaces of both layers are candidates Y; a
+ * candidate passes eq. 5 when |Y - X| < r, w.n_X > epsilon and, with
+ * UseNormalTest, w.n_Y < -epsilon (w = (Y - X) / |Y - X|, epsilon =
+ * COSINE_EPSILON, see below); the tap takes the passing candidate with the
+ * larger contribution |B (w.n_X)| and is rejected when none passes (also
+ * when it falls outside the image). M counts the taps that were not
+ * rejected; M = 0 gives E = 0. The confidence is M / N.
+ *
+ * Taps read MIP level m_i = clamp(floor(log2(h_i / q)), MinimumMipLevel,
+ * MaximumMipLevel) of a rotated-grid pyramid (SAO's minification): the
+ * pass reads the level-0 texel that level m stores at the tap's coarse
+ * texel (the same texel vtkDeepAmbientObscurancePass's distance pyramid
+ * holds), so a coarse level moves the tap to a texel of a coarser grid
+ * (more correlated taps, Table 2's trade) and every sample is an exact
+ * surface point.
+ *
+ * Multiple bounces (section 3.3): the radiosity of a tap is
+ *   B(Y) = direct(Y) + delta L_ind,t-1(Y)
+ * with L_ind,t-1 = rho boost E_t-1 / pi from the last frame's final
+ * irradiance, reverse-reprojected to Y and taken from whichever of the last
+ * frame's layers lies within the reprojection tolerance of it (0 where
+ * none does). The comparison is made at the centre of the previous texel
+ * the point falls into: Y's plane (its current normal) is met with that
+ * texel's ray, so that a slanted surface is not rejected for the sub-pixel
+ * offset of the reprojection (at grazing angles, |n.ray| < 0.05, Y's own
+ * depth is used). Frame t therefore adds the t-th bounce (Figure 4) and
+ * propagates light across both layers (Figure 5). delta = Damping.
+ * Temporal filter: E_t = E (1 - alpha) + reproject(E_t-1) alpha where the
+ * reprojected point lies within the tolerance of either previous layer,
+ * else E_t = E; alpha = TemporalAlpha. While alpha > 0 the spiral rotation
+ * phi gets a per-frame offset 2 pi fract(k / golden ratio) so that frames
+ * sample other directions. History (per renderer) is reset on a resize, a
+ * change of layer count, ReleaseGraphicsResources, when the G-buffer is
+ * unavailable, and when the renderer was rendered without this pass.
+ *
+ * Reconstruction: a separable bilateral filter of E and the confidence
+ * (FilterTaps taps in each direction, Gaussian sigma = (FilterTaps - 1) / 4,
+ * times the plane and normal weights of vtkDeepAmbientObscurancePass), per
+ * layer, before the temporal filter.
+ *
+ * Confidence fallback (off by default, section 3.2, Figure 9): the
+ * outgoing indirect radiance becomes c L_ind + (1 - c) rho E_env / pi, c
+ * the filtered confidence, E_env the environment irradiance (default
+ * pi times the renderer's ambient colour, i.e. a uniform environment of
+ * that radiance). It is not propagated to later bounces.
+ *
+ * Composite: layer 0's colour = RADIANCE + L_ind (float, alpha kept) when
+ * the G-buffer displays RADIANCE; the G-buffer's image otherwise. Pixels
+ * where layer 0 is empty keep the background.
+ *
+ * Textures (per renderer, viewport size, two of each: layers 0 and 1):
+ * | texture   | format  | content                                            |
+ * |-----------|---------|----------------------------------------------------|
+ * | bounce    | RGBA32F | B of the taps (rgb)                                |
+ * | raw       | RGBA32F | eq. 4 E (rgb) and confidence M / N (a)             |
+ * | blur tmp  | RGBA32F | after the horizontal pass                          |
+ * | filtered  | RGBA32F | after the vertical pass                            |
+ * | history   | RGBA32F | x2 (ping-pong): E_t (rgb), layer distance (a)      |
+ * | indirect  | RGBA32F | L_ind, fallback included (rgb), confidence (a)     |
+ * Reads: the G-buffer's DEPTH, NORMAL, RADIANCE, AMBIENT and ALBEDO
+ * arrays (layers 0 and 1). Writes: the renderer's colour and depth.
+ * IRRADIANCE (history) and INDIRECT_RADIANCE are accessible through
+ * ActivateTexture for a pass that composites them itself.
+ *
+ * Not implemented: the guard band of Table 2 (the G-buffer has none, so
+ * the preset's guard-band fraction has nothing to act on), shadow maps
+ * (the direct light is VTK's, unshadowed unless a shadow pass lit the
+ * G-buffer), and visibility between X and Y (the paper assumes it too).
+ *
+ * Bad input never crashes: a non-finite or negative radius, tolerance or
+ * environment irradiance, a sample count outside 1..98 and alpha or delta
+ * outside [0, 1] are reported with vtkWarningMacro and replaced by the
+ * nearest valid value; an empty scene (automatic radius 0) and a frame
+ * without lights are reported once per renderer and give L_ind = 0 (VTK
+ * draws props unlit at their full colour when no light is on; that colour
+ * is not bounced).
+ *
+ * @sa vtkDeepGBufferPass vtkDeepAmbientObscurancePass
+ */
+
+#ifndef vtkDeepRadiosityPass_h
+#define vtkDeepRadiosityPass_h
+
+#include "vtkDeepGIRenderingModule.h" // for export macro
+#include "vtkRenderPass.h"
+
+#include <memory> // for std::unique_ptr
+
+class vtkDeepGBufferPass;
+class vtkImageData;
+class vtkRenderer;
+
+class VTKDEEPGIRENDERING_EXPORT vtkDeepRadiosityPass : public vtkRenderPass
+{
+public:
+  static vtkDeepRadiosityPass* New();
+  vtkTypeMacro(vtkDeepRadiosityPass, vtkRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Layers that receive and send indirect light (G-buffer layers 0 and 1).
+  static constexpr int NUMBER_OF_LAYERS = 2;
+
+  /// Largest sample count: Listing 3 of the paper gives tau for N = 1..98.
+  static constexpr int MAXIMUM_NUMBER_OF_SAMPLES = 98;
+
+  /// Cosine threshold of eq. 5's tests: Oct16 normals are quantised to
+  /// about 0.5 degree, so a tap on X's own plane has w.n_X of either sign
+  /// within about 0.009; it is rejected rather than counted in M.
+  static constexpr double COSINE_EPSILON = 0.01;
+
+  /// Upper bound of E (irradiance units): a float guard that keeps a
+  /// divergent configuration (rho = 1, delta = 1 in a closed room, whose
+  /// true radiosity is infinite) finite.
+  static constexpr double IRRADIANCE_LIMIT = 1e30;
+
+  /// The outputs accessible with ActivateTexture.
+  enum Quantity
+  {
+    IRRADIANCE = 0,       ///< RGBA32F: E_t after both filters (rgb), layer distance (a)
+    INDIRECT_RADIANCE = 1 ///< RGBA32F: L_ind with the fallback (rgb), confidence (a)
+  };
+
+  /// Table 2's parameter sets.
+  enum Preset
+  {
+    HIGH_PERFORMANCE = 0, ///< N 13, 9 filter taps, no n_Y test, minimum MIP level 3
+    BALANCED = 1,         ///< N 14, 11 filter taps, n_Y test, minimum MIP level 2 (defaults)
+    HIGH_QUALITY = 2      ///< N 30, 13 filter taps, n_Y test, minimum MIP level 0
+  };
+
+  ///@{
+  /**
+   * The G-buffer pass that builds the layers. One is created by default;
+   * set one to share it with other deep passes. Null is refused.
+   */
+  void SetGBufferPass(vtkDeepGBufferPass* pass);
+  vtkGetObjectMacro(GBufferPass, vtkDeepGBufferPass);
+  ///@}
+
+  ///@{
+  /**
+   * World-space gather radius r: taps farther than r from X are rejected.
+   * Setting a value switches AutomaticRadius off. NaN and infinities are
+   * rejected with a warning (the previous value stays); negative values
+   * are clamped to 0 with a warning (r = 0 gives no indirect light).
+   */
+  void SetRadius(double radius);
+  vtkGetMacro(Radius, double);
+  ///@}
+
+  ///@{
+  /**
+   * When on (default), r is AutomaticRadiusFraction (default 0.1, clamped
+   * to [0, 1]) times the diagonal of the bounds of the renderer's visible
+   * props (1.34 in vtkDeepGBufferDemoScene's 10 x 4 x 8 room).
+   */
+  vtkSetMacro(AutomaticRadius, bool);
+  vtkGetMacro(AutomaticRadius, bool);
+  vtkBooleanMacro(AutomaticRadius, bool);
+  vtkSetClampMacro(AutomaticRadiusFraction, double, 0.0, 1.0);
+  vtkGetMacro(AutomaticRadiusFraction, double);
+  ///@}
+
+  /// The radius r used by the last frame (world units).
+  vtkGetMacro(EffectiveRadius, double);
+
+  ///@{
+  /**
+   * Number of spiral taps N, 1 to 98. Default 14 (BALANCED). Values
+   * outside are clamped with a warning (N = 99 becomes 98: Listing 3 has
+   * no tau for it).
+   */
+  void SetNumberOfSamples(int samples);
+  vtkGetMacro(NumberOfSamples, int);
+  ///@}
+
+  ///@{
+  /**
+   * The n_Y test of eq. 5 (w.n_Y < 0: Y faces X). On by default
+   * (BALANCED). Off: less bandwidth and variance, more bias (light from
+   * surfaces that face away from X is gathered).
+   */
+  vtkSetMacro(UseNormalTest, bool);
+  vtkGetMacro(UseNormalTest, bool);
+  vtkBooleanMacro(UseNormalTest, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Eq. 7's colour boost of the reflected light. Off by default: boost = 1
+   * conserves energy (and the boost of a grey or white surface is 0, so
+   * with it on only saturated surfaces reflect indirect light).
+   */
+  vtkSetMacro(UseColorBoost, bool);
+  vtkGetMacro(UseColorBoost, bool);
+  vtkBooleanMacro(UseColorBoost, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Reconstruction filter taps per direction of the separable bilateral
+   * filter (Table 2: 9, 11, 13), 1 to 33; an even count is rounded down to
+   * the odd count below it. 1 disables the filter. Default 11. Plane
+   * tolerance (fraction of the centre's distance, default 0.02) and normal
+   * weight exponent (default 8) as in vtkDeepAmbientObscurancePass.
+   */
+  vtkSetClampMacro(FilterTaps, int, 1, 33);
+  vtkGetMacro(FilterTaps, int);
+  vtkSetClampMacro(BlurPlaneTolerance, double, 1e-6, 1.0);
+  vtkGetMacro(BlurPlaneTolerance, double);
+  vtkSetClampMacro(BlurNormalPower, double, 0.0, 128.0);
+  vtkGetMacro(BlurNormalPower, double);
+  ///@}
+
+  ///@{
+  /**
+   * MIP levels of the taps: q, the screen radius in pixels beyond which
+   * taps read coarser levels (default 8, clamped to [1, 65536]); Table 2's
+   * minimum level (0 to 15, default 2) and the coarsest level (0 to 15,
+   * default 5; the minimum wins when larger). Both are also limited by
+   * floor(log2(max(width, height))).
+   */
+  vtkSetClampMacro(MipThreshold, double, 1.0, 65536.0);
+  vtkGetMacro(MipThreshold, double);
+  vtkSetClampMacro(MinimumMipLevel, int, 0, 15);
+  vtkGetMacro(MinimumMipLevel, int);
+  vtkSetClampMacro(MaximumMipLevel, int, 0, 15);
+  vtkGetMacro(MaximumMipLevel, int);
+  ///@}
+
+  ///@{
+  /**
+   * Damping delta of the propagated bounce (section 3.3), in [0, 1];
+   * default 0.5. 0 gives the single bounce every frame. The gathered
+   * estimate can exceed the true irradiance by up to 2x (eq. 4 divides by
+   * M, and w.n_X <= 1), so the bounces stay bounded for any albedo when
+   * 2 delta max(rho boost) < 1; see Documentation/radiosity.md. NaN is
+   * rejected and values outside [0, 1] are clamped, with a warning.
+   */
+  void SetDamping(double delta);
+  vtkGetMacro(Damping, double);
+  ///@}
+
+  ///@{
+  /**
+   * Temporal filter weight alpha of the reprojected history, in [0, 1];
+   * default 0.85 (the paper's). 0 turns the filter off; 1 keeps the first
+   * frame's E forever at a still camera. NaN is rejected and values
+   * outside [0, 1] are clamped, with a warning.
+   */
+  void SetTemporalAlpha(double alpha);
+  vtkGetMacro(TemporalAlpha, double);
+  ///@}
+
+  ///@{
+  /**
+   * Reprojection tolerance (world units): history is used where the
+   * reprojected point's camera depth is within it of either previous
+   * layer. Setting a value switches the automatic tolerance off; NaN is
+   * rejected, negative values become 0, with a warning. Automatic
+   * (default): AutomaticReprojectionFraction (default 2.5e-4) times the
+   * scene diagonal, the paper's 1 cm in scenes about 40 m across.
+   */
+  void SetReprojectionTolerance(double tolerance);
+  vtkGetMacro(ReprojectionTolerance, double);
+  vtkSetMacro(AutomaticReprojectionTolerance, bool);
+  vtkGetMacro(AutomaticReprojectionTolerance, bool);
+  vtkBooleanMacro(AutomaticReprojectionTolerance, bool);
+  vtkSetClampMacro(AutomaticReprojectionFraction, double, 0.0, 1.0);
+  vtkGetMacro(AutomaticReprojectionFraction, double);
+  ///@}
+
+  /// The tolerance used by the last frame (world units).
+  vtkGetMacro(EffectiveReprojectionTolerance, double);
+
+  ///@{
+  /**
+   * Confidence fallback (section 3.2, Figure 9): L = c L_ind + (1 - c) rho
+   * E_env / pi. Off by default: VTK's default renderer ambient colour is
+   * white, i.e. an environment as bright as a light of intensity 1 from
+   * every direction, which would brighten every low-confidence pixel by
+   * its full albedo; turn it on with an environment that matches the scene.
+   */
+  vtkSetMacro(ConfidenceFallback, bool);
+  vtkGetMacro(ConfidenceFallback, bool);
+  vtkBooleanMacro(ConfidenceFallback, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Environment irradiance E_env (RGB, irradiance units: pi times the
+   * radiance of a uniform environment). Setting a value switches the
+   * automatic one off; NaN components are rejected, negative ones become
+   * 0, with a warning. Automatic (default): pi times the renderer's
+   * ambient colour (vtkRenderer::GetAmbient).
+   */
+  void SetEnvironmentIrradiance(double r, double g, double b);
+  void SetEnvironmentIrradiance(const double e[3])
+  {
+    this->SetEnvironmentIrradiance(e[0], e[1], e[2]);
+  }
+  vtkGetVector3Macro(EnvironmentIrradiance, double);
+  vtkSetMacro(AutomaticEnvironmentIrradiance, bool);
+  vtkGetMacro(AutomaticEnvironmentIrradiance, bool);
+  vtkBooleanMacro(AutomaticEnvironmentIrradiance, bool);
+  ///@}
+
+  /// E_env used by the last frame.
+  vtkGetVector3Macro(EffectiveEnvironmentIrradiance, double);
+
+  ///@{
+  /**
+   * Sets NumberOfSamples, FilterTaps, UseNormalTest and MinimumMipLevel to
+   * Table 2's values (see Preset) with one Modified(). The guard-band
+   * fraction of Table 2 is not applied (no guard band). An unknown preset
+   * is ignored with a warning.
+   */
+  void SetPreset(int preset);
+  void SetPresetToHighPerformance() { this->SetPreset(HIGH_PERFORMANCE); }
+  void SetPresetToBalanced() { this->SetPreset(BALANCED); }
+  void SetPresetToHighQuality() { this->SetPreset(HIGH_QUALITY); }
+  static const char* GetPresetAsString(int preset);
+  ///@}
+
+  ///@{
+  /**
+   * Access for passes that composite the radiosity themselves: binds the
+   * GL_TEXTURE_2D of `quantity` (IRRADIANCE or INDIRECT_RADIANCE) of layer
+   * `layer` (0 or 1) of the last frame rendered for `renderer` to a free
+   * texture unit and returns it (-1 if there is none). Release it with
+   * DeactivateTexture. GetTextureHandle gives the OpenGL name (0 if none).
+   */
+  int ActivateTexture(vtkRenderer* renderer, int quantity, int layer);
+  void DeactivateTexture(vtkRenderer* renderer, int quantity, int layer);
+  unsigned int GetTextureHandle(vtkRenderer* renderer, int quantity, int layer);
+  ///@}
+
+  /**
+   * Copies the radiosity of the last frame rendered for `renderer` (the
+   * first renderer the pass rendered if null) into `output`, an image of
+   * the viewport's size, with float point-data arrays per layer j = 0, 1:
+   * "Irradiance_j" (RGB, E_t after both filters), "IndirectRadiance_j"
+   * (RGB, L_ind with the fallback when it is on), "Confidence_j" (filtered
+   * M / N), "FilteredIrradiance_j" (RGB, this frame's E after the bilateral
+   * filter, before the temporal one), "RawIrradiance_j" (RGB) and
+   * "RawConfidence_j" (eq. 4 and M / N of this frame's gather before any
+   * filter), all 0 where layer j is
+   * empty, and unsigned char "Valid_j". Field data: "Radius",
+   * "NumberOfSamples", "NumberOfLayers", "ReprojectionTolerance",
+   * "EnvironmentIrradiance" (3) and "Frames" (frames since the history was
+   * reset, 1 for a single bounce). The context must be current (it is right
+   * after Render()). Returns false with an error when there is nothing.
+   */
+  bool CaptureIrradiance(vtkImageData* output, vtkRenderer* renderer = nullptr);
+
+  /**
+   * Computes this frame's radiosity textures (bounce input, gather,
+   * filters, history, INDIRECT_RADIANCE) for the renderer of `s` from the
+   * layers GetGBufferPass() has just built, without drawing into the
+   * renderer's framebuffer. Render() calls it between RenderLayers and its
+   * composite; a pass that composites the radiosity itself calls it after
+   * its own GetGBufferPass()->RenderLayers(s) returned true, then reads the
+   * textures with ActivateTexture. Returns false (with an error) when the
+   * targets or shaders are unavailable.
+   */
+  bool UpdateRadiosity(const vtkRenderState* s);
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+protected:
+  vtkDeepRadiosityPass();
+  ~vtkDeepRadiosityPass() override;
+
+  /// The opaque step of the frame: layers, radiosity, filters, composite.
+  void RenderOpaque(const vtkRenderState* s);
+
+  vtkDeepGBufferPass* GBufferPass = nullptr;
+  double Radius = 1.0;
+  bool AutomaticRadius = true;
+  double AutomaticRadiusFraction = 0.1;
+  double EffectiveRadius = 0.0;
+  int NumberOfSamples = 14;
+  bool UseNormalTest = true;
+  bool UseColorBoost = false;
+  int FilterTaps = 11;
+  double BlurPlaneTolerance = 0.02;
+  double BlurNormalPower = 8.0;
+  double MipThreshold = 8.0;
+  int MinimumMipLevel = 2;
+  int MaximumMipLevel = 5;
+  double Damping = 0.5;
+  double TemporalAlpha = 0.85;
+  double ReprojectionTolerance = 0.01;
+  bool AutomaticReprojectionTolerance = true;
+  double AutomaticReprojectionFraction = 2.5e-4;
+  double EffectiveReprojectionTolerance = 0.0;
+  bool ConfidenceFallback = false;
+  double EnvironmentIrradiance[3] = { 0.0, 0.0, 0.0 };
+  bool AutomaticEnvironmentIrradiance = true;
+  double EffectiveEnvironmentIrradiance[3] = { 0.0, 0.0, 0.0 };
+
+private:
+  vtkDeepRadiosityPass(const vtkDeepRadiosityPass&) = delete;
+  void operator=(const vtkDeepRadiosityPass&) = delete;
+
+  friend class vtkDeepRadiosityOpaqueStep;
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

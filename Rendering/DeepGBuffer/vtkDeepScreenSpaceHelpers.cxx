@@ -1,0 +1,191 @@
+#include "vtkDeepScreenSpaceHelpers.h"
+
+#include "vtkCommand.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtk_glew.h"
+
+#include "vtkDeepGBufferCommon.h"
+#include "vtkDeepScreenSpaceCommon.h"
+
+#include <cmath>
+#include <string>
+
+namespace
+{
+// Mara et al. 2016, Listing 3: tau[N - 1] is the discrepancy-minimising
+// number of spiral turns for N samples, N = 1..98.
+const int SpiralTurnsTable[98] = { 1, 1, 2, 3, 2, 5, 2, 3, 2, 3, 3, 5, 5, 3, 4, 7, 5, 5, 7, 9, 8, 5,
+  5, 7, 7, 7, 8, 5, 8, 11, 12, 7, 10, 13, 8, 11, 8, 7, 14, 11, 11, 13, 12, 13, 19, 17, 13, 11, 18,
+  19, 11, 11, 14, 17, 21, 15, 16, 17, 18, 13, 17, 11, 17, 19, 18, 25, 18, 19, 19, 29, 21, 19, 27,
+  31, 29, 21, 18, 17, 29, 31, 31, 23, 18, 25, 26, 25, 23, 19, 34, 19, 27, 21, 25, 39, 29, 17, 21,
+  27 };
+}
+
+namespace vtkDeepScreenSpace
+{
+//------------------------------------------------------------------------------
+int SpiralTurns(int numberOfSamples)
+{
+  if (numberOfSamples < 1 || numberOfSamples > 98)
+  {
+    return 0;
+  }
+  return SpiralTurnsTable[numberOfSamples - 1];
+}
+
+//------------------------------------------------------------------------------
+bool ReadyQuad(vtkOpenGLQuadHelper*& quad, vtkOpenGLRenderWindow* window, const char* source)
+{
+  if (!quad)
+  {
+    std::string fs = source;
+    vtkShaderProgram::Substitute(fs, "//VTK::DeepGBuffer::Common", vtkDeepGBufferCommon);
+    vtkShaderProgram::Substitute(fs, "//VTK::DeepScreenSpace::Common", vtkDeepScreenSpaceCommon);
+    quad = new vtkOpenGLQuadHelper(
+      window, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), "");
+  }
+  else
+  {
+    window->GetShaderCache()->ReadyShaderProgram(quad->Program);
+  }
+  return quad->Program && quad->Program->GetCompiled();
+}
+
+//------------------------------------------------------------------------------
+void ReleaseQuad(vtkOpenGLQuadHelper*& quad, vtkWindow* window)
+{
+  if (quad)
+  {
+    quad->ReleaseGraphicsResources(window);
+    delete quad;
+    quad = nullptr;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool AllocateTarget(vtkSmartPointer<vtkTextureObject>& texture, vtkOpenGLRenderWindow* window,
+  int width, int height, int components)
+{
+  if (texture && texture->GetWidth() == static_cast<unsigned int>(width) &&
+    texture->GetHeight() == static_cast<unsigned int>(height))
+  {
+    return true;
+  }
+  if (!texture)
+  {
+    static const int internalFormats[4] = { GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F };
+    static const int formats[4] = { GL_RED, GL_RG, GL_RGB, GL_RGBA };
+    texture = vtkSmartPointer<vtkTextureObject>::New();
+    texture->SetContext(window);
+    texture->SetInternalFormat(internalFormats[components - 1]);
+    texture->SetFormat(formats[components - 1]);
+    texture->SetDataType(GL_FLOAT);
+    texture->SetMinificationFilter(vtkTextureObject::Nearest);
+    texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    texture->SetWrapS(vtkTextureObject::ClampToEdge);
+    texture->SetWrapT(vtkTextureObject::ClampToEdge);
+    return texture->Allocate2D(width, height, components, VTK_FLOAT);
+  }
+  texture->Resize(width, height);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void ReleaseTarget(vtkSmartPointer<vtkTextureObject>& texture, vtkWindow* window)
+{
+  if (texture)
+  {
+    texture->ReleaseGraphicsResources(window);
+    texture = nullptr;
+  }
+}
+
+//------------------------------------------------------------------------------
+double VisiblePropDiagonal(vtkRenderer* renderer)
+{
+  double bounds[6];
+  renderer->ComputeVisiblePropBounds(bounds);
+  if (!vtkMath::AreBoundsInitialized(bounds))
+  {
+    return 0.0;
+  }
+  const double extent[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
+  const double diagonal = vtkMath::Norm(extent);
+  return std::isfinite(diagonal) ? diagonal : 0.0;
+}
+
+//------------------------------------------------------------------------------
+void ProjectionUniforms(const double projection[16], float projXY[4], float projT[4])
+{
+  projXY[0] = static_cast<float>(projection[0]);
+  projXY[1] = static_cast<float>(projection[5]);
+  projXY[2] = static_cast<float>(projection[2]);
+  projXY[3] = static_cast<float>(projection[6]);
+  projT[0] = static_cast<float>(projection[3]);
+  projT[1] = static_cast<float>(projection[7]);
+  projT[2] = static_cast<float>(projection[14]);
+  projT[3] = static_cast<float>(projection[15]);
+}
+
+//------------------------------------------------------------------------------
+void ReprojectionUniforms(const double view[16], const double projection[16], bool hasHistory,
+  const double previousView[16], const double previousProjection[16], float toPrevious[16],
+  float previousProjectionGL[16])
+{
+  vtkNew<vtkMatrix4x4> toPreviousMatrix, inverseView;
+  if (hasHistory)
+  {
+    inverseView->DeepCopy(view);
+    inverseView->Invert();
+    vtkMatrix4x4::Multiply4x4(
+      previousView, &inverseView->Element[0][0], &toPreviousMatrix->Element[0][0]);
+  }
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      toPrevious[c * 4 + r] = static_cast<float>(toPreviousMatrix->GetElement(r, c));
+      previousProjectionGL[c * 4 + r] =
+        static_cast<float>(hasHistory ? previousProjection[r * 4 + c] : projection[r * 4 + c]);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+RenderCounter::~RenderCounter()
+{
+  if (this->Observer && this->Renderer)
+  {
+    this->Renderer->RemoveObserver(this->Tag);
+  }
+}
+
+void RenderCounter::Count(vtkObject*, unsigned long, void* clientData, void*)
+{
+  ++static_cast<RenderCounter*>(clientData)->Renders;
+}
+
+void RenderCounter::Observe(vtkRenderer* renderer)
+{
+  this->Renderer = renderer;
+  this->Observer = vtkSmartPointer<vtkCallbackCommand>::New();
+  this->Observer->SetClientData(this);
+  this->Observer->SetCallback(&RenderCounter::Count);
+  this->Tag = renderer->AddObserver(vtkCommand::StartEvent, this->Observer);
+}
+
+bool RenderCounter::Consecutive()
+{
+  const bool consecutive = this->Renders == this->LastRenders + 1;
+  this->LastRenders = this->Renders;
+  return consecutive;
+}
+}

@@ -1,0 +1,84 @@
+/**
+ * Internal helpers shared by the screen-space passes over the deep G-buffer
+ * (vtkDeepAmbientObscurancePass, vtkDeepRadiosityPass): full-screen quads
+ * with the shared GLSL substituted, float render targets, the scene-size
+ * measure behind their automatic radii, projection and reprojection
+ * uniforms, and counting a renderer's renders so that a temporal history is
+ * only used by the frame that directly follows it. Not part of the public
+ * API (a private header of the module).
+ */
+#ifndef vtkDeepScreenSpaceHelpers_h
+#define vtkDeepScreenSpaceHelpers_h
+
+#include "vtkCallbackCommand.h"
+#include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"
+#include "vtkWeakPointer.h"
+
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkRenderer;
+class vtkWindow;
+
+namespace vtkDeepScreenSpace
+{
+/// Number of spiral turns tau for N samples, the paper's Listing 3
+/// (N = 1..98); 0 outside that range.
+int SpiralTurns(int numberOfSamples);
+
+/// Builds (first call) or readies a full-screen quad whose fragment shader
+/// `source` may use //VTK::DeepGBuffer::Common and
+/// //VTK::DeepScreenSpace::Common. True when the program compiled.
+bool ReadyQuad(vtkOpenGLQuadHelper*& quad, vtkOpenGLRenderWindow* window, const char* source);
+
+/// Releases and deletes a quad made by ReadyQuad (null is fine).
+void ReleaseQuad(vtkOpenGLQuadHelper*& quad, vtkWindow* window);
+
+/// Allocates (or resizes) a nearest-filtered, edge-clamped float texture
+/// with 1, 2 or 4 components (R32F, RG32F, RGBA32F).
+bool AllocateTarget(vtkSmartPointer<vtkTextureObject>& texture, vtkOpenGLRenderWindow* window,
+  int width, int height, int components);
+
+/// Releases a texture and clears the pointer (null is fine).
+void ReleaseTarget(vtkSmartPointer<vtkTextureObject>& texture, vtkWindow* window);
+
+/// Diagonal of the bounds of the renderer's visible props, 0 when empty or
+/// not finite: the scene size the automatic radii are fractions of.
+double VisiblePropDiagonal(vtkRenderer* renderer);
+
+/// The deepProjXY and deepProjT uniforms of vtkDeepScreenSpaceCommon.glsl
+/// from a row-major projection matrix.
+void ProjectionUniforms(const double projection[16], float projXY[4], float projT[4]);
+
+/// The deepReproject uniforms (column-major for GLSL): V_prev * inverse(V)
+/// computed in double, and the previous projection. Without history the
+/// matrices are the identity and the current projection (unused).
+void ReprojectionUniforms(const double view[16], const double projection[16], bool hasHistory,
+  const double previousView[16], const double previousProjection[16], float toPrevious[16],
+  float previousProjectionGL[16]);
+
+/// Counts a renderer's StartEvents. A temporal history is valid for the
+/// next frame only when exactly one render of the renderer happened since
+/// (Consecutive()): a render without the pass breaks the chain.
+class RenderCounter
+{
+public:
+  RenderCounter() = default;
+  ~RenderCounter();
+  RenderCounter(const RenderCounter&) = delete;
+  RenderCounter& operator=(const RenderCounter&) = delete;
+  void Observe(vtkRenderer* renderer);
+  /// True when this render directly follows the last call's render.
+  bool Consecutive();
+
+private:
+  static void Count(vtkObject*, unsigned long, void* clientData, void*);
+  vtkWeakPointer<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkCallbackCommand> Observer;
+  unsigned long Tag = 0;
+  unsigned long Renders = 0;
+  unsigned long LastRenders = 0;
+};
+}
+
+#endif
