@@ -5,11 +5,11 @@
 #include "vtkAssemblyPath.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
+#include "vtkDataSet.h"
 #include "vtkDeepAmbientObscurancePass.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDeepRadiosityPass.h"
 #include "vtkDeepReflectionPass.h"
-#include "vtkDataSet.h"
 #include "vtkMapper.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
@@ -31,8 +31,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cctype>
+#include <cmath>
 #include <map>
 #include <string>
 
@@ -317,11 +317,10 @@ void vtkDeepGIPass::SetPreset(int preset)
     int ReflectionSteps;
     int Refinements;
   };
-  static const Settings presets[] = {
-    { vtkDeepAmbientObscurancePass::PRESET_LOW, vtkDeepRadiosityPass::HIGH_PERFORMANCE, 32, 2 },
+  static const Settings presets[] = { { vtkDeepAmbientObscurancePass::PRESET_LOW,
+                                        vtkDeepRadiosityPass::HIGH_PERFORMANCE, 32, 2 },
     { vtkDeepAmbientObscurancePass::PRESET_MEDIUM, vtkDeepRadiosityPass::BALANCED, 64, 4 },
-    { vtkDeepAmbientObscurancePass::PRESET_HIGH, vtkDeepRadiosityPass::HIGH_QUALITY, 128, 6 }
-  };
+    { vtkDeepAmbientObscurancePass::PRESET_HIGH, vtkDeepRadiosityPass::HIGH_QUALITY, 128, 6 } };
   if (preset < HIGH_PERFORMANCE || preset > HIGH_QUALITY)
   {
     vtkWarningMacro("Unknown preset " << preset << "; the settings are unchanged.");

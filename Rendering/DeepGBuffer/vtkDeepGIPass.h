@@ -1,6 +1,6 @@
 /**
  * @class   vtkDeepGIPass
- * @brief   Deep G-buffer global illumination in one pass: direct + AO-scaled ambient + radiosity + reflections.
+ * @brief   Deep G-buffer GI: direct + AV * ambient + radiosity + reflections.
  *
  * The composite of Mara, McGuire, Nowrouzezahrai and Luebke, "Deep
  * G-Buffers for Stable Global Illumination Approximation" (HPG 2016),
@@ -59,18 +59,24 @@
  * When no effect runs the frame is exactly vtkDeepGBufferPass's (VTK's
  * image). GetLastFrameEffects() and PrintSelf tell what ran.
  *
- * Presets (SetPreset, one Modified()):
- * | preset           | AO quality (N, blur, q)  | radiosity (Table 2)        | reflection steps, refinements |
- * |------------------|--------------------------|----------------------------|-------------------------------|
- * | HIGH_PERFORMANCE | PRESET_LOW (8, 2, 4)     | HIGH_PERFORMANCE (N 13 ...) | 32, 2                         |
- * | BALANCED         | PRESET_MEDIUM (16, 4, 8) | BALANCED (N 14 ...)         | 64, 4 (default)               |
- * | HIGH_QUALITY     | PRESET_HIGH (32, 6, 16)  | HIGH_QUALITY (N 30 ...)     | 128, 6                        |
+ * Presets (SetPreset, one Modified()): AO quality (samples N, blur radius,
+ * MIP threshold q), the radiosity pass's Table 2 preset, reflection march
+ * steps and bisections:
+ * | preset           | AO                 | radiosity        | reflections |
+ * |------------------|--------------------|------------------|-------------|
+ * | HIGH_PERFORMANCE | LOW (8, 2, 4)      | HIGH_PERFORMANCE | 32, 2       |
+ * | BALANCED         | MEDIUM (16, 4, 8)  | BALANCED         | 64, 4       |
+ * | HIGH_QUALITY     | HIGH (32, 6, 16)   | HIGH_QUALITY     | 128, 6      |
+ * BALANCED is the sub-passes' default.
  *
  * Still images: radiosity adds one bounce per frame and filters over time
  * (section 3.3), so a single frame shows one bounce. Converge(renderer, n)
  * renders n frames at a fixed camera and fires vtkCommand::ProgressEvent
- * (call data: double progress in [0, 1]) after each; see
- * Documentation/gi.md for the frames each preset needs.
+ * (call data: double progress in [0, 1]) after each. On the demo scene
+ * (320 x 240) the mean distance to the converged image falls below 1/255
+ * after 18 (HIGH_PERFORMANCE), 16 (BALANCED) and 19 (HIGH_QUALITY) frames;
+ * the per-frame change then stays at a floor of 0.15-0.25/255 (the
+ * rotating taps of the temporal filter). See Documentation/gi.md.
  *
  * Bad input: a non-positive frame count, a renderer that does not use this
  * pass, or a probe interval below 1 give a warning and no crash. When the
@@ -120,7 +126,10 @@ public:
   };
 
   ///@{
-  /// The shared G-buffer and the effects, for tuning. Never null.
+  /// The shared G-buffer and the effects, for tuning. Never null. The
+  /// G-buffer's NumberOfLayers and WriteReflectivity are set by this pass
+  /// every frame (1 or 2 layers, see AdaptiveLayers; reflectivity while a
+  /// prop reflects); its other settings (oracle, dz, ...) are the user's.
   vtkGetObjectMacro(GBufferPass, vtkDeepGBufferPass);
   vtkGetObjectMacro(AmbientObscurancePass, vtkDeepAmbientObscurancePass);
   vtkGetObjectMacro(RadiosityPass, vtkDeepRadiosityPass);

@@ -105,7 +105,8 @@ double Difference(Run& a, Run& b)
 void CheckComposite()
 {
   Run run;
-  Render(run, AllEffectsScene, [](vtkDeepGIPass*) {}, 4);
+  Render(
+    run, AllEffectsScene, [](vtkDeepGIPass*) {}, 4);
   vtkDeepGIPass* gi = run.Pass;
   const int all = vtkDeepGIPass::AMBIENT_OBSCURANCE | vtkDeepGIPass::RADIOSITY |
     vtkDeepGIPass::REFLECTIONS | vtkDeepGIPass::SECOND_LAYER;
@@ -149,8 +150,8 @@ void CheckComposite()
       const double mirrored = traced->GetTuple1(p) != 0
         ? reflectivity->GetComponent(p, c) * reflected->GetComponent(p, c)
         : 0.0;
-      const double expected = std::max(
-        0.0, std::min(1.0, radiance->GetComponent(p, c) - obscured + bounced + mirrored));
+      const double expected =
+        std::max(0.0, std::min(1.0, radiance->GetComponent(p, c) - obscured + bounced + mirrored));
       worst = std::max(worst, std::abs(255.0 * expected - pixels->GetComponent(p, c)));
       aoTerm = std::max(aoTerm, obscured);
       indirectTerm = std::max(indirectTerm, bounced);
@@ -173,7 +174,8 @@ void CheckSkipped(const char* what, const std::function<void(vtkRenderer*)>& sce
   const std::function<void(vtkDeepGIPass*)>& switchOff)
 {
   Run on, off;
-  Render(on, scene, [](vtkDeepGIPass*) {}, 3);
+  Render(
+    on, scene, [](vtkDeepGIPass*) {}, 3);
   Render(off, scene, switchOff, 3);
   const int effects = on.Pass->GetLastFrameEffects();
   std::printf("%s: effects %s, image difference to the switch off %.0f\n", what,
@@ -192,10 +194,12 @@ void CheckSkipped(const char* what, const std::function<void(vtkRenderer*)>& sce
 void CheckSkipLogic()
 {
   // No ambient term anywhere (RedWallScene's Diffuse() sets Ambient 0).
-  CheckSkipped("no ambient term", [](vtkRenderer* r) { RedWallScene(r); },
-    vtkDeepGIPass::AMBIENT_OBSCURANCE, [](vtkDeepGIPass* gi) { gi->AmbientObscuranceOff(); });
+  CheckSkipped(
+    "no ambient term", [](vtkRenderer* r) { RedWallScene(r); }, vtkDeepGIPass::AMBIENT_OBSCURANCE,
+    [](vtkDeepGIPass* gi) { gi->AmbientObscuranceOff(); });
   // Black diffuse albedo: ambient-only actors.
-  CheckSkipped("black albedo",
+  CheckSkipped(
+    "black albedo",
     [](vtkRenderer* r)
     {
       AllEffectsScene(r);
@@ -209,7 +213,8 @@ void CheckSkipLogic()
     },
     vtkDeepGIPass::RADIOSITY, [](vtkDeepGIPass* gi) { gi->RadiosityOff(); });
   // No light switched on.
-  CheckSkipped("no light",
+  CheckSkipped(
+    "no light",
     [](vtkRenderer* r)
     {
       AllEffectsScene(r);
@@ -224,12 +229,14 @@ void CheckSkipLogic()
     },
     vtkDeepGIPass::RADIOSITY, [](vtkDeepGIPass* gi) { gi->RadiosityOff(); });
   // Nothing specular.
-  CheckSkipped("no reflective prop", [](vtkRenderer* r) { RedWallScene(r); },
-    vtkDeepGIPass::REFLECTIONS, [](vtkDeepGIPass* gi) { gi->ReflectionsOff(); });
+  CheckSkipped(
+    "no reflective prop", [](vtkRenderer* r) { RedWallScene(r); }, vtkDeepGIPass::REFLECTIONS,
+    [](vtkDeepGIPass* gi) { gi->ReflectionsOff(); });
   // Every switch off: exactly the plain G-buffer image with one layer.
   {
     Run gi, plain;
-    Render(gi, AllEffectsScene,
+    Render(
+      gi, AllEffectsScene,
       [](vtkDeepGIPass* p)
       {
         p->AmbientObscuranceOff();
@@ -254,7 +261,8 @@ void CheckSkipLogic()
 
   // Depth complexity: a plane seen face-on has no layer 1.
   Run run;
-  Render(run,
+  Render(
+    run,
     [](vtkRenderer* r)
     {
       const double o[3] = { -1, -1, 0 }, a[3] = { 1, -1, 0 }, b[3] = { -1, 1, 0 };
@@ -307,7 +315,8 @@ void CheckSkipLogic()
 void CheckConverge()
 {
   Run run;
-  Render(run, AllEffectsScene, [](vtkDeepGIPass*) {}, 0);
+  Render(
+    run, AllEffectsScene, [](vtkDeepGIPass*) {}, 0);
   struct Observer
   {
     std::vector<double> Progress;

@@ -163,12 +163,12 @@ int TestDeepGIComposition(int argc, char* argv[])
   s.Right->SetPass(s.RightPass);
 
   std::vector<std::unique_ptr<EventCounter>> errors;
-  const std::vector<vtkObject*> watched = { s.Window.Get(), s.Left.Get(),
-         s.Right.Get(), s.LeftPass.Get(), s.RightPass.Get(), s.LeftPass->GetGBufferPass(),
-         s.LeftPass->GetAmbientObscurancePass(), s.LeftPass->GetRadiosityPass(),
-         s.LeftPass->GetReflectionPass(), s.RightPass->GetGBufferPass(),
-         s.RightPass->GetAmbientObscurancePass(), s.RightPass->GetRadiosityPass(),
-         s.RightPass->GetReflectionPass(), volumeMapper.Get() };
+  const std::vector<vtkObject*> watched = { s.Window.Get(), s.Left.Get(), s.Right.Get(),
+    s.LeftPass.Get(), s.RightPass.Get(), s.LeftPass->GetGBufferPass(),
+    s.LeftPass->GetAmbientObscurancePass(), s.LeftPass->GetRadiosityPass(),
+    s.LeftPass->GetReflectionPass(), s.RightPass->GetGBufferPass(),
+    s.RightPass->GetAmbientObscurancePass(), s.RightPass->GetRadiosityPass(),
+    s.RightPass->GetReflectionPass(), volumeMapper.Get() };
   for (vtkObject* o : watched)
   {
     errors.emplace_back(new EventCounter(o, vtkCommand::ErrorEvent));
@@ -223,8 +223,8 @@ int TestDeepGIComposition(int argc, char* argv[])
   vtkNew<vtkImageData> resized;
   ReadWindow(s.Window, resized, nullptr);
   const int* dims = resized->GetDimensions();
-  std::printf("resized: %d x %d, brightest %.0f, errors %d\n", dims[0], dims[1],
-    Brightest(resized), errorCount());
+  std::printf("resized: %d x %d, brightest %.0f, errors %d\n", dims[0], dims[1], Brightest(resized),
+    errorCount());
   Check(dims[0] == 200 && dims[1] == 140 && Brightest(resized) > 100, "resize renders");
   Check(errorCount() == 0, "no error events after the resize");
 
@@ -238,8 +238,8 @@ int TestDeepGIComposition(int argc, char* argv[])
     Brightest(again), errorCount(),
     vtkDeepGIPass::GetEffectsAsString(s.LeftPass->GetLastFrameEffects()).c_str(),
     vtkDeepGIPass::GetEffectsAsString(s.RightPass->GetLastFrameEffects()).c_str());
-  Check(errorCount() == 0 && Brightest(again) > 100 &&
-      (s.RightPass->GetLastFrameEffects() & 7) == 7,
+  Check(
+    errorCount() == 0 && Brightest(again) > 100 && (s.RightPass->GetLastFrameEffects() & 7) == 7,
     "ReleaseGraphicsResources then render works");
   s.LeftPass->ReleaseGraphicsResources(s.Window);
   s.RightPass->ReleaseGraphicsResources(s.Window);

@@ -94,9 +94,10 @@ int TestDeepGIDemoImage(int argc, char* argv[])
   change /= std::max(surface, 1L);
   lastChange /= 3.0 * a->GetNumberOfTuples();
   const double brighterFraction = static_cast<double>(brighter) / std::max(surface, 1L);
-  std::printf("demo BALANCED: effects %s, %d layers; %ld surface px, mean change vs plain %.2f/255, "
-              "brighter by > 4/255 on %.3f, background px changed %ld, last-frame change "
-              "%.4f/255\n",
+  std::printf(
+    "demo BALANCED: effects %s, %d layers; %ld surface px, mean change vs plain %.2f/255, "
+    "brighter by > 4/255 on %.3f, background px changed %ld, last-frame change "
+    "%.4f/255\n",
     vtkDeepGIPass::GetEffectsAsString(gi->GetLastFrameEffects()).c_str(),
     gi->GetLastFrameNumberOfLayers(), surface, change, brighterFraction, background, lastChange);
   Check(gi->GetLastFrameEffects() ==
