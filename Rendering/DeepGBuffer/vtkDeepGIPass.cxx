@@ -440,8 +440,10 @@ void vtkDeepGIPass::Render(const vtkRenderState* s)
   this->NumberOfRenderedProps = 0;
   vtkRenderer* renderer = s->GetRenderer();
   auto& slot = in.States[renderer];
-  if (!slot)
+  if (!slot || !slot->Renderer)
   {
+    // New, or a new renderer at the address of a deleted one (whose query
+    // went with its context).
     slot.reset(new vtkDeepGIRendererState);
     slot->Renderer = renderer;
   }
