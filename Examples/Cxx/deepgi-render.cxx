@@ -4,12 +4,15 @@
 // With no arguments it renders the built-in demo scene (vtkDeepGBufferDemoScene)
 // at 1024x768 along the first frames of its camera path and writes
 // output/lit.png and output/layerJ_{radiance,depth,normal,albedo}.png.
+// With --gi PRESET it also renders the scene with vtkDeepGIPass (ambient
+// obscurance, radiosity and reflections composited) and writes gi.png.
 // Run with --help for the options.
 
 #include "vtkCamera.h"
 #include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDeepGBufferSceneLoader.h"
+#include "vtkDeepGIPass.h"
 #include "vtkDeepGIRenderWindowFactory.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
@@ -49,9 +52,13 @@ HPG 2016) offscreen and writes PNG images into the output directory:
   layerJ_depth.png          camera-space depth of layer J, normalised
   layerJ_normal.png         camera-space normal of layer J, n * 0.5 + 0.5
   layerJ_albedo.png         diffuse albedo of layer J
+  gi.png                    with --gi: the global illumination composite
 lit.png is the last of the --frames frames. Each layer image is one more
 frame at the same camera, with the pass's debug display switched to that
-layer and quantity (the oracles then see a still camera).
+layer and quantity (the oracles then see a still camera). gi.png is
+rendered after them, at the same camera, with vtkDeepGIPass (direct +
+AV * ambient + radiosity + reflections, Documentation/gi.md) converged over
+--converge frames.
 
 Scene (default: the built-in demo scene, a room with columns in front of
 banners, mouldings, a decal and a thin panel):
@@ -83,6 +90,14 @@ Rendering:
   --backend NAME      auto, x11 or egl (default auto: x11 when an X display
                       can be opened, else egl)
   --output DIR        output directory, created if needed (default output)
+  --gi PRESET         off (default), high_performance, balanced or
+                      high_quality: also render gi.png with vtkDeepGIPass
+                      and that preset
+  --effects LIST      with --gi: the effects switched on, a comma-separated
+                      subset of ao, radiosity, reflections (default all
+                      three; each still runs only where the scene needs it)
+  --converge N        with --gi: frames rendered at the still camera before
+                      gi.png is written, 1 to 10000 (default 20)
   --help              print this text and exit
 
 Exit status: 0 on success, 1 when loading or rendering fails, 2 for bad
@@ -107,6 +122,13 @@ struct Options
   int Frames = 3;
   std::string Backend = "auto";
   std::string Output = "output";
+  int GI = -1; // a vtkDeepGIPass preset; -1: off
+  bool AmbientObscurance = true;
+  bool Radiosity = true;
+  bool Reflections = true;
+  bool EffectsGiven = false;
+  int Converge = 20;
+  bool ConvergeGiven = false;
 };
 
 bool ParseInteger(const std::string& text, long long minimum, long long maximum, long long& value)
@@ -162,7 +184,7 @@ int ParseOptions(int argc, char* argv[], Options& o, bool& exitNow)
     }
     static const char* const withValue[] = { "--mesh", "--volume", "--iso", "--triangles",
       "--scale", "--view", "--layers", "--dz", "--oracle", "--size", "--frames", "--backend",
-      "--output" };
+      "--output", "--gi", "--effects", "--converge" };
     bool known = false;
     for (const char* name : withValue)
     {
@@ -291,6 +313,65 @@ int ParseOptions(int argc, char* argv[], Options& o, bool& exitNow)
       }
       o.Output = value;
     }
+    else if (arg == "--gi")
+    {
+      if (value == "off")
+      {
+        o.GI = -1;
+      }
+      else
+      {
+        o.GI = vtkDeepGIPass::GetPresetFromString(value.c_str());
+        if (o.GI < 0)
+        {
+          return bad(
+            "--gi needs off, high_performance, balanced or high_quality, got '" + value + "'");
+        }
+      }
+    }
+    else if (arg == "--effects")
+    {
+      o.EffectsGiven = true;
+      o.AmbientObscurance = o.Radiosity = o.Reflections = false;
+      std::stringstream list(value);
+      std::string item;
+      int count = 0;
+      while (std::getline(list, item, ','))
+      {
+        bool* flag = item == "ao" ? &o.AmbientObscurance
+          : item == "radiosity"   ? &o.Radiosity
+          : item == "reflections" ? &o.Reflections
+                                  : nullptr;
+        if (!flag || *flag)
+        {
+          return bad("--effects needs a comma-separated list of distinct ao, radiosity, "
+                     "reflections; got '" +
+            value + "'");
+        }
+        *flag = true;
+        ++count;
+      }
+      if (count == 0 || value.back() == ',')
+      {
+        return bad("--effects needs a comma-separated list of distinct ao, radiosity, "
+                   "reflections; got '" +
+          value + "'");
+      }
+    }
+    else if (arg == "--converge")
+    {
+      long long n = 0;
+      if (!ParseInteger(value, 1, 10000, n))
+      {
+        return bad("--converge needs an integer from 1 to 10000, got '" + value + "'");
+      }
+      o.Converge = static_cast<int>(n);
+      o.ConvergeGiven = true;
+    }
+  }
+  if (o.GI < 0 && (o.EffectsGiven || o.ConvergeGiven))
+  {
+    return bad("--effects and --converge need --gi with a preset");
   }
   const bool loaded = !o.Meshes.empty() || !o.Volume.empty();
   if (o.IsoGiven && o.Volume.empty())
@@ -482,6 +563,37 @@ int main(int argc, char* argv[])
   }
   pass->SetDisplayLayer(0);
   pass->SetDisplayQuantity(vtkDeepGBufferPass::RADIANCE);
+
+  // The global illumination composite at the same, still camera.
+  if (o.GI >= 0)
+  {
+    pass->ReleaseGraphicsResources(window);
+    vtkNew<vtkDeepGIPass> gi;
+    gi->SetPreset(o.GI);
+    gi->SetAmbientObscurance(o.AmbientObscurance);
+    gi->SetRadiosity(o.Radiosity);
+    gi->SetReflections(o.Reflections);
+    gi->GetGBufferPass()->SetOracle(o.Oracle);
+    if (o.Dz >= 0.0)
+    {
+      gi->GetGBufferPass()->SetMinimumSeparation(o.Dz);
+    }
+    renderer->SetPass(gi);
+    const auto start = std::chrono::steady_clock::now();
+    gi->Converge(renderer, o.Converge);
+    const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cout << std::fixed << std::setprecision(2) << "  gi " << vtkDeepGIPass::GetPresetAsString(o.GI)
+              << ": " << o.Converge << " frame(s), " << 1000.0 * seconds / o.Converge
+              << " ms per frame (includes first-frame setup)" << std::defaultfloat
+              << std::setprecision(6) << "; last frame ran "
+              << vtkDeepGIPass::GetEffectsAsString(gi->GetLastFrameEffects()) << " with "
+              << gi->GetLastFrameNumberOfLayers() << " layer(s)\n";
+    if (!WritePNG(window, dir + "gi.png"))
+    {
+      return ExitFailure;
+    }
+  }
 
   // The window releases the renderer's and the pass's OpenGL resources
   // when it goes away, while its context still exists.

@@ -150,6 +150,13 @@ struct vtkDeepAmbientObscuranceRendererState
     this->MipLevels = this->MipLayers = this->MipWidth = this->MipHeight = 0;
   }
 
+  // The final AV of the last frame: the accumulated history when the
+  // temporal filter ran, the bilateral filter's output otherwise.
+  vtkTextureObject* Visibility()
+  {
+    return this->Temporal ? this->History[this->HistoryCurrent] : this->Targets[FILTERED];
+  }
+
   void Release(vtkWindow* w)
   {
     this->ReleaseMip();
@@ -381,12 +388,15 @@ void vtkDeepAmbientObscurancePass::Render(const vtkRenderState* s)
 using vtkDeepScreenSpace::AllocateTarget;
 using vtkDeepScreenSpace::ReadyQuad;
 
-namespace
-{
+//------------------------------------------------------------------------------
 // True when a visible actor with opaque geometry has an ambient term, i.e.
 // when the G-buffer's AMBIENT quantity can be non-zero somewhere.
-bool HasAmbientTerm(vtkRenderer* renderer)
+bool vtkDeepAmbientObscurancePass::RendererHasAmbientTerm(vtkRenderer* renderer)
 {
+  if (!renderer)
+  {
+    return false;
+  }
   vtkCollectionSimpleIterator it;
   vtkPropCollection* props = renderer->GetViewProps();
   props->InitTraversal(it);
@@ -405,7 +415,6 @@ bool HasAmbientTerm(vtkRenderer* renderer)
     }
   }
   return false;
-}
 }
 
 //------------------------------------------------------------------------------
@@ -431,12 +440,97 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
     return;
   }
 
+  if (!this->UpdateAmbientVisibility(s))
+  {
+    gbuffer->ResolveToFramebuffer(s);
+    return;
+  }
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  vtkOpenGLState* ostate = window->GetState();
+  vtkDeepAmbientObscuranceRendererState& state = *in.States[renderer];
+  if (!ReadyQuad(in.CompositeQuad, window, vtkDeepAmbientObscuranceCompositeFS))
+  {
+    vtkErrorMacro("The ambient obscurance composite shader failed to compile.");
+    gbuffer->ResolveToFramebuffer(s);
+    return;
+  }
+  const int distanceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
+
+  // Composite: layer-0 image and depth, then colour *= AV.
+  gbuffer->ResolveToFramebuffer(s);
+  {
+    vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
+    vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(ostate);
+    int composition = this->Composition;
+    if (composition == COMPOSITE_AUTOMATIC)
+    {
+      composition = RendererHasAmbientTerm(renderer) ? COMPOSITE_AMBIENT : COMPOSITE_MULTIPLY;
+    }
+    // COMPOSITE_AMBIENT needs the radiance on display (it rewrites it).
+    const bool ambientOnly = composition == COMPOSITE_AMBIENT &&
+      gbuffer->GetDisplayQuantity() == vtkDeepGBufferPass::RADIANCE;
+    const int radianceUnit =
+      ambientOnly ? gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::RADIANCE) : -1;
+    const int ambientUnit =
+      ambientOnly ? gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::AMBIENT) : -1;
+    ostate->vtkglEnable(GL_BLEND);
+    if (ambientOnly && radianceUnit >= 0 && ambientUnit >= 0)
+    {
+      // colour = radiance - (1 - AV) ambient (float), alpha kept.
+      ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ZERO, GL_ZERO, GL_ONE);
+    }
+    else
+    {
+      ostate->vtkglBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ZERO, GL_ONE);
+    }
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    ostate->vtkglDepthMask(GL_FALSE);
+    vtkShaderProgram* program = in.CompositeQuad->Program;
+    window->GetShaderCache()->ReadyShaderProgram(program);
+    vtkTextureObject* visibility = state.Visibility();
+    visibility->Activate();
+    program->SetUniformi("deepVisibility", visibility->GetTextureUnit());
+    program->SetUniformi("deepDistance", distanceUnit);
+    const bool useAmbient = radianceUnit >= 0 && ambientUnit >= 0;
+    this->EffectiveComposition = useAmbient ? COMPOSITE_AMBIENT : COMPOSITE_MULTIPLY;
+    program->SetUniformi("deepMode", useAmbient ? 1 : 0);
+    program->SetUniformi("deepRadiance", useAmbient ? radianceUnit : distanceUnit);
+    program->SetUniformi("deepAmbient", useAmbient ? ambientUnit : distanceUnit);
+    in.CompositeQuad->Render();
+    visibility->Deactivate();
+    if (ambientUnit >= 0)
+    {
+      gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::AMBIENT);
+    }
+    if (radianceUnit >= 0)
+    {
+      gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::RADIANCE);
+    }
+  }
+  gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
+  vtkOpenGLCheckErrorMacro("failed after vtkDeepAmbientObscurancePass");
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState* s)
+{
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLRenderer* renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  vtkDeepGBufferPass* gbuffer = this->GBufferPass;
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   vtkOpenGLState* ostate = window->GetState();
   vtkOpenGLClearErrorMacro();
 
   double view[16], projection[16];
   const int layers = gbuffer->GetLayerCamera(renderer, view, projection);
+  if (layers <= 0)
+  {
+    vtkErrorMacro("UpdateAmbientVisibility: the G-buffer pass has no layers for this renderer; "
+                  "call GetGBufferPass()->RenderLayers first.");
+    return false;
+  }
   int size[2] = { 0, 0 };
   s->GetWindowSize(size);
   const int width = size[0], height = size[1];
@@ -484,8 +578,7 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
     if (!AllocateTarget(t, window, width, height, 1))
     {
       vtkErrorMacro("Could not allocate the ambient obscurance targets.");
-      gbuffer->ResolveToFramebuffer(s);
-      return;
+      return false;
     }
   }
   state.Width = width;
@@ -498,15 +591,13 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
 
   const bool aoReady = ReadyQuad(in.AOQuad, window, vtkDeepAmbientObscuranceFS);
   const bool blurReady = ReadyQuad(in.BlurQuad, window, vtkDeepAmbientObscuranceBlurFS);
-  const bool compositeReady = ReadyQuad(in.CompositeQuad, window, vtkDeepAmbientObscuranceCompositeFS);
   const bool minifyReady = ReadyQuad(in.MinifyQuad, window, vtkDeepAmbientObscuranceMinifyFS);
   const bool temporalReady =
     !temporal || ReadyQuad(in.TemporalQuad, window, vtkDeepAmbientObscuranceTemporalFS);
-  if (!aoReady || !blurReady || !compositeReady || !minifyReady || !temporalReady)
+  if (!aoReady || !blurReady || !minifyReady || !temporalReady)
   {
     vtkErrorMacro("The ambient obscurance shaders failed to compile.");
-    gbuffer->ResolveToFramebuffer(s);
-    return;
+    return false;
   }
 
   // Projection terms of deepPositionFromDistance (row-major P).
@@ -633,67 +724,45 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
     ostate->PopFramebufferBindings();
   }
 
-  // Composite: layer-0 image and depth, then colour *= AV.
-  gbuffer->ResolveToFramebuffer(s);
-  {
-    vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
-    vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(ostate);
-    int composition = this->Composition;
-    if (composition == COMPOSITE_AUTOMATIC)
-    {
-      composition = HasAmbientTerm(renderer) ? COMPOSITE_AMBIENT : COMPOSITE_MULTIPLY;
-    }
-    // COMPOSITE_AMBIENT needs the radiance on display (it rewrites it).
-    const bool ambientOnly = composition == COMPOSITE_AMBIENT &&
-      gbuffer->GetDisplayQuantity() == vtkDeepGBufferPass::RADIANCE;
-    const int radianceUnit =
-      ambientOnly ? gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::RADIANCE) : -1;
-    const int ambientUnit =
-      ambientOnly ? gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::AMBIENT) : -1;
-    ostate->vtkglEnable(GL_BLEND);
-    if (ambientOnly && radianceUnit >= 0 && ambientUnit >= 0)
-    {
-      // colour = radiance - (1 - AV) ambient (float), alpha kept.
-      ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ZERO, GL_ZERO, GL_ONE);
-    }
-    else
-    {
-      ostate->vtkglBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ZERO, GL_ONE);
-    }
-    ostate->vtkglDisable(GL_DEPTH_TEST);
-    ostate->vtkglDepthMask(GL_FALSE);
-    vtkShaderProgram* program = in.CompositeQuad->Program;
-    window->GetShaderCache()->ReadyShaderProgram(program);
-    vtkTextureObject* visibility =
-      state.Temporal ? state.History[state.HistoryCurrent] : state.Targets[FILTERED];
-    visibility->Activate();
-    program->SetUniformi("deepVisibility", visibility->GetTextureUnit());
-    program->SetUniformi("deepDistance", distanceUnit);
-    const bool useAmbient = radianceUnit >= 0 && ambientUnit >= 0;
-    this->EffectiveComposition = useAmbient ? COMPOSITE_AMBIENT : COMPOSITE_MULTIPLY;
-    program->SetUniformi("deepMode", useAmbient ? 1 : 0);
-    program->SetUniformi("deepRadiance", useAmbient ? radianceUnit : distanceUnit);
-    program->SetUniformi("deepAmbient", useAmbient ? ambientUnit : distanceUnit);
-    in.CompositeQuad->Render();
-    visibility->Deactivate();
-    if (ambientUnit >= 0)
-    {
-      gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::AMBIENT);
-    }
-    if (radianceUnit >= 0)
-    {
-      gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::RADIANCE);
-    }
-  }
 
   gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::NORMAL);
   gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
   state.HasFrame = true;
   state.Radius = radius;
   state.NumberOfSamples = this->NumberOfSamples;
-  vtkOpenGLCheckErrorMacro("failed after vtkDeepAmbientObscurancePass");
+  vtkOpenGLCheckErrorMacro("failed after the ambient obscurance");
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkDeepAmbientObscurancePass::ActivateVisibilityTexture(vtkRenderer* renderer)
+{
+  vtkDeepAmbientObscuranceRendererState* state = this->Internals->Find(renderer);
+  vtkTextureObject* texture = state ? state->Visibility() : nullptr;
+  if (!texture)
+  {
+    return -1;
+  }
+  texture->Activate();
+  return texture->GetTextureUnit();
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepAmbientObscurancePass::DeactivateVisibilityTexture(vtkRenderer* renderer)
+{
+  vtkDeepAmbientObscuranceRendererState* state = this->Internals->Find(renderer);
+  if (vtkTextureObject* texture = state ? state->Visibility() : nullptr)
+  {
+    texture->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+unsigned int vtkDeepAmbientObscurancePass::GetVisibilityTextureHandle(vtkRenderer* renderer)
+{
+  vtkDeepAmbientObscuranceRendererState* state = this->Internals->Find(renderer);
+  vtkTextureObject* texture = state ? state->Visibility() : nullptr;
+  return texture ? texture->GetHandle() : 0;
 }
 
 //------------------------------------------------------------------------------

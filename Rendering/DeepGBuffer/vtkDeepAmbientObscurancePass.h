@@ -351,6 +351,41 @@ public:
    */
   bool CaptureAmbientVisibility(vtkImageData* output, vtkRenderer* renderer = nullptr);
 
+  /**
+   * Computes this frame's ambient visibility (distance pyramid, eq. 1-2,
+   * bilateral filter and, with TemporalAlpha > 0, the temporal
+   * accumulation) for the renderer of `s` from the layers GetGBufferPass()
+   * has just built, without drawing into the renderer's framebuffer.
+   * Render() calls it between RenderLayers and its composite; a pass that
+   * composites AV itself (vtkDeepGIPass) calls it after its own
+   * GetGBufferPass()->RenderLayers(s) returned true, then reads the result
+   * with ActivateVisibilityTexture. Returns false (with an error) when the
+   * G-buffer has no layers for the renderer or the targets or shaders are
+   * unavailable.
+   */
+  bool UpdateAmbientVisibility(const vtkRenderState* s);
+
+  /**
+   * Whether a visible actor of `renderer` with opaque geometry has an
+   * ambient term (Ambient > 0 and a non-black AmbientColor), i.e. whether
+   * the G-buffer's AMBIENT can be non-zero. False for null.
+   */
+  static bool RendererHasAmbientTerm(vtkRenderer* renderer);
+
+  ///@{
+  /**
+   * Access for passes that composite AV themselves: binds the final AV of
+   * the last frame computed for `renderer` (GL_TEXTURE_2D; AV in the red
+   * channel, R32F, or RG32F with the layer-0 distance in green when the
+   * temporal accumulation ran) to a free texture unit and returns the unit
+   * (-1 if there is none). Release it with DeactivateVisibilityTexture.
+   * GetVisibilityTextureHandle gives the OpenGL name (0 if none).
+   */
+  int ActivateVisibilityTexture(vtkRenderer* renderer);
+  void DeactivateVisibilityTexture(vtkRenderer* renderer);
+  unsigned int GetVisibilityTextureHandle(vtkRenderer* renderer);
+  ///@}
+
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 

@@ -93,8 +93,15 @@ enum Target
 const int GBufferQuantities[] = { vtkDeepGBufferPass::DEPTH, vtkDeepGBufferPass::NORMAL,
   vtkDeepGBufferPass::RADIANCE, vtkDeepGBufferPass::AMBIENT, vtkDeepGBufferPass::ALBEDO };
 
-bool AnyLightOn(vtkRenderer* renderer)
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepRadiosityPass::RendererHasLightOn(vtkRenderer* renderer)
 {
+  if (!renderer)
+  {
+    return false;
+  }
   vtkLightCollection* lights = renderer->GetLights();
   vtkCollectionSimpleIterator it;
   lights->InitTraversal(it);
@@ -106,7 +113,6 @@ bool AnyLightOn(vtkRenderer* renderer)
     }
   }
   return false;
-}
 }
 
 //------------------------------------------------------------------------------
@@ -590,7 +596,7 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
     std::copy(this->EnvironmentIrradiance, this->EnvironmentIrradiance + 3,
       this->EffectiveEnvironmentIrradiance);
   }
-  const bool hasLights = AnyLightOn(renderer);
+  const bool hasLights = RendererHasLightOn(renderer);
   if (!hasLights && !state.WarnedNoLights)
   {
     state.WarnedNoLights = true;

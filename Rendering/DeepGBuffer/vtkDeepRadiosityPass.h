@@ -392,6 +392,10 @@ public:
    */
   bool UpdateRadiosity(const vtkRenderState* s);
 
+  /// Whether `renderer` has a light that is switched on with a positive
+  /// intensity (without one there is no direct light to bounce). False for null.
+  static bool RendererHasLightOn(vtkRenderer* renderer);
+
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 

@@ -25,6 +25,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLTexture.h"
 #include "vtkPointData.h"
+#include "vtkPropCollection.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkShaderProgram.h"
@@ -127,23 +128,32 @@ bool ActorReflects(vtkActor* actor)
     std::max({ color[0], color[1], color[2] }) > 0.0;
 }
 
-// Whether any prop of the frame (actors, also inside assemblies) reflects.
+// Whether a prop (an actor, or the actors of an assembly) reflects.
+bool PropReflects(vtkProp* prop)
+{
+  if (!prop || !prop->GetVisibility())
+  {
+    return false;
+  }
+  prop->InitPathTraversal();
+  while (vtkAssemblyPath* path = prop->GetNextPath())
+  {
+    if (ActorReflects(vtkActor::SafeDownCast(path->GetLastNode()->GetViewProp())))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Whether any prop of the frame reflects.
 bool SceneReflects(const vtkRenderState* s)
 {
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
-    vtkProp* prop = s->GetPropArray()[i];
-    if (!prop->GetVisibility())
+    if (PropReflects(s->GetPropArray()[i]))
     {
-      continue;
-    }
-    prop->InitPathTraversal();
-    while (vtkAssemblyPath* path = prop->GetNextPath())
-    {
-      if (ActorReflects(vtkActor::SafeDownCast(path->GetLastNode()->GetViewProp())))
-      {
-        return true;
-      }
+      return true;
     }
   }
   return false;
@@ -378,6 +388,26 @@ void vtkDeepReflectionPass::SetPixelStride(double pixels)
 }
 
 //------------------------------------------------------------------------------
+bool vtkDeepReflectionPass::RendererReflects(vtkRenderer* renderer)
+{
+  if (!renderer)
+  {
+    return false;
+  }
+  vtkCollectionSimpleIterator it;
+  vtkPropCollection* props = renderer->GetViewProps();
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (PropReflects(prop))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
 void vtkDeepReflectionPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
@@ -455,12 +485,73 @@ void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
     this->LastFrameTraced = false;
     return;
   }
+  if (!this->UpdateReflections(s))
+  {
+    gbuffer->ResolveToFramebuffer(s);
+    this->LastFrameTraced = false;
+    return;
+  }
+  gbuffer->ResolveToFramebuffer(s);
+  vtkDeepReflectionRendererState& state = *in.States[renderer];
+  this->LastFrameTraced = state.Traced;
+  if (!state.Traced)
+  {
+    // Nothing reflects: exactly the G-buffer's image.
+    return;
+  }
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  vtkOpenGLState* ostate = window->GetState();
+  const int radianceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::RADIANCE);
+  const int reflectivityUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::REFLECTIVITY);
+  auto deactivate = [&]()
+  {
+    gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::REFLECTIVITY);
+    gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::RADIANCE);
+  };
+  // Composite: layer-0 image and depth, then RADIANCE + REFLECTIVITY x L_r
+  // where traced (alpha kept).
+  if (gbuffer->GetDisplayQuantity() == vtkDeepGBufferPass::RADIANCE && radianceUnit >= 0 &&
+    reflectivityUnit >= 0)
+  {
+    vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
+    vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(ostate);
+    ostate->vtkglEnable(GL_BLEND);
+    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ZERO, GL_ZERO, GL_ONE);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    ostate->vtkglDepthMask(GL_FALSE);
+    vtkShaderProgram* program = in.CompositeQuad->Program;
+    window->GetShaderCache()->ReadyShaderProgram(program);
+    state.Targets[REFLECTED]->Activate();
+    program->SetUniformi("deepReflected", state.Targets[REFLECTED]->GetTextureUnit());
+    program->SetUniformi("deepRadiance", radianceUnit);
+    program->SetUniformi("deepReflectivity", reflectivityUnit);
+    in.CompositeQuad->Render();
+    state.Targets[REFLECTED]->Deactivate();
+  }
+  deactivate();
+  vtkOpenGLCheckErrorMacro("failed after vtkDeepReflectionPass");
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepReflectionPass::UpdateReflections(const vtkRenderState* s)
+{
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLRenderer* renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  vtkDeepGBufferPass* gbuffer = this->GBufferPass;
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   vtkOpenGLState* ostate = window->GetState();
   vtkOpenGLClearErrorMacro();
 
   double view[16], projection[16];
   const int layers = gbuffer->GetLayerCamera(renderer, view, projection);
+  if (layers <= 0)
+  {
+    vtkErrorMacro("UpdateReflections: the G-buffer pass has no layers for this renderer; call "
+                  "GetGBufferPass()->RenderLayers first.");
+    return false;
+  }
   int size[2] = { 0, 0 };
   s->GetWindowSize(size);
   const int width = size[0], height = size[1];
@@ -493,19 +584,21 @@ void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
     in.FirstRenderer = renderer;
   }
   vtkDeepReflectionRendererState& state = *slot;
+  state.HasFrame = false;
   state.Traced = false;
   std::copy(view, view + 16, state.View);
   std::copy(projection, projection + 16, state.Projection);
   state.MaximumDistance = maximumDistance;
   state.Thickness = thickness;
 
-  if (!this->LastFrameTraced)
+  // Compute only what the scene requires: rays only where the G-buffer
+  // holds reflectivity for this frame and some visible prop can reflect.
+  if (!gbuffer->GetWriteReflectivity() || !SceneReflects(s))
   {
-    // Nothing reflects: exactly the G-buffer's image, and no targets kept.
+    // Nothing reflects: no targets kept.
     state.Release(window);
-    gbuffer->ResolveToFramebuffer(s);
     state.HasFrame = true;
-    return;
+    return true;
   }
 
   // The environment: VTK's environment texture if any, else the background.
@@ -563,9 +656,7 @@ void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
     {
       environment->PostRender(renderer);
     }
-    gbuffer->ResolveToFramebuffer(s);
-    this->LastFrameTraced = false;
-    return;
+    return false;
   }
   state.Width = width;
   state.Height = height;
@@ -638,10 +729,8 @@ void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
     {
       environment->PostRender(renderer);
     }
-    gbuffer->ResolveToFramebuffer(s);
-    this->LastFrameTraced = false;
     state.HasFrame = true;
-    return;
+    return false;
   }
   {
     vtkOpenGLState::ScopedglViewport savedViewport(ostate);
@@ -698,33 +787,11 @@ void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
   {
     environment->PostRender(renderer);
   }
-
-  // Composite: layer-0 image and depth, then RADIANCE + REFLECTIVITY x L_r
-  // where traced (alpha kept).
-  gbuffer->ResolveToFramebuffer(s);
-  if (gbuffer->GetDisplayQuantity() == vtkDeepGBufferPass::RADIANCE)
-  {
-    vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
-    vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(ostate);
-    ostate->vtkglEnable(GL_BLEND);
-    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ZERO, GL_ZERO, GL_ONE);
-    ostate->vtkglDisable(GL_DEPTH_TEST);
-    ostate->vtkglDepthMask(GL_FALSE);
-    vtkShaderProgram* program = in.CompositeQuad->Program;
-    window->GetShaderCache()->ReadyShaderProgram(program);
-    state.Targets[REFLECTED]->Activate();
-    program->SetUniformi("deepReflected", state.Targets[REFLECTED]->GetTextureUnit());
-    program->SetUniformi("deepRadiance", radianceUnit);
-    program->SetUniformi("deepReflectivity", reflectivityUnit);
-    in.CompositeQuad->Render();
-    state.Targets[REFLECTED]->Deactivate();
-  }
   deactivate();
   state.HasFrame = true;
   state.Traced = true;
-  vtkOpenGLCheckErrorMacro("failed after vtkDeepReflectionPass");
+  vtkOpenGLCheckErrorMacro("failed after the reflection rays");
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -223,6 +223,29 @@ public:
   unsigned int GetReflectionTextureHandle(vtkRenderer* renderer);
   ///@}
 
+  /**
+   * Whether a visible prop of `renderer` (actors, also inside assemblies,
+   * with opaque geometry) has a material that gives a non-zero
+   * REFLECTIVITY (see the class description). False for null.
+   */
+  static bool RendererReflects(vtkRenderer* renderer);
+
+  /**
+   * Traces this frame's reflection rays (the REFLECTED and HIT targets) for
+   * the renderer of `s` from the layers GetGBufferPass() has just built,
+   * without drawing into the renderer's framebuffer. Render() calls it
+   * between RenderLayers and its composite; a pass that composites the
+   * reflections itself (vtkDeepGIPass) turns the G-buffer's
+   * WriteReflectivity on before the frame, calls this after
+   * GetGBufferPass()->RenderLayers(s) returned true, then reads L_r with
+   * ActivateReflectionTexture. Rays are traced only when the G-buffer wrote
+   * REFLECTIVITY and a prop of the frame reflects; otherwise the targets
+   * are freed and ActivateReflectionTexture returns -1. Returns false
+   * (with an error) when the G-buffer has no layers for the renderer or
+   * the targets, shaders or texture units are unavailable.
+   */
+  bool UpdateReflections(const vtkRenderState* s);
+
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 

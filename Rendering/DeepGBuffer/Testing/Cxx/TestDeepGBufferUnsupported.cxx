@@ -1,15 +1,16 @@
 // An OpenGL that lacks what the G-buffer needs. CTest runs this test with
 // Mesa told to expose OpenGL 4.1 without ARB_copy_image (no
 // glCopyImageSubData). Each pass (vtkDeepGBufferPass,
-// vtkDeepAmbientObscurancePass and vtkDeepRadiosityPass) must say so once with a warning over three
-// frames and render VTK's plain image exactly; a capture fails with one
-// error, not a crash; rendering after ReleaseGraphicsResources still works
+// vtkDeepAmbientObscurancePass, vtkDeepRadiosityPass and vtkDeepGIPass) must say so once with a
+// warning over three frames and render VTK's plain image exactly; a capture
+// fails with one error (for vtkDeepGIPass: its G-buffer's capture), not a crash; rendering after ReleaseGraphicsResources still works
 // (the check, and its warning, are made again for the released context).
 // On a driver that ignores Mesa's overrides the test is skipped.
 
 #include "DeepGBufferTestUtilities.h"
 
 #include "vtkDeepAmbientObscurancePass.h"
+#include "vtkDeepGIPass.h"
 #include "vtkDeepRadiosityPass.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPolyDataMapper.h"
@@ -44,10 +45,12 @@ vtkSmartPointer<vtkRenderWindow> RenderSphere(vtkRenderPass* pass, vtkRenderer* 
 }
 
 // 0: passed, 1: failed, 125: the OpenGL has what the pass needs.
-int CheckPass(vtkRenderPass* pass, const std::function<bool(vtkImageData*, vtkRenderer*)>& capture)
+// `captureSource` is the object whose capture is tried (the pass by default).
+int CheckPass(vtkRenderPass* pass, const std::function<bool(vtkImageData*, vtkRenderer*)>& capture,
+  vtkObject* captureSource = nullptr)
 {
   EventCounter warnings(pass, vtkCommand::WarningEvent);
-  EventCounter errors(pass, vtkCommand::ErrorEvent);
+  EventCounter errors(captureSource ? captureSource : pass, vtkCommand::ErrorEvent);
   vtkNew<vtkRenderer> renderer, plainRenderer;
   auto window = RenderSphere(pass, renderer);
   vtkOpenGLRenderWindow::SafeDownCast(window)->MakeCurrent();
@@ -90,5 +93,12 @@ int TestDeepGBufferUnsupported(int, char*[])
   const int radiosityResult = CheckPass(radiosity, [&](vtkImageData* out, vtkRenderer* renderer) {
     return radiosity->CaptureIrradiance(out, renderer);
   });
-  return (gbufferResult == 0 && aoResult == 0 && radiosityResult == 0) ? 0 : 1;
+  vtkNew<vtkDeepGIPass> gi;
+  const int giResult = CheckPass(
+    gi,
+    [&](vtkImageData* out, vtkRenderer* renderer) {
+      return gi->GetGBufferPass()->CaptureLayers(out, renderer);
+    },
+    gi->GetGBufferPass());
+  return (gbufferResult == 0 && aoResult == 0 && radiosityResult == 0 && giResult == 0) ? 0 : 1;
 }

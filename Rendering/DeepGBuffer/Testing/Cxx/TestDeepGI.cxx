@@ -1,0 +1,418 @@
+// vtkDeepGIPass: the composite and what runs when.
+// 1. Composite: on a scene that needs every effect (ambient term, coloured
+//    diffuse walls under a light, a specular floor, a box in front of the
+//    wall), every layer-0 pixel of the window equals
+//    RADIANCE - (1 - AV) AMBIENT + L_ind + REFLECTIVITY L_r from the
+//    sub-passes' captures within 2 of 255 (8-bit rounding), and each term
+//    is large somewhere (so dropping one fails the test).
+// 2. Model only what the scene requires: no ambient term -> no AO; black
+//    diffuse albedo or no light -> no radiosity; no specular prop -> no
+//    reflections and no REFLECTIVITY in the G-buffer; in each case the
+//    image is bit-identical to the one with that switch off. A plane seen
+//    face-on has no layer 1: the occlusion query reports 0 and the pass
+//    drops to one layer, probes again after LayerProbeInterval frames, and
+//    goes back to two layers (coverage > 0) in the frame after a box is
+//    put in front of the plane. No effect at all: one layer, VTK's image.
+// 3. Converge(renderer, 12) fires 12 ProgressEvents (k / 12) and the
+//    per-frame image change falls (radiosity bounces settle).
+// 4. Bad input: Converge(nullptr), 0 frames, unknown presets and a probe
+//    interval of 0 warn and do not crash; presets set the sub-passes.
+
+#include "DeepRadiosityTest.h"
+
+#include "vtkDeepAmbientObscurancePass.h"
+#include "vtkDeepGIPass.h"
+#include "vtkDeepReflectionPass.h"
+#include "vtkLightCollection.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <sstream>
+#include <vector>
+
+using namespace DeepRadiosityTest;
+
+namespace
+{
+constexpr int W = 160, H = 120;
+
+// The red-wall scene of the radiosity tests with an ambient term on every
+// actor (0.3, the actor's colour), a specular floor (Specular 0.5) and a
+// grey box in front of the wall (depth complexity for layer 1).
+void AllEffectsScene(vtkRenderer* renderer)
+{
+  RedWallScene(renderer);
+  // GetActors() rebuilds the collection: take it once per traversal.
+  vtkActorCollection* actors = renderer->GetActors();
+  vtkCollectionSimpleIterator it;
+  actors->InitTraversal(it);
+  vtkActor* floor = actors->GetNextActor(it);
+  floor->GetProperty()->SetSpecular(0.5);
+  floor->GetProperty()->SetSpecularColor(1, 1, 1);
+  floor->GetProperty()->SetSpecularPower(40);
+  const double center[3] = { 1.0, 0.4, 0.0 }, size[3] = { 0.6, 0.8, 0.6 };
+  Diffuse(AddBox(renderer, center, size), 0.6, 0.6, 0.6);
+  actors = renderer->GetActors();
+  actors->InitTraversal(it);
+  while (vtkActor* actor = actors->GetNextActor(it))
+  {
+    actor->GetProperty()->SetAmbient(0.3);
+    actor->GetProperty()->SetAmbientColor(actor->GetProperty()->GetDiffuseColor());
+  }
+  renderer->ResetCameraClippingRange();
+}
+
+struct Run
+{
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkSmartPointer<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkDeepGIPass> Pass;
+  vtkNew<vtkImageData> Image;
+};
+
+// Renders `frames` frames of `scene` with a GI pass set up by `setup`.
+void Render(Run& run, const std::function<void(vtkRenderer*)>& scene,
+  const std::function<void(vtkDeepGIPass*)>& setup, int frames)
+{
+  run.Window = MakeWindow(W, H);
+  run.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  run.Renderer->SetBackground(0.0, 0.0, 0.0);
+  run.Window->AddRenderer(run.Renderer);
+  scene(run.Renderer);
+  run.Renderer->ResetCameraClippingRange();
+  run.Pass = vtkSmartPointer<vtkDeepGIPass>::New();
+  setup(run.Pass);
+  run.Renderer->SetPass(run.Pass);
+  for (int k = 0; k < frames; ++k)
+  {
+    run.Window->Render();
+  }
+  ReadWindow(run.Window, run.Image, nullptr);
+}
+
+void Release(Run& run)
+{
+  run.Pass->ReleaseGraphicsResources(run.Window);
+}
+
+// Largest per-channel difference (0..255) of two runs' images.
+double Difference(Run& a, Run& b)
+{
+  return MaximumColorDifference(a.Image, b.Image);
+}
+
+void CheckComposite()
+{
+  Run run;
+  Render(
+    run, AllEffectsScene, [](vtkDeepGIPass*) {}, 4);
+  vtkDeepGIPass* gi = run.Pass;
+  const int all = vtkDeepGIPass::AMBIENT_OBSCURANCE | vtkDeepGIPass::RADIOSITY |
+    vtkDeepGIPass::REFLECTIONS | vtkDeepGIPass::SECOND_LAYER;
+  std::printf("composite scene: effects %s, %d layers\n",
+    vtkDeepGIPass::GetEffectsAsString(gi->GetLastFrameEffects()).c_str(),
+    gi->GetLastFrameNumberOfLayers());
+  Check(gi->GetLastFrameEffects() == all, "every effect runs on the composite scene");
+  vtkNew<vtkImageData> layers, av, radiosity, reflections;
+  const bool ok = gi->GetGBufferPass()->CaptureLayers(layers, run.Renderer) &&
+    gi->GetAmbientObscurancePass()->CaptureAmbientVisibility(av, run.Renderer) &&
+    gi->GetRadiosityPass()->CaptureIrradiance(radiosity, run.Renderer) &&
+    gi->GetReflectionPass()->CaptureReflections(reflections, run.Renderer);
+  Check(ok, "captures of the sub-passes");
+  if (!ok)
+  {
+    Release(run);
+    return;
+  }
+  vtkDataArray* radiance = layers->GetPointData()->GetArray("Radiance_0");
+  vtkDataArray* ambient = layers->GetPointData()->GetArray("Ambient_0");
+  vtkDataArray* valid = layers->GetPointData()->GetArray("Valid_0");
+  vtkDataArray* visibility = av->GetPointData()->GetArray("AmbientVisibility");
+  vtkDataArray* indirect = radiosity->GetPointData()->GetArray("IndirectRadiance_0");
+  vtkDataArray* reflected = reflections->GetPointData()->GetArray("ReflectedRadiance");
+  vtkDataArray* reflectivity = reflections->GetPointData()->GetArray("Reflectivity");
+  vtkDataArray* traced = reflections->GetPointData()->GetArray("Valid");
+  vtkDataArray* pixels = run.Image->GetPointData()->GetScalars();
+  double worst = 0.0, aoTerm = 0.0, indirectTerm = 0.0, reflectionTerm = 0.0;
+  long surface = 0;
+  for (vtkIdType p = 0; p < pixels->GetNumberOfTuples(); ++p)
+  {
+    if (valid->GetTuple1(p) == 0)
+    {
+      continue;
+    }
+    ++surface;
+    for (int c = 0; c < 3; ++c)
+    {
+      const double obscured = (1.0 - visibility->GetTuple1(p)) * ambient->GetComponent(p, c);
+      const double bounced = indirect->GetComponent(p, c);
+      const double mirrored = traced->GetTuple1(p) != 0
+        ? reflectivity->GetComponent(p, c) * reflected->GetComponent(p, c)
+        : 0.0;
+      const double expected =
+        std::max(0.0, std::min(1.0, radiance->GetComponent(p, c) - obscured + bounced + mirrored));
+      worst = std::max(worst, std::abs(255.0 * expected - pixels->GetComponent(p, c)));
+      aoTerm = std::max(aoTerm, obscured);
+      indirectTerm = std::max(indirectTerm, bounced);
+      reflectionTerm = std::max(reflectionTerm, mirrored);
+    }
+  }
+  std::printf("composite: %ld surface px, largest |image - formula| %.3f / 255; largest terms: "
+              "(1 - AV) AMBIENT %.3f, L_ind %.3f, R L_r %.3f\n",
+    surface, worst, aoTerm, indirectTerm, reflectionTerm);
+  Check(surface > W * H / 3, "the scene fills the view");
+  Check(worst <= 2.0, "image = DIRECT + AV AMBIENT + L_ind + R L_r within 2/255");
+  Check(aoTerm > 0.02 && indirectTerm > 0.02 && reflectionTerm > 0.02,
+    "every term contributes more than 5/255 somewhere");
+  Release(run);
+}
+
+// An effect the scene cannot use does not run, and the image equals the
+// one with the effect switched off.
+void CheckSkipped(const char* what, const std::function<void(vtkRenderer*)>& scene, int effect,
+  const std::function<void(vtkDeepGIPass*)>& switchOff)
+{
+  Run on, off;
+  Render(
+    on, scene, [](vtkDeepGIPass*) {}, 3);
+  Render(off, scene, switchOff, 3);
+  const int effects = on.Pass->GetLastFrameEffects();
+  std::printf("%s: effects %s, image difference to the switch off %.0f\n", what,
+    vtkDeepGIPass::GetEffectsAsString(effects).c_str(), Difference(on, off));
+  Check((effects & effect) == 0, std::string(what) + ": the effect is skipped");
+  Check(Difference(on, off) == 0.0, std::string(what) + ": image equals the switch-off image");
+  if (effect == vtkDeepGIPass::REFLECTIONS)
+  {
+    Check(!on.Pass->GetGBufferPass()->GetWriteReflectivity(),
+      "no reflective prop: the G-buffer stores no REFLECTIVITY");
+  }
+  Release(on);
+  Release(off);
+}
+
+void CheckSkipLogic()
+{
+  // No ambient term anywhere (RedWallScene's Diffuse() sets Ambient 0).
+  CheckSkipped(
+    "no ambient term", [](vtkRenderer* r) { RedWallScene(r); }, vtkDeepGIPass::AMBIENT_OBSCURANCE,
+    [](vtkDeepGIPass* gi) { gi->AmbientObscuranceOff(); });
+  // Black diffuse albedo: ambient-only actors.
+  CheckSkipped(
+    "black albedo",
+    [](vtkRenderer* r)
+    {
+      AllEffectsScene(r);
+      vtkActorCollection* actors = r->GetActors();
+      vtkCollectionSimpleIterator it;
+      actors->InitTraversal(it);
+      while (vtkActor* actor = actors->GetNextActor(it))
+      {
+        actor->GetProperty()->SetDiffuseColor(0, 0, 0);
+      }
+    },
+    vtkDeepGIPass::RADIOSITY, [](vtkDeepGIPass* gi) { gi->RadiosityOff(); });
+  // No light switched on.
+  CheckSkipped(
+    "no light",
+    [](vtkRenderer* r)
+    {
+      AllEffectsScene(r);
+      r->AutomaticLightCreationOff();
+      vtkLightCollection* lights = r->GetLights();
+      vtkCollectionSimpleIterator it;
+      lights->InitTraversal(it);
+      while (vtkLight* light = lights->GetNextLight(it))
+      {
+        light->SwitchOff();
+      }
+    },
+    vtkDeepGIPass::RADIOSITY, [](vtkDeepGIPass* gi) { gi->RadiosityOff(); });
+  // Nothing specular.
+  CheckSkipped(
+    "no reflective prop", [](vtkRenderer* r) { RedWallScene(r); }, vtkDeepGIPass::REFLECTIONS,
+    [](vtkDeepGIPass* gi) { gi->ReflectionsOff(); });
+  // Every switch off: exactly the plain G-buffer image with one layer.
+  {
+    Run gi, plain;
+    Render(
+      gi, AllEffectsScene,
+      [](vtkDeepGIPass* p)
+      {
+        p->AmbientObscuranceOff();
+        p->RadiosityOff();
+        p->ReflectionsOff();
+      },
+      2);
+    plain.Window = MakeWindow(W, H);
+    plain.Renderer = vtkSmartPointer<vtkRenderer>::New();
+    plain.Window->AddRenderer(plain.Renderer);
+    AllEffectsScene(plain.Renderer);
+    plain.Window->Render();
+    ReadWindow(plain.Window, plain.Image, nullptr);
+    std::printf("no effect: effects %s, %d layer(s), difference to VTK's image %.0f\n",
+      vtkDeepGIPass::GetEffectsAsString(gi.Pass->GetLastFrameEffects()).c_str(),
+      gi.Pass->GetLastFrameNumberOfLayers(), Difference(gi, plain));
+    Check(gi.Pass->GetLastFrameEffects() == 0 && gi.Pass->GetLastFrameNumberOfLayers() == 1,
+      "no effect: nothing runs, one layer");
+    Check(Difference(gi, plain) <= 1.0, "no effect: VTK's image (within 1/255)");
+    Release(gi);
+  }
+
+  // Depth complexity: a plane seen face-on has no layer 1.
+  Run run;
+  Render(
+    run,
+    [](vtkRenderer* r)
+    {
+      const double o[3] = { -1, -1, 0 }, a[3] = { 1, -1, 0 }, b[3] = { -1, 1, 0 };
+      Diffuse(AddQuad(r, o, a, b), 0.8, 0.8, 0.8)->GetProperty()->SetAmbient(0.2);
+      AddSun(r, 0, 0, 5);
+      SetCamera(r, 0, 0, 4, 0, 0, 0);
+    },
+    // 6 frames: the query result is read when the driver has it (the next
+    // frame on llvmpipe, later on asynchronous GPUs).
+    [](vtkDeepGIPass*) {}, 6);
+  vtkDeepGIPass* gi = run.Pass;
+  std::printf("plane: coverage %lld, %d layer(s), effects %s\n", gi->GetLastLayerCoverage(),
+    gi->GetLastFrameNumberOfLayers(),
+    vtkDeepGIPass::GetEffectsAsString(gi->GetLastFrameEffects()).c_str());
+  Check(gi->GetLastLayerCoverage() == 0, "plane: the query counts no layer-1 pixel");
+  Check(gi->GetLastFrameNumberOfLayers() == 1 &&
+      (gi->GetLastFrameEffects() & vtkDeepGIPass::SECOND_LAYER) == 0,
+    "plane: one layer");
+  Check((gi->GetLastFrameEffects() & vtkDeepGIPass::RADIOSITY) != 0,
+    "plane: radiosity still runs on one layer");
+  gi->SetLayerProbeInterval(4);
+  std::vector<int> counts;
+  for (int k = 0; k < 8; ++k)
+  {
+    run.Window->Render();
+    counts.push_back(gi->GetLastFrameNumberOfLayers());
+  }
+  const int probes = static_cast<int>(std::count(counts.begin(), counts.end(), 2));
+  std::printf("plane, 8 more frames, probe interval 4: %d two-layer probe frame(s)\n", probes);
+  Check(probes >= 1 && probes <= 4, "plane: periodic two-layer probes");
+  // A box in front: the props change, two layers at once, coverage > 0.
+  const double center[3] = { 0, 0, 1 }, size[3] = { 0.5, 0.5, 0.5 };
+  AddBox(run.Renderer, center, size);
+  run.Renderer->ResetCameraClippingRange();
+  run.Window->Render();
+  Check(gi->GetLastFrameNumberOfLayers() == 2, "box added: two layers in the next frame");
+  for (int k = 0; k < 5; ++k)
+  {
+    run.Window->Render();
+  }
+  std::printf("plane + box: coverage %lld, %d layer(s)\n", gi->GetLastLayerCoverage(),
+    gi->GetLastFrameNumberOfLayers());
+  Check(gi->GetLastLayerCoverage() > 0 && gi->GetLastFrameNumberOfLayers() == 2,
+    "plane + box: layer 1 is covered and kept");
+  std::ostringstream print;
+  gi->Print(print);
+  Check(print.str().find("LastFrameEffects: AMBIENT_OBSCURANCE|RADIOSITY|SECOND_LAYER") !=
+      std::string::npos,
+    "PrintSelf names the effects of the last frame");
+  Release(run);
+}
+
+void CheckConverge()
+{
+  Run run;
+  Render(
+    run, AllEffectsScene, [](vtkDeepGIPass*) {}, 0);
+  struct Observer
+  {
+    std::vector<double> Progress;
+    std::vector<double> Change; // mean |frame k - frame k-1| over the image, 0..255
+    vtkSmartPointer<vtkImageData> Previous;
+    vtkRenderWindow* Window = nullptr;
+  } observer;
+  observer.Window = run.Window;
+  vtkNew<vtkCallbackCommand> callback;
+  callback->SetClientData(&observer);
+  callback->SetCallback(
+    [](vtkObject*, unsigned long, void* clientData, void* callData)
+    {
+      auto* self = static_cast<Observer*>(clientData);
+      self->Progress.push_back(*static_cast<double*>(callData));
+      vtkNew<vtkImageData> image;
+      ReadWindow(self->Window, image, nullptr);
+      if (self->Previous)
+      {
+        vtkDataArray* a = image->GetPointData()->GetScalars();
+        vtkDataArray* b = self->Previous->GetPointData()->GetScalars();
+        double sum = 0.0;
+        for (vtkIdType p = 0; p < a->GetNumberOfTuples(); ++p)
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            sum += std::abs(a->GetComponent(p, c) - b->GetComponent(p, c));
+          }
+        }
+        self->Change.push_back(sum / (3.0 * a->GetNumberOfTuples()));
+      }
+      self->Previous = image;
+    });
+  run.Pass->AddObserver(vtkCommand::ProgressEvent, callback);
+  const int frames = run.Pass->Converge(run.Renderer, 12);
+  std::printf("Converge: %d frames, %zu progress events, mean change per frame:", frames,
+    observer.Progress.size());
+  for (double c : observer.Change)
+  {
+    std::printf(" %.3f", c);
+  }
+  std::printf("\n");
+  Check(frames == 12 && observer.Progress.size() == 12, "12 frames, 12 ProgressEvents");
+  bool monotone = true;
+  for (size_t k = 0; k < observer.Progress.size(); ++k)
+  {
+    monotone = monotone && std::abs(observer.Progress[k] - (k + 1) / 12.0) < 1e-12;
+  }
+  Check(monotone, "progress k / 12");
+  Check(observer.Change.size() == 11 && observer.Change.front() > 0.0 &&
+      observer.Change.back() < 0.5 * observer.Change.front(),
+    "the per-frame change falls to below half of the first");
+  Release(run);
+}
+
+void CheckBadInput()
+{
+  vtkNew<vtkDeepGIPass> gi;
+  EventCounter warnings(gi, vtkCommand::WarningEvent);
+  Check(gi->Converge(nullptr, 3) == 0, "Converge(nullptr) renders nothing");
+  vtkNew<vtkRenderer> renderer;
+  Check(gi->Converge(renderer, 3) == 0, "Converge without a window renders nothing");
+  gi->SetPreset(7);
+  gi->SetLayerProbeInterval(0);
+  Check(gi->GetLayerProbeInterval() == 1, "probe interval clamped to 1");
+  Check(warnings.Count == 4, "four warnings for four bad inputs");
+  gi->SetPresetToHighQuality();
+  Check(gi->GetRadiosityPass()->GetNumberOfSamples() == 30 &&
+      gi->GetAmbientObscurancePass()->GetNumberOfSamples() == 32 &&
+      gi->GetReflectionPass()->GetNumberOfSteps() == 128,
+    "HIGH_QUALITY sets the three sub-passes");
+  gi->SetPresetToHighPerformance();
+  Check(gi->GetRadiosityPass()->GetNumberOfSamples() == 13 &&
+      gi->GetAmbientObscurancePass()->GetNumberOfSamples() == 8 &&
+      gi->GetReflectionPass()->GetNumberOfSteps() == 32,
+    "HIGH_PERFORMANCE sets the three sub-passes");
+  Check(vtkDeepGIPass::GetPresetFromString("high-quality") == vtkDeepGIPass::HIGH_QUALITY &&
+      vtkDeepGIPass::GetPresetFromString("Balanced") == vtkDeepGIPass::BALANCED &&
+      vtkDeepGIPass::GetPresetFromString("fast") == -1,
+    "preset names");
+  Check(gi->GetAmbientObscurancePass()->GetGBufferPass() == gi->GetGBufferPass() &&
+      gi->GetRadiosityPass()->GetGBufferPass() == gi->GetGBufferPass() &&
+      gi->GetReflectionPass()->GetGBufferPass() == gi->GetGBufferPass(),
+    "the sub-passes share the G-buffer");
+}
+}
+
+int TestDeepGI(int, char*[])
+{
+  CheckBadInput();
+  CheckComposite();
+  CheckSkipLogic();
+  CheckConverge();
+  std::printf("%d failure(s)\n", CheckFailures());
+  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

@@ -1,0 +1,57 @@
+//VTK::System::Dec
+
+//=========================================================================
+// vtkDeepGIPass composite of layer 0 (paper sections 3.1-3.6):
+//   colour = DIRECT + AV * AMBIENT + L_ind + REFLECTIVITY * L_r
+// with DIRECT = RADIANCE - AMBIENT, i.e. RADIANCE - (1 - AV) * AMBIENT plus
+// the indirect terms. The effects that did not run this frame are compiled
+// out (DEEP_GI_AO, DEEP_GI_RADIOSITY, DEEP_GI_REFLECTIONS below), so their
+// terms are exactly 0 (AV = 1). Written with blend (ONE, ZERO) on colour
+// and alpha kept; empty pixels are discarded and keep the background.
+//=========================================================================
+
+//VTK::DeepGI::Effects
+
+in vec2 texCoord;
+
+uniform sampler2DArray deepDistance;
+uniform sampler2DArray deepRadiance;
+#if DEEP_GI_AO
+uniform sampler2DArray deepAmbient;
+uniform sampler2D deepVisibility;  // AV in red
+#endif
+#if DEEP_GI_RADIOSITY
+uniform sampler2D deepIndirect;    // L_ind of layer 0 (rgb)
+#endif
+#if DEEP_GI_REFLECTIONS
+uniform sampler2D deepReflected;   // L_r (rgb), a = 1 where traced
+uniform sampler2DArray deepReflectivity;
+#endif
+
+//VTK::Output::Dec
+
+void main()
+{
+  ivec2 size = textureSize(deepDistance, 0).xy;
+  ivec2 pixel = min(ivec2(texCoord * vec2(size)), size - 1);
+  if (!(texelFetch(deepDistance, ivec3(pixel, 0), 0).r > 0.0))
+  {
+    discard;
+  }
+  vec3 colour = texelFetch(deepRadiance, ivec3(pixel, 0), 0).rgb;
+#if DEEP_GI_AO
+  float av = clamp(texelFetch(deepVisibility, pixel, 0).r, 0.0, 1.0);
+  colour -= (1.0 - av) * texelFetch(deepAmbient, ivec3(pixel, 0), 0).rgb;
+#endif
+#if DEEP_GI_RADIOSITY
+  colour += texelFetch(deepIndirect, pixel, 0).rgb;
+#endif
+#if DEEP_GI_REFLECTIONS
+  vec4 reflected = texelFetch(deepReflected, pixel, 0);
+  if (reflected.a > 0.0)
+  {
+    colour += texelFetch(deepReflectivity, ivec3(pixel, 0), 0).rgb * reflected.rgb;
+  }
+#endif
+  gl_FragData[0] = vec4(max(colour, vec3(0.0)), 1.0);
+}

@@ -1,0 +1,719 @@
+#include "vtkDeepGIPass.h"
+
+#include "vtkActor.h"
+#include "vtkAssemblyNode.h"
+#include "vtkAssemblyPath.h"
+#include "vtkCamera.h"
+#include "vtkCommand.h"
+#include "vtkDataSet.h"
+#include "vtkDeepAmbientObscurancePass.h"
+#include "vtkDeepGBufferPass.h"
+#include "vtkDeepRadiosityPass.h"
+#include "vtkDeepReflectionPass.h"
+#include "vtkMapper.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkPropCollection.h"
+#include "vtkProperty.h"
+#include "vtkRenderState.h"
+#include "vtkShaderProgram.h"
+#include "vtkWeakPointer.h"
+#include "vtk_glew.h"
+
+#include "vtkDeepGICompositeFS.h"
+#include "vtkDeepGICoverageFS.h"
+#include "vtkDeepScreenSpaceHelpers.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <string>
+
+vtkStandardNewMacro(vtkDeepGIPass);
+
+//------------------------------------------------------------------------------
+// The opaque step handed to vtkDeepGBufferPass::RenderFrame: calls back into
+// the GI pass, so that the camera, clear, lights and the translucent,
+// volumetric and overlay steps stay the G-buffer pass's.
+class vtkDeepGIOpaqueStep : public vtkRenderPass
+{
+public:
+  static vtkDeepGIOpaqueStep* New();
+  vtkTypeMacro(vtkDeepGIOpaqueStep, vtkRenderPass);
+  vtkDeepGIPass* Owner = nullptr;
+  void Render(const vtkRenderState* s) override
+  {
+    this->NumberOfRenderedProps = 0;
+    if (this->Owner)
+    {
+      this->Owner->RenderOpaque(s);
+    }
+  }
+
+protected:
+  vtkDeepGIOpaqueStep() = default;
+  ~vtkDeepGIOpaqueStep() override = default;
+
+private:
+  vtkDeepGIOpaqueStep(const vtkDeepGIOpaqueStep&) = delete;
+  void operator=(const vtkDeepGIOpaqueStep&) = delete;
+};
+vtkStandardNewMacro(vtkDeepGIOpaqueStep);
+
+namespace
+{
+constexpr int EffectMask =
+  vtkDeepGIPass::AMBIENT_OBSCURANCE | vtkDeepGIPass::RADIOSITY | vtkDeepGIPass::REFLECTIONS;
+
+// Calls `visit` on every visible actor with opaque geometry of the
+// renderer (also inside assemblies) until it returns true.
+template <typename Visitor>
+bool AnyOpaqueActor(vtkRenderer* renderer, Visitor visit)
+{
+  vtkCollectionSimpleIterator it;
+  vtkPropCollection* props = renderer->GetViewProps();
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (!prop->GetVisibility())
+    {
+      continue;
+    }
+    prop->InitPathTraversal();
+    while (vtkAssemblyPath* path = prop->GetNextPath())
+    {
+      vtkActor* actor = vtkActor::SafeDownCast(path->GetLastNode()->GetViewProp());
+      if (actor && actor->GetVisibility() && actor->GetMapper() && actor->HasOpaqueGeometry() &&
+        visit(actor))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+// Whether some visible opaque actor has a non-black diffuse albedo
+// (Diffuse x DiffuseColor), i.e. whether eq. 6's rho can be non-zero.
+// Colours from scalars or textures are not known here and count as
+// non-black.
+bool HasDiffuseAlbedo(vtkRenderer* renderer)
+{
+  return AnyOpaqueActor(renderer,
+    [](vtkActor* actor)
+    {
+      vtkProperty* property = actor->GetProperty();
+      if (!(property->GetDiffuse() > 0.0))
+      {
+        return false;
+      }
+      if (actor->GetTexture() || property->GetTexture("albedoTex"))
+      {
+        return true;
+      }
+      vtkMapper* mapper = actor->GetMapper();
+      if (mapper->GetScalarVisibility())
+      {
+        // Colours from scalars when the input has the array the mapper
+        // would colour by (unknown inputs, e.g. composite data, count too).
+        vtkDataSet* input = mapper->GetInputAsDataSet();
+        int cellFlag = 0;
+        if (!input ||
+          vtkAbstractMapper::GetScalars(input, mapper->GetScalarMode(),
+            mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag))
+        {
+          return true;
+        }
+      }
+      const double* color = property->GetDiffuseColor();
+      return std::max({ color[0], color[1], color[2] }) > 0.0;
+    });
+}
+
+// The latest modification of the renderer's prop collection and props.
+vtkMTimeType PropsTime(vtkRenderer* renderer)
+{
+  vtkMTimeType time = renderer->GetViewProps()->GetMTime();
+  vtkCollectionSimpleIterator it;
+  vtkPropCollection* props = renderer->GetViewProps();
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    time = std::max(time, prop->GetRedrawMTime());
+  }
+  return time;
+}
+
+// What the layer-1 coverage depends on: the camera's view (position, focal
+// point, up, angle, parallel scale and projection; not its modification
+// time, which VTK moves every frame when it resets the clipping range) and
+// the latest modification of the prop collection and of any prop.
+using SceneKey = std::array<double, 13>;
+SceneKey SceneSignature(vtkRenderer* renderer)
+{
+  SceneKey key{};
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->GetPosition(key.data());
+  camera->GetFocalPoint(key.data() + 3);
+  camera->GetViewUp(key.data() + 6);
+  key[9] = camera->GetViewAngle();
+  key[10] = camera->GetParallelScale();
+  key[11] = camera->GetParallelProjection();
+  key[12] = static_cast<double>(PropsTime(renderer));
+  return key;
+}
+
+// The same props, and the same camera up to a relative 1e-5: VTK's own
+// round trips move it by more than float round-off (vtkWindowToImageFilter
+// renders with a view angle recomputed from the viewport, 3e-8 off).
+bool SameScene(const SceneKey& a, const SceneKey& b)
+{
+  for (size_t i = 0; i + 1 < a.size(); ++i)
+  {
+    if (std::abs(a[i] - b[i]) > 1e-5 * std::max({ 1.0, std::abs(a[i]), std::abs(b[i]) }))
+    {
+      return false;
+    }
+  }
+  return a.back() == b.back();
+}
+}
+
+//------------------------------------------------------------------------------
+// Per-renderer state: the adaptive layer count and its occlusion query, and
+// whether the renderer's last frame reflected.
+struct vtkDeepGIRendererState
+{
+  vtkWeakPointer<vtkRenderer> Renderer;
+  GLuint Query = 0;
+  bool QueryPending = false;
+  bool QueryStale = false; // issued before the scene last changed
+  int Layers = 2;
+  int FramesAtOneLayer = 0;
+  SceneKey Scene{};
+  // The first frame after a change is not measured: the single-pass
+  // oracles place newly visible geometry in layer 1 one frame late.
+  bool Settling = true;
+  bool Reflects = false;
+
+  void Release()
+  {
+    if (this->Query)
+    {
+      glDeleteQueries(1, &this->Query);
+      this->Query = 0;
+    }
+    this->QueryPending = false;
+    this->QueryStale = false;
+    this->Layers = 2;
+    this->FramesAtOneLayer = 0;
+    this->Scene = SceneKey{};
+    this->Settling = true;
+  }
+};
+
+class vtkDeepGIPass::vtkInternals
+{
+public:
+  vtkDeepGIOpaqueStep* OpaqueStep = nullptr;
+  std::map<vtkRenderer*, std::unique_ptr<vtkDeepGIRendererState>> States;
+  // One composite program per combination of effects (bits 0-2).
+  vtkOpenGLQuadHelper* CompositeQuads[EffectMask + 1] = {};
+  vtkOpenGLQuadHelper* CoverageQuad = nullptr;
+  bool Converging = false;
+  bool WarnedUnsupported = false;
+  // The effects wanted in the frame being rendered (set by Render).
+  int Wanted = 0;
+  vtkDeepGIRendererState* Current = nullptr;
+
+  bool AnyReflects()
+  {
+    bool any = false;
+    for (auto it = this->States.begin(); it != this->States.end();)
+    {
+      if (!it->second->Renderer)
+      {
+        // The renderer is gone; its query went with its context.
+        it = this->States.erase(it);
+        continue;
+      }
+      any = any || it->second->Reflects;
+      ++it;
+    }
+    return any;
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkDeepGIPass::vtkDeepGIPass()
+  : Internals(new vtkInternals)
+{
+  this->GBufferPass = vtkDeepGBufferPass::New();
+  this->AmbientObscurancePass = vtkDeepAmbientObscurancePass::New();
+  this->RadiosityPass = vtkDeepRadiosityPass::New();
+  this->ReflectionPass = vtkDeepReflectionPass::New();
+  this->AmbientObscurancePass->SetGBufferPass(this->GBufferPass);
+  this->RadiosityPass->SetGBufferPass(this->GBufferPass);
+  this->ReflectionPass->SetGBufferPass(this->GBufferPass);
+  this->Internals->OpaqueStep = vtkDeepGIOpaqueStep::New();
+  this->Internals->OpaqueStep->Owner = this;
+}
+
+//------------------------------------------------------------------------------
+vtkDeepGIPass::~vtkDeepGIPass()
+{
+  vtkInternals& in = *this->Internals;
+  for (vtkOpenGLQuadHelper* quad : in.CompositeQuads)
+  {
+    delete quad;
+  }
+  delete in.CoverageQuad;
+  in.OpaqueStep->Owner = nullptr;
+  in.OpaqueStep->Delete();
+  this->ReflectionPass->Delete();
+  this->RadiosityPass->Delete();
+  this->AmbientObscurancePass->Delete();
+  this->GBufferPass->Delete();
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGIPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "AmbientObscurance: " << (this->AmbientObscurance ? "On" : "Off") << "\n";
+  os << indent << "Radiosity: " << (this->Radiosity ? "On" : "Off") << "\n";
+  os << indent << "Reflections: " << (this->Reflections ? "On" : "Off") << "\n";
+  os << indent << "Preset: " << GetPresetAsString(this->Preset) << "\n";
+  os << indent << "AdaptiveLayers: " << (this->AdaptiveLayers ? "On" : "Off") << "\n";
+  os << indent << "LayerProbeInterval: " << this->LayerProbeInterval << "\n";
+  os << indent << "LastFrameEffects: " << GetEffectsAsString(this->LastFrameEffects) << "\n";
+  os << indent << "LastFrameNumberOfLayers: " << this->LastFrameNumberOfLayers << "\n";
+  os << indent << "LastLayerCoverage: " << this->LastLayerCoverage << "\n";
+  os << indent << "GBufferPass:\n";
+  this->GBufferPass->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "AmbientObscurancePass:\n";
+  this->AmbientObscurancePass->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "RadiosityPass:\n";
+  this->RadiosityPass->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "ReflectionPass:\n";
+  this->ReflectionPass->PrintSelf(os, indent.GetNextIndent());
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGIPass::SetPreset(int preset)
+{
+  // AO quality, radiosity Table 2 preset, reflection steps and refinements.
+  struct Settings
+  {
+    int AOQuality;
+    int RadiosityPreset;
+    int ReflectionSteps;
+    int Refinements;
+  };
+  static const Settings presets[] = { { vtkDeepAmbientObscurancePass::PRESET_LOW,
+                                        vtkDeepRadiosityPass::HIGH_PERFORMANCE, 32, 2 },
+    { vtkDeepAmbientObscurancePass::PRESET_MEDIUM, vtkDeepRadiosityPass::BALANCED, 64, 4 },
+    { vtkDeepAmbientObscurancePass::PRESET_HIGH, vtkDeepRadiosityPass::HIGH_QUALITY, 128, 6 } };
+  if (preset < HIGH_PERFORMANCE || preset > HIGH_QUALITY)
+  {
+    vtkWarningMacro("Unknown preset " << preset << "; the settings are unchanged.");
+    return;
+  }
+  const Settings& p = presets[preset];
+  this->AmbientObscurancePass->SetQualityPreset(p.AOQuality);
+  this->RadiosityPass->SetPreset(p.RadiosityPreset);
+  this->ReflectionPass->SetNumberOfSteps(p.ReflectionSteps);
+  this->ReflectionPass->SetRefinementSteps(p.Refinements);
+  this->Preset = preset;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkDeepGIPass::GetPresetAsString(int preset)
+{
+  switch (preset)
+  {
+    case HIGH_PERFORMANCE:
+      return "HIGH_PERFORMANCE";
+    case BALANCED:
+      return "BALANCED";
+    case HIGH_QUALITY:
+      return "HIGH_QUALITY";
+    default:
+      return "UNKNOWN";
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkDeepGIPass::GetPresetFromString(const char* name)
+{
+  if (!name)
+  {
+    return -1;
+  }
+  std::string key;
+  for (const char* c = name; *c; ++c)
+  {
+    key += *c == '-' ? '_' : static_cast<char>(std::toupper(static_cast<unsigned char>(*c)));
+  }
+  for (int p = HIGH_PERFORMANCE; p <= HIGH_QUALITY; ++p)
+  {
+    if (key == GetPresetAsString(p))
+    {
+      return p;
+    }
+  }
+  return -1;
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGIPass::SetLayerProbeInterval(int frames)
+{
+  if (frames < 1)
+  {
+    vtkWarningMacro("LayerProbeInterval " << frames << " is below 1 frame; using 1.");
+    frames = 1;
+  }
+  if (frames != this->LayerProbeInterval)
+  {
+    this->LayerProbeInterval = frames;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+std::string vtkDeepGIPass::GetEffectsAsString(int effects)
+{
+  std::string names;
+  const std::pair<int, const char*> bits[] = { { AMBIENT_OBSCURANCE, "AMBIENT_OBSCURANCE" },
+    { RADIOSITY, "RADIOSITY" }, { REFLECTIONS, "REFLECTIONS" }, { SECOND_LAYER, "SECOND_LAYER" } };
+  for (const auto& bit : bits)
+  {
+    if (effects & bit.first)
+    {
+      names += (names.empty() ? "" : "|") + std::string(bit.second);
+    }
+  }
+  return names.empty() ? "NONE" : names;
+}
+
+//------------------------------------------------------------------------------
+int vtkDeepGIPass::Converge(vtkRenderer* renderer, int frames)
+{
+  if (!renderer || !renderer->GetRenderWindow())
+  {
+    vtkWarningMacro("Converge: a renderer in a render window is needed; nothing rendered.");
+    return 0;
+  }
+  if (frames < 1)
+  {
+    vtkWarningMacro("Converge: " << frames << " frames requested; nothing rendered.");
+    return 0;
+  }
+  if (renderer->GetPass() != this)
+  {
+    vtkWarningMacro("Converge: the renderer does not use this pass (call SetPass first); the "
+                    "frames are rendered without converging anything.");
+  }
+  this->Internals->Converging = true;
+  for (int k = 1; k <= frames; ++k)
+  {
+    renderer->GetRenderWindow()->Render();
+    double progress = static_cast<double>(k) / frames;
+    this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
+  }
+  this->Internals->Converging = false;
+  return frames;
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGIPass::Render(const vtkRenderState* s)
+{
+  vtkInternals& in = *this->Internals;
+  this->NumberOfRenderedProps = 0;
+  vtkRenderer* renderer = s->GetRenderer();
+  auto& slot = in.States[renderer];
+  if (!slot || !slot->Renderer)
+  {
+    // New, or a new renderer at the address of a deleted one (whose query
+    // went with its context).
+    slot.reset(new vtkDeepGIRendererState);
+    slot->Renderer = renderer;
+  }
+  vtkDeepGIRendererState& state = *slot;
+
+  // What the scene requires (see the class description).
+  int wanted = 0;
+  if (this->AmbientObscurance && vtkDeepAmbientObscurancePass::RendererHasAmbientTerm(renderer))
+  {
+    wanted |= AMBIENT_OBSCURANCE;
+  }
+  if (this->Radiosity && vtkDeepRadiosityPass::RendererHasLightOn(renderer) &&
+    HasDiffuseAlbedo(renderer))
+  {
+    wanted |= RADIOSITY;
+  }
+  if (this->Reflections && vtkDeepReflectionPass::RendererReflects(renderer))
+  {
+    wanted |= REFLECTIONS;
+  }
+  state.Reflects = (wanted & REFLECTIONS) != 0;
+
+  // Layer-1 coverage: collect a finished query without waiting for it.
+  if (state.QueryPending)
+  {
+    GLuint available = 0;
+    glGetQueryObjectuiv(state.Query, GL_QUERY_RESULT_AVAILABLE, &available);
+    if (available)
+    {
+      GLuint64 covered = 0;
+      glGetQueryObjectui64v(state.Query, GL_QUERY_RESULT, &covered);
+      state.QueryPending = false;
+      if (!state.QueryStale)
+      {
+        this->LastLayerCoverage = static_cast<long long>(covered);
+        state.Layers = covered > 0 ? 2 : 1;
+        state.FramesAtOneLayer = 0;
+      }
+    }
+  }
+  const SceneKey scene = SceneSignature(renderer);
+  if (!SameScene(scene, state.Scene))
+  {
+
+    // New camera or props: probe with two layers at once.
+    state.Scene = scene;
+    state.Layers = 2;
+    state.FramesAtOneLayer = 0;
+    state.QueryStale = state.QueryPending;
+    state.Settling = true;
+  }
+  else if (state.Layers == 1 && !in.Converging &&
+    ++state.FramesAtOneLayer >= this->LayerProbeInterval)
+  {
+    state.Layers = 2;
+    state.FramesAtOneLayer = 0;
+  }
+  // Only layer 0 is read unless an effect looks behind it.
+  const bool deepEffect = (wanted & (RADIOSITY | REFLECTIONS)) ||
+    ((wanted & AMBIENT_OBSCURANCE) && this->AmbientObscurancePass->GetUseSecondLayer());
+  const int layers = !deepEffect ? 1 : (this->AdaptiveLayers ? state.Layers : 2);
+  this->GBufferPass->SetNumberOfLayers(layers);
+  this->GBufferPass->SetWriteReflectivity(in.AnyReflects());
+
+  in.Wanted = wanted;
+  in.Current = &state;
+  this->GBufferPass->RenderFrame(s, in.OpaqueStep);
+  in.Current = nullptr;
+  this->NumberOfRenderedProps = this->GBufferPass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGIPass::RenderOpaque(const vtkRenderState* s)
+{
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLRenderer* renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  vtkDeepGBufferPass* gbuffer = this->GBufferPass;
+  this->LastFrameEffects = 0;
+  this->LastFrameNumberOfLayers = 0;
+  if (!gbuffer->RenderLayers(s))
+  {
+    // The opaque props have been drawn the plain way.
+    if (!renderer->GetSelector() && !in.WarnedUnsupported)
+    {
+      in.WarnedUnsupported = true;
+      vtkWarningMacro("The deep G-buffer is unavailable; rendering without global illumination.");
+    }
+    return;
+  }
+  const int layers = gbuffer->GetEffectiveNumberOfLayers();
+  this->LastFrameNumberOfLayers = layers;
+  vtkOpenGLClearErrorMacro();
+
+  int effects = 0;
+  if ((in.Wanted & AMBIENT_OBSCURANCE) && this->AmbientObscurancePass->UpdateAmbientVisibility(s))
+  {
+    effects |= AMBIENT_OBSCURANCE;
+  }
+  if ((in.Wanted & RADIOSITY) && this->RadiosityPass->UpdateRadiosity(s))
+  {
+    effects |= RADIOSITY;
+  }
+  if ((in.Wanted & REFLECTIONS) && this->ReflectionPass->UpdateReflections(s) &&
+    this->ReflectionPass->GetReflectionTextureHandle(renderer) != 0)
+  {
+    effects |= REFLECTIONS;
+  }
+
+  gbuffer->ResolveToFramebuffer(s);
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  vtkOpenGLState* ostate = window->GetState();
+
+  // Layer-1 coverage query (read in a later frame by Render).
+  vtkDeepGIRendererState* state = in.Current;
+  const bool settling = state && state->Settling;
+  if (state)
+  {
+    state->Settling = false;
+  }
+  if (state && !settling && layers >= 2 && this->AdaptiveLayers && !state->QueryPending &&
+    vtkDeepScreenSpace::ReadyQuad(in.CoverageQuad, window, vtkDeepGICoverageFS))
+  {
+    if (!state->Query)
+    {
+      glGenQueries(1, &state->Query);
+    }
+    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
+    vtkOpenGLState::ScopedglColorMask savedColorMask(ostate);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    ostate->vtkglDisable(GL_BLEND);
+    ostate->vtkglDepthMask(GL_FALSE);
+    ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    const int distanceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
+    in.CoverageQuad->Program->SetUniformi("deepDistance", distanceUnit);
+    glBeginQuery(GL_SAMPLES_PASSED, state->Query);
+    in.CoverageQuad->Render();
+    glEndQuery(GL_SAMPLES_PASSED);
+    gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
+    state->QueryPending = true;
+    state->QueryStale = false;
+  }
+
+  this->LastFrameEffects = effects | (layers >= 2 ? SECOND_LAYER : 0);
+  if (!effects || gbuffer->GetDisplayQuantity() != vtkDeepGBufferPass::RADIANCE)
+  {
+    // Nothing to add: exactly the G-buffer's (VTK's) image, or its debug display.
+    vtkOpenGLCheckErrorMacro("failed after vtkDeepGIPass");
+    return;
+  }
+
+  // Units of the composite's inputs; an effect whose texture cannot be
+  // bound is left out of the composite (and of LastFrameEffects).
+  const int distanceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
+  const int radianceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::RADIANCE);
+  int ambientUnit = -1, visibilityUnit = -1, indirectUnit = -1, reflectedUnit = -1,
+      reflectivityUnit = -1;
+  if (effects & AMBIENT_OBSCURANCE)
+  {
+    ambientUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::AMBIENT);
+    visibilityUnit = this->AmbientObscurancePass->ActivateVisibilityTexture(renderer);
+  }
+  if (effects & RADIOSITY)
+  {
+    indirectUnit =
+      this->RadiosityPass->ActivateTexture(renderer, vtkDeepRadiosityPass::INDIRECT_RADIANCE, 0);
+  }
+  if (effects & REFLECTIONS)
+  {
+    reflectedUnit = this->ReflectionPass->ActivateReflectionTexture(renderer);
+    reflectivityUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::REFLECTIVITY);
+  }
+  int composited = effects;
+  if (ambientUnit < 0 || visibilityUnit < 0)
+  {
+    composited &= ~AMBIENT_OBSCURANCE;
+  }
+  if (indirectUnit < 0)
+  {
+    composited &= ~RADIOSITY;
+  }
+  if (reflectedUnit < 0 || reflectivityUnit < 0)
+  {
+    composited &= ~REFLECTIONS;
+  }
+  vtkOpenGLQuadHelper*& quad = in.CompositeQuads[composited];
+  std::string fs = vtkDeepGICompositeFS;
+  vtkShaderProgram::Substitute(fs, "//VTK::DeepGI::Effects",
+    std::string("#define DEEP_GI_AO ") + ((composited & AMBIENT_OBSCURANCE) ? "1" : "0") +
+      "\n#define DEEP_GI_RADIOSITY " + ((composited & RADIOSITY) ? "1" : "0") +
+      "\n#define DEEP_GI_REFLECTIONS " + ((composited & REFLECTIONS) ? "1" : "0") + "\n");
+  if (distanceUnit >= 0 && radianceUnit >= 0 &&
+    vtkDeepScreenSpace::ReadyQuad(quad, window, fs.c_str()))
+  {
+    vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
+    vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(ostate);
+    ostate->vtkglEnable(GL_BLEND);
+    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ZERO, GL_ZERO, GL_ONE);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    ostate->vtkglDepthMask(GL_FALSE);
+    vtkShaderProgram* program = quad->Program;
+    program->SetUniformi("deepDistance", distanceUnit);
+    program->SetUniformi("deepRadiance", radianceUnit);
+    if (composited & AMBIENT_OBSCURANCE)
+    {
+      program->SetUniformi("deepAmbient", ambientUnit);
+      program->SetUniformi("deepVisibility", visibilityUnit);
+    }
+    if (composited & RADIOSITY)
+    {
+      program->SetUniformi("deepIndirect", indirectUnit);
+    }
+    if (composited & REFLECTIONS)
+    {
+      program->SetUniformi("deepReflected", reflectedUnit);
+      program->SetUniformi("deepReflectivity", reflectivityUnit);
+    }
+    quad->Render();
+  }
+  else
+  {
+    vtkErrorMacro("The GI composite is unavailable; showing the direct image.");
+    composited = 0;
+  }
+  if (reflectivityUnit >= 0)
+  {
+    gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::REFLECTIVITY);
+  }
+  if (reflectedUnit >= 0)
+  {
+    this->ReflectionPass->DeactivateReflectionTexture(renderer);
+  }
+  if (indirectUnit >= 0)
+  {
+    this->RadiosityPass->DeactivateTexture(renderer, vtkDeepRadiosityPass::INDIRECT_RADIANCE, 0);
+  }
+  if (visibilityUnit >= 0)
+  {
+    this->AmbientObscurancePass->DeactivateVisibilityTexture(renderer);
+  }
+  if (ambientUnit >= 0)
+  {
+    gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::AMBIENT);
+  }
+  gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::RADIANCE);
+  gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
+  this->LastFrameEffects = composited | (layers >= 2 ? SECOND_LAYER : 0);
+  vtkOpenGLCheckErrorMacro("failed after vtkDeepGIPass");
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGIPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  vtkInternals& in = *this->Internals;
+  for (auto& entry : in.States)
+  {
+    entry.second->Release();
+  }
+  in.States.clear();
+  for (vtkOpenGLQuadHelper*& quad : in.CompositeQuads)
+  {
+    vtkDeepScreenSpace::ReleaseQuad(quad, w);
+  }
+  vtkDeepScreenSpace::ReleaseQuad(in.CoverageQuad, w);
+  this->AmbientObscurancePass->ReleaseGraphicsResources(w);
+  this->RadiosityPass->ReleaseGraphicsResources(w);
+  this->ReflectionPass->ReleaseGraphicsResources(w);
+  this->GBufferPass->ReleaseGraphicsResources(w);
+  this->Superclass::ReleaseGraphicsResources(w);
+}

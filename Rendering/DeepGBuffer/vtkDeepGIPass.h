@@ -1,0 +1,245 @@
+/**
+ * @class   vtkDeepGIPass
+ * @brief   Deep G-buffer GI: direct + AV * ambient + radiosity + reflections.
+ *
+ * The composite of Mara, McGuire, Nowrouzezahrai and Luebke, "Deep
+ * G-Buffers for Stable Global Illumination Approximation" (HPG 2016),
+ * sections 3.1-3.6, for any VTK scene in one line:
+ *
+ *   renderer->SetPass(gi);   // C++
+ *   renderer.SetPass(gi)     # Python
+ *
+ * It owns one vtkDeepGBufferPass and the three effects that read it,
+ * sharing it (GetGBufferPass, GetAmbientObscurancePass, GetRadiosityPass,
+ * GetReflectionPass; tune them there). Each frame it renders the camera,
+ * lights, the opaque props into the layers, the effects the scene needs
+ * (UpdateAmbientVisibility, UpdateRadiosity, UpdateReflections), ONE
+ * composite, then VTK's translucent, volumetric and overlay steps against
+ * layer 0's depth (vtkDeepGBufferPass::RenderFrame), so translucent props,
+ * volumes (vtkSmartVolumeMapper), 2D actors and FXAA compose as usual.
+ *
+ * Composition of layer 0 (floats, before the framebuffer's rounding):
+ *
+ *   colour = DIRECT + AV * AMBIENT + L_ind + REFLECTIVITY * L_r
+ *
+ * - DIRECT = RADIANCE - AMBIENT: VTK's shading under its lights (diffuse
+ *   and specular highlights), G-buffer quantities of layer 0.
+ * - AMBIENT: VTK's ambient term (Ambient x AmbientColor), the stand-in for
+ *   light arriving from every direction. Ambient visibility AV (section
+ *   3.1, eq. 1-2) is a visibility term for exactly that light, so it scales
+ *   AMBIENT only; direct light has its own (shadow) visibility, and
+ *   darkening it too (what vtkSSAOPass does) would double-shadow it.
+ * - L_ind: the radiosity pass's outgoing indirect radiance (sections
+ *   3.2-3.3, eq. 3-7, confidence fallback included when on). It is light
+ *   that VTK's local shading does not contain, so it is added.
+ * - REFLECTIVITY * L_r: mirror reflections (section 3.6), the reflected
+ *   radiance weighted by the G-buffer's REFLECTIVITY, added like L_ind.
+ * Alpha is kept; pixels where layer 0 is empty keep the background.
+ *
+ * Model only what the scene requires. Each frame and per renderer:
+ * - ambient obscurance runs when AmbientObscurance is on and a visible
+ *   opaque actor has an ambient term (otherwise AV * AMBIENT is 0 anyway);
+ * - radiosity runs when Radiosity is on, a light is switched on and a
+ *   visible opaque actor can reflect diffuse light (Diffuse > 0 and a
+ *   non-black DiffuseColor, or colours from scalars or a texture);
+ * - reflections run when Reflections is on and a visible prop reflects
+ *   (vtkDeepReflectionPass::RendererReflects); otherwise the G-buffer does
+ *   not even store REFLECTIVITY;
+ * - the second layer is built when an effect runs and the scene has depth
+ *   complexity: an occlusion query counts the layer-1 pixels (a full-screen
+ *   quad that discards where layer 1 is empty) and is read back one or more
+ *   frames later, never stalling. A count of 0 drops the renderer to one
+ *   layer; it probes with two layers again after LayerProbeInterval frames,
+ *   or at once when its camera or props change (the camera's position,
+ *   focal point, view up, view angle, parallel scale and projection; the
+ *   modification times of the prop collection and of each prop). The frame
+ *   of a change is not measured: the single-pass oracles put newly visible
+ *   geometry into layer 1 one frame late, so a moving camera keeps two
+ *   layers.
+ * When no effect runs the frame is exactly vtkDeepGBufferPass's (VTK's
+ * image). GetLastFrameEffects() and PrintSelf tell what ran.
+ *
+ * Presets (SetPreset, one Modified()): AO quality (samples N, blur radius,
+ * MIP threshold q), the radiosity pass's Table 2 preset, reflection march
+ * steps and bisections:
+ * | preset           | AO                 | radiosity        | reflections |
+ * |------------------|--------------------|------------------|-------------|
+ * | HIGH_PERFORMANCE | LOW (8, 2, 4)      | HIGH_PERFORMANCE | 32, 2       |
+ * | BALANCED         | MEDIUM (16, 4, 8)  | BALANCED         | 64, 4       |
+ * | HIGH_QUALITY     | HIGH (32, 6, 16)   | HIGH_QUALITY     | 128, 6      |
+ * BALANCED is the sub-passes' default.
+ *
+ * Still images: radiosity adds one bounce per frame and filters over time
+ * (section 3.3), so a single frame shows one bounce. Converge(renderer, n)
+ * renders n frames at a fixed camera and fires vtkCommand::ProgressEvent
+ * (call data: double progress in [0, 1]) after each. On the demo scene
+ * (320 x 240) the mean distance to the converged image falls below 1/255
+ * after 18 (HIGH_PERFORMANCE), 16 (BALANCED) and 19 (HIGH_QUALITY) frames;
+ * the per-frame change then stays at a floor of 0.15-0.25/255 (the
+ * rotating taps of the temporal filter). See Documentation/gi.md.
+ *
+ * Bad input: a non-positive frame count, a renderer that does not use this
+ * pass, or a probe interval below 1 give a warning and no crash. When the
+ * G-buffer is unsupported the frame is VTK's plain image, with one
+ * warning.
+ *
+ * @sa vtkDeepGBufferPass vtkDeepAmbientObscurancePass vtkDeepRadiosityPass vtkDeepReflectionPass
+ */
+
+#ifndef vtkDeepGIPass_h
+#define vtkDeepGIPass_h
+
+#include "vtkDeepGIRenderingModule.h" // for export macro
+#include "vtkRenderPass.h"
+
+#include <memory> // for std::unique_ptr
+#include <string> // for std::string
+
+class vtkDeepAmbientObscurancePass;
+class vtkDeepGBufferPass;
+class vtkDeepRadiosityPass;
+class vtkDeepReflectionPass;
+class vtkRenderer;
+
+class VTKDEEPGIRENDERING_EXPORT vtkDeepGIPass : public vtkRenderPass
+{
+public:
+  static vtkDeepGIPass* New();
+  vtkTypeMacro(vtkDeepGIPass, vtkRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Bits of GetLastFrameEffects(): the sub-passes that ran.
+  enum Effect
+  {
+    AMBIENT_OBSCURANCE = 1,
+    RADIOSITY = 2,
+    REFLECTIONS = 4,
+    SECOND_LAYER = 8 ///< the G-buffer had two layers
+  };
+
+  /// Quality presets (see the class description).
+  enum Preset
+  {
+    HIGH_PERFORMANCE = 0,
+    BALANCED = 1,
+    HIGH_QUALITY = 2
+  };
+
+  ///@{
+  /// The shared G-buffer and the effects, for tuning. Never null. The
+  /// G-buffer's NumberOfLayers and WriteReflectivity are set by this pass
+  /// every frame (1 or 2 layers, see AdaptiveLayers; reflectivity while a
+  /// prop reflects); its other settings (oracle, dz, ...) are the user's.
+  vtkGetObjectMacro(GBufferPass, vtkDeepGBufferPass);
+  vtkGetObjectMacro(AmbientObscurancePass, vtkDeepAmbientObscurancePass);
+  vtkGetObjectMacro(RadiosityPass, vtkDeepRadiosityPass);
+  vtkGetObjectMacro(ReflectionPass, vtkDeepReflectionPass);
+  ///@}
+
+  ///@{
+  /// Effect switches, all on by default. An effect that is on still runs
+  /// only when the scene needs it (see the class description).
+  vtkSetMacro(AmbientObscurance, bool);
+  vtkGetMacro(AmbientObscurance, bool);
+  vtkBooleanMacro(AmbientObscurance, bool);
+  vtkSetMacro(Radiosity, bool);
+  vtkGetMacro(Radiosity, bool);
+  vtkBooleanMacro(Radiosity, bool);
+  vtkSetMacro(Reflections, bool);
+  vtkGetMacro(Reflections, bool);
+  vtkBooleanMacro(Reflections, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Sets the three effects' presets at once (see the table in the class
+   * description) with one Modified() of this pass. An unknown preset is
+   * ignored with a warning. Default BALANCED (the sub-passes' defaults).
+   * GetPresetFromString parses "high_performance", "balanced",
+   * "high_quality" (case-insensitive, '-' or '_'); -1 if unknown.
+   */
+  void SetPreset(int preset);
+  vtkGetMacro(Preset, int);
+  void SetPresetToHighPerformance() { this->SetPreset(HIGH_PERFORMANCE); }
+  void SetPresetToBalanced() { this->SetPreset(BALANCED); }
+  void SetPresetToHighQuality() { this->SetPreset(HIGH_QUALITY); }
+  static const char* GetPresetAsString(int preset);
+  static int GetPresetFromString(const char* name);
+  ///@}
+
+  ///@{
+  /**
+   * Adaptive layer count (default on): one layer while the layer-1
+   * coverage measured by the occlusion query is 0. Off: always two layers.
+   * LayerProbeInterval (frames, default 60, at least 1): how long a
+   * renderer stays at one layer before it probes with two again when its
+   * camera and props did not change.
+   */
+  vtkSetMacro(AdaptiveLayers, bool);
+  vtkGetMacro(AdaptiveLayers, bool);
+  vtkBooleanMacro(AdaptiveLayers, bool);
+  void SetLayerProbeInterval(int frames);
+  vtkGetMacro(LayerProbeInterval, int);
+  ///@}
+
+  ///@{
+  /**
+   * What the last frame rendered by this pass computed: a mask of Effect
+   * bits, the G-buffer's layer count, and the layer-1 pixel count of the
+   * newest occlusion query result (-1 before the first).
+   * GetEffectsAsString(mask) names the bits ("AMBIENT_OBSCURANCE|RADIOSITY",
+   * "NONE").
+   */
+  vtkGetMacro(LastFrameEffects, int);
+  vtkGetMacro(LastFrameNumberOfLayers, int);
+  vtkGetMacro(LastLayerCoverage, long long);
+  static std::string GetEffectsAsString(int effects);
+  ///@}
+
+  /**
+   * Renders `renderer`'s window `frames` times without moving the camera,
+   * so that the radiosity bounces and the temporal filters settle, and
+   * fires vtkCommand::ProgressEvent with a double progress (k / frames)
+   * after frame k. The renderer should use this pass (a warning
+   * otherwise; the frames are rendered anyway). Interval probes of the
+   * layer count are not started while converging (they would reset the
+   * radiosity history). Returns the number of frames rendered (0 with a
+   * warning for a null renderer, a renderer without a window or
+   * frames < 1).
+   */
+  int Converge(vtkRenderer* renderer, int frames);
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+protected:
+  vtkDeepGIPass();
+  ~vtkDeepGIPass() override;
+
+  /// The opaque step of the frame: layers, effects, composite.
+  void RenderOpaque(const vtkRenderState* s);
+
+  vtkDeepGBufferPass* GBufferPass = nullptr;
+  vtkDeepAmbientObscurancePass* AmbientObscurancePass = nullptr;
+  vtkDeepRadiosityPass* RadiosityPass = nullptr;
+  vtkDeepReflectionPass* ReflectionPass = nullptr;
+  bool AmbientObscurance = true;
+  bool Radiosity = true;
+  bool Reflections = true;
+  int Preset = BALANCED;
+  bool AdaptiveLayers = true;
+  int LayerProbeInterval = 60;
+  int LastFrameEffects = 0;
+  int LastFrameNumberOfLayers = 0;
+  long long LastLayerCoverage = -1;
+
+private:
+  vtkDeepGIPass(const vtkDeepGIPass&) = delete;
+  void operator=(const vtkDeepGIPass&) = delete;
+
+  friend class vtkDeepGIOpaqueStep;
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif
