@@ -94,9 +94,11 @@ struct Options
   bool ErrorMaps = true;
 };
 
-// layers (1 or 2) : preset (hp, balanced, hq) [: nonormal]
+// layers (1 or 2) : preset (hp, balanced, hq) [: nt (no n_Y test)] [: n | sa
+// (estimator)]
 const char* const DefaultMethods = "1:hp,1:hp:nt,1:balanced,1:balanced:nt,1:hq,1:hq:nt,"
-                                   "2:hp,2:hp:nt,2:balanced,2:balanced:nt,2:hq,2:hq:nt";
+                                   "2:hp,2:hp:nt,2:balanced,2:balanced:nt,2:hq,2:hq:nt,"
+                                   "2:hp:n,2:balanced:n,2:hq:n,2:hp:sa,2:balanced:sa,2:hq:sa";
 
 void Usage()
 {
@@ -111,8 +113,10 @@ void Usage()
     "  --samples N          reference rays per pixel (default 64)\n"
     "  --scenes LIST        comma list of demo, cornell-lucy, cornell-original,\n"
     "                       dragon (default all four)\n"
-    "  --methods LIST       comma list of L:P[:nt]: L layers (1 or 2), P the preset\n"
-    "                       (hp, balanced, hq), nt: the n_Y test off, otherwise on.\n"
+    "  --methods LIST       comma list of L:P[:nt][:E]: L layers (1 or 2), P the\n"
+    "                       preset (hp, balanced, hq), nt: the n_Y test off (else on),\n"
+    "                       E the estimator: n (ALL_TAPS) or sa (SOLID_ANGLE); without\n"
+    "                       it ACCEPTED_TAPS (eq. 4).\n"
     "                       Default: %s\n"
     "  --data DIR           shared data directory (default %s)\n"
     "  --no-error-maps      do not write the error-map PNGs\n"
@@ -129,15 +133,36 @@ struct Method
   int Layers = 2;
   int Preset = vtkDeepRadiosityPass::BALANCED;
   bool NormalTest = true;
+  int Estimator = vtkDeepRadiosityPass::ACCEPTED_TAPS;
 };
 
 bool ParseMethod(const std::string& spec, Method& m)
 {
   const std::vector<std::string> p = Split(spec, ':');
-  if (p.size() < 2 || p.size() > 3 || (p[0] != "1" && p[0] != "2") ||
-    (p.size() == 3 && p[2] != "nt"))
+  if (p.size() < 2 || p.size() > 4 || (p[0] != "1" && p[0] != "2"))
   {
     return false;
+  }
+  m.NormalTest = true;
+  m.Estimator = vtkDeepRadiosityPass::ACCEPTED_TAPS;
+  for (size_t k = 2; k < p.size(); ++k)
+  {
+    if (p[k] == "nt")
+    {
+      m.NormalTest = false;
+    }
+    else if (p[k] == "n")
+    {
+      m.Estimator = vtkDeepRadiosityPass::ALL_TAPS;
+    }
+    else if (p[k] == "sa")
+    {
+      m.Estimator = vtkDeepRadiosityPass::SOLID_ANGLE;
+    }
+    else
+    {
+      return false;
+    }
   }
   const char* const presets[] = { "hp", "balanced", "hq" };
   const auto it = std::find(std::begin(presets), std::end(presets), p[1]);
@@ -147,9 +172,9 @@ bool ParseMethod(const std::string& spec, Method& m)
   }
   m.Layers = p[0] == "1" ? 1 : 2;
   m.Preset = static_cast<int>(it - std::begin(presets));
-  m.NormalTest = p.size() == 2;
-  const std::string label =
-    std::string(m.Layers == 1 ? "1 layer" : "2 layers") + (m.NormalTest ? "" : ", no n_Y test");
+  const char* const estimators[] = { "", ", /N", ", solid angle" };
+  const std::string label = std::string(m.Layers == 1 ? "1 layer" : "2 layers") +
+    (m.NormalTest ? "" : ", no n_Y test") + estimators[m.Estimator];
   m.Name = label + ", " + vtkDeepRadiosityPass::GetPresetAsString(m.Preset);
   m.Family = label;
   return true;
@@ -258,7 +283,8 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     Method parsed;
     if (!ParseMethod(m, parsed))
     {
-      return bad("unknown method '" + m + "' (L:P[:nt], L 1 or 2, P hp, balanced or hq)");
+      return bad(
+        "unknown method '" + m + "' (L:P[:nt][:n|sa], L 1 or 2, P hp, balanced or hq)");
     }
   }
   return true;
@@ -522,6 +548,7 @@ int main(int argc, char* argv[])
       pass->SetGBufferPass(m.Layers == 1 ? gbuffer1.GetPointer() : gbuffer2.GetPointer());
       pass->SetPreset(m.Preset);
       pass->SetUseNormalTest(m.NormalTest);
+      pass->SetEstimator(m.Estimator);
       pass->SetDamping(0.0);
       pass->SetTemporalAlpha(0.0);
       passes.push_back(pass);
@@ -704,7 +731,7 @@ int main(int argc, char* argv[])
   md << "\n| scene | method | frame [ms] | RMSE vs E_ref,r | MAE | bias | rel. error | RMSE "
         "layer-1 px | RMSE vs E_ref | bias vs E_ref | rel. error vs E_ref |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  csv << "scene,method,family,layers,preset,normal_test,frame_ms,radius,rmse,mae,bias,relative,"
+  csv << "scene,method,family,layers,preset,normal_test,estimator,frame_ms,radius,rmse,mae,bias,relative,"
          "rmse_layer1,rmse_unlimited,mae_unlimited,bias_unlimited,relative_unlimited,"
          "rmse_raw_m,bias_raw_m,rmse_raw_n,bias_raw_n,rmse_filtered_n,bias_filtered_n,"
          "mae_low_confidence,mae_high_confidence\n";
@@ -717,10 +744,10 @@ int main(int argc, char* argv[])
       r.Limited.Relative, r.Layer1.Rmse, r.Unlimited.Rmse, r.Unlimited.Bias, r.Unlimited.Relative);
     md << b;
     std::snprintf(b, sizeof(b),
-      "\"%s\",\"%s\",\"%s\",%d,%d,%d,%.4f,%.5g,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,"
+      "\"%s\",\"%s\",\"%s\",%d,%d,%d,%d,%.4f,%.5g,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,"
       "%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f\n",
       r.Scene.c_str(), r.M.Name.c_str(), r.M.Family.c_str(), r.M.Layers, r.M.Preset,
-      r.M.NormalTest ? 1 : 0, r.FrameMs, r.Radius, r.Limited.Rmse, r.Limited.Mae, r.Limited.Bias,
+      r.M.NormalTest ? 1 : 0, r.M.Estimator, r.FrameMs, r.Radius, r.Limited.Rmse, r.Limited.Mae, r.Limited.Bias,
       r.Limited.Relative, r.Layer1.Rmse, r.Unlimited.Rmse, r.Unlimited.Mae, r.Unlimited.Bias,
       r.Unlimited.Relative, r.RawM.Rmse, r.RawM.Bias, r.RawN.Rmse, r.RawN.Bias,
       r.FilteredN.Rmse, r.FilteredN.Bias, r.LowConfidenceError, r.HighConfidenceError);
@@ -734,6 +761,10 @@ int main(int argc, char* argv[])
         "filtered /M | RMSE filtered /N | bias filtered /N |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const Result& r : results)
   {
+    if (r.M.Estimator != vtkDeepRadiosityPass::ACCEPTED_TAPS)
+    {
+      continue; // E M / N is the ALL_TAPS estimate only when E is eq. 4's
+    }
     char b[512];
     std::snprintf(b, sizeof(b), "| %s | %s | %.4f | %+.4f | %.4f | %+.4f | %.4f | %.4f | %+.4f |\n",
       r.Scene.c_str(), r.M.Name.c_str(), r.RawM.Rmse, r.RawM.Bias, r.RawN.Rmse, r.RawN.Bias,
