@@ -102,27 +102,26 @@ const char* const DefaultMethods = "1:hp,1:hp:nt,1:balanced,1:balanced:nt,1:hq,1
 
 void Usage()
 {
-  std::printf(
-    "Usage: deepgi-benchmark-radiosity [options]\n"
-    "Time and error of vtkDeepRadiosityPass (single bounce) against the ray-traced\n"
-    "one-bounce irradiance of vtkDeepGIReferenceIrradiance, measured in one run.\n"
-    "  --size WxH           timing size in pixels (default 320x240)\n"
-    "  --accuracy-size WxH  size of the error measurement (default 200x150)\n"
-    "  --frames N           timed frames per method and round (default 5)\n"
-    "  --rounds N           rounds over all methods (default 2)\n"
-    "  --samples N          reference rays per pixel (default 64)\n"
-    "  --scenes LIST        comma list of demo, cornell-lucy, cornell-original,\n"
-    "                       dragon (default all four)\n"
-    "  --methods LIST       comma list of L:P[:nt][:E]: L layers (1 or 2), P the\n"
-    "                       preset (hp, balanced, hq), nt: the n_Y test off (else on),\n"
-    "                       E the estimator: n (ALL_TAPS) or sa (SOLID_ANGLE); without\n"
-    "                       it ACCEPTED_TAPS (eq. 4).\n"
-    "                       Default: %s\n"
-    "  --data DIR           shared data directory (default %s)\n"
-    "  --no-error-maps      do not write the error-map PNGs\n"
-    "  --backend NAME       auto, x11 or egl (default auto)\n"
-    "  --output DIR         output directory (default output)\n"
-    "  --help               this text\n",
+  std::printf("Usage: deepgi-benchmark-radiosity [options]\n"
+              "Time and error of vtkDeepRadiosityPass (single bounce) against the ray-traced\n"
+              "one-bounce irradiance of vtkDeepGIReferenceIrradiance, measured in one run.\n"
+              "  --size WxH           timing size in pixels (default 320x240)\n"
+              "  --accuracy-size WxH  size of the error measurement (default 200x150)\n"
+              "  --frames N           timed frames per method and round (default 5)\n"
+              "  --rounds N           rounds over all methods (default 2)\n"
+              "  --samples N          reference rays per pixel (default 64)\n"
+              "  --scenes LIST        comma list of demo, cornell-lucy, cornell-original,\n"
+              "                       dragon (default all four)\n"
+              "  --methods LIST       comma list of L:P[:nt][:E]: L layers (1 or 2), P the\n"
+              "                       preset (hp, balanced, hq), nt: the n_Y test off (else on),\n"
+              "                       E the estimator: n (ALL_TAPS) or sa (SOLID_ANGLE); without\n"
+              "                       it ACCEPTED_TAPS (eq. 4).\n"
+              "                       Default: %s\n"
+              "  --data DIR           shared data directory (default %s)\n"
+              "  --no-error-maps      do not write the error-map PNGs\n"
+              "  --backend NAME       auto, x11 or egl (default auto)\n"
+              "  --output DIR         output directory (default output)\n"
+              "  --help               this text\n",
     DefaultMethods, DEEPGI_DATA_DIR);
 }
 
@@ -183,7 +182,8 @@ bool ParseMethod(const std::string& spec, Method& m)
 bool ParseOptions(int argc, char* argv[], Options& o)
 {
   std::string methods = DefaultMethods;
-  auto bad = [](const std::string& what) {
+  auto bad = [](const std::string& what)
+  {
     std::fprintf(stderr, "%s: %s\n", Program, what.c_str());
     return false;
   };
@@ -228,8 +228,7 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     {
       return bad("--rounds needs an integer 1..100, got '" + value + "'");
     }
-    if (arg == "--samples" &&
-      (!ParseInt(value, o.Samples) || o.Samples < 1 || o.Samples > 1048576))
+    if (arg == "--samples" && (!ParseInt(value, o.Samples) || o.Samples < 1 || o.Samples > 1048576))
     {
       return bad("--samples needs an integer 1..1048576, got '" + value + "'");
     }
@@ -283,8 +282,7 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     Method parsed;
     if (!ParseMethod(m, parsed))
     {
-      return bad(
-        "unknown method '" + m + "' (L:P[:nt][:n|sa], L 1 or 2, P hp, balanced or hq)");
+      return bad("unknown method '" + m + "' (L:P[:nt][:n|sa], L 1 or 2, P hp, balanced or hq)");
     }
   }
   return true;
@@ -298,8 +296,8 @@ std::vector<float> Luminance(vtkImageData* image, const char* name)
   vtkDataArray* a = image->GetPointData()->GetArray(name);
   for (vtkIdType i = 0; a && i < n; ++i)
   {
-    lum[i] = static_cast<float>(
-      0.2126 * a->GetComponent(i, 0) + 0.7152 * a->GetComponent(i, 1) + 0.0722 * a->GetComponent(i, 2));
+    lum[i] = static_cast<float>(0.2126 * a->GetComponent(i, 0) + 0.7152 * a->GetComponent(i, 1) +
+      0.0722 * a->GetComponent(i, 2));
   }
   return lum;
 }
@@ -394,7 +392,8 @@ std::pair<double, double> ErrorByConfidence(const std::vector<float>& e,
 }
 
 /// Writes an axis-aligned rectangle (corner, two edges) as a .vtp file.
-bool WriteRectangle(const std::string& file, const double o[3], const double p1[3], const double p2[3])
+bool WriteRectangle(
+  const std::string& file, const double o[3], const double p1[3], const double p2[3])
 {
   vtkNew<vtkPlaneSource> plane;
   plane->SetOrigin(o[0], o[1], o[2]);
@@ -409,8 +408,8 @@ bool WriteRectangle(const std::string& file, const double o[3], const double p1[
 
 /// Populates `renderer` with `name` (the scenes' own colours, lights and
 /// camera). Returns the scene's triangles for the reference.
-vtkSmartPointer<vtkPolyData> LoadScene(
-  const Options& o, const std::string& name, vtkRenderer* renderer, vtkSmartPointer<vtkObject>& keep)
+vtkSmartPointer<vtkPolyData> LoadScene(const Options& o, const std::string& name,
+  vtkRenderer* renderer, vtkSmartPointer<vtkObject>& keep)
 {
   if (name == "demo")
   {
@@ -463,7 +462,8 @@ vtkSmartPointer<vtkPolyData> LoadScene(
   }
   if (!ok)
   {
-    std::fprintf(stderr, "%s: cannot load scene %s from %s\n", Program, name.c_str(), o.Data.c_str());
+    std::fprintf(
+      stderr, "%s: cannot load scene %s from %s\n", Program, name.c_str(), o.Data.c_str());
     return nullptr;
   }
   loader->Populate(renderer);
@@ -586,7 +586,8 @@ int main(int argc, char* argv[])
       auto c = vtkSmartPointer<vtkImageData>::New();
       if (!pass->CaptureIrradiance(c, renderer))
       {
-        std::fprintf(stderr, "%s: the radiosity capture failed on %s\n", Program, sceneName.c_str());
+        std::fprintf(
+          stderr, "%s: the radiosity capture failed on %s\n", Program, sceneName.c_str());
         return 1;
       }
       captures.push_back(c);
@@ -655,9 +656,9 @@ int main(int argc, char* argv[])
       res.HighConfidenceError = byConfidence.second;
       if (options.ErrorMaps)
       {
-        WriteErrorMap(options.Output + "/errors/" + sceneName + "-" + FileTag(methods[k].Name) +
-            ".png",
-          w, h, error, mask, 2.0 * std::max(1e-6, meanRef));
+        WriteErrorMap(
+          options.Output + "/errors/" + sceneName + "-" + FileTag(methods[k].Name) + ".png", w, h,
+          error, mask, 2.0 * std::max(1e-6, meanRef));
       }
       sceneResults.push_back(res);
     }
@@ -680,7 +681,8 @@ int main(int argc, char* argv[])
         }
         renderer->SetPass(pass);
         const std::vector<double> t = TimeFrames(
-          [&]() {
+          [&]()
+          {
             window->Render();
             window->WaitForCompletion();
           },
@@ -724,14 +726,15 @@ int main(int argc, char* argv[])
     std::snprintf(b, sizeof(b),
       "| %s | %lld | %.4g | %ld | %ld | %.4f | %.4f | %.4f | %.1f | %.2f | %.2f |\n",
       s.Name.c_str(), static_cast<long long>(s.Triangles), s.Radius, s.Valid, s.Layer1,
-      s.MeanReference, s.MeanReferenceUnlimited, s.ReferenceError, s.ReferenceSeconds,
-      s.GBuffer1Ms, s.GBuffer2Ms);
+      s.MeanReference, s.MeanReferenceUnlimited, s.ReferenceError, s.ReferenceSeconds, s.GBuffer1Ms,
+      s.GBuffer2Ms);
     md << b;
   }
   md << "\n| scene | method | frame [ms] | RMSE vs E_ref,r | MAE | bias | rel. error | RMSE "
         "layer-1 px | RMSE vs E_ref | bias vs E_ref | rel. error vs E_ref |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  csv << "scene,method,family,layers,preset,normal_test,estimator,frame_ms,radius,rmse,mae,bias,relative,"
+  csv << "scene,method,family,layers,preset,normal_test,estimator,frame_ms,radius,rmse,mae,bias,"
+         "relative,"
          "rmse_layer1,rmse_unlimited,mae_unlimited,bias_unlimited,relative_unlimited,"
          "rmse_raw_m,bias_raw_m,rmse_raw_n,bias_raw_n,rmse_filtered_n,bias_filtered_n,"
          "mae_low_confidence,mae_high_confidence\n";
@@ -747,9 +750,9 @@ int main(int argc, char* argv[])
       "\"%s\",\"%s\",\"%s\",%d,%d,%d,%d,%.4f,%.5g,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,"
       "%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f\n",
       r.Scene.c_str(), r.M.Name.c_str(), r.M.Family.c_str(), r.M.Layers, r.M.Preset,
-      r.M.NormalTest ? 1 : 0, r.M.Estimator, r.FrameMs, r.Radius, r.Limited.Rmse, r.Limited.Mae, r.Limited.Bias,
-      r.Limited.Relative, r.Layer1.Rmse, r.Unlimited.Rmse, r.Unlimited.Mae, r.Unlimited.Bias,
-      r.Unlimited.Relative, r.RawM.Rmse, r.RawM.Bias, r.RawN.Rmse, r.RawN.Bias,
+      r.M.NormalTest ? 1 : 0, r.M.Estimator, r.FrameMs, r.Radius, r.Limited.Rmse, r.Limited.Mae,
+      r.Limited.Bias, r.Limited.Relative, r.Layer1.Rmse, r.Unlimited.Rmse, r.Unlimited.Mae,
+      r.Unlimited.Bias, r.Unlimited.Relative, r.RawM.Rmse, r.RawM.Bias, r.RawN.Rmse, r.RawN.Bias,
       r.FilteredN.Rmse, r.FilteredN.Bias, r.LowConfidenceError, r.HighConfidenceError);
     csv << b;
   }
@@ -758,7 +761,8 @@ int main(int argc, char* argv[])
      << "Same frames; E_N = E_M x M / N (raw: this frame's gather before any filter; filtered: "
         "\"Irradiance_0\" x \"Confidence_0\"). Errors against E_ref,r.\n\n"
      << "| scene | method | RMSE raw /M | bias raw /M | RMSE raw /N | bias raw /N | RMSE "
-        "filtered /M | RMSE filtered /N | bias filtered /N |\n|---|---|---|---|---|---|---|---|---|\n";
+        "filtered /M | RMSE filtered /N | bias filtered /N "
+        "|\n|---|---|---|---|---|---|---|---|---|\n";
   for (const Result& r : results)
   {
     if (r.M.Estimator != vtkDeepRadiosityPass::ACCEPTED_TAPS)

@@ -268,7 +268,8 @@ int main(int argc, char* argv[])
       pass->GetGBufferPass()->SetNumberOfLayers(layers);
       renderer->SetPass(pass);
       const std::vector<double> ms = TimeFrames(
-        [&]() {
+        [&]()
+        {
           window->Render();
           window->WaitForCompletion();
         },
@@ -323,8 +324,7 @@ int main(int argc, char* argv[])
         {
           ++r.Missed;
         }
-        else if (std::fabs(hitDistance->GetComponent(p, 0) - t) <
-          MatchTolerance * t + r.Thickness)
+        else if (std::fabs(hitDistance->GetComponent(p, 0) - t) < MatchTolerance * t + r.Thickness)
         {
           (layer == 0 ? r.MatchedLayer0 : r.MatchedLayer1)++;
         }

@@ -31,7 +31,9 @@
  * COSINE_EPSILON, see below); the tap takes the passing candidate with the
  * larger contribution |B (w.n_X)| and is rejected when none passes (also
  * when it falls outside the image). M counts the taps that were not
- * rejected; M = 0 gives E = 0. The confidence is M / N.
+ * rejected; M = 0 gives E = 0. The confidence is M / N. SetEstimator
+ * offers two alternatives to eq. 4's division by M (ALL_TAPS: by N;
+ * SOLID_ANGLE: each tap weighted by the solid angle of its patch).
  *
  * Taps read MIP level m_i = clamp(floor(log2(h_i / q)), MinimumMipLevel,
  * MaximumMipLevel) of a rotated-grid pyramid (SAO's minification): the

@@ -76,8 +76,8 @@ int TestDeepGIReferenceReflectionWall(int, char*[])
     for (int i = 0; i < dims[0]; ++i)
     {
       double X[3];
-      if (!WorldPosition(capture, 0, i, j, X) || std::fabs(X[1]) > 1e-3 ||
-        std::fabs(X[0]) > 1.95 || std::fabs(X[2]) > 1.95)
+      if (!WorldPosition(capture, 0, i, j, X) || std::fabs(X[1]) > 1e-3 || std::fabs(X[0]) > 1.95 ||
+        std::fabs(X[2]) > 1.95)
       {
         continue;
       }
@@ -96,7 +96,8 @@ int TestDeepGIReferenceReflectionWall(int, char*[])
           view->GetElement(2, c) * nc[2];
       }
       vtkMath::Normalize(n);
-      worstNormal = std::max(worstNormal, vtkMath::DegreesFromRadians(std::acos(std::min(1.0, n[1]))));
+      worstNormal =
+        std::max(worstNormal, vtkMath::DegreesFromRadians(std::acos(std::min(1.0, n[1]))));
       double v[3], d[3], dRef[3];
       vtkMath::Subtract(X, eye, v);
       vtkMath::Normalize(v);
@@ -107,7 +108,8 @@ int TestDeepGIReferenceReflectionWall(int, char*[])
       }
       vtkMath::Normalize(d);
       directionArray->GetTuple(p, dRef);
-      worstDirection = std::max(worstDirection, std::sqrt(vtkMath::Distance2BetweenPoints(d, dRef)));
+      worstDirection =
+        std::max(worstDirection, std::sqrt(vtkMath::Distance2BetweenPoints(d, dRef)));
       const bool refHit = hitArray->GetComponent(p, 0) > 0;
       if (!(d[2] < 0.0))
       {

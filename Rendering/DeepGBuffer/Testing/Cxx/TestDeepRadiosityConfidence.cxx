@@ -59,8 +59,8 @@ std::pair<double, double> Measure(const std::string& sceneName, const std::strin
     return { 0.0, 0.0 };
   }
   double standardError = 0;
-  const std::vector<double> ref = ReferenceIrradiance(scene, renderer, layers,
-    std::numeric_limits<double>::infinity(), 32, standardError);
+  const std::vector<double> ref = ReferenceIrradiance(
+    scene, renderer, layers, std::numeric_limits<double>::infinity(), 32, standardError);
   const std::vector<double> e = Luminance(radiosity, "Irradiance_0");
   vtkDataArray* confidence = radiosity->GetPointData()->GetArray("Confidence_0");
   vtkDataArray* valid = layers->GetPointData()->GetArray("Valid_0");
@@ -79,7 +79,8 @@ std::pair<double, double> Measure(const std::string& sceneName, const std::strin
   }
   std::sort(sorted.begin(), sorted.end());
   const size_t quarter = sorted.size() / 4;
-  auto relativeError = [&](size_t begin, size_t end) {
+  auto relativeError = [&](size_t begin, size_t end)
+  {
     double error = 0, total = 0;
     for (size_t k = begin; k < end; ++k)
     {

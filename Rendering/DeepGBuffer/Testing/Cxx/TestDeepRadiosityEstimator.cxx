@@ -61,8 +61,8 @@ int TestDeepRadiosityEstimator(int argc, char* argv[])
       lit += expected > 0.01;
     }
   }
-  std::printf("ALL_TAPS vs ACCEPTED_TAPS x M / N: %ld mismatches over %ld lit components\n",
-    mismatches, lit);
+  std::printf(
+    "ALL_TAPS vs ACCEPTED_TAPS x M / N: %ld mismatches over %ld lit components\n", mismatches, lit);
   Check(lit > 10000 && mismatches == 0, "ALL_TAPS = eq. 4 x M / N");
 
   double standardError = 0;

@@ -44,8 +44,8 @@ double Luminance(vtkDataArray* a, vtkIdType i)
 bool Project(vtkImageData* layers, const double world[3], int& i, int& j)
 {
   vtkNew<vtkMatrix4x4> view, projection, m;
-  view->DeepCopy(vtkDoubleArray::SafeDownCast(layers->GetFieldData()->GetArray("ViewMatrix"))
-                   ->GetPointer(0));
+  view->DeepCopy(
+    vtkDoubleArray::SafeDownCast(layers->GetFieldData()->GetArray("ViewMatrix"))->GetPointer(0));
   projection->DeepCopy(
     vtkDoubleArray::SafeDownCast(layers->GetFieldData()->GetArray("ProjectionMatrix"))
       ->GetPointer(0));
@@ -106,8 +106,7 @@ double Flicker(double alpha)
           double X[3], Xp[3], c[3];
           int pi = 0, pj = 0;
           if (!WorldPosition(layers, 0, i, j, X) || !Project(previousLayers, X, pi, pj) ||
-            !WorldPosition(previousLayers, 0, pi, pj, Xp) ||
-            !CameraPosition(layers, 0, i, j, c))
+            !WorldPosition(previousLayers, 0, pi, pj, Xp) || !CameraPosition(layers, 0, i, j, c))
           {
             continue;
           }
