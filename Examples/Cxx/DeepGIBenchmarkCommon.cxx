@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -46,18 +47,6 @@ bool ParseInt(const std::string& s, int& v)
     return false;
   }
   v = static_cast<int>(x);
-  return true;
-}
-
-bool ParseDouble(const std::string& s, double& v)
-{
-  char* end = nullptr;
-  const double x = std::strtod(s.c_str(), &end);
-  if (s.empty() || *end || !std::isfinite(x))
-  {
-    return false;
-  }
-  v = x;
   return true;
 }
 

@@ -4,14 +4,11 @@
 #ifndef DeepGIBenchmarkCommon_h
 #define DeepGIBenchmarkCommon_h
 
-#include <chrono>
 #include <functional>
 #include <map>
 #include <string>
 #include <utility>
 #include <vector>
-
-class vtkRenderWindow;
 
 namespace DeepGIBenchmark
 {
@@ -20,9 +17,6 @@ std::vector<std::string> Split(const std::string& s, char sep);
 
 /// Whole string as a decimal integer in [-1e9, 1e9].
 bool ParseInt(const std::string& s, int& v);
-
-/// Whole string as a finite number.
-bool ParseDouble(const std::string& s, double& v);
 
 /// "WxH" with 16..8192 pixels per side.
 bool ParseSize(const std::string& s, int& w, int& h);
