@@ -28,14 +28,11 @@
 // averaged over the scenes), benchmark-ao-plot-SCENE.png and
 // errors/SCENE-METHOD.png (|AV - AV_ref|, colour map 0..0.5).
 
+#include "DeepGIBenchmarkCommon.h"
+
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
-#include "vtkAxis.h"
 #include "vtkCamera.h"
-#include "vtkChartLegend.h"
-#include "vtkChartXY.h"
-#include "vtkContextScene.h"
-#include "vtkContextView.h"
 #include "vtkDataArray.h"
 #include "vtkDeepAmbientObscurancePass.h"
 #include "vtkDeepGBufferDemoScene.h"
@@ -43,14 +40,10 @@
 #include "vtkDeepGBufferSceneLoader.h"
 #include "vtkDeepGIReferenceObscurance.h"
 #include "vtkDeepGIRenderWindowFactory.h"
-#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkPNGWriter.h"
-#include "vtkPen.h"
-#include "vtkPlot.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
@@ -59,20 +52,15 @@
 #include "vtkRenderer.h"
 #include "vtkSSAOPass.h"
 #include "vtkSmartPointer.h"
-#include "vtkTable.h"
-#include "vtkTextProperty.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 #include "vtksys/SystemTools.hxx"
 
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -83,6 +71,7 @@
 
 namespace
 {
+using namespace DeepGIBenchmark;
 const char* const Program = "deepgi-benchmark-ao";
 
 struct Options
@@ -139,37 +128,6 @@ void Usage()
     "  --output DIR         output directory (default output)\n"
     "  --help               this text\n",
     DefaultMethods, DEEPGI_DATA_DIR);
-}
-
-std::vector<std::string> Split(const std::string& s, char sep)
-{
-  std::vector<std::string> parts;
-  std::stringstream in(s);
-  std::string item;
-  while (std::getline(in, item, sep))
-  {
-    parts.push_back(item);
-  }
-  return parts;
-}
-
-bool ParseInt(const std::string& s, int& v)
-{
-  char* end = nullptr;
-  const long x = std::strtol(s.c_str(), &end, 10);
-  if (s.empty() || *end || x < -1000000000L || x > 1000000000L)
-  {
-    return false;
-  }
-  v = static_cast<int>(x);
-  return true;
-}
-
-bool ParseSize(const std::string& s, int& w, int& h)
-{
-  const std::vector<std::string> p = Split(s, 'x');
-  return p.size() == 2 && ParseInt(p[0], w) && ParseInt(p[1], h) && w >= 16 && h >= 16 &&
-    w <= 8192 && h <= 8192;
 }
 
 struct Method
@@ -355,17 +313,6 @@ bool ParseOptions(int argc, char* argv[], Options& o)
   return true;
 }
 
-double Median(std::vector<double> v)
-{
-  if (v.empty())
-  {
-    return 0.0;
-  }
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 /// Luminance (0..1) of the window's last frame, bottom row first.
 std::vector<float> GrabLuminance(vtkRenderWindow* window)
 {
@@ -415,6 +362,9 @@ struct SecondLayerEffect
 
 /// AV difference above which a pixel counts as changed by the second layer.
 constexpr double SecondLayerChange = 0.02;
+
+const char* const TimeAxis = "frame time [ms] (median)";
+const char* const ErrorAxis = "RMSE of AV vs ray-traced reference (gamma-calibrated)";
 
 struct ErrorStats
 {
@@ -475,100 +425,6 @@ double FitGamma(const std::vector<float>& av, const std::vector<float>& ref,
     }
   }
   return std::exp(0.5 * (a + b));
-}
-
-bool WriteErrorMap(const std::string& file, int w, int h, const std::vector<float>& av,
-  const std::vector<float>& ref, const std::vector<unsigned char>& mask)
-{
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(w, h, 1);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  auto* p = static_cast<unsigned char*>(image->GetScalarPointer());
-  for (size_t i = 0; i < av.size(); ++i)
-  {
-    unsigned char rgb[3] = { 20, 20, 60 }; // excluded / empty
-    if (mask[i])
-    {
-      // black -> red -> yellow -> white for |AV - AV_ref| = 0 .. 0.5
-      const double e = std::min(1.0, std::fabs(av[i] - ref[i]) / 0.5) * 3.0;
-      rgb[0] = static_cast<unsigned char>(255 * std::min(1.0, e));
-      rgb[1] = static_cast<unsigned char>(255 * std::min(1.0, std::max(0.0, e - 1.0)));
-      rgb[2] = static_cast<unsigned char>(255 * std::min(1.0, std::max(0.0, e - 2.0)));
-    }
-    std::copy(rgb, rgb + 3, p + 3 * i);
-  }
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputData(image);
-  writer->SetFileName(file.c_str());
-  writer->Write();
-  return writer->GetErrorCode() == 0;
-}
-
-/// Error (calibrated RMSE) against frame time, one curve per family.
-bool WritePlot(const std::string& file, const std::string& title,
-  const std::vector<std::string>& families,
-  const std::map<std::string, std::vector<std::pair<double, double>>>& curves, int backend)
-{
-  vtkSmartPointer<vtkRenderWindow> window =
-    vtkSmartPointer<vtkRenderWindow>::Take(vtkDeepGIRenderWindowFactory::NewRenderWindow(backend));
-  if (!window)
-  {
-    return false;
-  }
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  vtkNew<vtkContextView> view;
-  view->SetRenderWindow(window);
-  view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
-  window->SetSize(900, 600);
-  vtkNew<vtkChartXY> chart;
-  view->GetScene()->AddItem(chart);
-  chart->SetTitle(title);
-  chart->SetShowLegend(true);
-  chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("frame time [ms] (median)");
-  chart->GetAxis(vtkAxis::LEFT)->SetTitle("RMSE of AV vs ray-traced reference (gamma-calibrated)");
-  const unsigned char colors[][3] = { { 200, 40, 40 }, { 40, 90, 200 }, { 30, 150, 60 },
-    { 150, 60, 170 }, { 230, 140, 20 } };
-  int c = 0;
-  std::vector<vtkSmartPointer<vtkTable>> tables;
-  for (const std::string& family : families)
-  {
-    auto it = curves.find(family);
-    if (it == curves.end() || it->second.empty())
-    {
-      continue;
-    }
-    std::vector<std::pair<double, double>> pts = it->second;
-    std::sort(pts.begin(), pts.end());
-    auto table = vtkSmartPointer<vtkTable>::New();
-    vtkNew<vtkFloatArray> x, y;
-    x->SetName("time");
-    y->SetName(family.c_str());
-    for (const auto& pt : pts)
-    {
-      x->InsertNextValue(static_cast<float>(pt.first));
-      y->InsertNextValue(static_cast<float>(pt.second));
-    }
-    table->AddColumn(x);
-    table->AddColumn(y);
-    tables.push_back(table);
-    vtkPlot* line = chart->AddPlot(pts.size() > 1 ? vtkChart::LINE : vtkChart::POINTS);
-    line->SetInputData(table, 0, 1);
-    const unsigned char* col = colors[c++ % 5];
-    line->SetColor(col[0], col[1], col[2], 255);
-    line->SetWidth(2.5);
-  }
-  window->Render();
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ReadFrontBufferOff();
-  grab->ShouldRerenderOff();
-  grab->Update();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->SetFileName(file.c_str());
-  writer->Write();
-  return writer->GetErrorCode() == 0;
 }
 
 struct SceneSetup
@@ -642,12 +498,6 @@ bool LoadScene(const Options& o, const std::string& name, vtkRenderer* renderer,
   return true;
 }
 
-std::string Fmt(const char* f, double v)
-{
-  char b[64];
-  std::snprintf(b, sizeof(b), f, v);
-  return b;
-}
 }
 
 int main(int argc, char* argv[])
@@ -885,16 +735,13 @@ int main(int argc, char* argv[])
       res.A.CRmseLayer1 = cal.RmseLayer1;
       if (options.ErrorMaps)
       {
-        std::string tag = m.Name;
-        for (char& ch : tag)
+        std::vector<float> error(np);
+        for (size_t i = 0; i < np; ++i)
         {
-          if (!std::isalnum(static_cast<unsigned char>(ch)))
-          {
-            ch = '-';
-          }
+          error[i] = av[i] - ref[i];
         }
-        WriteErrorMap(options.Output + "/errors/" + sceneName + "-" + tag + ".png", w, h, av,
-          ref, mask);
+        WriteErrorMap(options.Output + "/errors/" + sceneName + "-" + FileTag(m.Name) + ".png", w,
+          h, error, mask, 0.5);
       }
       sceneResults.push_back(res);
       sceneAV[k] = av;
@@ -936,17 +783,13 @@ int main(int argc, char* argv[])
         vtkRenderPass* pass =
           k == 0 ? nullptr : (k == 1 ? gbuffer.GetPointer() : passes[k - 2].GetPointer());
         renderer->SetPass(pass);
-        for (int f = 0; f < options.Warmup + options.Frames; ++f)
-        {
-          const auto start = std::chrono::steady_clock::now();
-          window->Render();
-          window->WaitForCompletion();
-          const auto stop = std::chrono::steady_clock::now();
-          if (f >= options.Warmup)
-          {
-            ms[k].push_back(std::chrono::duration<double, std::milli>(stop - start).count());
-          }
-        }
+        const std::vector<double> t = TimeFrames(
+          [&]() {
+            window->Render();
+            window->WaitForCompletion();
+          },
+          options.Warmup, options.Frames);
+        ms[k].insert(ms[k].end(), t.begin(), t.end());
       }
     }
     for (size_t k = 0; k < methods.size(); ++k)
@@ -1127,7 +970,7 @@ int main(int argc, char* argv[])
       families.push_back(f);
     }
   }
-  std::map<std::string, std::vector<std::pair<double, double>>> mean;
+  Curves mean;
   for (size_t k = 0; k < methods.size(); ++k)
   {
     double t = 0, e = 0;
@@ -1148,14 +991,15 @@ int main(int argc, char* argv[])
     }
   }
   if (!WritePlot(options.Output + "/benchmark-ao-plot.png",
-        "Ambient obscurance: error vs time (mean over scenes)", families, mean, options.Backend))
+        "Ambient obscurance: error vs time (mean over scenes)", TimeAxis, ErrorAxis, families,
+        mean, options.Backend))
   {
     std::fprintf(stderr, "%s: cannot write the plot\n", Program);
     return 1;
   }
   for (const SceneInfo& s : infos)
   {
-    std::map<std::string, std::vector<std::pair<double, double>>> curves;
+    Curves curves;
     for (const Result& r : results)
     {
       if (r.Scene == s.Name)
@@ -1164,7 +1008,8 @@ int main(int argc, char* argv[])
       }
     }
     WritePlot(options.Output + "/benchmark-ao-plot-" + s.Name + ".png",
-      "Ambient obscurance: error vs time, " + s.Name, families, curves, options.Backend);
+      "Ambient obscurance: error vs time, " + s.Name, TimeAxis, ErrorAxis, families, curves,
+      options.Backend);
   }
   std::printf("\nwrote %s/benchmark-ao.{md,csv}, %s/benchmark-ao-plot.png\n",
     options.Output.c_str(), options.Output.c_str());

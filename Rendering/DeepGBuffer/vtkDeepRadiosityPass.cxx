@@ -245,6 +245,7 @@ void vtkDeepRadiosityPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfSamples: " << this->NumberOfSamples << " (spiral turns "
      << vtkDeepScreenSpace::SpiralTurns(this->NumberOfSamples) << ")\n";
   os << indent << "UseNormalTest: " << (this->UseNormalTest ? "On" : "Off") << "\n";
+  os << indent << "Estimator: " << GetEstimatorAsString(this->Estimator) << "\n";
   os << indent << "UseColorBoost: " << (this->UseColorBoost ? "On" : "Off") << "\n";
   os << indent << "FilterTaps: " << this->FilterTaps << "\n";
   os << indent << "BlurPlaneTolerance: " << this->BlurPlaneTolerance << "\n";
@@ -769,6 +770,7 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
     program->SetUniformi("deepMinMip", minMip);
     program->SetUniformi("deepMaxMip", maxMip);
     program->SetUniformi("deepNormalTest", this->UseNormalTest ? 1 : 0);
+    program->SetUniformi("deepEstimator", this->Estimator);
     program->SetUniformf("deepCosineEpsilon", static_cast<float>(COSINE_EPSILON));
     program->SetUniformf("deepRotationOffset", static_cast<float>(rotationOffset));
     in.GatherQuad->Render();
@@ -1025,4 +1027,20 @@ bool vtkDeepRadiosityPass::CaptureIrradiance(vtkImageData* output, vtkRenderer* 
   output->GetFieldData()->AddArray(frames);
   vtkOpenGLCheckErrorMacro("failed after capturing the radiosity");
   return true;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkDeepRadiosityPass::GetEstimatorAsString(int estimator)
+{
+  switch (estimator)
+  {
+    case ACCEPTED_TAPS:
+      return "ACCEPTED_TAPS";
+    case ALL_TAPS:
+      return "ALL_TAPS";
+    case SOLID_ANGLE:
+      return "SOLID_ANGLE";
+    default:
+      return "unknown";
+  }
 }

@@ -31,7 +31,9 @@
  * COSINE_EPSILON, see below); the tap takes the passing candidate with the
  * larger contribution |B (w.n_X)| and is rejected when none passes (also
  * when it falls outside the image). M counts the taps that were not
- * rejected; M = 0 gives E = 0. The confidence is M / N.
+ * rejected; M = 0 gives E = 0. The confidence is M / N. SetEstimator
+ * offers two alternatives to eq. 4's division by M (ALL_TAPS: by N;
+ * SOLID_ANGLE: each tap weighted by the solid angle of its patch).
  *
  * Taps read MIP level m_i = clamp(floor(log2(h_i / q)), MinimumMipLevel,
  * MaximumMipLevel) of a rotated-grid pyramid (SAO's minification): the
@@ -147,6 +149,14 @@ public:
     INDIRECT_RADIANCE = 1 ///< RGBA32F: L_ind with the fallback (rgb), confidence (a)
   };
 
+  /// How the gathered taps are summed into E (see SetEstimator).
+  enum Estimator
+  {
+    ACCEPTED_TAPS = 0, ///< eq. 4 as printed: 2 pi / M sum B (w.n_X)
+    ALL_TAPS = 1,      ///< 2 pi / N sum B (w.n_X): rejected taps count as 0
+    SOLID_ANGLE = 2    ///< sum B (w.n_X) dOmega_i, the solid angle of each tap's patch
+  };
+
   /// Table 2's parameter sets.
   enum Preset
   {
@@ -210,6 +220,33 @@ public:
   vtkSetMacro(UseNormalTest, bool);
   vtkGetMacro(UseNormalTest, bool);
   vtkBooleanMacro(UseNormalTest, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The estimator of E from the taps (eq. 4 and alternatives in the
+   * paper's framework; same taps, eq. 5 tests and confidence M / N):
+   * - ACCEPTED_TAPS (default, the paper's eq. 4): 2 pi / M sum B (w.n_X).
+   *   Dividing by the M accepted taps instead of N treats the rejected
+   *   directions as if they saw the same light as the accepted ones: next
+   *   to a single bright surface, where few taps pass, E is overestimated
+   *   (by about 2x to 3x against the ray-traced reference limited to r,
+   *   see Documentation/benchmark-radiosity.md).
+   * - ALL_TAPS: 2 pi / N sum B (w.n_X): a rejected tap (beyond r, below
+   *   X's horizon, facing away, off screen) contributes 0.
+   * - SOLID_ANGLE: sum B (w.n_X) dOmega_i with dOmega_i the solid angle,
+   *   seen from X, of the surface patch a tap stands for (its screen ring
+   *   2 pi h_i r_p / N pixels^2, projected to Y's depth and tilt, times
+   *   (-w.n_Y) / |Y - X|^2, at most 2 pi): the form-factor sum of the
+   *   visible surfaces; it reads n_Y even without UseNormalTest.
+   * Values outside the enum are clamped.
+   */
+  vtkSetClampMacro(Estimator, int, ACCEPTED_TAPS, SOLID_ANGLE);
+  vtkGetMacro(Estimator, int);
+  void SetEstimatorToAcceptedTaps() { this->SetEstimator(ACCEPTED_TAPS); }
+  void SetEstimatorToAllTaps() { this->SetEstimator(ALL_TAPS); }
+  void SetEstimatorToSolidAngle() { this->SetEstimator(SOLID_ANGLE); }
+  static const char* GetEstimatorAsString(int estimator);
   ///@}
 
   ///@{
@@ -413,6 +450,7 @@ protected:
   double EffectiveRadius = 0.0;
   int NumberOfSamples = 14;
   bool UseNormalTest = true;
+  int Estimator = ACCEPTED_TAPS;
   bool UseColorBoost = false;
   int FilterTaps = 11;
   double BlurPlaneTolerance = 0.02;

@@ -16,6 +16,18 @@
 // the larger contribution |B (w.n_X)| (the paper's supplementary shader
 // does the same); a tap with no passing candidate is rejected. M = 0 gives
 // E = 0. Taps outside the image are rejected.
+//
+// deepEstimator (vtkDeepRadiosityPass::Estimator) chooses the sum:
+//   0 ACCEPTED_TAPS: eq. 4 as printed, 2 pi / M sum B (w.n_X);
+//   1 ALL_TAPS:      2 pi / N sum B (w.n_X) (rejected taps count as 0);
+//   2 SOLID_ANGLE:   sum B (w.n_X) dOmega_i, dOmega_i the solid angle of
+//     the surface patch that tap i stands for: its screen ring
+//     2 pi h_i r_p / N pixels^2 (the spiral puts one tap per ring of width
+//     r_p / N), times the world area of a pixel at Y's distance, divided by
+//     |n_Y . view| (the patch is tilted away from the view; at least 0.1),
+//     times (-w.n_Y) / |Y - X|^2; when the dOmega_i of the accepted taps
+//     add up to more than the hemisphere's 2 pi (taps next to X), they are
+//     scaled to 2 pi, so that E never exceeds 2 pi max B, as with eq. 4.
 //=========================================================================
 
 in vec2 texCoord;
@@ -34,6 +46,7 @@ uniform int deepMaxMip;
 uniform int deepNormalTest;        // the n_Y test of eq. 5
 uniform float deepCosineEpsilon;
 uniform float deepRotationOffset;  // radians added to phi (temporal)
+uniform int deepEstimator;         // 0 accepted taps, 1 all taps, 2 solid angle
 
 //VTK::DeepGBuffer::Common
 
@@ -70,6 +83,7 @@ void main()
 
   vec3 sum[2] = vec3[2](vec3(0.0), vec3(0.0));
   float used[2] = float[2](0.0, 0.0);
+  float omegaSum[2] = float[2](0.0, 0.0); // SOLID_ANGLE: sum of dOmega_i
   for (int i = 0; i < deepSamples; ++i)
   {
     float h;
@@ -92,8 +106,9 @@ void main()
       float dy = k < deepLayers ? texelFetch(deepDistance, ivec3(source, k), 0).r : 0.0;
       present[k] = dy > 0.0;
       Y[k] = deepPositionFromDistance(sourceCenter, size, max(dy, 0.0));
-      nY[k] = deepNormalTest != 0 ? deepDecodeOct16(texelFetch(deepNormal, ivec3(source, k), 0).rg)
-                                  : vec3(0.0);
+      nY[k] = deepNormalTest != 0 || deepEstimator == 2
+        ? deepDecodeOct16(texelFetch(deepNormal, ivec3(source, k), 0).rg)
+        : vec3(0.0);
       B[k] = k == 0 ? texelFetch(deepBounce0, source, 0).rgb : texelFetch(deepBounce1, source, 0).rgb;
     }
 
@@ -104,6 +119,7 @@ void main()
         continue;
       }
       float bestScore = 0.0;
+      float bestOmega = 0.0;
       vec3 best = vec3(0.0);
       for (int k = 0; k < 2; ++k)
       {
@@ -131,19 +147,33 @@ void main()
         {
           bestScore = score;
           best = c;
+          if (deepEstimator == 2)
+          {
+            // World size of a pixel at Y's distance, and Y's tilt to the view.
+            float pixelSize = 1.0 / deepScreenRadius(1.0, -Y[k].z, size);
+            float tilt = max(abs(dot(nY[k], normalize(Y[k]))), 0.1);
+            float area = 2.0 * deepPi * h * rp / float(deepSamples) * pixelSize * pixelSize / tilt;
+            bestOmega = area * max(-dot(w, nY[k]), 0.0) / vv;
+            best = c * bestOmega;
+          }
         }
       }
       if (bestScore > 0.0)
       {
         sum[j] += best;
         used[j] += 1.0;
+        omegaSum[j] += bestOmega;
       }
     }
   }
   for (int j = 0; j < 2; ++j)
   {
-    // Equation 4 and the confidence M / N.
-    vec3 E = used[j] > 0.0 ? (2.0 * deepPi / used[j]) * sum[j] : vec3(0.0);
+    // Equation 4 (or the chosen estimator) and the confidence M / N.
+    float norm = deepEstimator == 0 ? used[j] : float(deepSamples);
+    float solidAngleScale = omegaSum[j] > 2.0 * deepPi ? 2.0 * deepPi / omegaSum[j] : 1.0;
+    vec3 E = used[j] > 0.0
+      ? (deepEstimator == 2 ? solidAngleScale * sum[j] : (2.0 * deepPi / norm) * sum[j])
+      : vec3(0.0);
     vec4 result = valid[j] ? vec4(E, used[j] / float(deepSamples)) : vec4(0.0);
     if (j == 0)
     {

@@ -1,0 +1,83 @@
+// Helpers of the vtkDeepRadiosityPass tests that compare with the ray-traced
+// one-bounce irradiance (vtkDeepGIReferenceIrradiance): the demo scene and
+// the Cornell box as renderers with their scene polydata, luminance arrays
+// and the reference of a capture.
+#ifndef DeepRadiosityReferenceTest_h
+#define DeepRadiosityReferenceTest_h
+
+#include "DeepGBufferTestUtilities.h"
+
+#include "vtkDeepGBufferDemoScene.h"
+#include "vtkDeepGBufferSceneLoader.h"
+#include "vtkDeepGIReferenceIrradiance.h"
+
+#include <string>
+#include <vector>
+
+namespace DeepRadiosityReferenceTest
+{
+using namespace DeepGBufferTest;
+
+// Populates `renderer` with the demo scene (default view) or the Cornell box
+// (cornell-original under `data`); returns the scene's triangles with their
+// "Colors" and "Diffuse" for the reference, null on failure. `keep` owns the
+// scene object.
+inline vtkSmartPointer<vtkPolyData> PopulateScene(const std::string& name, const std::string& data,
+  vtkRenderer* renderer, vtkSmartPointer<vtkObject>& keep)
+{
+  if (name == "demo")
+  {
+    auto demo = vtkSmartPointer<vtkDeepGBufferDemoScene>::New();
+    demo->SetTargetNumberOfTriangles(20000);
+    demo->Populate(renderer);
+    demo->SetCameraToDefaultView(renderer->GetActiveCamera());
+    renderer->ResetCameraClippingRange();
+    keep = demo;
+    return demo->GetScenePolyData();
+  }
+  auto loader = vtkSmartPointer<vtkDeepGBufferSceneLoader>::New();
+  if (!loader->Load((data + "/scenes/cornell-original/CornellBox-Original.obj").c_str()))
+  {
+    return nullptr;
+  }
+  loader->Populate(renderer);
+  loader->ResetCamera(renderer);
+  keep = loader;
+  return loader->GetScenePolyData();
+}
+
+// Luminance (0.2126, 0.7152, 0.0722) of the RGB array `name` per pixel.
+inline std::vector<double> Luminance(vtkImageData* image, const std::string& name)
+{
+  vtkDataArray* a = image->GetPointData()->GetArray(name.c_str());
+  std::vector<double> lum(a->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+  {
+    lum[i] = 0.2126 * a->GetComponent(i, 0) + 0.7152 * a->GetComponent(i, 1) +
+      0.0722 * a->GetComponent(i, 2);
+  }
+  return lum;
+}
+
+// Layer 0's one-bounce irradiance luminance of `layers` (a CaptureLayers
+// image) from the lights of `renderer`, gathering only within `maximumDistance`.
+inline std::vector<double> ReferenceIrradiance(vtkPolyData* scene, vtkRenderer* renderer,
+  vtkImageData* layers, double maximumDistance, int samples, double& standardError)
+{
+  vtkNew<vtkDeepGIReferenceIrradiance> reference;
+  reference->SetScene(scene);
+  reference->SetLightsFromRenderer(renderer);
+  reference->SetSamplesPerPixel(samples);
+  reference->SetMaximumDistance(maximumDistance);
+  reference->SetLayer(0);
+  if (!reference->Compute(layers))
+  {
+    Check(false, "reference computed");
+    return {};
+  }
+  standardError = reference->GetMeanStandardError();
+  return Luminance(reference->GetOutput(), "IndirectIrradiance");
+}
+}
+
+#endif
