@@ -9,6 +9,8 @@
 #include "vtkInformation.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkIntArray.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkLightsPass.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -1070,10 +1072,29 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
                                                                         : nullptr;
   if (shadows)
   {
+    // VTK 9.1's baker re-bakes only when lights or props changed, even after
+    // ReleaseGraphicsResources freed its maps, and the shadow pass then reads
+    // the missing maps: mark the lights changed while a shadowing light has
+    // no map.
+    vtkShadowMapBakerPass* baker = shadows->GetShadowMapBakerPass();
+    if (!baker->GetShadowMaps())
+    {
+      vtkLightCollection* lights = renderer->GetLights();
+      vtkCollectionSimpleIterator it;
+      lights->InitTraversal(it);
+      while (vtkLight* light = lights->GetNextLight(it))
+      {
+        if (light->GetSwitch() && baker->LightCreatesShadow(light))
+        {
+          lights->Modified();
+          break;
+        }
+      }
+    }
     vtkOpenGLState::ScopedglViewport bakerViewport(ostate);
     vtkOpenGLState::ScopedglScissor bakerScissor(ostate);
     vtkOpenGLState::ScopedglClearColor bakerClearColor(ostate);
-    shadows->GetShadowMapBakerPass()->Render(s);
+    baker->Render(s);
   }
 
   // Effective parameters of this frame.

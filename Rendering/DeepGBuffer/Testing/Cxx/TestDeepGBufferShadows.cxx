@@ -28,7 +28,8 @@
 // - without a shadow pass the G-buffer is unchanged: a pass that had shadows
 //   and lost them (SetShadowMapPass(nullptr)) captures bit-identical layers
 //   to a pass that never had them, and a shadow pass with no shadowing light
-//   (a headlight) changes no bit either.
+//   (a headlight) changes no bit either;
+// - ReleaseGraphicsResources, then rendering again, gives the same layers.
 
 #include "DeepRadiosityTest.h"
 
@@ -260,6 +261,19 @@ int TestDeepGBufferShadows(int, char*[])
     Check(st.Lit >= (layer == 0 ? 3000 : 50), l + "lit floor pixels");
     Check(st.FalseShadows == 0, l + "the shadowed pixels lie in the box's shadow");
     Check(st.BadAmbient == 0, l + "ambient 0.1 in light and shadow");
+  }
+
+  // ReleaseGraphicsResources, then the same frames again: the shadow maps
+  // are baked anew (VTK's baker alone would not) and the layers are the same.
+  {
+    gbuffer->ReleaseGraphicsResources(window);
+    for (int k = 0; k < 3; ++k)
+    {
+      window->Render();
+    }
+    vtkNew<vtkImageData> again;
+    Check(gbuffer->CaptureLayers(again, renderer) && SameArrays(layers, again),
+      "after ReleaseGraphicsResources: the same shadowed layers");
   }
 
   // Layer 0 against VTK's own shadow pipeline.
