@@ -1067,9 +1067,9 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
   // VTK's shadow maps for this frame's lights and props, baked before the
   // layers read them. The baker renders from the light cameras into its own
   // framebuffer and viewport; the renderer's are restored for the layers.
-  vtkShadowMapPass* shadows =
-    this->ShadowMapPass && this->ShadowMapPass->GetShadowMapBakerPass() ? this->ShadowMapPass
-                                                                        : nullptr;
+  vtkShadowMapPass* shadows = this->ShadowMapPass && this->ShadowMapPass->GetShadowMapBakerPass()
+    ? this->ShadowMapPass
+    : nullptr;
   if (shadows)
   {
     // VTK 9.1's baker re-bakes only when lights or props changed, even after
@@ -1279,71 +1279,71 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
       {
         prop->RenderOpaqueGeometry(renderer);
       }
-  };
+    };
 
-  if (!routedProps.empty() && historyUsable)
-  {
-    // Paper Listing 2: one submission fills every layer.
-    BindTarget(ostate, state.LayeredFramebuffer);
-    in.EmitMask = (1 << slots) - 1;
-    in.TargetLayer = 0;
-    in.TestMode = oracle == REPROJECT ? TEST_REPROJECTED : TEST_SAME_PIXEL;
-    draw(routedProps);
-    routedDone = true;
-    geometryPasses = 1;
-  }
-
-  // Paper Listing 1: one submission per layer, each tested against the
-  // layer before it in this frame, for whatever the single pass did not draw.
-  const bool peelRouted = !routedDone && !routedProps.empty();
-  for (int j = 0; j < layers; ++j)
-  {
-    if (!peelRouted && otherProps.empty())
+    if (!routedProps.empty() && historyUsable)
     {
-      break;
-    }
-    peeled = true;
-    if (j > 0)
-    {
-      CopyDistanceLayer(state, j - 1, j - 1);
-    }
-    in.TestMode = j > 0 ? TEST_SAME_PIXEL : TEST_NONE;
-    if (peelRouted)
-    {
+      // Paper Listing 2: one submission fills every layer.
       BindTarget(ostate, state.LayeredFramebuffer);
-      in.EmitMask = (1 << j) | (j == 0 ? allOracleMask : 0);
+      in.EmitMask = (1 << slots) - 1;
       in.TargetLayer = 0;
+      in.TestMode = oracle == REPROJECT ? TEST_REPROJECTED : TEST_SAME_PIXEL;
       draw(routedProps);
+      routedDone = true;
+      geometryPasses = 1;
     }
-    if (!otherProps.empty())
-    {
-      BindTarget(ostate, state.LayerFramebuffers[j]);
-      in.EmitMask = 1 << j;
-      in.TargetLayer = j;
-      draw(otherProps);
-    }
-    ++geometryPasses;
-  }
 
-  // History for the next frame (Listing 2 reads Z_{t-1}).
-  if (oracleSlots)
-  {
-    CopyDistanceLayer(state, layers, 0);
-  }
-  else if (!peeled)
-  {
-    // Peeling copied each layer before drawing the next; a single pass did not.
-    for (int j = 0; j + 1 < layers; ++j)
+    // Paper Listing 1: one submission per layer, each tested against the
+    // layer before it in this frame, for whatever the single pass did not draw.
+    const bool peelRouted = !routedDone && !routedProps.empty();
+    for (int j = 0; j < layers; ++j)
     {
-      CopyDistanceLayer(state, j, j);
+      if (!peelRouted && otherProps.empty())
+      {
+        break;
+      }
+      peeled = true;
+      if (j > 0)
+      {
+        CopyDistanceLayer(state, j - 1, j - 1);
+      }
+      in.TestMode = j > 0 ? TEST_SAME_PIXEL : TEST_NONE;
+      if (peelRouted)
+      {
+        BindTarget(ostate, state.LayeredFramebuffer);
+        in.EmitMask = (1 << j) | (j == 0 ? allOracleMask : 0);
+        in.TargetLayer = 0;
+        draw(routedProps);
+      }
+      if (!otherProps.empty())
+      {
+        BindTarget(ostate, state.LayerFramebuffers[j]);
+        in.EmitMask = 1 << j;
+        in.TargetLayer = j;
+        draw(otherProps);
+      }
+      ++geometryPasses;
     }
-  }
-  state.HistoryValid = true;
-  state.HistoryIsPredicted = oracleSlots == 1;
-  state.HistoryNumberOfLayers = layers;
 
-  in.Current = nullptr;
-  this->PostRender(s);
+    // History for the next frame (Listing 2 reads Z_{t-1}).
+    if (oracleSlots)
+    {
+      CopyDistanceLayer(state, layers, 0);
+    }
+    else if (!peeled)
+    {
+      // Peeling copied each layer before drawing the next; a single pass did not.
+      for (int j = 0; j + 1 < layers; ++j)
+      {
+        CopyDistanceLayer(state, j, j);
+      }
+    }
+    state.HistoryValid = true;
+    state.HistoryIsPredicted = oracleSlots == 1;
+    state.HistoryNumberOfLayers = layers;
+
+    in.Current = nullptr;
+    this->PostRender(s);
   };
   if (shadows)
   {
