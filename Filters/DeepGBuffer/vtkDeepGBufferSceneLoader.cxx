@@ -1887,6 +1887,7 @@ void vtkDeepGBufferSceneLoader::PrintSelf(ostream& os, vtkIndent indent)
   {
     os << indent.GetNextIndent() << part.Name << ": " << part.PolyData->GetNumberOfPolys()
        << " triangles, colour (" << part.Color[0] << ", " << part.Color[1] << ", "
-       << part.Color[2] << ")\n";
+       << part.Color[2] << "), emission (" << part.Emission[0] << ", " << part.Emission[1]
+       << ", " << part.Emission[2] << ")\n";
   }
 }

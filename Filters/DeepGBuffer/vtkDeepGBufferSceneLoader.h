@@ -17,7 +17,8 @@
  *   else NAME.obj.mtl or NAME.mtl next to it): one part per material, in the
  *   order of first `usemtl`, coloured with the material's Kd (DefaultColor
  *   for faces without a material, materials without Kd or missing from the
- *   MTL file, with a warning for the latter); without one, a single part in
+ *   MTL file, with a warning for the latter) and emitting the material's Ke
+ *   (emitters: see Populate); without one, a single part in
  *   DefaultColor. Faces with vertex indices the file does not define are
  *   skipped with a warning (an error if none is left); normals (`vn`) are
  *   kept for parts where every corner has one. Coincident vertices and
