@@ -10,6 +10,7 @@
 #include "vtkCleanPolyData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkDeepGBufferPass.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkExecutive.h"
@@ -17,6 +18,8 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkImageReader2.h"
+#include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
 #include "vtkIntArray.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
@@ -71,6 +74,7 @@ struct Part
 {
   std::string Name;
   double Color[3];
+  double Emission[3] = { 0.0, 0.0, 0.0 }; // MTL Ke, radiance
   vtkSmartPointer<vtkPolyData> PolyData;
 };
 
@@ -344,10 +348,10 @@ long long ResolveObjIndex(const std::string& word, long long count)
   return count + i >= 0 ? count + i : -1;
 }
 
-// The diffuse colours (Kd) of the materials of an MTL file. Materials
-// without a usable Kd get none.
+// The diffuse colours (Kd) and emitted radiances (Ke) of the materials of an
+// MTL file. Materials without a usable Kd (Ke) get none.
 bool ReadMaterialColors(const std::string& path, std::map<std::string, std::array<double, 3>>& kd,
-  std::set<std::string>& materials)
+  std::map<std::string, std::array<double, 3>>& ke, std::set<std::string>& materials)
 {
   vtksys::ifstream in(path.c_str());
   if (!in)
@@ -369,7 +373,7 @@ bool ReadMaterialColors(const std::string& path, std::map<std::string, std::arra
       current = Trim(line.substr(6));
       materials.insert(current);
     }
-    else if (words[0] == "Kd" && !current.empty())
+    else if ((words[0] == "Kd" || words[0] == "Ke") && !current.empty())
     {
       // "Kd r g b", or "Kd r" for a grey; not "Kd spectral ..." or "Kd xyz ...".
       double rgb[3] = { 0.0, 0.0, 0.0 };
@@ -386,7 +390,7 @@ bool ReadMaterialColors(const std::string& path, std::map<std::string, std::arra
       }
       if (ok && std::isfinite(rgb[0]) && std::isfinite(rgb[1]) && std::isfinite(rgb[2]))
       {
-        kd[current] = { rgb[0], rgb[1], rgb[2] };
+        (words[0] == "Kd" ? kd : ke)[current] = { rgb[0], rgb[1], rgb[2] };
       }
     }
   }
@@ -775,9 +779,9 @@ bool vtkDeepGBufferSceneLoader::LoadOBJ(const char* fileName)
       }
     }
   }
-  std::map<std::string, std::array<double, 3>> kd;
+  std::map<std::string, std::array<double, 3>> kd, ke;
   std::set<std::string> materials;
-  if (!mtl.empty() && !ReadMaterialColors(mtl, kd, materials))
+  if (!mtl.empty() && !ReadMaterialColors(mtl, kd, ke, materials))
   {
     vtkWarningMacro("Cannot read the materials " << mtl << " of " << path);
     mtl.clear();
@@ -877,6 +881,15 @@ bool vtkDeepGBufferSceneLoader::LoadOBJ(const char* fileName)
       {
         unknownMaterials.push_back(group.Material);
       }
+      auto emission = ke.find(group.Material);
+      if (emission != ke.end())
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          // Negative radiance is meaningless; such a Ke emits nothing.
+          part.Emission[c] = std::max(0.0, emission->second[c]);
+        }
+      }
     }
     part.PolyData = this->PrepareMesh(input, (path + " " + part.Name).c_str());
     if (part.PolyData)
@@ -901,6 +914,7 @@ bool vtkDeepGBufferSceneLoader::LoadOBJ(const char* fileName)
   for (const Part& part : parts)
   {
     this->AddPart(part.PolyData, part.Name.c_str(), part.Color);
+    std::copy(part.Emission, part.Emission + 3, this->Internals->Parts.back().Emission);
   }
   return true;
 }
@@ -1498,6 +1512,16 @@ void vtkDeepGBufferSceneLoader::GetPartColor(int part, double rgb[3])
 }
 
 //------------------------------------------------------------------------------
+void vtkDeepGBufferSceneLoader::GetPartEmission(int part, double rgb[3])
+{
+  const bool valid = part >= 0 && part < this->GetNumberOfParts();
+  for (int i = 0; i < 3; ++i)
+  {
+    rgb[i] = valid ? this->Internals->Parts[part].Emission[i] : 0.0;
+  }
+}
+
+//------------------------------------------------------------------------------
 vtkPolyData* vtkDeepGBufferSceneLoader::GetPartPolyData(int part)
 {
   if (part < 0 || part >= this->GetNumberOfParts())
@@ -1596,8 +1620,10 @@ int vtkDeepGBufferSceneLoader::Populate(vtkRenderer* renderer)
     return 0;
   }
   int added = 0;
-  for (const Part& part : this->Internals->Parts)
+  bool emitters = false;
+  for (int index = 0; index < this->GetNumberOfParts(); ++index)
   {
+    const Part& part = this->Internals->Parts[index];
     vtkNew<vtkPolyDataMapper> mapper;
     mapper->SetInputData(part.PolyData);
     mapper->ScalarVisibilityOff();
@@ -1610,14 +1636,139 @@ int vtkDeepGBufferSceneLoader::Populate(vtkRenderer* renderer)
     property->SetDiffuse(MaterialDiffuse);
     property->SetSpecular(0.0);
     property->SetInterpolationToPhong();
+    const double brightest = std::max({ part.Emission[0], part.Emission[1], part.Emission[2] });
+    if (brightest > 0.0)
+    {
+      // An emitter (MTL Ke): drawn self-lit, with its colour Ke / max(Ke) as
+      // VTK's ambient term (its displayable radiance; Ke itself is usually
+      // far above 1), no diffuse or specular term, and marked EMISSIVE so
+      // the deep G-buffer keeps that term in the direct radiance B(Y) that
+      // vtkDeepRadiosityPass gathers. Its light reaches the scene through
+      // the spot light AddEmitterLight puts on it.
+      property->SetAmbientColor(
+        part.Emission[0] / brightest, part.Emission[1] / brightest, part.Emission[2] / brightest);
+      property->SetAmbient(1.0);
+      property->SetDiffuse(0.0);
+      vtkNew<vtkInformation> keys;
+      keys->Set(vtkDeepGBufferPass::EMISSIVE(), 1);
+      actor->SetPropertyKeys(keys);
+      emitters = this->AddEmitterLight(renderer, index) || emitters;
+    }
     renderer->AddActor(actor);
     ++added;
   }
-  if (this->DefaultLight)
+  // A scene with its own lamps is lit by them alone.
+  if (this->DefaultLight && !emitters)
   {
     this->AddDefaultLight(renderer);
   }
   return added;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGBufferSceneLoader::AddEmitterLight(vtkRenderer* renderer, int index)
+{
+  if (!renderer || index < 0 || index >= this->GetNumberOfParts())
+  {
+    vtkErrorMacro("AddEmitterLight: no renderer or no part " << index);
+    return false;
+  }
+  const Part& part = this->Internals->Parts[index];
+  const double brightest = std::max({ part.Emission[0], part.Emission[1], part.Emission[2] });
+  vtkPolyData* mesh = part.PolyData;
+  vtkPoints* points = mesh ? mesh->GetPoints() : nullptr;
+  if (!(brightest > 0.0) || !points || mesh->GetNumberOfPolys() == 0)
+  {
+    return false;
+  }
+  // Area, area-weighted centroid and area-weighted normal (from the
+  // triangles' winding) of the emitting surface.
+  double area = 0.0, centroid[3] = { 0, 0, 0 }, normal[3] = { 0, 0, 0 };
+  auto cells = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    cells->GetCurrentCell(n, ids);
+    if (n != 3)
+    {
+      continue; // the parts are triangulated
+    }
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      points->GetPoint(ids[k], p[k]);
+    }
+    double e1[3], e2[3], cross[3];
+    vtkMath::Subtract(p[1], p[0], e1);
+    vtkMath::Subtract(p[2], p[0], e2);
+    vtkMath::Cross(e1, e2, cross);
+    const double a = 0.5 * vtkMath::Norm(cross);
+    area += a;
+    for (int c = 0; c < 3; ++c)
+    {
+      centroid[c] += a * (p[0][c] + p[1][c] + p[2][c]) / 3.0;
+      normal[c] += 0.5 * cross[c];
+    }
+  }
+  if (!(area > 0.0))
+  {
+    return false;
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    centroid[c] /= area;
+  }
+  // |sum of a_i n_i| = area for a flat emitter, less for a curved one.
+  const double flatness = vtkMath::Normalize(normal) / area;
+  double bounds[6];
+  this->GetBounds(bounds);
+  double diagonal = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    diagonal += (bounds[2 * c + 1] - bounds[2 * c]) * (bounds[2 * c + 1] - bounds[2 * c]);
+  }
+  diagonal = std::sqrt(diagonal);
+
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(true);
+  light->SetColor(
+    part.Emission[0] / brightest, part.Emission[1] / brightest, part.Emission[2] / brightest);
+  // 1 / d^2 falloff, as light from a small area emitter falls off.
+  light->SetAttenuationValues(0.0, 0.0, 1.0);
+  if (flatness > 0.9)
+  {
+    // A flat Lambertian emitter of radiance Ke and area A sends the radiant
+    // intensity Ke A cos(theta) into its front half-space. VTK's diffuse
+    // term has no 1 / pi (radiance = Kd E / pi is written Kd x intensity x
+    // cos / d^2), so the intensity is max(Ke) A / pi, and a spot light
+    // (exponent 1: the cos(theta) falloff) with a cone just under 90
+    // degrees lights that half-space. It sits a hair in front of the
+    // emitter, so the surface the emitter lies on is not lit at grazing.
+    light->SetIntensity(brightest * area / vtkMath::Pi());
+    light->SetConeAngle(89.0);
+    light->SetExponent(1.0);
+    const double offset = 1e-4 * std::max(diagonal, 1e-12);
+    double position[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      position[c] = centroid[c] + offset * normal[c];
+    }
+    light->SetPosition(position);
+    light->SetFocalPoint(position[0] + normal[0], position[1] + normal[1], position[2] + normal[2]);
+  }
+  else
+  {
+    // A curved emitter: a point light of the same power (Ke pi A in all
+    // directions, i.e. intensity Ke A / 4, / pi in VTK's units).
+    light->SetIntensity(brightest * area / (4.0 * vtkMath::Pi()));
+    light->SetConeAngle(180.0);
+    light->SetPosition(centroid);
+    light->SetFocalPoint(centroid[0], centroid[1] - 1.0, centroid[2]);
+  }
+  renderer->AddLight(light);
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -1736,6 +1887,7 @@ void vtkDeepGBufferSceneLoader::PrintSelf(ostream& os, vtkIndent indent)
   {
     os << indent.GetNextIndent() << part.Name << ": " << part.PolyData->GetNumberOfPolys()
        << " triangles, colour (" << part.Color[0] << ", " << part.Color[1] << ", "
-       << part.Color[2] << ")\n";
+       << part.Color[2] << "), emission (" << part.Emission[0] << ", " << part.Emission[1]
+       << ", " << part.Emission[2] << ")\n";
   }
 }

@@ -17,7 +17,8 @@
  *   else NAME.obj.mtl or NAME.mtl next to it): one part per material, in the
  *   order of first `usemtl`, coloured with the material's Kd (DefaultColor
  *   for faces without a material, materials without Kd or missing from the
- *   MTL file, with a warning for the latter); without one, a single part in
+ *   MTL file, with a warning for the latter) and emitting the material's Ke
+ *   (emitters: see Populate); without one, a single part in
  *   DefaultColor. Faces with vertex indices the file does not define are
  *   skipped with a warning (an error if none is left); normals (`vn`) are
  *   kept for parts where every corner has one. Coincident vertices and
@@ -165,6 +166,8 @@ public:
   int GetNumberOfParts();
   const char* GetPartName(int part);
   void GetPartColor(int part, double rgb[3]);
+  /// Emitted radiance (MTL Ke, RGB, >= 0) of a part; 0 for non-emitters.
+  void GetPartEmission(int part, double rgb[3]);
   vtkPolyData* GetPartPolyData(int part);
   ///@}
 
@@ -187,6 +190,14 @@ public:
    * Adds one actor per part (scalar colouring off, the part's colour,
    * Ambient 0.1, Diffuse 0.9, Specular 0) and, if DefaultLight is on, the
    * default light. Returns the number of actors added.
+   *
+   * Emitters (parts whose MTL material has a Ke > 0, e.g. the lamp of the
+   * Cornell box) are drawn self-lit: Ambient 1 with AmbientColor
+   * Ke / max(Ke), Diffuse 0, Specular 0, and the actor's PropertyKeys carry
+   * vtkDeepGBufferPass::EMISSIVE() = 1, so their colour enters the deep
+   * G-buffer's direct radiance (RADIANCE - AMBIENT) and with it the
+   * radiosity's B(Y). Each emitter also gets a light (AddEmitterLight); a
+   * scene with emitters is lit by them only (no default lights).
    */
   int Populate(vtkRenderer* renderer);
 
@@ -199,6 +210,19 @@ public:
    * for rooms and Cornell boxes, a light from above for objects.
    */
   void AddDefaultLight(vtkRenderer* renderer);
+
+  /**
+   * Adds the VTK light that stands for the emitting part `part` (see
+   * Populate): for a flat emitter of radiance Ke and area A, a positional
+   * spot light 1e-4 of the scene's diagonal in front of its area-weighted
+   * centroid, pointing along its normal (the triangles' winding), cone
+   * angle 89 degrees, exponent 1 (the cos falloff of a Lambertian emitter),
+   * attenuation 1 / d^2, colour Ke / max(Ke) and intensity max(Ke) A / pi
+   * (VTK's diffuse term has no 1 / pi); for a curved one, a point light of
+   * the same power (intensity max(Ke) A / (4 pi)). Returns false (and adds
+   * nothing) for a part that emits nothing or has no area.
+   */
+  bool AddEmitterLight(vtkRenderer* renderer, int part);
 
   /**
    * Points the renderer's active camera along ViewDirection with ViewUp at

@@ -6,7 +6,11 @@
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
 #include "vtkIntArray.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkLightsPass.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -31,6 +35,9 @@
 #include "vtkRenderState.h"
 #include "vtkShaderProgram.h"
 #include "vtkShaderProperty.h"
+#include "vtkShadowMapBakerPass.h"
+#include "vtkShadowMapPass.h"
+#include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
 #include "vtkTextureUnitManager.h"
 #include "vtkTranslucentPass.h"
@@ -47,11 +54,34 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkDeepGBufferPass);
+
+namespace
+{
+// The G-buffer's layer drawing as a render pass: vtkShadowMapPass runs it as
+// its opaque sequence, so that the shadow pass's shader hooks are on the
+// props while the layers are drawn.
+class vtkDeepGBufferDrawStep : public vtkRenderPass
+{
+public:
+  static vtkDeepGBufferDrawStep* New();
+  vtkTypeMacro(vtkDeepGBufferDrawStep, vtkRenderPass);
+  void Render(const vtkRenderState* s) override
+  {
+    if (this->Draw)
+    {
+      this->Draw(s);
+    }
+  }
+  std::function<void(const vtkRenderState*)> Draw;
+};
+vtkStandardNewMacro(vtkDeepGBufferDrawStep);
+}
 
 namespace
 {
@@ -265,6 +295,7 @@ public:
   vtkOpenGLQuadHelper* ResolveQuad = nullptr;
 
   vtkLightsPass* LightsPass = nullptr;
+  vtkNew<vtkDeepGBufferDrawStep> DrawStep;
 
   void WarnOnce(vtkDeepGBufferPass* self, int which, const std::string& message)
   {
@@ -300,11 +331,14 @@ vtkDeepGBufferPass::~vtkDeepGBufferPass()
   this->SetTranslucentPass(nullptr);
   this->SetVolumetricPass(nullptr);
   this->SetOverlayPass(nullptr);
+  this->SetShadowMapPass(nullptr);
 }
 
 vtkCxxSetObjectMacro(vtkDeepGBufferPass, TranslucentPass, vtkRenderPass);
 vtkCxxSetObjectMacro(vtkDeepGBufferPass, VolumetricPass, vtkRenderPass);
 vtkCxxSetObjectMacro(vtkDeepGBufferPass, OverlayPass, vtkRenderPass);
+vtkCxxSetObjectMacro(vtkDeepGBufferPass, ShadowMapPass, vtkShadowMapPass);
+vtkInformationKeyMacro(vtkDeepGBufferPass, EMISSIVE, Integer);
 
 //------------------------------------------------------------------------------
 void vtkDeepGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
@@ -326,6 +360,7 @@ void vtkDeepGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TranslucentPass: " << this->TranslucentPass << "\n";
   os << indent << "VolumetricPass: " << this->VolumetricPass << "\n";
   os << indent << "OverlayPass: " << this->OverlayPass << "\n";
+  os << indent << "ShadowMapPass: " << this->ShadowMapPass << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -524,6 +559,7 @@ bool vtkDeepGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
                              "uniform int deepOracleLayerIndex;\n"
                              "uniform int deepOtherClipLayerMask;\n"
                              "uniform int deepCullBackFaces;\n"
+                             "uniform int deepEmissive;\n"
                              "uniform float deepMinimumSeparation;\n"
                              "uniform vec4 deepProjectionZ;\n"
                              "uniform vec4 deepOtherProjectionZ;\n"
@@ -640,7 +676,7 @@ bool vtkDeepGBufferPass::PostReplaceShaderValues(std::string& vtkNotUsed(vertexS
       normal +
       "), 0.0, 1.0);\n"
       "  gl_FragData[3] = vec4(deepDistance, 0.0, 0.0, 1.0);\n"
-      "  gl_FragData[4] = vec4(max(" +
+      "  gl_FragData[4] = vec4(deepEmissive != 0 ? vec3(0.0) : max(" +
       ambient + ", vec3(0.0)), 1.0);\n"
       "  //VTK::DeepGBuffer::Reflectivity\n",
     false);
@@ -776,6 +812,10 @@ bool vtkDeepGBufferPass::SetShaderParameters(vtkShaderProgram* program,
   setMatrix("deepInverseProjection", in.InverseProjection.data());
   setVec("deepViewportSize", in.ViewportSize.data(), 2);
   setInt("deepHistoryDistance", in.HistoryUnit);
+  // An emissive prop's ambient term is its emission, not the environment's
+  // light: it stays in RADIANCE and out of AMBIENT (see EMISSIVE()).
+  vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
+  setInt("deepEmissive", keys && keys->Has(EMISSIVE()) && keys->Get(EMISSIVE()) != 0 ? 1 : 0);
   return true;
 }
 
@@ -1024,6 +1064,39 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
     return false;
   }
 
+  // VTK's shadow maps for this frame's lights and props, baked before the
+  // layers read them. The baker renders from the light cameras into its own
+  // framebuffer and viewport; the renderer's are restored for the layers.
+  vtkShadowMapPass* shadows = this->ShadowMapPass && this->ShadowMapPass->GetShadowMapBakerPass()
+    ? this->ShadowMapPass
+    : nullptr;
+  if (shadows)
+  {
+    // VTK 9.1's baker re-bakes only when lights or props changed, even after
+    // ReleaseGraphicsResources freed its maps, and the shadow pass then reads
+    // the missing maps: mark the lights changed while a shadowing light has
+    // no map.
+    vtkShadowMapBakerPass* baker = shadows->GetShadowMapBakerPass();
+    if (!baker->GetShadowMaps())
+    {
+      vtkLightCollection* lights = renderer->GetLights();
+      vtkCollectionSimpleIterator it;
+      lights->InitTraversal(it);
+      while (vtkLight* light = lights->GetNextLight(it))
+      {
+        if (light->GetSwitch() && baker->LightCreatesShadow(light))
+        {
+          lights->Modified();
+          break;
+        }
+      }
+    }
+    vtkOpenGLState::ScopedglViewport bakerViewport(ostate);
+    vtkOpenGLState::ScopedglScissor bakerScissor(ostate);
+    vtkOpenGLState::ScopedglClearColor bakerClearColor(ostate);
+    baker->Render(s);
+  }
+
   // Effective parameters of this frame.
   int oracle = this->Oracle;
   int layers = this->NumberOfLayers;
@@ -1185,89 +1258,107 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
   const float farDepth = 1.0f;
   glClearBufferfv(GL_DEPTH, 0, &farDepth);
 
-  this->PreRender(s);
-  in.Current = &state;
-  in.OracleLayerIndex = oracleSlots ? layers : -1;
-  const int allOracleMask = oracleSlots ? (1 << layers) : 0;
-  // DELAY rasterises the displayed layers at the previous frame's
-  // positions; its oracle layer at the current ones (Listing 2, lines 3-6).
-  const int delayedLayersMask = (oracle == DELAY) ? ((1 << layers) - 1) : 0;
-  const int predictedLayerMask = (oracle == PREDICT) ? allOracleMask : 0;
-  in.OtherClipLayerMask = delayedLayersMask | predictedLayerMask;
-
-  auto draw = [&](const std::vector<vtkProp*>& props) {
-    for (vtkProp* prop : props)
-    {
-      prop->RenderOpaqueGeometry(renderer);
-    }
-  };
-
+  // Everything from here to PostRender draws the layers; with shadow maps it
+  // runs inside vtkShadowMapPass::Render (see SetShadowMapPass).
   int geometryPasses = 0;
   bool routedDone = false;
   bool peeled = false;
-  if (!routedProps.empty() && historyUsable)
-  {
-    // Paper Listing 2: one submission fills every layer.
-    BindTarget(ostate, state.LayeredFramebuffer);
-    in.EmitMask = (1 << slots) - 1;
-    in.TargetLayer = 0;
-    in.TestMode = oracle == REPROJECT ? TEST_REPROJECTED : TEST_SAME_PIXEL;
-    draw(routedProps);
-    routedDone = true;
-    geometryPasses = 1;
-  }
+  auto drawLayers = [&](const vtkRenderState*) {
+    this->PreRender(s);
+    in.Current = &state;
+    in.OracleLayerIndex = oracleSlots ? layers : -1;
+    const int allOracleMask = oracleSlots ? (1 << layers) : 0;
+    // DELAY rasterises the displayed layers at the previous frame's
+    // positions; its oracle layer at the current ones (Listing 2, lines 3-6).
+    const int delayedLayersMask = (oracle == DELAY) ? ((1 << layers) - 1) : 0;
+    const int predictedLayerMask = (oracle == PREDICT) ? allOracleMask : 0;
+    in.OtherClipLayerMask = delayedLayersMask | predictedLayerMask;
 
-  // Paper Listing 1: one submission per layer, each tested against the
-  // layer before it in this frame, for whatever the single pass did not draw.
-  const bool peelRouted = !routedDone && !routedProps.empty();
-  for (int j = 0; j < layers; ++j)
-  {
-    if (!peelRouted && otherProps.empty())
+    auto draw = [&](const std::vector<vtkProp*>& props) {
+      for (vtkProp* prop : props)
+      {
+        prop->RenderOpaqueGeometry(renderer);
+      }
+    };
+
+    if (!routedProps.empty() && historyUsable)
     {
-      break;
-    }
-    peeled = true;
-    if (j > 0)
-    {
-      CopyDistanceLayer(state, j - 1, j - 1);
-    }
-    in.TestMode = j > 0 ? TEST_SAME_PIXEL : TEST_NONE;
-    if (peelRouted)
-    {
+      // Paper Listing 2: one submission fills every layer.
       BindTarget(ostate, state.LayeredFramebuffer);
-      in.EmitMask = (1 << j) | (j == 0 ? allOracleMask : 0);
+      in.EmitMask = (1 << slots) - 1;
       in.TargetLayer = 0;
+      in.TestMode = oracle == REPROJECT ? TEST_REPROJECTED : TEST_SAME_PIXEL;
       draw(routedProps);
+      routedDone = true;
+      geometryPasses = 1;
     }
-    if (!otherProps.empty())
-    {
-      BindTarget(ostate, state.LayerFramebuffers[j]);
-      in.EmitMask = 1 << j;
-      in.TargetLayer = j;
-      draw(otherProps);
-    }
-    ++geometryPasses;
-  }
 
-  // History for the next frame (Listing 2 reads Z_{t-1}).
-  if (oracleSlots)
-  {
-    CopyDistanceLayer(state, layers, 0);
-  }
-  else if (!peeled)
-  {
-    // Peeling copied each layer before drawing the next; a single pass did not.
-    for (int j = 0; j + 1 < layers; ++j)
+    // Paper Listing 1: one submission per layer, each tested against the
+    // layer before it in this frame, for whatever the single pass did not draw.
+    const bool peelRouted = !routedDone && !routedProps.empty();
+    for (int j = 0; j < layers; ++j)
     {
-      CopyDistanceLayer(state, j, j);
+      if (!peelRouted && otherProps.empty())
+      {
+        break;
+      }
+      peeled = true;
+      if (j > 0)
+      {
+        CopyDistanceLayer(state, j - 1, j - 1);
+      }
+      in.TestMode = j > 0 ? TEST_SAME_PIXEL : TEST_NONE;
+      if (peelRouted)
+      {
+        BindTarget(ostate, state.LayeredFramebuffer);
+        in.EmitMask = (1 << j) | (j == 0 ? allOracleMask : 0);
+        in.TargetLayer = 0;
+        draw(routedProps);
+      }
+      if (!otherProps.empty())
+      {
+        BindTarget(ostate, state.LayerFramebuffers[j]);
+        in.EmitMask = 1 << j;
+        in.TargetLayer = j;
+        draw(otherProps);
+      }
+      ++geometryPasses;
     }
-  }
-  state.HistoryValid = true;
-  state.HistoryIsPredicted = oracleSlots == 1;
-  state.HistoryNumberOfLayers = layers;
 
-  in.Current = nullptr;
-  this->PostRender(s);
+    // History for the next frame (Listing 2 reads Z_{t-1}).
+    if (oracleSlots)
+    {
+      CopyDistanceLayer(state, layers, 0);
+    }
+    else if (!peeled)
+    {
+      // Peeling copied each layer before drawing the next; a single pass did not.
+      for (int j = 0; j + 1 < layers; ++j)
+      {
+        CopyDistanceLayer(state, j, j);
+      }
+    }
+    state.HistoryValid = true;
+    state.HistoryIsPredicted = oracleSlots == 1;
+    state.HistoryNumberOfLayers = layers;
+
+    in.Current = nullptr;
+    this->PostRender(s);
+  };
+  if (shadows)
+  {
+    // The user's opaque sequence of the shadow pass is put back after the draw.
+    vtkSmartPointer<vtkRenderPass> shadowSequence = shadows->GetOpaqueSequence();
+    in.DrawStep->Draw = drawLayers;
+    shadows->SetOpaqueSequence(in.DrawStep);
+    shadows->Render(s);
+    shadows->SetOpaqueSequence(shadowSequence);
+    in.DrawStep->Draw = nullptr;
+  }
+  else
+  {
+    drawLayers(s);
+  }
   ostate->PopFramebufferBindings();
   ostate->vtkglActiveTexture(GL_TEXTURE0 + in.HistoryUnit);
   glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
@@ -1464,7 +1555,9 @@ void vtkDeepGBufferPass::ReleaseGraphicsResources(vtkWindow* w)
   }
   in.CheckedWindow = nullptr;
   in.LightsPass->ReleaseGraphicsResources(w);
-  for (vtkRenderPass* step : { this->TranslucentPass, this->VolumetricPass, this->OverlayPass })
+  for (vtkRenderPass* step :
+    { this->TranslucentPass, this->VolumetricPass, this->OverlayPass,
+      static_cast<vtkRenderPass*>(this->ShadowMapPass) })
   {
     if (step)
     {

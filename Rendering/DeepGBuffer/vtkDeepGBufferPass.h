@@ -40,7 +40,7 @@
  * | ALBEDO    | RGBA8             | 4        | diffuse albedo after VTK's colouring  |
  * | NORMAL    | RG8 (Oct16)       | 2        | camera-space normal, paper Table 1    |
  * | DEPTH     | R32F              | 4        | camera-space distance, 0 = empty      |
- * | AMBIENT   | R11F_G11F_B10F    | 4        | the ambient part of RADIANCE          |
+ * | AMBIENT   | R11F_G11F_B10F    | 4        | the ambient part of RADIANCE (0 for EMISSIVE props) |
  * | REFLECTIVITY | RGBA8 (optional) | 4      | mirror reflectance, only while requested |
  * | (z-test)  | DEPTH_COMPONENT32F| 4        | hardware depth per layer              |
  * Reads: nothing but the props. Writes: the renderer's colour and depth.
@@ -62,9 +62,11 @@
 #include <memory> // for std::unique_ptr
 
 class vtkImageData;
+class vtkInformationIntegerKey;
 class vtkOpenGLRenderWindow;
 class vtkRenderPass;
 class vtkRenderer;
+class vtkShadowMapPass;
 
 class VTKDEEPGIRENDERING_EXPORT vtkDeepGBufferPass : public vtkOpenGLRenderPass
 {
@@ -286,6 +288,42 @@ public:
    */
   int GetLayerCamera(vtkRenderer* renderer, double view[16], double projection[16]);
 
+  /**
+   * Information key for a prop's PropertyKeys (vtkProp::SetPropertyKeys):
+   * 1 marks VTK's ambient term of the prop (Ambient x AmbientColor) as light
+   * the surface emits, e.g. a lamp drawn with Ambient 1, AmbientColor the
+   * lamp's colour and Diffuse 0. Such a prop's ambient stays in RADIANCE but
+   * is left out of AMBIENT (0 there), so RADIANCE - AMBIENT includes the
+   * emission: vtkDeepRadiosityPass gathers it as the surface's B(Y), and
+   * vtkDeepAmbientObscurancePass does not darken it. Without the key (or
+   * 0) the ambient term is the environment's light, as VTK's lighting
+   * treats it. Read at every draw: no shader rebuild when it changes.
+   */
+  static vtkInformationIntegerKey* EMISSIVE();
+
+  ///@{
+  /**
+   * VTK's shadow maps in the G-buffer. With a vtkShadowMapPass set, every
+   * frame first lets its vtkShadowMapBakerPass (GetShadowMapBakerPass())
+   * update the shadow maps of the renderer's shadowing lights, then draws the
+   * layers *through* the shadow pass: for that draw the shadow pass's opaque
+   * sequence is the G-buffer's own layer drawing (the pass's
+   * OpaqueSequence is restored afterwards), so VTK's shadow shader hooks and
+   * the G-buffer's hooks are both on the props (the render state's
+   * RenderPasses key) and every layer's RADIANCE holds the shadowed direct
+   * light. AMBIENT is not shadowed (VTK's ambient term is not), so
+   * RADIANCE - AMBIENT is the shadowed direct radiance that
+   * vtkDeepRadiosityPass gathers as B(Y). Lights cast shadows as VTK decides
+   * (vtkShadowMapBakerPass::LightCreatesShadow: scene lights that are
+   * directional or spot lights with a cone angle below 90 degrees), with
+   * their vtkLight::GetShadowAttenuation. Null (default): no shadows, and the
+   * G-buffer is exactly what it is without this feature. The same shadow
+   * pass must not also be in the renderer's own pass pipeline.
+   */
+  void SetShadowMapPass(vtkShadowMapPass* pass);
+  vtkGetObjectMacro(ShadowMapPass, vtkShadowMapPass);
+  ///@}
+
   ///@{
   /// The steps drawn after the opaque layers. Defaults: vtkTranslucentPass,
   /// vtkVolumetricPass, vtkOverlayPass. Set to null to skip a step.
@@ -339,6 +377,7 @@ protected:
   vtkRenderPass* TranslucentPass = nullptr;
   vtkRenderPass* VolumetricPass = nullptr;
   vtkRenderPass* OverlayPass = nullptr;
+  vtkShadowMapPass* ShadowMapPass = nullptr;
 
 private:
   vtkDeepGBufferPass(const vtkDeepGBufferPass&) = delete;

@@ -13,8 +13,12 @@
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDeepGBufferDemoScene.h"
+#include "vtkDeepGBufferPass.h"
 #include "vtkDeepGBufferSceneLoader.h"
 #include "vtkFlyingEdges3D.h"
+#include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
+#include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -398,12 +402,33 @@ void TestLoader(const std::string& data, const std::string& temp)
   CHECK(foundRed, "the Cornell left wall has Kd 0.63 0.065 0.05");
   vtkNew<vtkRenderer> renderer;
   CHECK(loader->Populate(renderer) == 8, "Populate adds 8 actors");
-  vtkActor* actor = renderer->GetActors()->GetLastActor();
-  CHECK(actor && actor->GetProperty()->GetAmbient() == 0.1 &&
-      actor->GetProperty()->GetSpecular() == 0.0,
+  // Parts in file order: the walls, the boxes, then the lamp (Ke 17 12 4).
+  vtkActorCollection* actors = renderer->GetActors();
+  vtkActor* wall = vtkActor::SafeDownCast(actors->GetItemAsObject(0));
+  CHECK(wall && wall->GetProperty()->GetAmbient() == 0.1 &&
+      wall->GetProperty()->GetSpecular() == 0.0 && !wall->GetPropertyKeys(),
     "loaded actors have Ambient 0.1 and Specular 0 (not the importer's 1 and 1)");
-  CHECK(renderer->GetLights()->GetNumberOfItems() == 2,
-    "Populate adds the default lights (camera key light, lamp below the top)");
+  double ke[3];
+  loader->GetPartEmission(7, ke);
+  CHECK(std::string(loader->GetPartName(7)).find("light") != std::string::npos && ke[0] == 17.0 &&
+      ke[1] == 12.0 && ke[2] == 4.0,
+    "the lamp part has Ke 17 12 4");
+  vtkActor* lamp = actors->GetLastActor();
+  vtkProperty* lampProperty = lamp ? lamp->GetProperty() : nullptr;
+  CHECK(lampProperty && lampProperty->GetAmbient() == 1.0 && lampProperty->GetDiffuse() == 0.0 &&
+      std::abs(lampProperty->GetAmbientColor()[1] - 12.0 / 17.0) < 1e-12 &&
+      lamp->GetPropertyKeys() && lamp->GetPropertyKeys()->Get(vtkDeepGBufferPass::EMISSIVE()) == 1,
+    "the lamp is emissive: Ambient 1, AmbientColor Ke / max(Ke), Diffuse 0, EMISSIVE");
+  vtkLight* light = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
+  // The quad is 0.47 x 0.38 at y = 1.98, facing down.
+  const double intensity = 17.0 * 0.47 * 0.38 / vtkMath::Pi();
+  CHECK(renderer->GetLights()->GetNumberOfItems() == 1 && light && light->GetPositional() &&
+      light->GetConeAngle() == 89.0 && std::abs(light->GetIntensity() - intensity) < 1e-6 &&
+      std::abs(light->GetPosition()[1] - 1.98) < 1e-3 && light->GetFocalPoint()[1] < 1.98 &&
+      std::abs(light->GetPosition()[0] + 0.005) < 1e-6 &&
+      std::abs(light->GetPosition()[2] + 0.03) < 1e-6,
+    "Populate adds one spot light at the lamp, pointing down, intensity Ke A / pi, and no "
+    "default lights");
   loader->ResetCamera(renderer);
   vtkPolyData* scene = loader->GetScenePolyData();
   CheckMesh(scene, true, true, "Cornell scene polydata");
