@@ -79,9 +79,11 @@ struct Frame
 using Scene = std::function<void(vtkRenderer*)>;
 
 // Builds `scene` in a new width x height window with `pass`, renders
-// `frames` frames and captures the radiosity and the layers.
+// `frames` frames and captures the radiosity and the layers. The camera's
+// clipping range is reset to the scene, or set to `clippingRange` (near,
+// far) when given.
 inline bool RenderFrames(const Scene& scene, vtkDeepRadiosityPass* pass, int frames, Frame& f,
-  int width = 160, int height = 120)
+  int width = 160, int height = 120, const double* clippingRange = nullptr)
 {
   f.Width = width;
   f.Height = height;
@@ -90,7 +92,14 @@ inline bool RenderFrames(const Scene& scene, vtkDeepRadiosityPass* pass, int fra
   f.Renderer->SetBackground(0.0, 0.0, 0.0);
   f.Window->AddRenderer(f.Renderer);
   scene(f.Renderer);
-  f.Renderer->ResetCameraClippingRange();
+  if (clippingRange)
+  {
+    f.Renderer->GetActiveCamera()->SetClippingRange(clippingRange[0], clippingRange[1]);
+  }
+  else
+  {
+    f.Renderer->ResetCameraClippingRange();
+  }
   f.Renderer->SetPass(pass);
   for (int k = 0; k < frames; ++k)
   {

@@ -4,6 +4,10 @@
 // - scale: the red-wall scene at 1e-4 and 1e4 times its size gives the
 //   same L_ind as at size 1 (automatic radius, tolerance and separation):
 //   mean |difference| < 1e-3 and >= 99 % of the pixels within 0.01;
+// - near/far 1e-1 and 1e-7 (near 1e-6 and 1e-1 before a far plane at
+//   10): L_ind finite and non-negative, and its mean |difference| from the
+//   clipping range fitted to the scene below 0.01 (the G-buffer stores
+//   camera-space distance in float, not the depth buffer's value);
 // - alpha 0, 0.99 and 1, delta 0 and 1, N 1, 98 and 99 (clamped to 98);
 // - no lights: L_ind exactly 0 and one warning; a black scene: L_ind
 //   exactly 0; an explicit radius 0: L_ind exactly 0; an empty scene: one
@@ -87,6 +91,64 @@ void TestScale()
     Check(std::abs(r / scales[k] - radius) < 1e-6 * radius, "radius follows the scale");
     Check(mean < 1e-3 && far <= compared / 100, "same indirect light at any scale");
   }
+}
+
+// Mean over the pixels valid in both of |L_ind(a) - L_ind(b)| (RGB mean).
+double MeanDifference(Frame& a, Frame& b)
+{
+  long compared = 0;
+  double sum = 0.0;
+  for (int j = 0; j < a.Height; ++j)
+  {
+    for (int i = 0; i < a.Width; ++i)
+    {
+      if (At(a.Radiosity, "Valid_0", i, j) == 0 || At(b.Radiosity, "Valid_0", i, j) == 0)
+      {
+        continue;
+      }
+      ++compared;
+      for (int c = 0; c < 3; ++c)
+      {
+        sum += std::abs(At(a.Radiosity, "IndirectRadiance_0", i, j, c) -
+                 At(b.Radiosity, "IndirectRadiance_0", i, j, c)) /
+          3.0;
+      }
+    }
+  }
+  return compared ? sum / compared : VTK_DOUBLE_MAX;
+}
+
+void TestClippingRange()
+{
+  Frame fitted;
+  vtkNew<vtkDeepRadiosityPass> reference;
+  reference->SetTemporalAlpha(0.0);
+  if (!RenderFrames([](vtkRenderer* r) { RedWallScene(r); }, reference, 3, fitted))
+  {
+    return;
+  }
+  const double ranges[2][2] = { { 1.0, 10.0 }, { 1e-6, 10.0 } };
+  for (const auto& range : ranges)
+  {
+    Frame f;
+    vtkNew<vtkDeepRadiosityPass> pass;
+    pass->SetTemporalAlpha(0.0);
+    if (!RenderFrames([](vtkRenderer* r) { RedWallScene(r); }, pass, 3, f, 160, 120, range))
+    {
+      continue;
+    }
+    char what[64];
+    std::snprintf(what, sizeof(what), "near/far %.0e", range[0] / range[1]);
+    const double* used = f.Renderer->GetActiveCamera()->GetClippingRange();
+    const double mean = MeanDifference(f, fitted);
+    std::printf("%s (rendered with near %g, far %g): mean |L_ind - L_ind(fitted range)| %.2e\n",
+      what, used[0], used[1], mean);
+    Check(used[0] == range[0] && used[1] == range[1], std::string(what) + ": range kept");
+    Healthy(f, what);
+    Check(mean < 0.01, std::string(what) + ": same indirect light as with a fitted clipping range");
+    pass->ReleaseGraphicsResources(f.Window);
+  }
+  reference->ReleaseGraphicsResources(fitted.Window);
 }
 
 void TestParameters()
@@ -314,6 +376,7 @@ void TestBadParameters()
 int TestDeepRadiosityExtremes(int, char*[])
 {
   TestScale();
+  TestClippingRange();
   TestParameters();
   TestDark();
   TestClosedBox();

@@ -5,6 +5,10 @@
 // each pixel's reflected radiance must be the texel VTK's image-based
 // lighting convention gives for the exact world mirror direction r:
 // u = atan2(r.z, r.x) / (2 pi) + 0.5, v = asin(r.y) / pi + 0.5.
+// (1b) The same environment at 4x (HDR texels up to 4), written to an
+// OpenEXR file with vtkDeepGIEXRWriter and read back with
+// vtkDeepGIEXRReader as the texture's input: the same comparison at 4x, so
+// radiance above 1 survives from the file to the reflection.
 // (2) A cube map with one colour per face: the face of the mirror
 // direction. (3) No environment texture: the background colour. (4) A
 // gradient background: mix(Background, Background2, 0.5 + 0.5 r_y), r_y
@@ -14,6 +18,8 @@
 
 #include "vtkCamera.h"
 #include "vtkCommand.h"
+#include "vtkDeepGIEXRReader.h"
+#include "vtkDeepGIEXRWriter.h"
 #include "vtkDeepReflectionPass.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
@@ -169,6 +175,50 @@ int TestDeepReflectionEnvironment(int, char*[])
     "about the G-buffer's normals: %ld of %ld exact texel\n", decoded.Exact, decoded.Pixels);
   Check(decoded.Exact >= 0.995 * decoded.Pixels,
     "99.5 % show exactly the texel of the direction about the stored normal");
+
+  // The same environment at 4x through an OpenEXR file (plain R, G, B
+  // channels: the array is named "RGB").
+  {
+    vtkNew<vtkImageData> hdr;
+    hdr->SetDimensions(EnvWidth, EnvHeight, 1);
+    vtkNew<vtkFloatArray> hdrTexels;
+    hdrTexels->DeepCopy(texels);
+    hdrTexels->SetName("RGB");
+    for (vtkIdType v = 0; v < hdrTexels->GetNumberOfValues(); ++v)
+    {
+      hdrTexels->SetValue(v, 4.0f * hdrTexels->GetValue(v));
+    }
+    hdr->GetPointData()->SetScalars(hdrTexels);
+    const std::string file = "TestDeepReflectionEnvironment.exr";
+    vtkNew<vtkDeepGIEXRWriter> writer;
+    writer->SetFileName(file.c_str());
+    writer->SetInputData(hdr);
+    Check(writer->Write() == 1, "environment written as OpenEXR");
+    vtkNew<vtkDeepGIEXRReader> reader;
+    reader->SetFileName(file.c_str());
+    vtkNew<vtkTexture> fromFile;
+    fromFile->SetInputConnection(reader->GetOutputPort());
+    fromFile->SetColorModeToDirectScalars();
+    fromFile->InterpolateOff();
+    renderer->SetEnvironmentTexture(fromFile);
+    window->Render();
+    vtkNew<vtkImageData> hdrReflections;
+    pass->CaptureReflections(hdrReflections, renderer);
+    auto scaled = [&equirectangular](const Vector& r, const Vector& rc) -> Vector {
+      const Vector e = equirectangular(r, rc);
+      return { 4.0 * e[0], 4.0 * e[1], 4.0 * e[2] };
+    };
+    const double fourTexels[3] = { 4.0 * oneTexel[0], 4.0 * oneTexel[1], 4.0 * oneTexel[2] };
+    const Comparison h = Compare(hdrReflections, scaled, fourTexels);
+    double range[2];
+    hdrReflections->GetPointData()->GetArray("ReflectedRadiance")->GetRange(range, 0);
+    std::printf("OpenEXR environment at 4x: %ld traced pixels, %ld within one texel, red up to "
+                "%.3f\n",
+      h.Pixels, h.Near, range[1]);
+    Check(h.Pixels > 10000 && h.Near == h.Pixels && range[1] > 1.05,
+      "the OpenEXR environment's radiance, above 1, is reflected");
+    renderer->SetEnvironmentTexture(environment);
+  }
 
   // A cube map: one colour per face (GL's face order +x, -x, +y, -y, +z,
   // -z); the face is the largest component of e (its sign), e reflected
