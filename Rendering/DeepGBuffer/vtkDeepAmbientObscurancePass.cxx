@@ -48,35 +48,6 @@
 
 vtkStandardNewMacro(vtkDeepAmbientObscurancePass);
 
-//------------------------------------------------------------------------------
-// The opaque step handed to vtkDeepGBufferPass::RenderFrame: calls back into
-// the AO pass, so that the camera, clear, lights and the translucent,
-// volumetric and overlay steps stay the G-buffer pass's.
-class vtkDeepAmbientObscuranceOpaqueStep : public vtkRenderPass
-{
-public:
-  static vtkDeepAmbientObscuranceOpaqueStep* New();
-  vtkTypeMacro(vtkDeepAmbientObscuranceOpaqueStep, vtkRenderPass);
-  vtkDeepAmbientObscurancePass* Owner = nullptr;
-  void Render(const vtkRenderState* s) override
-  {
-    this->NumberOfRenderedProps = 0;
-    if (this->Owner)
-    {
-      this->Owner->RenderOpaque(s);
-    }
-  }
-
-protected:
-  vtkDeepAmbientObscuranceOpaqueStep() = default;
-  ~vtkDeepAmbientObscuranceOpaqueStep() override = default;
-
-private:
-  vtkDeepAmbientObscuranceOpaqueStep(const vtkDeepAmbientObscuranceOpaqueStep&) = delete;
-  void operator=(const vtkDeepAmbientObscuranceOpaqueStep&) = delete;
-};
-vtkStandardNewMacro(vtkDeepAmbientObscuranceOpaqueStep);
-
 namespace
 {
 enum Target
@@ -177,7 +148,6 @@ struct vtkDeepAmbientObscuranceRendererState
 class vtkDeepAmbientObscurancePass::vtkInternals
 {
 public:
-  vtkDeepAmbientObscuranceOpaqueStep* OpaqueStep = nullptr;
   std::map<vtkRenderer*, std::unique_ptr<vtkDeepAmbientObscuranceRendererState>> States;
   vtkRenderer* FirstRenderer = nullptr;
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
@@ -199,9 +169,6 @@ public:
 vtkDeepAmbientObscurancePass::vtkDeepAmbientObscurancePass()
   : Internals(new vtkInternals)
 {
-  this->GBufferPass = vtkDeepGBufferPass::New();
-  this->Internals->OpaqueStep = vtkDeepAmbientObscuranceOpaqueStep::New();
-  this->Internals->OpaqueStep->Owner = this;
 }
 
 //------------------------------------------------------------------------------
@@ -222,16 +189,12 @@ vtkDeepAmbientObscurancePass::~vtkDeepAmbientObscurancePass()
   {
     in.Framebuffer->Delete();
   }
-  in.OpaqueStep->Owner = nullptr;
-  in.OpaqueStep->Delete();
-  this->GBufferPass->Delete();
 }
 
 //------------------------------------------------------------------------------
 void vtkDeepAmbientObscurancePass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "GBufferPass: " << this->GBufferPass << "\n";
   os << indent << "Radius: " << this->Radius << "\n";
   os << indent << "AutomaticRadius: " << (this->AutomaticRadius ? "On" : "Off") << "\n";
   os << indent << "AutomaticRadiusFraction: " << this->AutomaticRadiusFraction << "\n";
@@ -276,42 +239,9 @@ const char* vtkDeepAmbientObscurancePass::GetCompositionAsString(int composition
 }
 
 //------------------------------------------------------------------------------
-void vtkDeepAmbientObscurancePass::SetGBufferPass(vtkDeepGBufferPass* pass)
-{
-  if (!pass)
-  {
-    vtkWarningMacro("SetGBufferPass(nullptr) ignored: the pass needs a G-buffer.");
-    return;
-  }
-  if (pass == this->GBufferPass)
-  {
-    return;
-  }
-  pass->Register(this);
-  this->GBufferPass->UnRegister(this);
-  this->GBufferPass = pass;
-  this->Modified();
-}
-
-//------------------------------------------------------------------------------
 void vtkDeepAmbientObscurancePass::SetRadius(double radius)
 {
-  if (!std::isfinite(radius))
-  {
-    vtkWarningMacro("Radius " << radius << " is not finite; keeping " << this->Radius << ".");
-    return;
-  }
-  if (radius < 0.0)
-  {
-    vtkWarningMacro("Radius " << radius << " is negative; using 0.");
-    radius = 0.0;
-  }
-  if (radius != this->Radius || this->AutomaticRadius)
-  {
-    this->Radius = radius;
-    this->AutomaticRadius = false;
-    this->Modified();
-  }
+  this->SetManualLength("Radius", radius, this->Radius, this->AutomaticRadius);
 }
 
 //------------------------------------------------------------------------------
@@ -375,14 +305,6 @@ void vtkDeepAmbientObscurancePass::SetQualityPreset(int preset)
   this->MipThreshold = p.MipThreshold;
   this->MaximumMipLevel = p.MaximumMipLevel;
   this->Modified();
-}
-
-//------------------------------------------------------------------------------
-void vtkDeepAmbientObscurancePass::Render(const vtkRenderState* s)
-{
-  this->NumberOfRenderedProps = 0;
-  this->GBufferPass->RenderFrame(s, this->Internals->OpaqueStep);
-  this->NumberOfRenderedProps = this->GBufferPass->GetNumberOfRenderedProps();
 }
 
 using vtkDeepScreenSpace::AllocateTarget;

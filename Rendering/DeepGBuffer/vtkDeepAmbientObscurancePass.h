@@ -105,21 +105,20 @@
 #define vtkDeepAmbientObscurancePass_h
 
 #include "vtkDeepGIRenderingModule.h" // for export macro
-#include "vtkRenderPass.h"
+#include "vtkDeepScreenSpacePass.h"
 
 #include <memory> // for std::unique_ptr
 
-class vtkDeepGBufferPass;
 class vtkImageData;
 class vtkOpenGLRenderWindow;
 struct vtkDeepAmbientObscuranceRendererState;
 class vtkRenderer;
 
-class VTKDEEPGIRENDERING_EXPORT vtkDeepAmbientObscurancePass : public vtkRenderPass
+class VTKDEEPGIRENDERING_EXPORT vtkDeepAmbientObscurancePass : public vtkDeepScreenSpacePass
 {
 public:
   static vtkDeepAmbientObscurancePass* New();
-  vtkTypeMacro(vtkDeepAmbientObscurancePass, vtkRenderPass);
+  vtkTypeMacro(vtkDeepAmbientObscurancePass, vtkDeepScreenSpacePass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// How AV is applied to the image.
@@ -143,14 +142,6 @@ public:
    */
   static int GetSpiralTurns(int numberOfSamples);
 
-  ///@{
-  /**
-   * The G-buffer pass that builds the layers. One is created by default;
-   * set one to share it (e.g. with other deep passes). Null is refused.
-   */
-  void SetGBufferPass(vtkDeepGBufferPass* pass);
-  vtkGetObjectMacro(GBufferPass, vtkDeepGBufferPass);
-  ///@}
 
   ///@{
   /**
@@ -386,7 +377,6 @@ public:
   unsigned int GetVisibilityTextureHandle(vtkRenderer* renderer);
   ///@}
 
-  void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
 protected:
@@ -394,14 +384,13 @@ protected:
   ~vtkDeepAmbientObscurancePass() override;
 
   /// The opaque step of the frame: layers, AO, filter, composite.
-  void RenderOpaque(const vtkRenderState* s);
+  void RenderOpaque(const vtkRenderState* s) override;
 
   /// Builds the distance pyramid into the bound framebuffer slot; returns
   /// the texture unit it is bound to (-1: no pyramid, taps read level 0).
   int BuildDistancePyramid(vtkDeepAmbientObscuranceRendererState& state,
     vtkOpenGLRenderWindow* window, int distanceUnit, int layers);
 
-  vtkDeepGBufferPass* GBufferPass = nullptr;
   double Radius = 1.0;
   bool AutomaticRadius = true;
   double AutomaticRadiusFraction = 0.05;
@@ -424,7 +413,6 @@ private:
   vtkDeepAmbientObscurancePass(const vtkDeepAmbientObscurancePass&) = delete;
   void operator=(const vtkDeepAmbientObscurancePass&) = delete;
 
-  friend class vtkDeepAmbientObscuranceOpaqueStep;
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
 };

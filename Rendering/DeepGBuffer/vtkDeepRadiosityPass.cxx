@@ -42,35 +42,6 @@
 
 vtkStandardNewMacro(vtkDeepRadiosityPass);
 
-//------------------------------------------------------------------------------
-// The opaque step handed to vtkDeepGBufferPass::RenderFrame: calls back into
-// the radiosity pass, so that the camera, clear, lights and the later steps
-// stay the G-buffer pass's.
-class vtkDeepRadiosityOpaqueStep : public vtkRenderPass
-{
-public:
-  static vtkDeepRadiosityOpaqueStep* New();
-  vtkTypeMacro(vtkDeepRadiosityOpaqueStep, vtkRenderPass);
-  vtkDeepRadiosityPass* Owner = nullptr;
-  void Render(const vtkRenderState* s) override
-  {
-    this->NumberOfRenderedProps = 0;
-    if (this->Owner)
-    {
-      this->Owner->RenderOpaque(s);
-    }
-  }
-
-protected:
-  vtkDeepRadiosityOpaqueStep() = default;
-  ~vtkDeepRadiosityOpaqueStep() override = default;
-
-private:
-  vtkDeepRadiosityOpaqueStep(const vtkDeepRadiosityOpaqueStep&) = delete;
-  void operator=(const vtkDeepRadiosityOpaqueStep&) = delete;
-};
-vtkStandardNewMacro(vtkDeepRadiosityOpaqueStep);
-
 namespace
 {
 using vtkDeepScreenSpace::AllocateTarget;
@@ -183,7 +154,6 @@ struct vtkDeepRadiosityRendererState
 class vtkDeepRadiosityPass::vtkInternals
 {
 public:
-  vtkDeepRadiosityOpaqueStep* OpaqueStep = nullptr;
   std::map<vtkRenderer*, std::unique_ptr<vtkDeepRadiosityRendererState>> States;
   vtkRenderer* FirstRenderer = nullptr;
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
@@ -205,9 +175,6 @@ public:
 vtkDeepRadiosityPass::vtkDeepRadiosityPass()
   : Internals(new vtkInternals)
 {
-  this->GBufferPass = vtkDeepGBufferPass::New();
-  this->Internals->OpaqueStep = vtkDeepRadiosityOpaqueStep::New();
-  this->Internals->OpaqueStep->Owner = this;
 }
 
 //------------------------------------------------------------------------------
@@ -228,16 +195,12 @@ vtkDeepRadiosityPass::~vtkDeepRadiosityPass()
   {
     in.Framebuffer->Delete();
   }
-  in.OpaqueStep->Owner = nullptr;
-  in.OpaqueStep->Delete();
-  this->GBufferPass->Delete();
 }
 
 //------------------------------------------------------------------------------
 void vtkDeepRadiosityPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "GBufferPass: " << this->GBufferPass << "\n";
   os << indent << "Radius: " << this->Radius << "\n";
   os << indent << "AutomaticRadius: " << (this->AutomaticRadius ? "On" : "Off") << "\n";
   os << indent << "AutomaticRadiusFraction: " << this->AutomaticRadiusFraction << "\n";
@@ -274,42 +237,10 @@ void vtkDeepRadiosityPass::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-void vtkDeepRadiosityPass::SetGBufferPass(vtkDeepGBufferPass* pass)
-{
-  if (!pass)
-  {
-    vtkWarningMacro("SetGBufferPass(nullptr) ignored: the pass needs a G-buffer.");
-    return;
-  }
-  if (pass == this->GBufferPass)
-  {
-    return;
-  }
-  pass->Register(this);
-  this->GBufferPass->UnRegister(this);
-  this->GBufferPass = pass;
-  this->Modified();
-}
-
-//------------------------------------------------------------------------------
 void vtkDeepRadiosityPass::SetRadius(double radius)
 {
-  if (!std::isfinite(radius))
-  {
-    vtkWarningMacro("Radius " << radius << " is not finite; keeping " << this->Radius << ".");
-    return;
-  }
-  if (radius < 0.0)
-  {
-    vtkWarningMacro("Radius " << radius << " is negative; using 0 (no indirect light).");
-    radius = 0.0;
-  }
-  if (radius != this->Radius || this->AutomaticRadius)
-  {
-    this->Radius = radius;
-    this->AutomaticRadius = false;
-    this->Modified();
-  }
+  this->SetManualLength(
+    "Radius", radius, this->Radius, this->AutomaticRadius, false, " (no indirect light)");
 }
 
 //------------------------------------------------------------------------------
@@ -376,23 +307,8 @@ void vtkDeepRadiosityPass::SetTemporalAlpha(double alpha)
 //------------------------------------------------------------------------------
 void vtkDeepRadiosityPass::SetReprojectionTolerance(double tolerance)
 {
-  if (!std::isfinite(tolerance))
-  {
-    vtkWarningMacro("ReprojectionTolerance " << tolerance << " is not finite; keeping "
-                                             << this->ReprojectionTolerance << ".");
-    return;
-  }
-  if (tolerance < 0.0)
-  {
-    vtkWarningMacro("ReprojectionTolerance " << tolerance << " is negative; using 0.");
-    tolerance = 0.0;
-  }
-  if (tolerance != this->ReprojectionTolerance || this->AutomaticReprojectionTolerance)
-  {
-    this->ReprojectionTolerance = tolerance;
-    this->AutomaticReprojectionTolerance = false;
-    this->Modified();
-  }
+  this->SetManualLength("ReprojectionTolerance", tolerance, this->ReprojectionTolerance,
+    this->AutomaticReprojectionTolerance);
 }
 
 //------------------------------------------------------------------------------
@@ -461,14 +377,6 @@ const char* vtkDeepRadiosityPass::GetPresetAsString(int preset)
     default:
       return "UNKNOWN";
   }
-}
-
-//------------------------------------------------------------------------------
-void vtkDeepRadiosityPass::Render(const vtkRenderState* s)
-{
-  this->NumberOfRenderedProps = 0;
-  this->GBufferPass->RenderFrame(s, this->Internals->OpaqueStep);
-  this->NumberOfRenderedProps = this->GBufferPass->GetNumberOfRenderedProps();
 }
 
 //------------------------------------------------------------------------------

@@ -111,19 +111,18 @@
 #define vtkDeepRadiosityPass_h
 
 #include "vtkDeepGIRenderingModule.h" // for export macro
-#include "vtkRenderPass.h"
+#include "vtkDeepScreenSpacePass.h"
 
 #include <memory> // for std::unique_ptr
 
-class vtkDeepGBufferPass;
 class vtkImageData;
 class vtkRenderer;
 
-class VTKDEEPGIRENDERING_EXPORT vtkDeepRadiosityPass : public vtkRenderPass
+class VTKDEEPGIRENDERING_EXPORT vtkDeepRadiosityPass : public vtkDeepScreenSpacePass
 {
 public:
   static vtkDeepRadiosityPass* New();
-  vtkTypeMacro(vtkDeepRadiosityPass, vtkRenderPass);
+  vtkTypeMacro(vtkDeepRadiosityPass, vtkDeepScreenSpacePass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// Layers that receive and send indirect light (G-buffer layers 0 and 1).
@@ -165,14 +164,6 @@ public:
     HIGH_QUALITY = 2      ///< N 30, 13 filter taps, n_Y test, minimum MIP level 0
   };
 
-  ///@{
-  /**
-   * The G-buffer pass that builds the layers. One is created by default;
-   * set one to share it with other deep passes. Null is refused.
-   */
-  void SetGBufferPass(vtkDeepGBufferPass* pass);
-  vtkGetObjectMacro(GBufferPass, vtkDeepGBufferPass);
-  ///@}
 
   ///@{
   /**
@@ -433,7 +424,6 @@ public:
   /// intensity (without one there is no direct light to bounce). False for null.
   static bool RendererHasLightOn(vtkRenderer* renderer);
 
-  void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
 protected:
@@ -441,9 +431,8 @@ protected:
   ~vtkDeepRadiosityPass() override;
 
   /// The opaque step of the frame: layers, radiosity, filters, composite.
-  void RenderOpaque(const vtkRenderState* s);
+  void RenderOpaque(const vtkRenderState* s) override;
 
-  vtkDeepGBufferPass* GBufferPass = nullptr;
   double Radius = 1.0;
   bool AutomaticRadius = true;
   double AutomaticRadiusFraction = 0.1;
@@ -473,7 +462,6 @@ private:
   vtkDeepRadiosityPass(const vtkDeepRadiosityPass&) = delete;
   void operator=(const vtkDeepRadiosityPass&) = delete;
 
-  friend class vtkDeepRadiosityOpaqueStep;
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
 };

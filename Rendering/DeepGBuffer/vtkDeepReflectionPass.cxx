@@ -48,35 +48,6 @@
 
 vtkStandardNewMacro(vtkDeepReflectionPass);
 
-//------------------------------------------------------------------------------
-// The opaque step handed to vtkDeepGBufferPass::RenderFrame: calls back into
-// the reflection pass, so that the camera, clear, lights and the later steps
-// stay the G-buffer pass's.
-class vtkDeepReflectionOpaqueStep : public vtkRenderPass
-{
-public:
-  static vtkDeepReflectionOpaqueStep* New();
-  vtkTypeMacro(vtkDeepReflectionOpaqueStep, vtkRenderPass);
-  vtkDeepReflectionPass* Owner = nullptr;
-  void Render(const vtkRenderState* s) override
-  {
-    this->NumberOfRenderedProps = 0;
-    if (this->Owner)
-    {
-      this->Owner->RenderOpaque(s);
-    }
-  }
-
-protected:
-  vtkDeepReflectionOpaqueStep() = default;
-  ~vtkDeepReflectionOpaqueStep() override = default;
-
-private:
-  vtkDeepReflectionOpaqueStep(const vtkDeepReflectionOpaqueStep&) = delete;
-  void operator=(const vtkDeepReflectionOpaqueStep&) = delete;
-};
-vtkStandardNewMacro(vtkDeepReflectionOpaqueStep);
-
 namespace
 {
 enum Target
@@ -203,7 +174,6 @@ struct vtkDeepReflectionRendererState
 class vtkDeepReflectionPass::vtkInternals
 {
 public:
-  vtkDeepReflectionOpaqueStep* OpaqueStep = nullptr;
   std::map<vtkRenderer*, std::unique_ptr<vtkDeepReflectionRendererState>> States;
   vtkRenderer* FirstRenderer = nullptr;
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
@@ -243,9 +213,6 @@ public:
 vtkDeepReflectionPass::vtkDeepReflectionPass()
   : Internals(new vtkInternals)
 {
-  this->GBufferPass = vtkDeepGBufferPass::New();
-  this->Internals->OpaqueStep = vtkDeepReflectionOpaqueStep::New();
-  this->Internals->OpaqueStep->Owner = this;
 }
 
 //------------------------------------------------------------------------------
@@ -266,16 +233,12 @@ vtkDeepReflectionPass::~vtkDeepReflectionPass()
   {
     in.Framebuffer->Delete();
   }
-  in.OpaqueStep->Owner = nullptr;
-  in.OpaqueStep->Delete();
-  this->GBufferPass->Delete();
 }
 
 //------------------------------------------------------------------------------
 void vtkDeepReflectionPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "GBufferPass: " << this->GBufferPass << "\n";
   os << indent << "MaximumDistance: " << this->MaximumDistance << "\n";
   os << indent << "AutomaticMaximumDistance: " << (this->AutomaticMaximumDistance ? "On" : "Off")
      << "\n";
@@ -291,65 +254,16 @@ void vtkDeepReflectionPass::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-void vtkDeepReflectionPass::SetGBufferPass(vtkDeepGBufferPass* pass)
-{
-  if (!pass)
-  {
-    vtkWarningMacro("SetGBufferPass(nullptr) ignored: the pass needs a G-buffer.");
-    return;
-  }
-  if (pass == this->GBufferPass)
-  {
-    return;
-  }
-  pass->Register(this);
-  this->GBufferPass->UnRegister(this);
-  this->GBufferPass = pass;
-  this->Modified();
-}
-
-//------------------------------------------------------------------------------
 void vtkDeepReflectionPass::SetMaximumDistance(double distance)
 {
-  if (std::isnan(distance))
-  {
-    vtkWarningMacro("MaximumDistance is NaN; keeping " << this->MaximumDistance << ".");
-    return;
-  }
-  if (distance < 0.0)
-  {
-    vtkWarningMacro("MaximumDistance " << distance
-                                       << " is negative; using 0 (reflections show the "
-                                          "environment only).");
-    distance = 0.0;
-  }
-  if (distance != this->MaximumDistance || this->AutomaticMaximumDistance)
-  {
-    this->MaximumDistance = distance;
-    this->AutomaticMaximumDistance = false;
-    this->Modified();
-  }
+  // +inf is allowed: the ray is still cut where it leaves the view frustum.
+  this->SetManualLength("MaximumDistance", distance, this->MaximumDistance,
+    this->AutomaticMaximumDistance, true, " (reflections show the environment only)");
 }
 
 void vtkDeepReflectionPass::SetThickness(double thickness)
 {
-  if (!std::isfinite(thickness))
-  {
-    vtkWarningMacro(
-      "Thickness " << thickness << " is not finite; keeping " << this->Thickness << ".");
-    return;
-  }
-  if (thickness < 0.0)
-  {
-    vtkWarningMacro("Thickness " << thickness << " is negative; using 0.");
-    thickness = 0.0;
-  }
-  if (thickness != this->Thickness || this->AutomaticThickness)
-  {
-    this->Thickness = thickness;
-    this->AutomaticThickness = false;
-    this->Modified();
-  }
+  this->SetManualLength("Thickness", thickness, this->Thickness, this->AutomaticThickness);
 }
 
 void vtkDeepReflectionPass::SetNumberOfSteps(int steps)
@@ -410,15 +324,13 @@ bool vtkDeepReflectionPass::RendererReflects(vtkRenderer* renderer)
 //------------------------------------------------------------------------------
 void vtkDeepReflectionPass::Render(const vtkRenderState* s)
 {
-  this->NumberOfRenderedProps = 0;
   // Compute only what the scene requires: the G-buffer stores reflectivity
   // (and rays are traced) only while some visible prop can reflect.
   this->LastFrameTraced = SceneReflects(s);
   vtkRenderer* renderer = s->GetRenderer();
   this->Internals->Reflects[renderer] = { renderer, this->LastFrameTraced };
   this->GBufferPass->SetWriteReflectivity(this->Internals->AnyReflects());
-  this->GBufferPass->RenderFrame(s, this->Internals->OpaqueStep);
-  this->NumberOfRenderedProps = this->GBufferPass->GetNumberOfRenderedProps();
+  this->Superclass::Render(s);
 }
 
 //------------------------------------------------------------------------------

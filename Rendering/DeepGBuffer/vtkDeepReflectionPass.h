@@ -91,32 +91,22 @@
 #define vtkDeepReflectionPass_h
 
 #include "vtkDeepGIRenderingModule.h" // for export macro
-#include "vtkRenderPass.h"
+#include "vtkDeepScreenSpacePass.h"
 
 #include <memory> // for std::unique_ptr
 
-class vtkDeepGBufferPass;
 class vtkImageData;
 class vtkRenderer;
 
-class VTKDEEPGIRENDERING_EXPORT vtkDeepReflectionPass : public vtkRenderPass
+class VTKDEEPGIRENDERING_EXPORT vtkDeepReflectionPass : public vtkDeepScreenSpacePass
 {
 public:
   static vtkDeepReflectionPass* New();
-  vtkTypeMacro(vtkDeepReflectionPass, vtkRenderPass);
+  vtkTypeMacro(vtkDeepReflectionPass, vtkDeepScreenSpacePass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// Largest number of ray-march steps per pixel.
   static constexpr int MAXIMUM_NUMBER_OF_STEPS = 1024;
-
-  ///@{
-  /**
-   * The G-buffer pass that builds the layers. One is created by default;
-   * set one to share it with other deep passes. Null is refused.
-   */
-  void SetGBufferPass(vtkDeepGBufferPass* pass);
-  vtkGetObjectMacro(GBufferPass, vtkDeepGBufferPass);
-  ///@}
 
   ///@{
   /**
@@ -254,9 +244,8 @@ protected:
   ~vtkDeepReflectionPass() override;
 
   /// The opaque step of the frame: layers, rays, composite.
-  void RenderOpaque(const vtkRenderState* s);
+  void RenderOpaque(const vtkRenderState* s) override;
 
-  vtkDeepGBufferPass* GBufferPass = nullptr;
   double MaximumDistance = 1.0;
   bool AutomaticMaximumDistance = true;
   double AutomaticDistanceFraction = 0.5;
@@ -273,7 +262,6 @@ private:
   vtkDeepReflectionPass(const vtkDeepReflectionPass&) = delete;
   void operator=(const vtkDeepReflectionPass&) = delete;
 
-  friend class vtkDeepReflectionOpaqueStep;
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
 };

@@ -1,0 +1,107 @@
+#include "vtkDeepScreenSpacePass.h"
+
+#include "vtkDeepGBufferPass.h"
+#include "vtkObjectFactory.h"
+
+#include <cmath>
+
+//------------------------------------------------------------------------------
+// The opaque step handed to vtkDeepGBufferPass::RenderFrame: calls back into
+// the owner, so that the camera, clear, lights and the translucent,
+// volumetric and overlay steps stay the G-buffer pass's.
+class vtkDeepScreenSpacePass::vtkOpaqueStep : public vtkRenderPass
+{
+public:
+  static vtkOpaqueStep* New();
+  vtkTypeMacro(vtkOpaqueStep, vtkRenderPass);
+  vtkDeepScreenSpacePass* Owner = nullptr;
+  void Render(const vtkRenderState* s) override
+  {
+    this->NumberOfRenderedProps = 0;
+    if (this->Owner)
+    {
+      this->Owner->RenderOpaque(s);
+    }
+  }
+
+protected:
+  vtkOpaqueStep() = default;
+  ~vtkOpaqueStep() override = default;
+
+private:
+  vtkOpaqueStep(const vtkOpaqueStep&) = delete;
+  void operator=(const vtkOpaqueStep&) = delete;
+};
+vtkStandardNewMacro(vtkDeepScreenSpacePass::vtkOpaqueStep);
+
+//------------------------------------------------------------------------------
+vtkDeepScreenSpacePass::vtkDeepScreenSpacePass()
+{
+  this->GBufferPass = vtkDeepGBufferPass::New();
+  this->OpaqueStep = vtkOpaqueStep::New();
+  this->OpaqueStep->Owner = this;
+}
+
+//------------------------------------------------------------------------------
+vtkDeepScreenSpacePass::~vtkDeepScreenSpacePass()
+{
+  this->OpaqueStep->Owner = nullptr;
+  this->OpaqueStep->Delete();
+  this->GBufferPass->Delete();
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepScreenSpacePass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "GBufferPass: " << this->GBufferPass << "\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepScreenSpacePass::SetGBufferPass(vtkDeepGBufferPass* pass)
+{
+  if (!pass)
+  {
+    vtkWarningMacro("SetGBufferPass(nullptr) ignored: the pass needs a G-buffer.");
+    return;
+  }
+  if (pass == this->GBufferPass)
+  {
+    return;
+  }
+  pass->Register(this);
+  this->GBufferPass->UnRegister(this);
+  this->GBufferPass = pass;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepScreenSpacePass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  this->GBufferPass->RenderFrame(s, this->OpaqueStep);
+  this->NumberOfRenderedProps = this->GBufferPass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepScreenSpacePass::SetManualLength(const char* name, double length, double& value,
+  bool& automatic, bool allowInfinity, const char* atZero)
+{
+  if (std::isnan(length) || (!allowInfinity && std::isinf(length)))
+  {
+    vtkWarningMacro(<< name << " " << length << " is not "
+                    << (allowInfinity ? "a number" : "finite") << "; keeping " << value << ".");
+    return;
+  }
+  if (length < 0.0)
+  {
+    vtkWarningMacro(<< name << " " << length << " is negative; using 0" << atZero << ".");
+    length = 0.0;
+  }
+  if (length != value || automatic)
+  {
+    value = length;
+    automatic = false;
+    this->Modified();
+  }
+}

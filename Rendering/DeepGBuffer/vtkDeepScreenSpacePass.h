@@ -1,0 +1,76 @@
+/**
+ * @class   vtkDeepScreenSpacePass
+ * @brief   Abstract base of the passes that render a frame through a deep G-buffer.
+ *
+ * vtkDeepAmbientObscurancePass, vtkDeepRadiosityPass and vtkDeepReflectionPass
+ * (sections 3.2-3.6 of Mara, McGuire, Nowrouzezahrai and Luebke, "Deep
+ * G-Buffers for Stable Global Illumination Approximation", HPG 2016) all
+ * render a whole frame the same way: vtkDeepGBufferPass::RenderFrame sets the
+ * camera, clears, updates the lights and draws the translucent, volumetric
+ * and overlay steps, while the opaque step is the subclass's: it builds the
+ * layers, computes its screen-space quantity from them and composites it.
+ * This class owns the G-buffer pass (one is created by default; Set shares
+ * one, null is refused with a warning), hands RenderFrame an opaque step that
+ * calls RenderOpaque, and validates the non-negative lengths the subclasses
+ * expose with an automatic mode.
+ *
+ * @sa vtkDeepGBufferPass vtkDeepAmbientObscurancePass vtkDeepRadiosityPass
+ * vtkDeepReflectionPass
+ */
+
+#ifndef vtkDeepScreenSpacePass_h
+#define vtkDeepScreenSpacePass_h
+
+#include "vtkDeepGIRenderingModule.h" // for export macro
+#include "vtkRenderPass.h"
+
+class vtkDeepGBufferPass;
+
+class VTKDEEPGIRENDERING_EXPORT vtkDeepScreenSpacePass : public vtkRenderPass
+{
+public:
+  vtkTypeMacro(vtkDeepScreenSpacePass, vtkRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The G-buffer pass that builds the layers. One is created by default;
+   * set one to share it with other deep passes. Null is refused with a
+   * warning.
+   */
+  void SetGBufferPass(vtkDeepGBufferPass* pass);
+  vtkGetObjectMacro(GBufferPass, vtkDeepGBufferPass);
+  ///@}
+
+  /// Renders the frame with GetGBufferPass()->RenderFrame, whose opaque step
+  /// is RenderOpaque.
+  void Render(const vtkRenderState* s) override;
+
+protected:
+  vtkDeepScreenSpacePass();
+  ~vtkDeepScreenSpacePass() override;
+
+  /// The opaque step of the frame: layers, the subclass's effect, composite.
+  virtual void RenderOpaque(const vtkRenderState* s) = 0;
+
+  /**
+   * Sets a non-negative length that has an automatic mode (a radius, a
+   * tolerance, a distance): NaN, and infinities unless `allowInfinity`, keep
+   * `value` with a warning; a negative `length` warns and becomes 0 (`atZero`
+   * says what 0 means, appended to the warning). Setting switches
+   * `automatic` off; Modified() when either changes.
+   */
+  void SetManualLength(const char* name, double length, double& value, bool& automatic,
+    bool allowInfinity = false, const char* atZero = "");
+
+  vtkDeepGBufferPass* GBufferPass = nullptr;
+
+private:
+  vtkDeepScreenSpacePass(const vtkDeepScreenSpacePass&) = delete;
+  void operator=(const vtkDeepScreenSpacePass&) = delete;
+
+  class vtkOpaqueStep;
+  vtkOpaqueStep* OpaqueStep = nullptr;
+};
+
+#endif
