@@ -1,6 +1,7 @@
 // Single-bounce properties of vtkDeepRadiosityPass on small lit scenes
 // (160 x 120 px, Damping 0 and TemporalAlpha 0 unless stated):
-// - the raw gather (eq. 4-5, both layers, confidence M / N) equals an
+// - the raw gather (eq. 4-5 with Estimator ACCEPTED_TAPS, both layers,
+//   confidence M / N) equals an
 //   independent CPU evaluation with the documented taps, MIP texels and
 //   layer choice on the captured G-buffer, for the BALANCED (n_Y test, MIP
 //   level >= 2) and HIGH_PERFORMANCE (no n_Y test, level >= 3) presets:
@@ -11,7 +12,9 @@
 //   next to the wall, green and blue < 2 % of red, decreasing with the
 //   distance from the wall, and the raw E exactly 0 beyond the radius r;
 // - a blue panel whose lit face looks away from the floor adds no blue to
-//   the floor behind it with the n_Y test (<= 1e-5) and some without it;
+//   the floor behind it: with eq. 4 (ACCEPTED_TAPS) with the n_Y test
+//   (<= 1e-5) and some without it; with the default SOLID_ANGLE in both
+//   cases (<= 1e-5);
 // - the composite is RADIANCE + L_ind (8-bit rounding: <= 2 levels),
 //   background kept;
 // - eq. 7's boost: a (1, 0.5, 0.5) floor (stored as 8-bit 128 / 255) gets
@@ -206,6 +209,9 @@ void TestReference(int preset)
   const double radius = 1.5;
   auto pass = SingleBouncePass(radius);
   pass->SetPreset(preset);
+  // The CPU evaluation below is eq. 4 as printed (2 pi / M sum), not the
+  // default SOLID_ANGLE estimator.
+  pass->SetEstimator(vtkDeepRadiosityPass::ACCEPTED_TAPS);
   Frame f;
   // A white box in front of the corner puts floor and wall into layer 1.
   auto scene = [](vtkRenderer* r)
@@ -406,26 +412,41 @@ void BlueExcess(Frame& f, double& largest, double& mean, long& pixels)
 
 void TestNormalTest()
 {
-  double largest[2], mean[2];
-  long pixels[2];
-  for (int on = 0; on < 2; ++on)
+  // [estimator][n_Y test]: eq. 4 needs the n_Y test to reject the face
+  // looking away; the default SOLID_ANGLE weights each tap by max(-w.n_Y, 0)
+  // and rejects it with or without the test.
+  const int estimators[2] = { vtkDeepRadiosityPass::ACCEPTED_TAPS,
+    vtkDeepRadiosityPass::SOLID_ANGLE };
+  double largest[2][2], mean[2][2];
+  long pixels[2][2];
+  for (int e = 0; e < 2; ++e)
   {
-    auto pass = SingleBouncePass(1.5);
-    pass->SetUseNormalTest(on != 0);
-    Frame f;
-    if (!RenderFrames([](vtkRenderer* r) { BlueBackScene(r); }, pass, 1, f))
+    for (int on = 0; on < 2; ++on)
     {
-      return;
+      auto pass = SingleBouncePass(1.5);
+      if (e == 0)
+      {
+        pass->SetEstimator(estimators[e]);
+      }
+      pass->SetUseNormalTest(on != 0);
+      Frame f;
+      if (!RenderFrames([](vtkRenderer* r) { BlueBackScene(r); }, pass, 1, f))
+      {
+        return;
+      }
+      BlueExcess(f, largest[e][on], mean[e][on], pixels[e][on]);
+      std::printf("%s, n_Y test %s: %ld floor pixels behind the panel, blue excess mean %.4g, "
+                  "largest %.4g\n",
+        vtkDeepRadiosityPass::GetEstimatorAsString(estimators[e]), on ? "on" : "off",
+        pixels[e][on], mean[e][on], largest[e][on]);
+      pass->ReleaseGraphicsResources(f.Window);
     }
-    BlueExcess(f, largest[on], mean[on], pixels[on]);
-    std::printf("n_Y test %s: %ld floor pixels behind the panel, blue excess mean %.4g, largest "
-                "%.4g\n",
-      on ? "on" : "off", pixels[on], mean[on], largest[on]);
-    pass->ReleaseGraphicsResources(f.Window);
   }
-  Check(pixels[1] > 50, "floor pixels behind the panel");
-  Check(largest[1] <= 1e-5, "n_Y test: a face looking away sends no light");
-  Check(mean[0] > 0.005, "without the n_Y test the face looking away sends light");
+  Check(pixels[0][1] > 50 && pixels[1][1] > 50, "floor pixels behind the panel");
+  Check(largest[0][1] <= 1e-5, "eq. 4 with the n_Y test: a face looking away sends no light");
+  Check(mean[0][0] > 0.005, "eq. 4 without the n_Y test: the face looking away sends light");
+  Check(largest[1][0] <= 1e-5 && largest[1][1] <= 1e-5,
+    "SOLID_ANGLE (default): a face looking away sends no light, n_Y test or not");
 }
 
 void TestBoost()

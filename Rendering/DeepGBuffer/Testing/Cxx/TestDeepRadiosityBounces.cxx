@@ -4,10 +4,12 @@
 //   camera, 64 x 64, 100 frames. With alpha = 0 the total indirect light
 //   never decreases (relative 1e-5: each frame adds one bounce to a
 //   positive linear map started from 0), frame 2 exceeds frame 1 by > 1 %
-//   (a second bounce arrived), frames 90..100 differ by < 0.1 %
+//   (a second bounce arrived), frame 100 exceeds frame 1 by > 3 % (measured
+//   6.8 % with alpha 0, 4.8 % with 0.85), frames 90..100 differ by < 0.1 %
 //   (converged), and every L_ind stays below the bound
-//   2 rho D / (1 - 2 rho delta) = 8 D (D the largest direct radiance): eq. 4
-//   returns at most 2 pi max B (w.n_X <= 1), so L <= 2 rho max B and
+//   2 rho D / (1 - 2 rho delta) = 8 D (D the largest direct radiance): E
+//   is at most 2 pi max B with every estimator (the default SOLID_ANGLE
+//   scales its solid angles to at most 2 pi), so L <= 2 rho max B and
 //   B <= D + delta L. With alpha = 0.85 (jittered taps) the same bound holds
 //   and frames 90..100 differ by < 1 %. Layer-1 pixels gain light from the
 //   bounces too (propagation across layers);
@@ -111,7 +113,10 @@ void TestEnergy(double alpha)
     layer1[0], layer1[99]);
   Check(finite, "finite and non-negative every frame");
   Check(largest <= bound, "L_ind below the derived bound");
-  Check(total[99] > total[0] * 1.2, "bounces add light");
+  // The default SOLID_ANGLE gathers only the solid angle the taps see
+  // within r, so each bounce adds less than eq. 4's division by M did (its
+  // bound was x 1.2): measured x 1.074 (alpha 0) and x 1.048 (alpha 0.85).
+  Check(total[99] > total[0] * 1.03, "bounces add light");
   Check(layer1[99] > layer1[0] * 1.05, "layer-1 pixels gain light from the bounces");
   if (alpha == 0.0)
   {

@@ -8,7 +8,8 @@
 //   the luminance of E (after the filter) of SOLID_ANGLE is below half that
 //   of ACCEPTED_TAPS, and ALL_TAPS's too (measured: 0.54 for eq. 4, 0.15
 //   ALL_TAPS, 0.12 SOLID_ANGLE; the reference's mean standard error 0.047);
-// - an estimator outside the enum is clamped; GetEstimatorAsString names it.
+// - the default is SOLID_ANGLE; an estimator outside the enum is clamped;
+//   GetEstimatorAsString names it.
 
 #include "DeepRadiosityReferenceTest.h"
 
@@ -31,7 +32,7 @@ int TestDeepRadiosityEstimator(int argc, char* argv[])
   vtkNew<vtkDeepRadiosityPass> pass;
   pass->SetDamping(0.0);
   pass->SetTemporalAlpha(0.0);
-  Check(pass->GetEstimator() == vtkDeepRadiosityPass::ACCEPTED_TAPS, "default: eq. 4");
+  Check(pass->GetEstimator() == vtkDeepRadiosityPass::SOLID_ANGLE, "default: SOLID_ANGLE");
   renderer->SetPass(pass);
 
   vtkSmartPointer<vtkImageData> captures[3];
@@ -91,8 +92,10 @@ int TestDeepRadiosityEstimator(int argc, char* argv[])
   Check(rmse[0] > 0 && rmse[2] < 0.5 * rmse[0], "SOLID_ANGLE RMSE < half of eq. 4's");
   Check(rmse[0] > 0 && rmse[1] < 0.5 * rmse[0], "ALL_TAPS RMSE < half of eq. 4's");
 
+  pass->SetEstimator(-3);
+  Check(pass->GetEstimator() == vtkDeepRadiosityPass::ACCEPTED_TAPS, "estimator clamped up");
   pass->SetEstimator(7);
-  Check(pass->GetEstimator() == vtkDeepRadiosityPass::SOLID_ANGLE, "estimator clamped");
+  Check(pass->GetEstimator() == vtkDeepRadiosityPass::SOLID_ANGLE, "estimator clamped down");
   Check(std::string(vtkDeepRadiosityPass::GetEstimatorAsString(vtkDeepRadiosityPass::ALL_TAPS)) ==
       "ALL_TAPS",
     "estimator name");

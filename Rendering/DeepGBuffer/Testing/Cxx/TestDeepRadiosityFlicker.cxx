@@ -29,9 +29,17 @@ namespace
 constexpr int PathFrames = 240;
 constexpr int FirstMeasuredFrame = 8;
 constexpr int LastFrame = 19;
-// Measured (llvmpipe, 224188 pixel pairs): 0.033 with the filter, 0.088
-// without it (2.65 x).
-constexpr double FlickerBound = 0.05;
+// Measured (llvmpipe, 224188 pixel pairs) with the default estimator
+// SOLID_ANGLE: 0.059 with the filter, 0.148 without it (2.50 x); mean
+// |change| 0.00138 over a mean indirect luminance of 0.0233. With eq. 4
+// (ACCEPTED_TAPS, the default before) it was 0.033 and 0.088 under a bound
+// of 0.05: SOLID_ANGLE's E is about 5x darker on this scene (the radiosity
+// demo image: mean L_ind 0.108 -> 0.021), so the relative measure divides
+// by a much smaller mean, and the absolute change fell by less than that
+// (about 3x, inferred from the two ratios). The bound is raised to 0.075
+// for that reason (27 % above the measurement); the filter's gain, the
+// test's main claim, keeps its bound.
+constexpr double FlickerBound = 0.075;
 constexpr double MinimumGain = 2.0;
 
 double Luminance(vtkDataArray* a, vtkIdType i)
