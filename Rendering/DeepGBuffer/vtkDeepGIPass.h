@@ -73,10 +73,12 @@
  * (section 3.3), so a single frame shows one bounce. Converge(renderer, n)
  * renders n frames at a fixed camera and fires vtkCommand::ProgressEvent
  * (call data: double progress in [0, 1]) after each. On the demo scene
- * (320 x 240) the mean distance to the converged image falls below 1/255
- * after 18 (HIGH_PERFORMANCE), 16 (BALANCED) and 19 (HIGH_QUALITY) frames;
- * the per-frame change then stays at a floor of 0.15-0.25/255 (the
- * rotating taps of the temporal filter). See Documentation/gi.md.
+ * (320 x 240) the mean distance to the converged image is 0.6-0.7/255
+ * after the first frame and 0.1-0.15/255 after 20 with the radiosity's
+ * default estimator (with the paper's eq. 4 it stays above 1/255 for 16
+ * frames); the per-frame change then stays at a floor of 0.05-0.07/255
+ * (the rotating taps of the temporal filter). See Documentation/gi.md and
+ * Examples/Python/deepgi_convergence.py.
  *
  * Bad input: a non-positive frame count, a renderer that does not use this
  * pass, or a probe interval below 1 give a warning and no crash. When the
