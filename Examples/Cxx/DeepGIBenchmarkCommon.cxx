@@ -26,6 +26,35 @@
 
 namespace DeepGIBenchmark
 {
+//------------------------------------------------------------------------------
+bool ParseSharedOption(const std::string& arg, const std::string& value, std::string& data,
+  int& backend, std::string& output, std::string& error)
+{
+  if (arg == "--data")
+  {
+    data = value;
+  }
+  else if (arg == "--backend")
+  {
+    backend = vtkDeepGIRenderWindowFactory::GetBackendFromString(value.c_str());
+    if (backend < 0)
+    {
+      error = "unknown backend '" + value + "' (auto, x11, egl)";
+      return false;
+    }
+  }
+  else if (arg == "--output")
+  {
+    if (value.empty())
+    {
+      error = "--output needs a directory";
+      return false;
+    }
+    output = value;
+  }
+  return true;
+}
+
 std::vector<std::string> Split(const std::string& s, char sep)
 {
   std::vector<std::string> parts;

@@ -251,25 +251,10 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     {
       methods = value;
     }
-    if (arg == "--data")
+    std::string error;
+    if (!ParseSharedOption(arg, value, o.Data, o.Backend, o.Output, error))
     {
-      o.Data = value;
-    }
-    if (arg == "--backend")
-    {
-      o.Backend = vtkDeepGIRenderWindowFactory::GetBackendFromString(value.c_str());
-      if (o.Backend < 0)
-      {
-        return bad("unknown backend '" + value + "' (auto, x11, egl)");
-      }
-    }
-    if (arg == "--output")
-    {
-      if (value.empty())
-      {
-        return bad("--output needs a directory");
-      }
-      o.Output = value;
+      return bad(error);
     }
   }
   o.Methods = Split(methods, ',');
