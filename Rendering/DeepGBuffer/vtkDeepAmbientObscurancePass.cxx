@@ -65,8 +65,10 @@ struct vtkDeepAmbientObscuranceRendererState
 {
   vtkWeakPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkTextureObject> Targets[NUMBER_OF_TARGETS];
-  int Width = 0;
+  int Width = 0;  // of the G-buffer's layers (frame and guard band)
   int Height = 0;
+  int GuardBand = 0;
+  int ShadedRegion[4] = { 0, 0, 0, 0 }; // vtkDeepScreenSpace::ShadedRegion
   bool HasFrame = false;
   double Radius = 0.0;
   int NumberOfSamples = 0;
@@ -206,6 +208,7 @@ void vtkDeepAmbientObscurancePass::PrintSelf(ostream& os, vtkIndent indent)
      << " (spiral turns " << GetSpiralTurns(this->NumberOfSamples) << ")\n";
   os << indent << "UseSecondLayer: " << (this->UseSecondLayer ? "On" : "Off") << "\n";
   os << indent << "BlurRadius: " << this->BlurRadius << "\n";
+  os << indent << "GuardBandShadedFraction: " << this->GuardBandShadedFraction << "\n";
   os << indent << "BlurPlaneTolerance: " << this->BlurPlaneTolerance << "\n";
   os << indent << "BlurNormalPower: " << this->BlurNormalPower << "\n";
   os << indent << "Composition: " << GetCompositionAsString(this->Composition) << "\n";
@@ -420,6 +423,7 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
     program->SetUniformi("deepMode", useAmbient ? 1 : 0);
     program->SetUniformi("deepRadiance", useAmbient ? radianceUnit : distanceUnit);
     program->SetUniformi("deepAmbient", useAmbient ? ambientUnit : distanceUnit);
+    program->SetUniformi("deepGuardBand", state.GuardBand);
     in.CompositeQuad->Render();
     visibility->Deactivate();
     if (ambientUnit >= 0)
@@ -454,8 +458,11 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
     return false;
   }
   int size[2] = { 0, 0 };
-  s->GetWindowSize(size);
+  int guardBand = 0;
+  gbuffer->GetLayerExtent(renderer, size, guardBand);
   const int width = size[0], height = size[1];
+  int region[4];
+  vtkDeepScreenSpace::ShadedRegion(size, guardBand, this->GuardBandShadedFraction, region);
 
   // Effective radius.
   double radius = this->Radius;
@@ -478,11 +485,13 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
   }
   vtkDeepAmbientObscuranceRendererState& state = *slot;
   state.HasFrame = false;
-  // Temporal history: reset when off, on a resize, and when this renderer
-  // was rendered without this pass since the history's frame.
+  // Temporal history: reset when off, on a resize or a new shaded region,
+  // and when this renderer was rendered without this pass since the
+  // history's frame.
   const bool consecutive = state.Renders.Consecutive();
   const bool temporal = this->TemporalAlpha > 0.0 && layers > 0;
-  if (!temporal || !consecutive || state.Width != width || state.Height != height)
+  if (!temporal || !consecutive || state.Width != width || state.Height != height ||
+    !std::equal(region, region + 4, state.ShadedRegion))
   {
     state.ResetHistory(window);
   }
@@ -505,6 +514,8 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
   }
   state.Width = width;
   state.Height = height;
+  state.GuardBand = guardBand;
+  std::copy(region, region + 4, state.ShadedRegion);
   if (!in.Framebuffer)
   {
     in.Framebuffer = vtkOpenGLFramebufferObject::New();
@@ -531,7 +542,8 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
 
   {
     vtkOpenGLState::ScopedglViewport savedViewport(ostate);
-    vtkOpenGLState::ScopedglEnableDisable savedScissor(ostate, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglEnableDisable savedScissorTest(ostate, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglScissor savedScissor(ostate);
     vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
     vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
     ostate->vtkglDisable(GL_SCISSOR_TEST);
@@ -541,6 +553,10 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
     const int mipUnit = this->BuildDistancePyramid(state, window, distanceUnit, std::max(1, layers));
     in.Framebuffer->Bind();
     ostate->vtkglViewport(0, 0, width, height);
+    // AV is computed for the frame and GuardBandShadedFraction of the guard
+    // band; its taps read the whole layers.
+    ostate->vtkglEnable(GL_SCISSOR_TEST);
+    ostate->vtkglScissor(region[0], region[1], region[2] - region[0], region[3] - region[1]);
 
     // Equations 1-2 into RAW.
     in.Framebuffer->AddColorAttachment(0, state.Targets[RAW]);
@@ -579,6 +595,7 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
       in.Framebuffer->AddColorAttachment(0, state.Targets[pass[1]]);
       in.Framebuffer->ActivateDrawBuffers(1);
       window->GetShaderCache()->ReadyShaderProgram(program);
+      vtkDeepScreenSpace::SetShadedRegionUniforms(program, region);
       vtkTextureObject* input = state.Targets[pass[0]];
       input->Activate();
       program->SetUniformi("deepInput", input->GetTextureUnit());
@@ -610,6 +627,7 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
         in.Framebuffer->ActivateDrawBuffers(1);
         program = in.TemporalQuad->Program;
         window->GetShaderCache()->ReadyShaderProgram(program);
+        vtkDeepScreenSpace::SetShadedRegionUniforms(program, region);
         vtkTextureObject* input = state.Targets[FILTERED];
         vtkTextureObject* history = state.History[state.HistoryCurrent];
         input->Activate();
@@ -932,6 +950,7 @@ bool vtkDeepAmbientObscurancePass::CaptureAmbientVisibility(
   output->GetPointData()->AddArray(av);
   output->GetPointData()->AddArray(rawAV);
   output->GetPointData()->AddArray(valid);
+  vtkDeepScreenSpace::CropGuardBand(output, state->GuardBand);
   vtkNew<vtkDoubleArray> radius;
   radius->SetName("Radius");
   radius->InsertNextValue(state->Radius);

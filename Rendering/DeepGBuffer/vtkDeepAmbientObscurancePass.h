@@ -242,6 +242,22 @@ public:
 
   ///@{
   /**
+   * Fraction of the G-buffer's guard band (vtkDeepGBufferPass::SetGuardBand,
+   * 0 by default: then this has no effect) for which AV is computed, 0 to 1,
+   * default 0.5. The taps always read the whole guard band (occluders just
+   * off-screen); the shaded part lets the filter and the temporal history
+   * work across the frame's edges. NaN is ignored and values outside
+   * [0, 1] are clamped, with a warning. A change resets the history.
+   */
+  void SetGuardBandShadedFraction(double fraction)
+  {
+    this->SetFraction("GuardBandShadedFraction", fraction, this->GuardBandShadedFraction);
+  }
+  vtkGetMacro(GuardBandShadedFraction, double);
+  ///@}
+
+  ///@{
+  /**
    * Depth MIP pyramid (see the class description): q, the screen radius in
    * pixels at which taps start reading coarser levels (default 8, SAO's
    * 2^LOG_MAX_OFFSET; clamped to [1, 65536]), and the coarsest level L
@@ -268,7 +284,8 @@ public:
   /**
    * Copies level `level` of the distance pyramid of the last frame rendered
    * for `renderer` (the first renderer if null) into `output`, an image of
-   * that level's size (max(1, width >> level) x max(1, height >> level)):
+   * that level's size (max(1, width >> level) x max(1, height >> level), of
+   * the G-buffer's layers: the frame and its guard band):
    * float point-data arrays "Distance_j" per layer j (0 = empty). Field
    * data "NumberOfMipLevels" (levels built, L + 1). Level 0 is available
    * even when MaximumMipLevel is 0. The context must be current. Returns
@@ -401,6 +418,7 @@ protected:
   int NumberOfSamples = 16;
   bool UseSecondLayer = true;
   int BlurRadius = 4;
+  double GuardBandShadedFraction = 0.5;
   double BlurPlaneTolerance = 0.02;
   double BlurNormalPower = 8.0;
   int Composition = COMPOSITE_AUTOMATIC;

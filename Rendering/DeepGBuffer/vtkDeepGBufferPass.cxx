@@ -49,6 +49,7 @@
 #include "vtkDeepGBufferCommon.h"
 #include "vtkDeepGBufferGS.h"
 #include "vtkDeepGBufferResolveFS.h"
+#include "vtkDeepScreenSpaceHelpers.h"
 
 #include <algorithm>
 #include <array>
@@ -135,6 +136,28 @@ std::array<float, 16> ToColumnMajor(const Matrix& a)
   return f;
 }
 
+// The projection of the layers: the camera's projection P with clip x and y
+// scaled by frame / (frame + 2 guard) per axis, i.e. the frustum widened so
+// that the frame's pixels keep their size and position and the guard band
+// surrounds them (both perspective and parallel projections; depth is
+// unchanged).
+Matrix WithGuardBand(const Matrix& projection, const std::array<float, 2>& scale)
+{
+  Matrix p = projection;
+  for (int c = 0; c < 4; ++c)
+  {
+    p[c] *= scale[0];
+    p[4 + c] *= scale[1];
+  }
+  return p;
+}
+
+// The inverse of WithGuardBand: the projection of the frame alone.
+Matrix WithoutGuardBand(const Matrix& projection, const std::array<float, 2>& scale)
+{
+  return WithGuardBand(projection, { { 1.0f / scale[0], 1.0f / scale[1] } });
+}
+
 // (P22, P23, P32, P33): what deepDistanceFromClip needs of a projection.
 std::array<float, 4> ProjectionDepthRows(const Matrix& projection)
 {
@@ -178,8 +201,9 @@ struct vtkDeepGBufferRendererState
 {
   vtkWeakPointer<vtkRenderer> Renderer;
 
-  int Width = 0;
+  int Width = 0;  // of the layers: the frame plus the guard band on both sides
   int Height = 0;
+  int GuardBand = 0; // pixels added on each side of the frame (last frame)
   int Slots = 0;        // array layers: k, plus one oracle layer for PREDICT/DELAY
   int HistoryLayers = 0; // max(1, k - 1)
   GLuint Textures[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES] = { 0, 0, 0, 0, 0, 0 };
@@ -197,8 +221,11 @@ struct vtkDeepGBufferRendererState
   Matrix View = Identity(), Projection = Identity();
   Matrix PreviousView = Identity(), PreviousProjection = Identity();
   // The camera the displayed layers were rasterised with: the current one,
-  // or the previous one for DELAY.
+  // or the previous one for DELAY. LayerProjection covers the layers (frame
+  // and guard band); LayerFrameProjection is the camera's own, which covers
+  // the frame.
   Matrix LayerView = Identity(), LayerProjection = Identity();
+  Matrix LayerFrameProjection = Identity();
 
   struct PropHistory
   {
@@ -270,6 +297,7 @@ public:
   std::array<float, 4> ProjectionZ{}, OtherProjectionZ{};
   std::array<float, 16> InverseProjection{};
   std::array<float, 2> ViewportSize{};
+  std::array<float, 2> GuardBandScale{ { 1.0f, 1.0f } };
   Matrix OtherView = Identity(), OtherProjection = Identity();
   Matrix OtherWorldToClip = Identity(); // P_o V_o
   bool OtherUsesPreviousFrame = false;
@@ -351,6 +379,8 @@ void vtkDeepGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AutomaticSeparationFraction: " << this->AutomaticSeparationFraction << "\n";
   os << indent << "DeepLayerBackfaceCulling: " << this->DeepLayerBackfaceCulling << "\n";
   os << indent << "WriteReflectivity: " << this->WriteReflectivity << "\n";
+  os << indent << "GuardBand: " << this->GuardBand << "\n";
+  os << indent << "EffectiveGuardBand: " << this->EffectiveGuardBand << " pixels\n";
   os << indent << "EffectiveMinimumSeparation: " << this->EffectiveMinimumSeparation << "\n";
   os << indent << "EffectiveNumberOfLayers: " << this->EffectiveNumberOfLayers << "\n";
   os << indent << "EffectiveOracle: " << GetOracleAsString(this->EffectiveOracle) << "\n";
@@ -430,6 +460,27 @@ void vtkDeepGBufferPass::SetMinimumSeparation(double dz)
   {
     this->MinimumSeparation = dz;
     this->AutomaticMinimumSeparation = false;
+    this->Modified();
+  }
+}
+
+void vtkDeepGBufferPass::SetGuardBand(double fraction)
+{
+  if (std::isnan(fraction))
+  {
+    vtkWarningMacro("GuardBand must be a number (got NaN); keeping " << this->GuardBand << ".");
+    return;
+  }
+  if (fraction < 0.0 || fraction > MAXIMUM_GUARD_BAND)
+  {
+    const double clamped = std::min(std::max(fraction, 0.0), MAXIMUM_GUARD_BAND);
+    vtkWarningMacro("GuardBand must be within [0, " << MAXIMUM_GUARD_BAND << "] (got " << fraction
+                                                     << "); using " << clamped << ".");
+    fraction = clamped;
+  }
+  if (fraction != this->GuardBand)
+  {
+    this->GuardBand = fraction;
     this->Modified();
   }
 }
@@ -527,17 +578,32 @@ bool vtkDeepGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
 
   // Vertex shader: the position of this vertex in the other frame's clip
   // space (previous frame for REPROJECT/DELAY, predicted next frame for PREDICT).
+  // The guard band (SetGuardBand) widens the frustum: clip x and y are
+  // scaled by deepGuardBandScale where clip positions are made, in the vertex
+  // shader, or, for mappers whose geometry shader projects view-space
+  // positions itself (VCDCMatrix: spheres, sticks, point Gaussians), at each
+  // vertex that geometry shader emits.
+  const bool geometryShaderProjects = geometryShader.find("VCDCMatrix") != std::string::npos;
   vtkShaderProgram::Substitute(vertexShader, "//VTK::Camera::Dec",
     "//VTK::Camera::Dec\n"
     "uniform mat4 deepOtherMCDC;\n"
     "uniform int deepVertexUsesOtherClip;\n"
+    "uniform vec2 deepGuardBandScale;\n"
     "out vec4 deepOtherClipVSOutput;\n",
     false);
   vtkShaderProgram::Substitute(vertexShader, "//VTK::PositionVC::Impl",
-    "//VTK::PositionVC::Impl\n"
-    "  deepOtherClipVSOutput = deepOtherMCDC * vertexMC;\n"
-    "  if (deepVertexUsesOtherClip != 0) { gl_Position = deepOtherClipVSOutput; }\n",
+    std::string("//VTK::PositionVC::Impl\n") +
+      (geometryShaderProjects ? "" : "  gl_Position.xy *= deepGuardBandScale;\n") +
+      "  deepOtherClipVSOutput = deepOtherMCDC * vertexMC;\n"
+      "  if (deepVertexUsesOtherClip != 0) { gl_Position = deepOtherClipVSOutput; }\n",
     false);
+  if (geometryShaderProjects)
+  {
+    vtkShaderProgram::Substitute(
+      geometryShader, "void main()", "uniform vec2 deepGuardBandScale;\nvoid main()", false);
+    vtkShaderProgram::Substitute(geometryShader, "EmitVertex();",
+      "gl_Position.xy *= deepGuardBandScale;\n  EmitVertex();", true);
+  }
 
   if (routed)
   {
@@ -716,8 +782,15 @@ bool vtkDeepGBufferPass::SetShaderParameters(vtkShaderProgram* program,
   vtkAbstractMapper* mapper, vtkProp* prop, vtkOpenGLVertexArrayObject* vtkNotUsed(VAO))
 {
   vtkInternals& in = *this->Internals;
-  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) || !in.Current ||
-    !program->IsUniformUsed("deepOtherMCDC"))
+  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) || !in.Current)
+  {
+    return true;
+  }
+  if (program->IsUniformUsed("deepGuardBandScale"))
+  {
+    program->SetUniform2f("deepGuardBandScale", in.GuardBandScale.data());
+  }
+  if (!program->IsUniformUsed("deepOtherMCDC"))
   {
     return true;
   }
@@ -1058,11 +1131,28 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
 
   int size[2] = { 0, 0 };
   s->GetWindowSize(size);
-  const int width = size[0], height = size[1];
-  if (width < 1 || height < 1)
+  const int frameWidth = size[0], frameHeight = size[1];
+  if (frameWidth < 1 || frameHeight < 1)
   {
     return false;
   }
+  // The layers: the frame and the guard band around it (paper section 3.5).
+  GLint maximumTextureSize = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maximumTextureSize);
+  int guard = static_cast<int>(std::lround(this->GuardBand * frameHeight));
+  const int guardLimit =
+    std::max(0, (static_cast<int>(maximumTextureSize) - std::max(frameWidth, frameHeight)) / 2);
+  if (guard > guardLimit)
+  {
+    in.WarnOnce(this, 4,
+      "A guard band of " + std::to_string(guard) + " pixels exceeds this GPU's texture size " +
+        std::to_string(maximumTextureSize) + "; it is limited to " + std::to_string(guardLimit) +
+        " pixels.");
+    guard = guardLimit;
+  }
+  const int width = frameWidth + 2 * guard, height = frameHeight + 2 * guard;
+  in.GuardBandScale = { static_cast<float>(static_cast<double>(frameWidth) / width),
+    static_cast<float>(static_cast<double>(frameHeight) / height) };
 
   // VTK's shadow maps for this frame's lights and props, baked before the
   // layers read them. The baker renders from the light cameras into its own
@@ -1167,7 +1257,10 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
   state.PreviousView = state.View;
   state.PreviousProjection = state.Projection;
   state.View = ToArray(camera->GetModelViewTransformMatrix());
-  state.Projection = ToArray(camera->GetProjectionTransformMatrix(aspect, -1, 1));
+  const Matrix frameProjection = ToArray(camera->GetProjectionTransformMatrix(aspect, -1, 1));
+  // VTK's vertex shaders see the camera's projection; the layers' vertex
+  // stage scales clip x and y by the same GuardBandScale (deepGuardBandScale).
+  state.Projection = WithGuardBand(frameProjection, in.GuardBandScale);
   const bool hadPreviousCamera = state.HasPreviousCamera;
   state.HasPreviousCamera = true;
   camera->GetClippingRange(state.ClippingRange);
@@ -1382,6 +1475,9 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
   state.RenderedLayers = layers;
   state.LayerView = oracle == DELAY ? in.OtherView : state.View;
   state.LayerProjection = oracle == DELAY ? in.OtherProjection : state.Projection;
+  state.LayerFrameProjection = WithoutGuardBand(state.LayerProjection, in.GuardBandScale);
+  state.GuardBand = guard;
+  this->EffectiveGuardBand = guard;
   state.MinimumSeparation = dz;
   state.Oracle = routedDone ? oracle : DEPTH_PEEL;
   this->EffectiveMinimumSeparation = dz;
@@ -1444,6 +1540,7 @@ void vtkDeepGBufferPass::ResolveToFramebuffer(const vtkRenderState* s)
   float range[2] = { static_cast<float>(state.ClippingRange[0]),
     static_cast<float>(state.ClippingRange[1]) };
   program->SetUniform2f("deepDistanceRange", range);
+  program->SetUniformi("deepGuardBand", state.GuardBand);
 
   vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
@@ -1577,6 +1674,20 @@ vtkDeepGBufferRendererState* FindState(
   auto it = states.find(renderer ? renderer : first);
   return (it == states.end() || !it->second->LayeredFramebuffer) ? nullptr : it->second.get();
 }
+}
+
+bool vtkDeepGBufferPass::GetLayerExtent(vtkRenderer* renderer, int size[2], int& guardBand)
+{
+  vtkDeepGBufferRendererState* state =
+    FindState(this->Internals->States, renderer, this->Internals->FirstRenderer);
+  if (!state)
+  {
+    return false;
+  }
+  size[0] = state->Width;
+  size[1] = state->Height;
+  guardBand = state->GuardBand;
+  return true;
 }
 
 int vtkDeepGBufferPass::GetLayerCamera(
@@ -1767,6 +1878,7 @@ bool vtkDeepGBufferPass::CaptureLayers(vtkImageData* output, vtkRenderer* render
       pd->AddArray(refl);
     }
   }
+  vtkDeepScreenSpace::CropGuardBand(output, state->GuardBand);
   vtkNew<vtkDoubleArray> separation;
   separation->SetName("MinimumSeparation");
   separation->InsertNextValue(state->MinimumSeparation);
@@ -1782,9 +1894,10 @@ bool vtkDeepGBufferPass::CaptureLayers(vtkImageData* output, vtkRenderer* render
   // The camera of the frame, so that positions can be reconstructed in world
   // space: view (world to camera) and projection (camera to clip, z in
   // [-1, 1]) matrices, row-major as vtkMatrix4x4 stores them. Pixel (i, j)
-  // has its centre at NDC ((i + 0.5) / width * 2 - 1, (j + 0.5) / height * 2 - 1).
+  // of the frame has its centre at NDC ((i + 0.5) / width * 2 - 1,
+  // (j + 0.5) / height * 2 - 1) of the frame's own projection.
   for (auto matrix : { std::make_pair("ViewMatrix", &state->LayerView),
-         std::make_pair("ProjectionMatrix", &state->LayerProjection) })
+         std::make_pair("ProjectionMatrix", &state->LayerFrameProjection) })
   {
     vtkNew<vtkDoubleArray> values;
     values->SetName(matrix.first);

@@ -32,8 +32,9 @@
  * opaque prop appears in every layer. The first frame, and any frame after a
  * resize or a change of layer count, has no history and uses DEPTH_PEEL.
  *
- * Textures, each a GL_TEXTURE_2D_ARRAY of the renderer's viewport size
- * (layers 0..k-1, plus one oracle layer for PREDICT and DELAY):
+ * Textures, each a GL_TEXTURE_2D_ARRAY of the renderer's viewport size plus
+ * the guard band (SetGuardBand) on every side (layers 0..k-1, plus one
+ * oracle layer for PREDICT and DELAY):
  * | quantity  | format            | bytes/px | content                               |
  * |-----------|-------------------|----------|---------------------------------------|
  * | RADIANCE  | RGBA16F           | 8        | direct radiance under VTK's lights    |
@@ -99,6 +100,9 @@ public:
 
   /// The largest layer count this class supports (the GPU may allow fewer).
   static constexpr int MAXIMUM_NUMBER_OF_LAYERS = 8;
+
+  /// The largest guard band, as a fraction of the viewport's height per side.
+  static constexpr double MAXIMUM_GUARD_BAND = 0.5;
 
   ///@{
   /**
@@ -188,6 +192,31 @@ public:
   vtkGetMacro(WriteReflectivity, bool);
   vtkBooleanMacro(WriteReflectivity, bool);
   ///@}
+
+  ///@{
+  /**
+   * Guard band (paper section 3.5): the layers extend beyond the frame by
+   * round(GuardBand x viewport height) pixels on each side, rasterised with
+   * the camera's frustum widened to match (clip x and y scaled by
+   * frame / (frame + 2 x band)), so the frame's pixels are exactly those of
+   * the camera and the band holds what lies just outside the view. The
+   * screen-space passes gather from the band (light and occluders just
+   * off-screen) and keep history there, so results near the frame's edges
+   * are stable under camera motion. The layers cost (1 + 2 b a)(1 + 2 b)
+   * times the frame's pixels (b the fraction, a the height/width ratio);
+   * 0.1 at 16:9 is 1.34x. Default 0 (the layers are the frame); the
+   * G-buffers that vtkDeepRadiosityPass and vtkDeepGIPass create use 0.1.
+   * 0 to MAXIMUM_GUARD_BAND: values outside are clamped and NaN ignored,
+   * with a warning; the band is also limited to what the GPU's largest
+   * texture allows (a warning says so). The resolved image, the depth buffer
+   * and CaptureLayers are the frame's.
+   */
+  void SetGuardBand(double fraction);
+  vtkGetMacro(GuardBand, double);
+  ///@}
+
+  /// The guard band of the last rendered frame, in pixels on each side.
+  vtkGetMacro(EffectiveGuardBand, int);
 
   /// The dz used by the last rendered frame (world units).
   vtkGetMacro(EffectiveMinimumSeparation, double);
@@ -289,6 +318,16 @@ public:
   int GetLayerCamera(vtkRenderer* renderer, double view[16], double projection[16]);
 
   /**
+   * The size in texels of the layers of the last frame rendered for
+   * `renderer` (the frame plus the guard band on both sides) and the guard
+   * band in pixels per side; the frame's pixel (x, y) is texel
+   * (x + guardBand, y + guardBand), and GetLayerCamera's projection maps the
+   * layers' texels to NDC. False (arguments untouched) if no G-buffer has
+   * been rendered for `renderer`.
+   */
+  bool GetLayerExtent(vtkRenderer* renderer, int size[2], int& guardBand);
+
+  /**
    * Information key for a prop's PropertyKeys (vtkProp::SetPropertyKeys):
    * 1 marks VTK's ambient term of the prop (Ambient x AmbientColor) as light
    * the surface emits, e.g. a lamp drawn with Ambient 1, AmbientColor the
@@ -366,12 +405,14 @@ protected:
   double AutomaticSeparationFraction = 0.015;
   bool DeepLayerBackfaceCulling = true;
   bool WriteReflectivity = false;
+  double GuardBand = 0.0;
   int DisplayQuantity = RADIANCE;
   int DisplayLayer = 0;
 
   double EffectiveMinimumSeparation = 0.0;
   int EffectiveNumberOfLayers = 0;
   int EffectiveOracle = DEPTH_PEEL;
+  int EffectiveGuardBand = 0;
   int LastGeometryPassCount = 0;
 
   vtkRenderPass* TranslucentPass = nullptr;

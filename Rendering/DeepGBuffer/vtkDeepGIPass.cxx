@@ -256,6 +256,7 @@ vtkDeepGIPass::vtkDeepGIPass()
   : Internals(new vtkInternals)
 {
   this->GBufferPass = vtkDeepGBufferPass::New();
+  this->GBufferPass->SetGuardBand(vtkDeepRadiosityPass::DEFAULT_GUARD_BAND);
   this->AmbientObscurancePass = vtkDeepAmbientObscurancePass::New();
   this->RadiosityPass = vtkDeepRadiosityPass::New();
   this->ReflectionPass = vtkDeepReflectionPass::New();
@@ -555,6 +556,9 @@ void vtkDeepGIPass::RenderOpaque(const vtkRenderState* s)
   gbuffer->ResolveToFramebuffer(s);
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   vtkOpenGLState* ostate = window->GetState();
+  int layerSize[2] = { 0, 0 };
+  int guardBand = 0;
+  gbuffer->GetLayerExtent(renderer, layerSize, guardBand);
 
   // Layer-1 coverage query (read in a later frame by Render).
   vtkDeepGIRendererState* state = in.Current;
@@ -580,6 +584,7 @@ void vtkDeepGIPass::RenderOpaque(const vtkRenderState* s)
     ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     const int distanceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
     in.CoverageQuad->Program->SetUniformi("deepDistance", distanceUnit);
+    in.CoverageQuad->Program->SetUniformi("deepGuardBand", guardBand);
     glBeginQuery(GL_SAMPLES_PASSED, state->Query);
     in.CoverageQuad->Render();
     glEndQuery(GL_SAMPLES_PASSED);
@@ -650,6 +655,7 @@ void vtkDeepGIPass::RenderOpaque(const vtkRenderState* s)
     vtkShaderProgram* program = quad->Program;
     program->SetUniformi("deepDistance", distanceUnit);
     program->SetUniformi("deepRadiance", radianceUnit);
+    program->SetUniformi("deepGuardBand", guardBand);
     if (composited & AMBIENT_OBSCURANCE)
     {
       program->SetUniformi("deepAmbient", ambientUnit);

@@ -101,8 +101,10 @@ struct vtkDeepRadiosityRendererState
   double PreviousProjection[16];
   vtkDeepScreenSpace::RenderCounter Renders;
   unsigned int FrameIndex = 0; // frames since the history was reset
-  int Width = 0;
+  int Width = 0;  // of the G-buffer's layers (frame and guard band)
   int Height = 0;
+  int GuardBand = 0;
+  int ShadedRegion[4] = { 0, 0, 0, 0 }; // vtkDeepScreenSpace::ShadedRegion
   int LayerCount = 0;
   bool HasFrame = false;
   double Radius = 0.0;
@@ -175,6 +177,9 @@ public:
 vtkDeepRadiosityPass::vtkDeepRadiosityPass()
   : Internals(new vtkInternals)
 {
+  // Indirect light reaches into the frame from surfaces just outside it
+  // (paper section 3.5): the G-buffer this pass creates has a guard band.
+  this->GBufferPass->SetGuardBand(DEFAULT_GUARD_BAND);
 }
 
 //------------------------------------------------------------------------------
@@ -211,6 +216,7 @@ void vtkDeepRadiosityPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Estimator: " << GetEstimatorAsString(this->Estimator) << "\n";
   os << indent << "UseColorBoost: " << (this->UseColorBoost ? "On" : "Off") << "\n";
   os << indent << "FilterTaps: " << this->FilterTaps << "\n";
+  os << indent << "GuardBandShadedFraction: " << this->GuardBandShadedFraction << "\n";
   os << indent << "BlurPlaneTolerance: " << this->BlurPlaneTolerance << "\n";
   os << indent << "BlurNormalPower: " << this->BlurNormalPower << "\n";
   os << indent << "MipThreshold: " << this->MipThreshold << "\n";
@@ -340,16 +346,17 @@ void vtkDeepRadiosityPass::SetEnvironmentIrradiance(double r, double g, double b
 //------------------------------------------------------------------------------
 void vtkDeepRadiosityPass::SetPreset(int preset)
 {
-  // Table 2 of the paper (the guard-band column has no counterpart here).
+  // Table 2 of the paper.
   struct Settings
   {
     int Samples;
     int FilterTaps;
     bool NormalTest;
     int MinimumMipLevel;
+    double GuardBandShaded;
   };
-  static const Settings presets[] = { { 13, 9, false, 3 }, { 14, 11, true, 2 },
-    { 30, 13, true, 0 } };
+  static const Settings presets[] = { { 13, 9, false, 3, 0.1 }, { 14, 11, true, 2, 0.5 },
+    { 30, 13, true, 0, 0.8 } };
   if (preset < HIGH_PERFORMANCE || preset > HIGH_QUALITY)
   {
     vtkWarningMacro("Unknown preset " << preset << "; the settings are unchanged.");
@@ -360,6 +367,7 @@ void vtkDeepRadiosityPass::SetPreset(int preset)
   this->FilterTaps = p.FilterTaps;
   this->UseNormalTest = p.NormalTest;
   this->MinimumMipLevel = p.MinimumMipLevel;
+  this->GuardBandShadedFraction = p.GuardBandShaded;
   this->Modified();
 }
 
@@ -433,6 +441,7 @@ void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
   program->SetUniformi("deepIndirect", indirect->GetTextureUnit());
   program->SetUniformi("deepDistance", distanceUnit);
   program->SetUniformi("deepRadiance", radianceUnit);
+  program->SetUniformi("deepGuardBand", state.GuardBand);
   in.CompositeQuad->Render();
   gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::RADIANCE);
   gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
@@ -459,8 +468,11 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
     return false;
   }
   int size[2] = { 0, 0 };
-  s->GetWindowSize(size);
+  int guardBand = 0;
+  gbuffer->GetLayerExtent(renderer, size, guardBand);
   const int width = size[0], height = size[1];
+  int region[4];
+  vtkDeepScreenSpace::ShadedRegion(size, guardBand, this->GuardBandShadedFraction, region);
 
   auto& slot = in.States[renderer];
   if (!slot)
@@ -513,10 +525,12 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
                     "is no direct light to bounce.");
   }
 
-  // History: reset on a resize, a new layer count, and when this renderer
-  // was rendered without this pass since the history's frame.
+  // History: reset on a resize, a new layer count or shaded region, and
+  // when this renderer was rendered without this pass since the history's
+  // frame.
   const bool consecutive = state.Renders.Consecutive();
-  if (!consecutive || state.Width != width || state.Height != height || state.LayerCount != layers)
+  if (!consecutive || state.Width != width || state.Height != height ||
+    state.LayerCount != layers || !std::equal(region, region + 4, state.ShadedRegion))
   {
     state.ResetHistory();
   }
@@ -551,6 +565,8 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
   }
   state.Width = width;
   state.Height = height;
+  state.GuardBand = guardBand;
+  std::copy(region, region + 4, state.ShadedRegion);
   state.LayerCount = layers;
   if (!in.Framebuffer)
   {
@@ -627,7 +643,8 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
 
   {
     vtkOpenGLState::ScopedglViewport savedViewport(ostate);
-    vtkOpenGLState::ScopedglEnableDisable savedScissor(ostate, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglEnableDisable savedScissorTest(ostate, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglScissor savedScissor(ostate);
     vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
     vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
     ostate->vtkglDisable(GL_SCISSOR_TEST);
@@ -637,10 +654,12 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
     in.Framebuffer->Bind();
     ostate->vtkglViewport(0, 0, width, height);
 
-    // 1. Bounce input B = direct + delta L_ind,t-1 (section 3.3).
+    // 1. Bounce input B = direct + delta L_ind,t-1 (section 3.3), over the
+    // whole layers: the guard band's surfaces are sources for the gather.
     attach(state.Targets[BOUNCE], nullptr);
     vtkShaderProgram* program = in.BounceQuad->Program;
     window->GetShaderCache()->ReadyShaderProgram(program);
+    vtkDeepScreenSpace::SetShadedRegionUniforms(program, region);
     program->SetUniformi("deepDistance", distanceUnit);
     program->SetUniformi("deepRadiance", units[vtkDeepGBufferPass::RADIANCE]);
     program->SetUniformi("deepAmbient", units[vtkDeepGBufferPass::AMBIENT]);
@@ -659,6 +678,11 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
     program->SetUniformi("deepHasLights", hasLights ? 1 : 0);
     in.BounceQuad->Render();
     unbindPair(state.History[previous]);
+
+    // Steps 2-4 shade the frame and GuardBandShadedFraction of the guard
+    // band (Table 2's last column).
+    ostate->vtkglEnable(GL_SCISSOR_TEST);
+    ostate->vtkglScissor(region[0], region[1], region[2] - region[0], region[3] - region[1]);
 
     // 2. Gather: eq. 4-5 into RAW (E, M / N).
     attach(state.Targets[RAW], nullptr);
@@ -691,6 +715,7 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
     {
       attach(state.Targets[pass[1]], nullptr);
       window->GetShaderCache()->ReadyShaderProgram(program);
+      vtkDeepScreenSpace::SetShadedRegionUniforms(program, region);
       bindPair(program, "deepInput", state.Targets[pass[0]]);
       program->SetUniformi("deepDistance", distanceUnit);
       program->SetUniformi("deepNormal", normalUnit);
@@ -711,6 +736,7 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
     attach(state.History[next], &state.Targets[INDIRECT]);
     program = in.TemporalQuad->Program;
     window->GetShaderCache()->ReadyShaderProgram(program);
+    vtkDeepScreenSpace::SetShadedRegionUniforms(program, region);
     bindPair(program, "deepInput", state.Targets[FILTERED]);
     bindPair(program, "deepHistory", state.History[previous]);
     program->SetUniformi("deepDistance", distanceUnit);
@@ -908,6 +934,7 @@ bool vtkDeepRadiosityPass::CaptureIrradiance(vtkImageData* output, vtkRenderer* 
   glBindTexture(GL_TEXTURE_2D, previous2D);
   glBindTexture(GL_TEXTURE_2D_ARRAY, previousArray);
   ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
+  vtkDeepScreenSpace::CropGuardBand(output, state->GuardBand);
 
   auto addField = [&](const char* name, std::initializer_list<double> values)
   {

@@ -30,7 +30,8 @@
  * UseNormalTest, w.n_Y < -epsilon (w = (Y - X) / |Y - X|, epsilon =
  * COSINE_EPSILON, see below); the tap takes the passing candidate with the
  * larger contribution |B (w.n_X)| and is rejected when none passes (also
- * when it falls outside the image). M counts the taps that were not
+ * when it falls outside the G-buffer's layers, which include its guard
+ * band: the G-buffer this pass creates has DEFAULT_GUARD_BAND). M counts the taps that were not
  * rejected; M = 0 gives E = 0. The confidence is M / N. SetEstimator
  * chooses eq. 4's division by M (ACCEPTED_TAPS) or an alternative
  * (ALL_TAPS: by N; SOLID_ANGLE, the default: each tap weighted by the solid
@@ -160,10 +161,14 @@ public:
   /// Table 2's parameter sets.
   enum Preset
   {
-    HIGH_PERFORMANCE = 0, ///< N 13, 9 filter taps, no n_Y test, minimum MIP level 3
-    BALANCED = 1,         ///< N 14, 11 filter taps, n_Y test, minimum MIP level 2 (defaults)
-    HIGH_QUALITY = 2      ///< N 30, 13 filter taps, n_Y test, minimum MIP level 0
+    HIGH_PERFORMANCE = 0, ///< N 13, 9 filter taps, no n_Y test, minimum MIP level 3, 10 % of the guard band shaded
+    BALANCED = 1,         ///< N 14, 11 filter taps, n_Y test, minimum MIP level 2, 50 % (defaults)
+    HIGH_QUALITY = 2      ///< N 30, 13 filter taps, n_Y test, minimum MIP level 0, 80 %
   };
+
+  /// The guard band (vtkDeepGBufferPass::SetGuardBand) of the G-buffer this
+  /// pass creates: 0.1 of the viewport's height on each side.
+  static constexpr double DEFAULT_GUARD_BAND = 0.1;
 
 
   ///@{
@@ -275,6 +280,24 @@ public:
 
   ///@{
   /**
+   * Fraction of the G-buffer's guard band (vtkDeepGBufferPass::SetGuardBand)
+   * for which indirect light is computed, 0 to 1 (Table 2's last column:
+   * 0.1, 0.5, 0.8). Default 0.5. The gather always reads the whole guard
+   * band (its direct light is an input); the shaded part also keeps its
+   * result, so the next frame's bounce and temporal filter find history for
+   * surfaces that move into the frame (section 3.5). Smaller is faster and
+   * less robust under camera motion. A change resets the history. NaN is
+   * ignored and values outside [0, 1] are clamped, with a warning.
+   */
+  void SetGuardBandShadedFraction(double fraction)
+  {
+    this->SetFraction("GuardBandShadedFraction", fraction, this->GuardBandShadedFraction);
+  }
+  vtkGetMacro(GuardBandShadedFraction, double);
+  ///@}
+
+  ///@{
+  /**
    * MIP levels of the taps: q, the screen radius in pixels beyond which
    * taps read coarser levels (default 8, clamped to [1, 65536]); Table 2's
    * minimum level (0 to 15, default 2) and the coarsest level (0 to 15,
@@ -371,10 +394,9 @@ public:
 
   ///@{
   /**
-   * Sets NumberOfSamples, FilterTaps, UseNormalTest and MinimumMipLevel to
-   * Table 2's values (see Preset) with one Modified(). The guard-band
-   * fraction of Table 2 is not applied (no guard band). An unknown preset
-   * is ignored with a warning.
+   * Sets NumberOfSamples, FilterTaps, UseNormalTest, MinimumMipLevel and
+   * GuardBandShadedFraction to Table 2's values (see Preset) with one
+   * Modified(). An unknown preset is ignored with a warning.
    */
   void SetPreset(int preset);
   void SetPresetToHighPerformance() { this->SetPreset(HIGH_PERFORMANCE); }
@@ -448,6 +470,7 @@ protected:
   int Estimator = SOLID_ANGLE;
   bool UseColorBoost = false;
   int FilterTaps = 11;
+  double GuardBandShadedFraction = 0.5;
   double BlurPlaneTolerance = 0.02;
   double BlurNormalPower = 8.0;
   double MipThreshold = 8.0;

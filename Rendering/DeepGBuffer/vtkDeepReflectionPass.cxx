@@ -146,14 +146,15 @@ struct vtkDeepReflectionRendererState
 {
   vtkWeakPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkTextureObject> Targets[NUMBER_OF_TARGETS];
-  int Width = 0;
+  int Width = 0;  // of the G-buffer's layers (frame and guard band)
   int Height = 0;
+  int GuardBand = 0;
   bool HasFrame = false; // the targets hold this renderer's last frame
   bool Traced = false;
   double MaximumDistance = 0.0;
   double Thickness = 0.0;
   double View[16];
-  double Projection[16];
+  double FrameProjection[16]; // the camera's: the frame without the guard band
 
   void Release(vtkWindow* w)
   {
@@ -439,6 +440,7 @@ void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
     program->SetUniformi("deepReflected", state.Targets[REFLECTED]->GetTextureUnit());
     program->SetUniformi("deepRadiance", radianceUnit);
     program->SetUniformi("deepReflectivity", reflectivityUnit);
+    program->SetUniformi("deepGuardBand", state.GuardBand);
     in.CompositeQuad->Render();
     state.Targets[REFLECTED]->Deactivate();
   }
@@ -465,8 +467,13 @@ bool vtkDeepReflectionPass::UpdateReflections(const vtkRenderState* s)
     return false;
   }
   int size[2] = { 0, 0 };
-  s->GetWindowSize(size);
+  int guardBand = 0;
+  gbuffer->GetLayerExtent(renderer, size, guardBand);
   const int width = size[0], height = size[1];
+  // Rays are traced for the frame's pixels; they march through the whole
+  // layers, so leaving the guard band ends them (section 3.6).
+  int frameRegion[4];
+  vtkDeepScreenSpace::ShadedRegion(size, guardBand, 0.0, frameRegion);
 
   // Effective parameters of the frame.
   const double diagonal = SceneDiagonal(renderer);
@@ -499,7 +506,7 @@ bool vtkDeepReflectionPass::UpdateReflections(const vtkRenderState* s)
   state.HasFrame = false;
   state.Traced = false;
   std::copy(view, view + 16, state.View);
-  std::copy(projection, projection + 16, state.Projection);
+  vtkDeepScreenSpace::FrameProjection(projection, size, guardBand, state.FrameProjection);
   state.MaximumDistance = maximumDistance;
   state.Thickness = thickness;
 
@@ -572,6 +579,7 @@ bool vtkDeepReflectionPass::UpdateReflections(const vtkRenderState* s)
   }
   state.Width = width;
   state.Height = height;
+  state.GuardBand = guardBand;
 
   // Projection terms of deepPositionFromDistance (row-major P) and the
   // full projection for projecting ray points (column-major for GLSL).
@@ -646,7 +654,8 @@ bool vtkDeepReflectionPass::UpdateReflections(const vtkRenderState* s)
   }
   {
     vtkOpenGLState::ScopedglViewport savedViewport(ostate);
-    vtkOpenGLState::ScopedglEnableDisable savedScissor(ostate, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglEnableDisable savedScissorTest(ostate, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglScissor savedScissor(ostate);
     vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
     vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
     ostate->vtkglDisable(GL_SCISSOR_TEST);
@@ -663,6 +672,9 @@ bool vtkDeepReflectionPass::UpdateReflections(const vtkRenderState* s)
     const float clearHit[4] = { -1.0f, 0.0f, 0.0f, 0.0f };
     glClearBufferfv(GL_COLOR, REFLECTED, clearReflected);
     glClearBufferfv(GL_COLOR, HIT, clearHit);
+    ostate->vtkglEnable(GL_SCISSOR_TEST);
+    ostate->vtkglScissor(frameRegion[0], frameRegion[1], frameRegion[2] - frameRegion[0],
+      frameRegion[3] - frameRegion[1]);
 
     vtkShaderProgram* program = in.TraceQuads[environmentKind]->Program;
     window->GetShaderCache()->ReadyShaderProgram(program);
@@ -829,6 +841,10 @@ bool vtkDeepReflectionPass::CaptureReflections(vtkImageData* output, vtkRenderer
   pd->AddArray(distance);
   pd->AddArray(reflectance);
   pd->AddArray(valid);
+  if (state->Traced)
+  {
+    vtkDeepScreenSpace::CropGuardBand(output, state->GuardBand);
+  }
 
   vtkFieldData* fd = output->GetFieldData();
   for (auto value : { std::make_pair("MaximumDistance", state->MaximumDistance),
@@ -844,7 +860,7 @@ bool vtkDeepReflectionPass::CaptureReflections(vtkImageData* output, vtkRenderer
   traced->InsertNextValue(state->Traced ? 1 : 0);
   fd->AddArray(traced);
   for (auto matrix : { std::make_pair("ViewMatrix", state->View),
-         std::make_pair("ProjectionMatrix", state->Projection) })
+         std::make_pair("ProjectionMatrix", state->FrameProjection) })
   {
     vtkNew<vtkDoubleArray> values;
     values->SetName(matrix.first);

@@ -1,6 +1,8 @@
 #include "vtkDeepScreenSpaceHelpers.h"
 
 #include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -8,6 +10,7 @@
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
+#include "vtkPointData.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtk_glew.h"
@@ -15,8 +18,10 @@
 #include "vtkDeepGBufferCommon.h"
 #include "vtkDeepScreenSpaceCommon.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -187,5 +192,85 @@ bool RenderCounter::Consecutive()
   const bool consecutive = this->Renders == this->LastRenders + 1;
   this->LastRenders = this->Renders;
   return consecutive;
+}
+//------------------------------------------------------------------------------
+void CropGuardBand(vtkImageData* image, int guardBand)
+{
+  int dims[3];
+  image->GetDimensions(dims);
+  if (guardBand <= 0 || dims[0] <= 2 * guardBand || dims[1] <= 2 * guardBand)
+  {
+    return;
+  }
+  const int w = dims[0] - 2 * guardBand, h = dims[1] - 2 * guardBand;
+  vtkPointData* pd = image->GetPointData();
+  std::vector<vtkSmartPointer<vtkDataArray>> cropped;
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* full = pd->GetArray(a);
+    if (!full)
+    {
+      continue;
+    }
+    vtkSmartPointer<vtkDataArray> frame = vtk::TakeSmartPointer(full->NewInstance());
+    frame->SetName(full->GetName());
+    frame->SetNumberOfComponents(full->GetNumberOfComponents());
+    frame->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+    for (int y = 0; y < h; ++y)
+    {
+      for (int x = 0; x < w; ++x)
+      {
+        frame->SetTuple(static_cast<vtkIdType>(y) * w + x,
+          static_cast<vtkIdType>(y + guardBand) * dims[0] + x + guardBand, full);
+      }
+    }
+    cropped.push_back(frame);
+  }
+  pd->Initialize();
+  image->SetDimensions(w, h, 1);
+  for (auto& array : cropped)
+  {
+    pd->AddArray(array);
+  }
+}
+
+//------------------------------------------------------------------------------
+void ShadedRegion(const int size[2], int guardBand, double shadedFraction, int region[4])
+{
+  const double fraction = std::min(std::max(shadedFraction, 0.0), 1.0);
+  const int margin = guardBand - static_cast<int>(std::lround(fraction * guardBand));
+  region[0] = margin;
+  region[1] = margin;
+  region[2] = std::max(margin, size[0] - margin);
+  region[3] = std::max(margin, size[1] - margin);
+}
+
+//------------------------------------------------------------------------------
+void FrameProjection(
+  const double layerProjection[16], const int size[2], int guardBand, double frame[16])
+{
+  std::copy(layerProjection, layerProjection + 16, frame);
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    const int frameSize = size[axis] - 2 * guardBand;
+    const double scale = frameSize > 0 ? static_cast<double>(size[axis]) / frameSize : 1.0;
+    for (int c = 0; c < 4; ++c)
+    {
+      frame[4 * axis + c] *= scale;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void SetShadedRegionUniforms(vtkShaderProgram* program, const int region[4])
+{
+  if (program->IsUniformUsed("deepShadedMin"))
+  {
+    program->SetUniform2i("deepShadedMin", region);
+  }
+  if (program->IsUniformUsed("deepShadedMax"))
+  {
+    program->SetUniform2i("deepShadedMax", region + 2);
+  }
 }
 }

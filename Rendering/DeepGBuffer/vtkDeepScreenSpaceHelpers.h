@@ -15,7 +15,10 @@
 #include "vtkTextureObject.h"
 #include "vtkWeakPointer.h"
 
+class vtkImageData;
 class vtkOpenGLQuadHelper;
+class vtkOpenGLState;
+class vtkShaderProgram;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkWindow;
@@ -56,6 +59,29 @@ void ProjectionUniforms(const double projection[16], float projXY[4], float proj
 void ReprojectionUniforms(const double view[16], const double projection[16], bool hasHistory,
   const double previousView[16], const double previousProjection[16], float toPrevious[16],
   float previousProjectionGL[16]);
+
+/// Removes `guardBand` pixels from every side of `image` (all its point
+/// arrays), leaving the frame: captures of layers that carry a guard band
+/// (vtkDeepGBufferPass::SetGuardBand) report the frame only.
+void CropGuardBand(vtkImageData* image, int guardBand);
+
+/**
+ * The part of layers of `size` texels with a guard band of `guardBand`
+ * pixels that a pass shades (paper section 3.5, Table 2's "fraction of guard
+ * band shaded"): the frame and `shadedFraction` of the guard band around it,
+ * as (x0, y0, x1, y1), x1 and y1 exclusive.
+ */
+void ShadedRegion(const int size[2], int guardBand, double shadedFraction, int region[4]);
+
+/// The projection of the frame alone from the projection of layers of
+/// `size` texels with a guard band of `guardBand` pixels (row-major):
+/// clip x and y scaled by layers / frame per axis.
+void FrameProjection(
+  const double layerProjection[16], const int size[2], int guardBand, double frame[16]);
+
+/// Sets the deepShadedMin and deepShadedMax uniforms of
+/// vtkDeepScreenSpaceCommon.glsl on `program` where it uses them.
+void SetShadedRegionUniforms(vtkShaderProgram* program, const int region[4]);
 
 /// Counts a renderer's StartEvents. A temporal history is valid for the
 /// next frame only when exactly one render of the renderer happened since

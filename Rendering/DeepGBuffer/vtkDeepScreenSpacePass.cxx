@@ -3,6 +3,7 @@
 #include "vtkDeepGBufferPass.h"
 #include "vtkObjectFactory.h"
 
+#include <algorithm>
 #include <cmath>
 
 //------------------------------------------------------------------------------
@@ -81,6 +82,28 @@ void vtkDeepScreenSpacePass::Render(const vtkRenderState* s)
   this->NumberOfRenderedProps = 0;
   this->GBufferPass->RenderFrame(s, this->OpaqueStep);
   this->NumberOfRenderedProps = this->GBufferPass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepScreenSpacePass::SetFraction(const char* name, double fraction, double& value)
+{
+  if (std::isnan(fraction))
+  {
+    vtkWarningMacro(<< name << " must be a number (got NaN); keeping " << value << ".");
+    return;
+  }
+  if (fraction < 0.0 || fraction > 1.0)
+  {
+    const double clamped = std::min(std::max(fraction, 0.0), 1.0);
+    vtkWarningMacro(<< name << " must be within [0, 1] (got " << fraction << "); using "
+                    << clamped << ".");
+    fraction = clamped;
+  }
+  if (fraction != value)
+  {
+    value = fraction;
+    this->Modified();
+  }
 }
 
 //------------------------------------------------------------------------------

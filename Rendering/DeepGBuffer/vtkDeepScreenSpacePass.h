@@ -63,6 +63,10 @@ protected:
   void SetManualLength(const char* name, double length, double& value, bool& automatic,
     bool allowInfinity = false, const char* atZero = "");
 
+  /// Sets a fraction in [0, 1]: NaN keeps `value` with a warning; values
+  /// outside are clamped with a warning; Modified() when it changes.
+  void SetFraction(const char* name, double fraction, double& value);
+
   vtkDeepGBufferPass* GBufferPass = nullptr;
 
 private:

@@ -50,7 +50,7 @@ void main()
       continue;
     }
     ivec2 tap = pixel + k * deepAxis;
-    if (any(lessThan(tap, ivec2(0))) || any(greaterThanEqual(tap, ivec2(size))))
+    if (!deepShaded(tap))
     {
       continue;
     }

@@ -54,3 +54,12 @@ float deepDistanceFromFragCoord(vec4 fragCoord, vec4 projZ)
   float clipW = 1.0 / fragCoord.w;
   return deepDistanceFromClip(vec4(0.0, 0.0, (2.0 * fragCoord.z - 1.0) * clipW, clipW), projZ);
 }
+
+// The layer texel under frame texture coordinate `texCoord` (a full-screen
+// quad over the renderer's viewport): layers of `size` texels hold the frame
+// with a guard band of `guard` pixels on every side (paper section 3.5).
+ivec2 deepFrameTexel(vec2 texCoord, ivec2 size, int guard)
+{
+  ivec2 frame = size - 2 * guard;
+  return min(ivec2(texCoord * vec2(frame)), frame - 1) + guard;
+}

@@ -15,6 +15,7 @@ uniform sampler2DArray deepHardwareDepth;
 uniform int deepLayer;
 uniform int deepQuantity; // vtkDeepGBufferPass::Quantity
 uniform vec2 deepDistanceRange;
+uniform int deepGuardBand; // pixels of the layers around the frame
 
 //VTK::DeepGBuffer::Common
 
@@ -22,8 +23,8 @@ uniform vec2 deepDistanceRange;
 
 void main()
 {
-  ivec2 size = textureSize(deepDistance, 0).xy;
-  ivec3 texel = ivec3(min(ivec2(texCoord * vec2(size)), size - 1), deepLayer);
+  ivec3 texel = ivec3(deepFrameTexel(texCoord, textureSize(deepDistance, 0).xy, deepGuardBand),
+    deepLayer);
   float distance = texelFetch(deepDistance, texel, 0).r;
   if (distance <= 0.0)
   {

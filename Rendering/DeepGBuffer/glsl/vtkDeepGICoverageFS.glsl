@@ -10,12 +10,15 @@ in vec2 texCoord;
 
 uniform sampler2DArray deepDistance;
 
+uniform int deepGuardBand; // layer pixels around the frame
+
+//VTK::DeepGBuffer::Common
+
 //VTK::Output::Dec
 
 void main()
 {
-  ivec2 size = textureSize(deepDistance, 0).xy;
-  ivec2 pixel = min(ivec2(texCoord * vec2(size)), size - 1);
+  ivec2 pixel = deepFrameTexel(texCoord, textureSize(deepDistance, 0).xy, deepGuardBand);
   if (!(texelFetch(deepDistance, ivec3(pixel, 1), 0).r > 0.0))
   {
     discard;

@@ -48,7 +48,7 @@ vec4 filterLayer(ivec2 pixel, vec2 size, int layer)
   for (int k = -deepBlurRadius; k <= deepBlurRadius; ++k)
   {
     ivec2 tap = pixel + k * deepAxis;
-    if (k == 0 || any(lessThan(tap, ivec2(0))) || any(greaterThanEqual(tap, ivec2(size))))
+    if (k == 0 || !deepShaded(tap))
     {
       continue;
     }

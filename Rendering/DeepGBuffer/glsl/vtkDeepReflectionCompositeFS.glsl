@@ -12,12 +12,15 @@ uniform sampler2D deepReflected; // rgb L_r, a = 1 where traced
 uniform sampler2DArray deepRadiance;
 uniform sampler2DArray deepReflectivity;
 
+uniform int deepGuardBand; // layer pixels around the frame
+
+//VTK::DeepGBuffer::Common
+
 //VTK::Output::Dec
 
 void main()
 {
-  ivec2 size = textureSize(deepReflected, 0);
-  ivec2 pixel = min(ivec2(texCoord * vec2(size)), size - 1);
+  ivec2 pixel = deepFrameTexel(texCoord, textureSize(deepReflected, 0), deepGuardBand);
   vec4 reflected = texelFetch(deepReflected, pixel, 0);
   if (reflected.a <= 0.0)
   {

@@ -6,6 +6,18 @@
 // the previous frame.
 //=========================================================================
 
+// The texels a pass shades (vtkDeepScreenSpace::ShadedRegion): the frame and
+// the shaded fraction of the guard band, [deepShadedMin, deepShadedMax).
+// Gathers read the whole layers (the guard band's input); filters and
+// temporal history read only shaded texels, the only ones with results.
+uniform ivec2 deepShadedMin;
+uniform ivec2 deepShadedMax;
+
+bool deepShaded(ivec2 texel)
+{
+  return all(greaterThanEqual(texel, deepShadedMin)) && all(lessThan(texel, deepShadedMax));
+}
+
 // Camera-space position of the surface at distance d (along -z, z = -d)
 // seen through window pixel coordinate p (pixel centres at +0.5) of an
 // image of size `size`. deepProjXY = (P00, P11, P02, P12),
@@ -93,8 +105,8 @@ ivec2 deepCoarseTexel(ivec2 tap, int m, ivec2 size)
 // Reverse reprojection of the current camera-space point X into the
 // previous frame: toPrevious = V_prev * inverse(V_now), prevProjection the
 // previous projection. Returns false when the point is behind the previous
-// camera or outside the previous image; else the previous texel and the
-// point's distance (along -z) in the previous camera.
+// camera or outside the texels the previous frame shaded; else the previous
+// texel and the point's distance (along -z) in the previous camera.
 bool deepReproject(vec3 X, mat4 toPrevious, mat4 prevProjection, vec2 size, out ivec2 texel,
   out float distance)
 {
@@ -112,7 +124,7 @@ bool deepReproject(vec3 X, mat4 toPrevious, mat4 prevProjection, vec2 size, out 
     return false;
   }
   texel = min(ivec2(floor(prev)), ivec2(size) - 1);
-  return true;
+  return deepShaded(texel);
 }
 
 // Weight of a bilateral reconstruction tap k pixels from the centre

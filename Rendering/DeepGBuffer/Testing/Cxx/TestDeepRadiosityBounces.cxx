@@ -115,9 +115,14 @@ void TestEnergy(double alpha)
   Check(largest <= bound, "L_ind below the derived bound");
   // The default SOLID_ANGLE gathers only the solid angle the taps see
   // within r, so each bounce adds less than eq. 4's division by M did (its
-  // bound was x 1.2): measured x 1.074 (alpha 0) and x 1.048 (alpha 0.85).
+  // bound was x 1.2): measured x 1.072 (alpha 0) and x 1.058 (alpha 0.85)
+  // with the default guard band.
   Check(total[99] > total[0] * 1.03, "bounces add light");
-  Check(layer1[99] > layer1[0] * 1.05, "layer-1 pixels gain light from the bounces");
+  // Layer 1 (the floor and walls behind the box, Figure 5) gains x 1.034
+  // (alpha 0) and x 1.089 (alpha 0.85) with the default guard band, x 1.069
+  // and x 1.099 without one (its first bounce is 5 % smaller there); no
+  // propagation into layer 1 would give x 1.
+  Check(layer1[99] > layer1[0] * 1.02, "layer-1 pixels gain light from the bounces");
   if (alpha == 0.0)
   {
     Check(monotone, "total never decreases (alpha 0)");
