@@ -13,8 +13,9 @@
 // single frame is what a moving camera sees.)
 //
 // - accuracy (at --accuracy-size, default 200x150): a still frame; the
-//   G-buffer capture of that frame (two layers) goes to the reference,
-//   layer 0, with MaximumDistance = the pass's effective radius r (the
+//   G-buffer capture of that frame (two layers) goes to the reference
+//   (VTK's lights of the scene, plus the emitting surfaces the scene
+//   polydata marks with "Emission"), layer 0, with MaximumDistance = the pass's effective radius r (the
 //   gather's own limit) and unlimited. The pass's "Irradiance_0" (E after
 //   the bilateral filter; alpha 0) is compared with the reference's
 //   "IndirectIrradiance" on the luminance of E (0.2126, 0.7152, 0.0722) over
@@ -580,7 +581,12 @@ int main(int argc, char* argv[])
     const double r = passes.front()->GetEffectiveRadius();
 
     vtkNew<vtkDeepGIReferenceIrradiance> reference;
+    // The loaders' scene polydata carry the cell arrays the reference reads:
+    // "Colors" and "Diffuse", and for emitters (cornell-original's lamp)
+    // "Emission", the colour the lamp is drawn with, so the reference sees
+    // the same sources as the pass's B(Y) = Radiance - Ambient.
     reference->SetScene(geometry);
+    reference->SetEmissionArrayName("Emission");
     reference->SetLightsFromRenderer(renderer);
     reference->SetSamplesPerPixel(options.Samples);
     reference->SetLayer(0);

@@ -1571,6 +1571,11 @@ vtkPolyData* vtkDeepGBufferSceneLoader::GetScenePolyData()
   {
     vtkNew<vtkAppendPolyData> append;
     int id = 0;
+    bool emitters = false;
+    for (const Part& part : this->Internals->Parts)
+    {
+      emitters = emitters || std::max({ part.Emission[0], part.Emission[1], part.Emission[2] }) > 0;
+    }
     for (const Part& part : this->Internals->Parts)
     {
       auto copy = vtkSmartPointer<vtkPolyData>::New();
@@ -1596,6 +1601,34 @@ vtkPolyData* vtkDeepGBufferSceneLoader::GetScenePolyData()
       }
       copy->GetCellData()->AddArray(colors);
       copy->GetCellData()->AddArray(ids);
+      if (emitters)
+      {
+        // What Populate draws, for references that light the scene
+        // (vtkDeepGIReferenceIrradiance): an emitter's colour Ke / max(Ke)
+        // (Ambient 1, EMISSIVE) and its Diffuse 0, the other parts'
+        // emission 0 and Diffuse MaterialDiffuse.
+        const double brightest =
+          std::max({ part.Emission[0], part.Emission[1], part.Emission[2] });
+        float emitted[3] = { 0.0f, 0.0f, 0.0f };
+        for (int c = 0; c < 3 && brightest > 0.0; ++c)
+        {
+          emitted[c] = static_cast<float>(part.Emission[c] / brightest);
+        }
+        vtkNew<vtkFloatArray> emission;
+        emission->SetName("Emission");
+        emission->SetNumberOfComponents(3);
+        emission->SetNumberOfTuples(n);
+        vtkNew<vtkFloatArray> diffuse;
+        diffuse->SetName("Diffuse");
+        diffuse->SetNumberOfTuples(n);
+        for (vtkIdType i = 0; i < n; ++i)
+        {
+          emission->SetTypedTuple(i, emitted);
+          diffuse->SetValue(i, brightest > 0.0 ? 0.0f : static_cast<float>(MaterialDiffuse));
+        }
+        copy->GetCellData()->AddArray(emission);
+        copy->GetCellData()->AddArray(diffuse);
+      }
       append->AddInputData(copy);
       ++id;
     }

@@ -181,8 +181,12 @@ public:
    * All parts appended into one polydata with cell data "Colors" (unsigned
    * char RGB, the part's diffuse albedo) and "PartId" (int), field data
    * "Diffuse" (the actors' diffuse coefficient, 0.9), and point
-   * "Normals" if every part has them. Owned by the loader; nullptr when
-   * nothing is loaded.
+   * "Normals" if every part has them. When a part emits (see Populate), the
+   * cells also carry what Populate draws: "Emission" (float RGB, Ke / max(Ke)
+   * on emitters, 0 elsewhere: the emitted radiance the deep G-buffer stores
+   * for them, read by vtkDeepGIReferenceIrradiance) and "Diffuse" (float, 0
+   * on emitters, 0.9 elsewhere). Owned by the loader; nullptr when nothing is
+   * loaded.
    */
   vtkPolyData* GetScenePolyData();
 

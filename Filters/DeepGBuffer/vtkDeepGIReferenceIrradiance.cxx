@@ -69,6 +69,7 @@ struct vtkDeepGIReferenceIrradiance::Lighting
 
   // Filled by PrepareCompute, read by the worker threads.
   std::vector<float> CellAlbedo;   // rho per scene cell (RGB), Diffuse included
+  std::vector<float> CellEmission; // L_emitted per scene cell (RGB), empty if none
   std::vector<float> PointNormals; // per scene point (xyz), empty if none
   std::vector<float> CellNormals;  // per scene cell (xyz), empty if none
   vtkSmartPointer<vtkDataArray> CaptureAlbedo;
@@ -159,11 +160,16 @@ vtkDeepGIReferenceIrradiance::vtkDeepGIReferenceIrradiance()
   , TwoSidedLighting(true)
   , MaximumDistance(std::numeric_limits<double>::infinity())
   , DiffuseCoefficient(1.0)
+  , EmissionArrayName(nullptr)
   , Data(new Lighting)
 {
+  this->SetEmissionArrayName("Emission");
 }
 
-vtkDeepGIReferenceIrradiance::~vtkDeepGIReferenceIrradiance() = default;
+vtkDeepGIReferenceIrradiance::~vtkDeepGIReferenceIrradiance()
+{
+  this->SetEmissionArrayName(nullptr);
+}
 
 //------------------------------------------------------------------------------
 bool vtkDeepGIReferenceIrradiance::AddLight(vtkLight* light, vtkCamera* camera)
@@ -300,10 +306,11 @@ bool vtkDeepGIReferenceIrradiance::CheckParameters()
 bool vtkDeepGIReferenceIrradiance::PrepareCompute(vtkImageData* capture)
 {
   Lighting& d = *this->Data;
-  if (d.Lights.empty())
+  this->PrepareEmission();
+  if (d.Lights.empty() && d.CellEmission.empty())
   {
-    vtkWarningMacro("No lights (SetLightsFromRenderer or AddLight): the indirect irradiance is 0 "
-                    "everywhere.");
+    vtkWarningMacro("No lights (SetLightsFromRenderer or AddLight) and no emission: the indirect "
+                    "irradiance is 0 everywhere.");
   }
   vtkPolyData* scene = this->Scene;
   const vtkIdType cells = scene->GetNumberOfCells();
@@ -416,6 +423,84 @@ bool vtkDeepGIReferenceIrradiance::PrepareCompute(vtkImageData* capture)
 }
 
 //------------------------------------------------------------------------------
+void vtkDeepGIReferenceIrradiance::PrepareEmission()
+{
+  Lighting& d = *this->Data;
+  d.CellEmission.clear();
+  if (!this->EmissionArrayName || !*this->EmissionArrayName)
+  {
+    return;
+  }
+  const vtkIdType cells = this->Scene->GetNumberOfCells();
+  vtkDataArray* emission = this->Scene->GetCellData()->GetArray(this->EmissionArrayName);
+  if (!emission)
+  {
+    return; // a scene without emitters
+  }
+  const int components = emission->GetNumberOfComponents();
+  if (emission->GetNumberOfTuples() != cells || (components != 1 && components != 3))
+  {
+    vtkWarningMacro("The scene's \"" << this->EmissionArrayName << "\" cell array has "
+                                     << emission->GetNumberOfTuples() << " tuples of "
+                                     << components << " components for " << cells
+                                     << " cells (expected RGB or grey per cell); ignored.");
+    return;
+  }
+  // Like "Colors": 8-bit values are a colour in [0, 1].
+  const double scale = emission->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
+  d.CellEmission.assign(3 * static_cast<size_t>(cells), 0.0f);
+  vtkIdType clamped = 0;
+  bool emits = false;
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      const double value = scale * emission->GetComponent(c, components == 3 ? i : 0);
+      // Radiance is finite and non-negative; anything else would make E
+      // NaN, infinite or negative.
+      if (!std::isfinite(value) || value < 0.0)
+      {
+        ++clamped;
+        continue;
+      }
+      d.CellEmission[3 * c + i] = static_cast<float>(value);
+      emits = emits || value > 0.0;
+    }
+  }
+  if (clamped > 0)
+  {
+    vtkWarningMacro("The scene's \"" << this->EmissionArrayName << "\" cell array has " << clamped
+                                     << " NaN, infinite or negative values; set to 0.");
+  }
+  if (!emits)
+  {
+    d.CellEmission.clear();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGIReferenceIrradiance::OutgoingRadiance(
+  const double y[3], const double w[3], const HitRecord& hit, double radiance[3]) const
+{
+  this->DirectRadiance(y, w, hit, radiance);
+  const Lighting& d = *this->Data;
+  if (d.CellEmission.empty())
+  {
+    return;
+  }
+  // VTK draws the ambient term (the emission of an EMISSIVE prop) on both
+  // sides; one-sided lighting makes back faces send nothing at all.
+  const bool backFace = vtkMath::Dot(hit.Normal, w) > 0.0;
+  if (backFace && !this->TwoSidedLighting)
+  {
+    return;
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    radiance[c] += d.CellEmission[3 * hit.Cell + c];
+  }
+}
+
 void vtkDeepGIReferenceIrradiance::DirectRadiance(
   const double y[3], const double w[3], const HitRecord& hit, double radiance[3]) const
 {
@@ -561,7 +646,7 @@ void vtkDeepGIReferenceIrradiance::EvaluateSample(
       {
         y[c] = origin[c] + own.Distance * w[c];
       }
-      this->DirectRadiance(y, w, own, values);
+      this->OutgoingRadiance(y, w, own, values);
     }
     return;
   }
@@ -580,7 +665,7 @@ void vtkDeepGIReferenceIrradiance::EvaluateSample(
     return;
   }
   double radiance[3];
-  this->DirectRadiance(y, direction, hit, radiance);
+  this->OutgoingRadiance(y, direction, hit, radiance);
   // A cosine-weighted sample of E = int L cos dw is L cos / (cos / pi).
   for (int c = 0; c < 3; ++c)
   {
@@ -651,6 +736,8 @@ void vtkDeepGIReferenceIrradiance::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TwoSidedLighting: " << (this->TwoSidedLighting ? "On" : "Off") << "\n";
   os << indent << "MaximumDistance: " << this->MaximumDistance << "\n";
   os << indent << "DiffuseCoefficient: " << this->DiffuseCoefficient << "\n";
+  os << indent << "EmissionArrayName: "
+     << (this->EmissionArrayName ? this->EmissionArrayName : "(none)") << "\n";
   os << indent << "NumberOfLights: " << this->GetNumberOfLights() << "\n";
   for (const ResolvedLight& light : this->Data->Lights)
   {

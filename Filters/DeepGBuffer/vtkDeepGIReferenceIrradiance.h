@@ -39,13 +39,34 @@
  * behind sees n_Y flipped. With it off, a back face sends no light (L = 0),
  * the one-sided convention of the paper's optional n_Y test.
  *
+ * ## Emitting surfaces
+ *
+ * A scene may carry the emitted radiance L_emitted of its triangles in a
+ * cell array (EmissionArrayName, default "Emission"; RGB, or 1 component for
+ * grey; float or double in the units of VTK's pixel colour, unsigned char
+ * divided by 255 like "Colors"). That is what the G-buffer's
+ * Radiance_j - Ambient_j holds on a prop marked vtkDeepGBufferPass::EMISSIVE()
+ * beyond its diffuse term: VTK's ambient term Ambient * AmbientColor, which
+ * the emitters of vtkDeepGBufferSceneLoader (MTL Ke) draw as Ke / max(Ke).
+ * A hit Y then leaves L(Y) = L_emitted(Y) + L_direct(Y). VTK 9.1 draws the
+ * ambient term on both sides of a triangle (without a backface property the
+ * back face uses the front's colours; measured in TestDeepGBufferEmissive:
+ * RADIANCE - AMBIENT of an EMISSIVE panel's back face is its colour), so
+ * with TwoSidedLighting on a back face emits like the front; with it off a
+ * back face sends nothing, emission included. Without the array (or with
+ * an empty name) nothing emits, silently. An array whose tuples do not
+ * match the cells or whose component count is neither 1 nor 3 is ignored
+ * with a warning; NaN, infinite and negative values are set to 0 with a
+ * warning.
+ *
  * Indirect irradiance at X, with Y(w) the first surface along X + t w:
  *
- *   E(X) = integral over the hemisphere of L_direct(Y(w)) max(0, n_X . w) dw
+ *   E(X) = integral over the hemisphere of L(Y(w)) max(0, n_X . w) dw,
+ *   L = L_emitted + L_direct
  *
  * (0 for rays that escape, and for hits farther than MaximumDistance from X
  * when it is finite). Directions are cosine-weighted (density cos / pi), so
- * each sample is pi * L_direct(Y) and E is their mean; the reflected
+ * each sample is pi * L(Y) and E is their mean; the reflected
  * one-bounce radiance is L_indirect(X) = rho_X * E(X) / pi with rho_X the
  * capture's Albedo_j (the diffuse BRDF rho / pi).
  *
@@ -57,11 +78,12 @@
  *
  * ## Relation to the screen-space radiosity and where it differs
  *
- * This is eq. 3 of the paper with B(Y) / pi = L_direct(Y): the paper's B is
+ * This is eq. 3 of the paper with B(Y) / pi = L(Y): the paper's B is
  * radiosity, VTK's pixel is radiance L = B / pi, and eq. 6's reflected
  * B(X) = rho_X E(X) is the radiance rho_X E / pi (boost = 1). The screen-space
  * estimator (eq. 4-5) integrates the same E(X) from taps Y of the captured
- * layers, whose direct diffuse radiance is Radiance_j - Ambient_j. By design
+ * layers, whose direct radiance is Radiance_j - Ambient_j (emission
+ * included on EMISSIVE props). By design
  * it differs: it sees only the captured layers inside the frustum; it assumes
  * X and Y see each other (no first-hit test: a surface behind a nearer one
  * still counts there); the optional back-face test of eq. 5 drops taps with
@@ -165,13 +187,14 @@ public:
   ///@{
   /**
    * INDIRECT_IRRADIANCE (default): the one-bounce quantities above.
-   * DIRECT_RADIANCE: L_direct at each pixel's own surface point as seen from
-   * the capture's camera (the ray from just in front of X towards X gives the
-   * triangle, its albedo and its shading normal), in the point array
-   * "DirectRadiance" (RGB; 0 where empty or where that ray finds no
-   * triangle) with "Valid". One sample per pixel (the value is exact, its
-   * standard error 0). It checks the light model against VTK's rendering:
-   * a capture's Radiance_j - Ambient_j is VTK's diffuse (plus specular) term.
+   * DIRECT_RADIANCE: L = L_emitted + L_direct at each pixel's own surface
+   * point as seen from the capture's camera (the ray from just in front of X
+   * towards X gives the triangle, its emission, albedo and shading normal),
+   * in the point array "DirectRadiance" (RGB; 0 where empty or where that ray
+   * finds no triangle) with "Valid". One sample per pixel (the value is
+   * exact, its standard error 0). It checks the light model against VTK's
+   * rendering: a capture's Radiance_j - Ambient_j is VTK's diffuse (plus
+   * specular) term, plus the ambient term on EMISSIVE props.
    */
   vtkSetClampMacro(Quantity, int, INDIRECT_IRRADIANCE, DIRECT_RADIANCE);
   vtkGetMacro(Quantity, int);
@@ -212,6 +235,15 @@ public:
 
   ///@{
   /**
+   * Name of the scene's cell array of emitted radiance (see the class
+   * description). Default "Emission"; nullptr or empty: nothing emits.
+   */
+  vtkSetStringMacro(EmissionArrayName);
+  vtkGetStringMacro(EmissionArrayName);
+  ///@}
+
+  ///@{
+  /**
    * Diffuse coefficient (VTK's vtkProperty::Diffuse) multiplied into the
    * "Colors" albedo when the scene carries no "Diffuse" cell or field array.
    * [0, 1]; default 1. The scene polydata of vtkDeepGBufferDemoScene and
@@ -245,14 +277,22 @@ protected:
   bool TwoSidedLighting;
   double MaximumDistance;
   double DiffuseCoefficient;
+  char* EmissionArrayName;
 
 private:
   vtkDeepGIReferenceIrradiance(const vtkDeepGIReferenceIrradiance&) = delete;
   void operator=(const vtkDeepGIReferenceIrradiance&) = delete;
 
+  /// Radiance leaving the hit towards -w: emitted plus direct diffuse.
+  void OutgoingRadiance(
+    const double y[3], const double w[3], const HitRecord& hit, double radiance[3]) const;
+
   /// Direct diffuse radiance leaving the hit (seen from direction w).
   void DirectRadiance(
     const double y[3], const double w[3], const HitRecord& hit, double radiance[3]) const;
+
+  /// Reads the scene's emission array into the per-cell table (empty: none).
+  void PrepareEmission();
 
   struct Lighting;
   std::unique_ptr<Lighting> Data;

@@ -379,6 +379,10 @@ void TestLoader(const std::string& data, const std::string& temp)
   CHECK(loader->Load((data + "/meshes/bunny.ply").c_str()), "bunny.ply loads");
   CHECK(loader->GetNumberOfTriangles() == 69451, "bunny has " << loader->GetNumberOfTriangles());
   CheckMesh(loader->GetPartPolyData(0), true, false, "bunny");
+  CHECK(loader->GetScenePolyData() &&
+      !loader->GetScenePolyData()->GetCellData()->GetArray("Emission") &&
+      !loader->GetScenePolyData()->GetCellData()->GetArray("Diffuse"),
+    "a scene without emitters has no Emission or Diffuse cell arrays");
   loader->Clear();
 
   // Cornell box: 8 materials, 36 triangles, the left wall red (Kd).
@@ -433,6 +437,30 @@ void TestLoader(const std::string& data, const std::string& temp)
   vtkPolyData* scene = loader->GetScenePolyData();
   CheckMesh(scene, true, true, "Cornell scene polydata");
   CHECK(scene && scene->GetNumberOfPolys() == 36, "Cornell scene polydata has 36 triangles");
+  {
+    // The lamp's cells emit what Populate draws (Ke / max(Ke)) and have
+    // Diffuse 0; the other cells emit nothing and have Diffuse 0.9.
+    vtkDataArray* emission = scene ? scene->GetCellData()->GetArray("Emission") : nullptr;
+    vtkDataArray* diffuse = scene ? scene->GetCellData()->GetArray("Diffuse") : nullptr;
+    vtkDataArray* partIds = scene ? scene->GetCellData()->GetArray("PartId") : nullptr;
+    bool ok = emission && diffuse && partIds && emission->GetNumberOfComponents() == 3;
+    int lampCells = 0;
+    for (vtkIdType c = 0; ok && c < scene->GetNumberOfCells(); ++c)
+    {
+      const bool isLamp = partIds->GetComponent(c, 0) == 7;
+      const double expected[3] = { isLamp ? 1.0 : 0.0, isLamp ? 12.0 / 17.0 : 0.0,
+        isLamp ? 4.0 / 17.0 : 0.0 };
+      for (int k = 0; k < 3; ++k)
+      {
+        ok = ok && std::abs(emission->GetComponent(c, k) - expected[k]) < 1e-6;
+      }
+      ok = ok && std::abs(diffuse->GetComponent(c, 0) - (isLamp ? 0.0 : 0.9)) < 1e-6;
+      lampCells += isLamp ? 1 : 0;
+    }
+    CHECK(ok && lampCells == 2,
+      "Cornell scene polydata: Emission Ke / max(Ke) and Diffuse 0 on the lamp's 2 cells, "
+      "0 and 0.9 elsewhere");
+  }
 
   // Regression: VTK 9.1's vtkOBJImporter resolved "f -4 -3 -2 -1" against a
   // vertex count that carried over from the previous OBJ file of the

@@ -10,7 +10,10 @@
 //   the colour (within RGBA16F rounding, 1e-3), and the floor next to the
 //   panel receives its light: mean L_ind over the floor within 1 of the
 //   panel is > 0.01 in red, and red > green > blue as the panel's colour
-//   (measured (0.4145, 0.2072, 0.1036): the panel's colour x 0.41).
+//   (measured (0.4145, 0.2072, 0.1036): the panel's colour x 0.41);
+// - seen from behind, the panel's back face holds the same RADIANCE - AMBIENT
+//   (VTK 9.1 draws the ambient term on both sides), which is what
+//   vtkDeepGIReferenceIrradiance's emission does with TwoSidedLighting on.
 
 #include "DeepRadiosityTest.h"
 
@@ -133,6 +136,45 @@ int TestDeepGBufferEmissive(int, char*[])
   Check(floorMean[0] > 0.01 && floorMean[0] > floorMean[1] && floorMean[1] > floorMean[2],
     "the floor receives the panel's light through the radiosity");
   Check(AllFinite(f.Radiosity) && AllFinite(f.Layers), "finite");
+
+  // Seen from behind: VTK draws the ambient term on back faces too (no
+  // backface property), so the G-buffer stores the same emission there.
+  SetCamera(f.Renderer, 0, 2.5, -4, 0, 0.3, 0);
+  f.Window->Render();
+  Check(radiosity->GetGBufferPass()->CaptureLayers(f.Layers, f.Renderer), "capture from behind");
+  double backDirect[3] = { 0, 0, 0 }, backAmbient[3] = { 0, 0, 0 };
+  long back = 0;
+  for (int j = 0; j < f.Height; ++j)
+  {
+    for (int i = 0; i < f.Width; ++i)
+    {
+      double p[3];
+      if (!WorldPosition(f.Layers, 0, i, j, p) || std::abs(p[2]) > 1e-3 || p[1] < 0.05 ||
+        p[1] > 0.95 || std::abs(p[0]) > 0.95)
+      {
+        continue;
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        backDirect[c] += At(f.Layers, "Radiance_0", i, j, c) - At(f.Layers, "Ambient_0", i, j, c);
+        backAmbient[c] += At(f.Layers, "Ambient_0", i, j, c);
+      }
+      ++back;
+    }
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    backDirect[c] /= std::max(1L, back);
+    backAmbient[c] /= std::max(1L, back);
+  }
+  std::printf("from behind: %ld panel pixels, direct (%.4f, %.4f, %.4f) ambient (%.4f, %.4f, "
+              "%.4f)\n",
+    back, backDirect[0], backDirect[1], backDirect[2], backAmbient[0], backAmbient[1],
+    backAmbient[2]);
+  Check(back > 500 && std::abs(backDirect[0] - 1.0) < 1e-3 &&
+      std::abs(backDirect[1] - 0.5) < 1e-3 && std::abs(backDirect[2] - 0.25) < 1e-3 &&
+      backAmbient[0] == 0.0 && backAmbient[1] == 0.0 && backAmbient[2] == 0.0,
+    "the panel's back face stores the same emission: RADIANCE - AMBIENT the colour");
   radiosity->ReleaseGraphicsResources(f.Window);
   return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -1,0 +1,495 @@
+// Tests the emitted radiance of vtkDeepGIReferenceIrradiance (the scene's
+// cell array "Emission") on synthetic captures (no rendering): a camera at
+// height 3 looks straight down at the plane z = 0; every pixel gets the
+// plane's exact depth and the normal +z.
+//
+//  1. closed form: an emitting square (half side 0.5, uniform L_e, facing
+//     down) at height 1, no lights: for a point X under or beside it
+//     E(X) = pi L_e F(X), F the view factor from X to the parallel square
+//     (four corner rectangles). Per pixel and channel |E - exact| < 4 SE +
+//     1e-6, and the mean difference within 4 standard errors of the mean;
+//  2. emission adds to the lit diffuse radiance: the same square with a
+//     directional light from below gives pi (L_e + rho I) F;
+//  3. back faces: the square wound the other way gives the same E with
+//     TwoSidedLighting on (VTK draws the ambient term, the emission, on both
+//     sides) and exactly 0 with it off;
+//  4. without the array, or with EmissionArrayName empty: E exactly 0 and no
+//     warning (a light above the square lights only its back, which the
+//     points below do not see);
+//  5. bad arrays: NaN, infinite and negative components are set to 0 with
+//     one warning (the remaining channel still matches its closed form); a
+//     2-component array and one with the wrong number of tuples are ignored
+//     with a warning (E = 0);
+//  6. DIRECT_RADIANCE: an emitting floor seen from the front reports L_e
+//     exactly (plus rho I cos under a light); from behind L_e with
+//     TwoSidedLighting on and 0 with it off;
+//  7. an unsigned char array is a colour: divided by 255.
+
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDeepGIReferenceIrradiance.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace
+{
+int Failures = 0;
+
+void Check(bool ok, const std::string& what)
+{
+  std::cout << (ok ? "ok: " : "FAILED: ") << what << "\n";
+  Failures += ok ? 0 : 1;
+}
+
+class EventCounter : public vtkCommand
+{
+public:
+  static EventCounter* New() { return new EventCounter; }
+  void Execute(vtkObject*, unsigned long event, void*) override
+  {
+    this->Errors += event == vtkCommand::ErrorEvent;
+    this->Warnings += event == vtkCommand::WarningEvent;
+  }
+  int Errors = 0;
+  int Warnings = 0;
+};
+
+const int Width = 12, Height = 12;
+const double CameraHeight = 3.0, CameraX = 0.3, CameraY = -0.2;
+
+// A Width x Height capture of the plane z = 0 seen from above (perspective,
+// 40 degrees); positions receives each pixel's point.
+vtkSmartPointer<vtkImageData> MakeCapture(std::vector<std::array<double, 3>>& positions)
+{
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(CameraX, CameraY, CameraHeight);
+  camera->SetFocalPoint(CameraX, CameraY, 0.0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(40.0);
+  camera->SetClippingRange(0.1, 2.0 * CameraHeight);
+  vtkMatrix4x4* view = camera->GetModelViewTransformMatrix();
+  vtkMatrix4x4* projection =
+    camera->GetProjectionTransformMatrix(static_cast<double>(Width) / Height, -1, 1);
+  vtkNew<vtkMatrix4x4> inverseView, inverseProjection;
+  vtkMatrix4x4::Invert(view, inverseView);
+  vtkMatrix4x4::Invert(projection, inverseProjection);
+
+  auto capture = vtkSmartPointer<vtkImageData>::New();
+  capture->SetDimensions(Width, Height, 1);
+  const vtkIdType n = Width * Height;
+  vtkNew<vtkFloatArray> depth, normal, albedo;
+  vtkNew<vtkUnsignedCharArray> valid;
+  depth->SetName("Depth_0");
+  depth->SetNumberOfTuples(n);
+  normal->SetName("Normal_0");
+  normal->SetNumberOfComponents(3);
+  normal->SetNumberOfTuples(n);
+  albedo->SetName("Albedo_0");
+  albedo->SetNumberOfComponents(3);
+  albedo->SetNumberOfTuples(n);
+  valid->SetName("Valid_0");
+  valid->SetNumberOfTuples(n);
+  positions.assign(n, { 0, 0, 0 });
+  double up[4] = { 0, 0, 1, 0 }, upCamera[4];
+  view->MultiplyPoint(up, upCamera);
+  for (int j = 0; j < Height; ++j)
+  {
+    for (int i = 0; i < Width; ++i)
+    {
+      const vtkIdType p = j * Width + i;
+      // The pixel centre's viewing ray in camera space, scaled to reach the
+      // plane (camera-space depth CameraHeight).
+      double ray[4] = { (i + 0.5) / Width * 2 - 1, (j + 0.5) / Height * 2 - 1, 1, 1 };
+      inverseProjection->MultiplyPoint(ray, ray);
+      const double t = CameraHeight / -(ray[2] / ray[3]);
+      double pc[4] = { t * ray[0] / ray[3], t * ray[1] / ray[3], -CameraHeight, 1 }, pw[4];
+      inverseView->MultiplyPoint(pc, pw);
+      depth->SetValue(p, static_cast<float>(CameraHeight));
+      valid->SetValue(p, 1);
+      for (int c = 0; c < 3; ++c)
+      {
+        normal->SetComponent(p, c, upCamera[c]);
+        albedo->SetComponent(p, c, 0.5);
+        positions[p][c] = pw[c] / pw[3];
+      }
+    }
+  }
+  capture->GetPointData()->AddArray(depth);
+  capture->GetPointData()->AddArray(normal);
+  capture->GetPointData()->AddArray(albedo);
+  capture->GetPointData()->AddArray(valid);
+  for (auto m :
+    { std::make_pair("ViewMatrix", view), std::make_pair("ProjectionMatrix", projection) })
+  {
+    vtkNew<vtkDoubleArray> values;
+    values->SetName(m.first);
+    values->SetNumberOfComponents(16);
+    values->InsertNextTuple(&m.second->Element[0][0]);
+    capture->GetFieldData()->AddArray(values);
+  }
+  return capture;
+}
+
+// View factor from a differential area to a parallel rectangle at height h
+// whose corner lies straight above it, sides a and b (signed: a corner
+// rectangle on the far side of the point subtracts).
+double CornerViewFactor(double a, double b, double h)
+{
+  const double x = a / h, y = b / h;
+  const double sx = std::sqrt(1 + x * x), sy = std::sqrt(1 + y * y);
+  return (x / sx * std::atan(y / sx) + y / sy * std::atan(x / sy)) / (2 * vtkMath::Pi());
+}
+
+// ... to the square [-s, s]^2 at height h from the point (px, py) (the
+// corner sides are signed, so points beside the square work too).
+double SquareViewFactor(double px, double py, double s, double h)
+{
+  double f = 0;
+  for (double a : { s - px, s + px })
+  {
+    for (double b : { s - py, s + py })
+    {
+      f += CornerViewFactor(a, b, h);
+    }
+  }
+  return f;
+}
+
+// One quad (corners in order) with Colors `rgb`; `emission` (may be null)
+// becomes the cell array "Emission".
+vtkSmartPointer<vtkPolyData> QuadScene(
+  const std::array<std::array<double, 3>, 4>& corners, vtkDataArray* emission)
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> polys;
+  vtkIdType ids[4];
+  for (int k = 0; k < 4; ++k)
+  {
+    ids[k] = points->InsertNextPoint(corners[k].data());
+  }
+  polys->InsertNextCell(4, ids);
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetName("Colors");
+  colors->SetNumberOfComponents(3);
+  const unsigned char grey[3] = { 128, 128, 128 };
+  colors->InsertNextTypedTuple(grey);
+  auto scene = vtkSmartPointer<vtkPolyData>::New();
+  scene->SetPoints(points);
+  scene->SetPolys(polys);
+  scene->GetCellData()->AddArray(colors);
+  if (emission)
+  {
+    scene->GetCellData()->AddArray(emission);
+  }
+  return scene;
+}
+
+const double Half = 0.5, Lift = 1.0;
+const double Emitted[3] = { 0.8, 0.5, 0.2 };
+
+// The square [-Half, Half]^2 at height Lift, facing down (front towards the
+// plane) or up.
+vtkSmartPointer<vtkPolyData> SquareScene(bool facingDown, vtkDataArray* emission)
+{
+  const double s = Half, h = Lift;
+  if (facingDown)
+  {
+    return QuadScene({ { { -s, -s, h }, { -s, s, h }, { s, s, h }, { s, -s, h } } }, emission);
+  }
+  return QuadScene({ { { -s, -s, h }, { s, -s, h }, { s, s, h }, { -s, s, h } } }, emission);
+}
+
+vtkSmartPointer<vtkFloatArray> EmissionArray(
+  const double rgb[3], int components = 3, vtkIdType tuples = 1, const char* name = "Emission")
+{
+  auto array = vtkSmartPointer<vtkFloatArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(tuples);
+  for (vtkIdType t = 0; t < tuples; ++t)
+  {
+    for (int c = 0; c < components; ++c)
+    {
+      array->SetComponent(t, c, rgb[c % 3]);
+    }
+  }
+  return array;
+}
+
+// A directional scene light shining from `from` towards the origin.
+vtkSmartPointer<vtkLight> Directional(const double from[3], double intensity)
+{
+  auto light = vtkSmartPointer<vtkLight>::New();
+  light->SetLightTypeToSceneLight();
+  light->SetPosition(from[0], from[1], from[2]);
+  light->SetFocalPoint(0, 0, 0);
+  light->SetPositional(false);
+  light->SetIntensity(intensity);
+  return light;
+}
+
+vtkFloatArray* Array(vtkDeepGIReferenceIrradiance* reference, const char* name)
+{
+  return vtkFloatArray::SafeDownCast(reference->GetOutput()->GetPointData()->GetArray(name));
+}
+
+// Compares E per pixel and channel with exact(p, c) (channels with a
+// negative exact value are skipped).
+void CompareExact(vtkDeepGIReferenceIrradiance* reference,
+  const std::function<double(vtkIdType, int)>& exact, const std::string& what)
+{
+  vtkFloatArray* e = Array(reference, "IndirectIrradiance");
+  vtkFloatArray* se = Array(reference, "IndirectIrradianceStandardError");
+  if (!e || !se)
+  {
+    Check(false, what + ": output arrays missing");
+    return;
+  }
+  int n = 0, bad = 0;
+  double sumDiff = 0, sumVar = 0, maxRatio = 0, maxExact = 0;
+  for (vtkIdType p = 0; p < e->GetNumberOfTuples(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double x = exact(p, c);
+      if (!(x >= 0))
+      {
+        continue;
+      }
+      const double diff = e->GetComponent(p, c) - x;
+      const double tolerance = 4.0 * se->GetComponent(p, c) + 1e-6;
+      bad += std::fabs(diff) > tolerance;
+      maxRatio = std::max(maxRatio, std::fabs(diff) / tolerance);
+      maxExact = std::max(maxExact, x);
+      sumDiff += diff;
+      sumVar += se->GetComponent(p, c) * se->GetComponent(p, c);
+      ++n;
+    }
+  }
+  const double meanDiff = n ? sumDiff / n : 0, meanSE = n ? std::sqrt(sumVar) / n : 0;
+  std::cout << what << ": " << n << " values (exact up to " << maxExact << "), mean E - exact "
+            << meanDiff << " (its standard error " << meanSE << "), max |diff| / tolerance "
+            << maxRatio << "\n";
+  Check(n > 0 && maxExact > 0.1, what + ": values compared");
+  Check(bad == 0, what + ": " + std::to_string(bad) + " values beyond 4 standard errors");
+  Check(std::fabs(meanDiff) < 4 * meanSE + 1e-6, what + ": mean difference within 4 SE");
+}
+
+double MaxAbs(vtkDeepGIReferenceIrradiance* reference, const char* name)
+{
+  vtkFloatArray* a = Array(reference, name);
+  double m = 0;
+  for (vtkIdType i = 0; a && i < a->GetNumberOfValues(); ++i)
+  {
+    m = std::max(m, static_cast<double>(std::fabs(a->GetValue(i))));
+  }
+  return a ? m : -1;
+}
+}
+
+int TestDeepGIReferenceEmission(int, char*[])
+{
+  std::vector<std::array<double, 3>> positions;
+  auto capture = MakeCapture(positions);
+  auto viewFactor = [&](vtkIdType p)
+  { return SquareViewFactor(positions[p][0], positions[p][1], Half, Lift); };
+  auto emittedExact = [&](vtkIdType p, int c)
+  { return vtkMath::Pi() * Emitted[c] * viewFactor(p); };
+  const double below[3] = { 0, 0, -1 }, above[3] = { 0, 0, 1 };
+
+  // 1. Closed form, no lights: no warning either.
+  {
+    vtkNew<vtkDeepGIReferenceIrradiance> reference;
+    vtkNew<EventCounter> events;
+    reference->AddObserver(vtkCommand::WarningEvent, events);
+    reference->SetScene(SquareScene(true, EmissionArray(Emitted)));
+    reference->SetSamplesPerPixel(1024);
+    Check(reference->Compute(capture), "emitting square: Compute");
+    CompareExact(reference, emittedExact, "emitting square, no lights (closed form)");
+    Check(events->Warnings == 0, "an emitting scene without lights: no warning");
+  }
+
+  // 2. Emission adds to the diffuse radiance from a light below (n.l = 1).
+  {
+    const double intensity = 0.6, rho = 128.0 / 255.0;
+    vtkNew<vtkDeepGIReferenceIrradiance> reference;
+    reference->SetScene(SquareScene(true, EmissionArray(Emitted)));
+    reference->AddLight(Directional(below, intensity));
+    reference->SetSamplesPerPixel(1024);
+    Check(reference->Compute(capture), "emitting and lit square: Compute");
+    CompareExact(
+      reference,
+      [&](vtkIdType p, int c)
+      { return vtkMath::Pi() * (Emitted[c] + rho * intensity) * viewFactor(p); },
+      "emitting square lit from below: pi (L_e + rho I) F");
+  }
+
+  // 3. Back faces: emitted on both sides with two-sided lighting, as VTK draws
+  // the ambient term; nothing with it off.
+  {
+    vtkNew<vtkDeepGIReferenceIrradiance> reference;
+    reference->SetScene(SquareScene(false, EmissionArray(Emitted)));
+    reference->SetSamplesPerPixel(1024);
+    Check(reference->Compute(capture), "emitting square seen from behind: Compute");
+    CompareExact(
+      reference, emittedExact, "emitting square seen from behind, two-sided (closed form)");
+    reference->TwoSidedLightingOff();
+    Check(reference->Compute(capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0,
+      "emitting square seen from behind, one-sided: E = 0");
+  }
+
+  // 4. No array, or no array name: E = 0 and no warning.
+  {
+    vtkNew<vtkDeepGIReferenceIrradiance> reference;
+    vtkNew<EventCounter> events;
+    reference->AddObserver(vtkCommand::WarningEvent, events);
+    reference->AddLight(Directional(above, 1.0));
+    reference->SetSamplesPerPixel(64);
+    reference->SetScene(SquareScene(true, nullptr));
+    Check(reference->Compute(capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0 &&
+        events->Warnings == 0,
+      "no Emission array: E = 0, no warning");
+    reference->SetScene(SquareScene(true, EmissionArray(Emitted, 3, 1, "Glow")));
+    Check(reference->Compute(capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0 &&
+        events->Warnings == 0,
+      "an array of another name: E = 0, no warning");
+    reference->SetEmissionArrayName("Glow");
+    reference->SetSamplesPerPixel(1024);
+    Check(reference->Compute(capture), "EmissionArrayName Glow: Compute");
+    CompareExact(reference, emittedExact, "EmissionArrayName Glow (closed form)");
+    reference->SetEmissionArrayName(nullptr);
+    Check(reference->Compute(capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0 &&
+        events->Warnings == 0,
+      "EmissionArrayName null: no emission, no warning");
+    reference->SetEmissionArrayName("");
+    Check(reference->Compute(capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0 &&
+        events->Warnings == 0,
+      "EmissionArrayName empty: no emission, no warning");
+  }
+
+  // 5. Bad arrays.
+  {
+    vtkNew<vtkDeepGIReferenceIrradiance> reference;
+    vtkNew<EventCounter> events;
+    reference->AddObserver(vtkCommand::WarningEvent, events);
+    reference->AddObserver(vtkCommand::ErrorEvent, events);
+    // A light that reaches only the square's back, so that an ignored
+    // array does not also bring the warning about a scene without light.
+    reference->AddLight(Directional(above, 1.0));
+    reference->SetSamplesPerPixel(1024);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double bad[3] = { nan, -1.0, Emitted[2] };
+    reference->SetScene(SquareScene(true, EmissionArray(bad)));
+    Check(reference->Compute(capture) && events->Warnings == 1 && events->Errors == 0,
+      "NaN and negative emission: one warning");
+    Check(MaxAbs(reference, "IndirectIrradiance") < 10.0, "NaN and negative emission: E finite");
+    CompareExact(
+      reference,
+      [&](vtkIdType p, int c) { return c == 2 ? emittedExact(p, c) : 0.0; },
+      "NaN and negative emission clamped to 0, blue unchanged");
+    const double infinite[3] = { std::numeric_limits<double>::infinity(), 0.0, 0.0 };
+    reference->SetScene(SquareScene(true, EmissionArray(infinite)));
+    Check(reference->Compute(capture) && events->Warnings == 2 &&
+        MaxAbs(reference, "IndirectIrradiance") == 0.0,
+      "infinite emission: a warning, set to 0");
+    reference->SetScene(SquareScene(true, EmissionArray(Emitted, 2)));
+    Check(reference->Compute(capture) && events->Warnings == 3 &&
+        MaxAbs(reference, "IndirectIrradiance") == 0.0,
+      "a 2-component Emission array: a warning, ignored");
+    reference->SetScene(SquareScene(true, EmissionArray(Emitted, 3, 2)));
+    Check(reference->Compute(capture) && events->Warnings == 4 &&
+        MaxAbs(reference, "IndirectIrradiance") == 0.0,
+      "an Emission array with more tuples than cells: a warning, ignored");
+    // One component is grey.
+    const double grey[3] = { 0.4, 0.4, 0.4 };
+    reference->SetScene(SquareScene(true, EmissionArray(grey, 1)));
+    Check(reference->Compute(capture) && events->Warnings == 4, "grey emission: Compute");
+    CompareExact(
+      reference,
+      [&](vtkIdType p, int) { return vtkMath::Pi() * 0.4 * viewFactor(p); },
+      "a 1-component Emission array is grey (closed form)");
+  }
+
+  // 6. DIRECT_RADIANCE: the emitting floor itself (larger than the view).
+  {
+    const double e = 4.0;
+    const std::array<std::array<double, 3>, 4> up = { { { -e, -e, 0 }, { e, -e, 0 }, { e, e, 0 },
+      { -e, e, 0 } } };
+    const std::array<std::array<double, 3>, 4> down = { { { -e, -e, 0 }, { -e, e, 0 },
+      { e, e, 0 }, { e, -e, 0 } } };
+    vtkNew<vtkDeepGIReferenceIrradiance> reference;
+    reference->SetQuantityToDirectRadiance();
+    auto maxError = [&](const double expected[3])
+    {
+      vtkFloatArray* l = Array(reference, "DirectRadiance");
+      double m = l ? 0.0 : 1.0;
+      for (vtkIdType p = 0; l && p < l->GetNumberOfTuples(); ++p)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          m = std::max(m, std::fabs(l->GetComponent(p, c) - expected[c]));
+        }
+      }
+      return m;
+    };
+    const double zero[3] = { 0, 0, 0 };
+    reference->SetScene(QuadScene(up, EmissionArray(Emitted)));
+    Check(reference->Compute(capture) && maxError(Emitted) < 1e-6,
+      "DIRECT_RADIANCE of an emitting floor: L_e");
+    reference->AddLight(Directional(above, 0.6));
+    double lit[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      lit[c] = Emitted[c] + 128.0 / 255.0 * 0.6;
+    }
+    Check(reference->Compute(capture) && maxError(lit) < 1e-6,
+      "DIRECT_RADIANCE of an emitting floor under a light: L_e + rho I");
+    reference->RemoveAllLights();
+    reference->SetScene(QuadScene(down, EmissionArray(Emitted)));
+    Check(reference->Compute(capture) && maxError(Emitted) < 1e-6,
+      "DIRECT_RADIANCE of an emitting floor seen from behind, two-sided: L_e");
+    reference->TwoSidedLightingOff();
+    Check(reference->Compute(capture) && maxError(zero) == 0.0,
+      "DIRECT_RADIANCE of an emitting floor seen from behind, one-sided: 0");
+  }
+
+  // 7. An unsigned char array is a colour (/ 255), like "Colors".
+  {
+    vtkNew<vtkUnsignedCharArray> bytes;
+    bytes->SetName("Emission");
+    bytes->SetNumberOfComponents(3);
+    const unsigned char rgb[3] = { 255, 51, 0 };
+    bytes->InsertNextTypedTuple(rgb);
+    vtkNew<vtkDeepGIReferenceIrradiance> reference;
+    reference->SetScene(SquareScene(true, bytes));
+    reference->SetSamplesPerPixel(1024);
+    Check(reference->Compute(capture), "unsigned char emission: Compute");
+    CompareExact(
+      reference,
+      [&](vtkIdType p, int c) { return vtkMath::Pi() * rgb[c] / 255.0 * viewFactor(p); },
+      "unsigned char emission / 255 (closed form)");
+  }
+
+  std::cout << (Failures ? "FAILED" : "passed") << " (" << Failures << " failures)\n";
+  return Failures ? EXIT_FAILURE : EXIT_SUCCESS;
+}
