@@ -14,6 +14,7 @@
 #include "vtkDeepGBufferSceneLoader.h"
 #include "vtkDeepGIPass.h"
 #include "vtkDeepGIRenderWindowFactory.h"
+#include "vtkDeepRadiosityPass.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
 #include "vtkRenderWindow.h"
@@ -98,6 +99,9 @@ Rendering:
                       three; each still runs only where the scene needs it)
   --converge N        with --gi: frames rendered at the still camera before
                       gi.png is written, 1 to 10000 (default 20)
+  --guard-band B      with --gi: the G-buffer's guard band, a fraction of
+                      the image height added on each side, 0 to 0.5
+                      (default 0.1); the effects gather from it
   --help              print this text and exit
 
 Exit status: 0 on success, 1 when loading or rendering fails, 2 for bad
@@ -129,6 +133,8 @@ struct Options
   bool EffectsGiven = false;
   int Converge = 20;
   bool ConvergeGiven = false;
+  double GuardBand = vtkDeepRadiosityPass::DEFAULT_GUARD_BAND;
+  bool GuardBandGiven = false;
 };
 
 bool ParseInteger(const std::string& text, long long minimum, long long maximum, long long& value)
@@ -184,7 +190,7 @@ int ParseOptions(int argc, char* argv[], Options& o, bool& exitNow)
     }
     static const char* const withValue[] = { "--mesh", "--volume", "--iso", "--triangles",
       "--scale", "--view", "--layers", "--dz", "--oracle", "--size", "--frames", "--backend",
-      "--output", "--gi", "--effects", "--converge" };
+      "--output", "--gi", "--effects", "--converge", "--guard-band" };
     bool known = false;
     for (const char* name : withValue)
     {
@@ -368,10 +374,19 @@ int ParseOptions(int argc, char* argv[], Options& o, bool& exitNow)
       o.Converge = static_cast<int>(n);
       o.ConvergeGiven = true;
     }
+    else if (arg == "--guard-band")
+    {
+      if (!ParseReal(value, o.GuardBand) || o.GuardBand < 0.0 ||
+        o.GuardBand > vtkDeepGBufferPass::MAXIMUM_GUARD_BAND)
+      {
+        return bad("--guard-band needs a number from 0 to 0.5, got '" + value + "'");
+      }
+      o.GuardBandGiven = true;
+    }
   }
-  if (o.GI < 0 && (o.EffectsGiven || o.ConvergeGiven))
+  if (o.GI < 0 && (o.EffectsGiven || o.ConvergeGiven || o.GuardBandGiven))
   {
-    return bad("--effects and --converge need --gi with a preset");
+    return bad("--effects, --converge and --guard-band need --gi with a preset");
   }
   const bool loaded = !o.Meshes.empty() || !o.Volume.empty();
   if (o.IsoGiven && o.Volume.empty())
@@ -574,6 +589,7 @@ int main(int argc, char* argv[])
     gi->SetRadiosity(o.Radiosity);
     gi->SetReflections(o.Reflections);
     gi->GetGBufferPass()->SetOracle(o.Oracle);
+    gi->GetGBufferPass()->SetGuardBand(o.GuardBand);
     if (o.Dz >= 0.0)
     {
       gi->GetGBufferPass()->SetMinimumSeparation(o.Dz);
