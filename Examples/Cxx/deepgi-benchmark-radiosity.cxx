@@ -96,10 +96,15 @@ struct Options
 };
 
 // layers (1 or 2) : preset (hp, balanced, hq) [: nt (no n_Y test)] [: n | sa
-// (estimator)]
+// (estimator)] [: gb (guard band)]
 const char* const DefaultMethods = "1:hp,1:hp:nt,1:balanced,1:balanced:nt,1:hq,1:hq:nt,"
                                    "2:hp,2:hp:nt,2:balanced,2:balanced:nt,2:hq,2:hq:nt,"
-                                   "2:hp:n,2:balanced:n,2:hq:n,2:hp:sa,2:balanced:sa,2:hq:sa";
+                                   "2:hp:n,2:balanced:n,2:hq:n,2:hp:sa,2:balanced:sa,2:hq:sa,"
+                                   "2:hp:sa:gb,2:balanced:sa:gb,2:hq:sa:gb";
+
+// Width of the frame's border, as a fraction of the height, on which the
+// guard band's effect is measured separately.
+constexpr double BorderFraction = 0.1;
 
 void Usage()
 {
@@ -113,10 +118,11 @@ void Usage()
               "  --samples N          reference rays per pixel (default 64)\n"
               "  --scenes LIST        comma list of demo, cornell-lucy, cornell-original,\n"
               "                       dragon (default all four)\n"
-              "  --methods LIST       comma list of L:P[:nt][:E]: L layers (1 or 2), P the\n"
+              "  --methods LIST       comma list of L:P[:nt][:E][:gb]: L layers (1 or 2), P the\n"
               "                       preset (hp, balanced, hq), nt: the n_Y test off (else on),\n"
               "                       E the estimator: n (ALL_TAPS) or sa (SOLID_ANGLE); without\n"
-              "                       it ACCEPTED_TAPS (eq. 4).\n"
+              "                       it ACCEPTED_TAPS (eq. 4); gb: a G-buffer guard band of\n"
+              "                       vtkDeepRadiosityPass::DEFAULT_GUARD_BAND (else none).\n"
               "                       Default: %s\n"
               "  --data DIR           shared data directory (default %s)\n"
               "  --no-error-maps      do not write the error-map PNGs\n"
@@ -134,20 +140,26 @@ struct Method
   int Preset = vtkDeepRadiosityPass::BALANCED;
   bool NormalTest = true;
   int Estimator = vtkDeepRadiosityPass::ACCEPTED_TAPS;
+  bool GuardBand = false;
 };
 
 bool ParseMethod(const std::string& spec, Method& m)
 {
   const std::vector<std::string> p = Split(spec, ':');
-  if (p.size() < 2 || p.size() > 4 || (p[0] != "1" && p[0] != "2"))
+  if (p.size() < 2 || p.size() > 5 || (p[0] != "1" && p[0] != "2"))
   {
     return false;
   }
   m.NormalTest = true;
   m.Estimator = vtkDeepRadiosityPass::ACCEPTED_TAPS;
+  m.GuardBand = false;
   for (size_t k = 2; k < p.size(); ++k)
   {
-    if (p[k] == "nt")
+    if (p[k] == "gb")
+    {
+      m.GuardBand = true;
+    }
+    else if (p[k] == "nt")
     {
       m.NormalTest = false;
     }
@@ -174,7 +186,8 @@ bool ParseMethod(const std::string& spec, Method& m)
   m.Preset = static_cast<int>(it - std::begin(presets));
   const char* const estimators[] = { "", ", /N", ", solid angle" };
   const std::string label = std::string(m.Layers == 1 ? "1 layer" : "2 layers") +
-    (m.NormalTest ? "" : ", no n_Y test") + estimators[m.Estimator];
+    (m.NormalTest ? "" : ", no n_Y test") + estimators[m.Estimator] +
+    (m.GuardBand ? ", guard band" : "");
   m.Name = label + ", " + vtkDeepRadiosityPass::GetPresetAsString(m.Preset);
   m.Family = label;
   return true;
@@ -268,7 +281,8 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     Method parsed;
     if (!ParseMethod(m, parsed))
     {
-      return bad("unknown method '" + m + "' (L:P[:nt][:n|sa], L 1 or 2, P hp, balanced or hq)");
+      return bad(
+        "unknown method '" + m + "' (L:P[:nt][:n|sa][:gb], L 1 or 2, P hp, balanced or hq)");
     }
   }
   return true;
@@ -466,6 +480,7 @@ struct Result
   double Radius = 0;
   Stats Limited, Unlimited, Layer1, RawM, RawN, FilteredN;
   double LowConfidenceError = 0, HighConfidenceError = 0;
+  Stats Border, BorderUnlimited; // the pixels within BorderFraction of the frame's edge
 };
 
 struct SceneInfo
@@ -523,15 +538,20 @@ int main(int argc, char* argv[])
       return 1;
     }
 
-    // One G-buffer per layer count, shared by the methods that use it.
-    vtkNew<vtkDeepGBufferPass> gbuffer1, gbuffer2;
+    // One G-buffer per layer count, shared by the methods that use it, and
+    // a two-layer one with the default guard band for the "gb" methods.
+    vtkNew<vtkDeepGBufferPass> gbuffer1, gbuffer2, gbuffer2Guard;
     gbuffer1->SetNumberOfLayers(1);
     gbuffer2->SetNumberOfLayers(2);
+    gbuffer2Guard->SetNumberOfLayers(2);
+    gbuffer2Guard->SetGuardBand(vtkDeepRadiosityPass::DEFAULT_GUARD_BAND);
     std::vector<vtkSmartPointer<vtkDeepRadiosityPass>> passes;
     for (const Method& m : methods)
     {
       auto pass = vtkSmartPointer<vtkDeepRadiosityPass>::New();
-      pass->SetGBufferPass(m.Layers == 1 ? gbuffer1.GetPointer() : gbuffer2.GetPointer());
+      pass->SetGBufferPass(m.Layers == 1 ? gbuffer1.GetPointer()
+          : m.GuardBand                  ? gbuffer2Guard.GetPointer()
+                                         : gbuffer2.GetPointer());
       pass->SetPreset(m.Preset);
       pass->SetUseNormalTest(m.NormalTest);
       pass->SetEstimator(m.Estimator);
@@ -553,12 +573,16 @@ int main(int argc, char* argv[])
     const size_t np = static_cast<size_t>(w) * h;
     const std::vector<float> valid0 = Scalar(capture, "Valid_0");
     const std::vector<float> valid1 = Scalar(capture, "Valid_1");
-    std::vector<unsigned char> mask(np, 0), layer1(np, 0);
+    std::vector<unsigned char> mask(np, 0), layer1(np, 0), border(np, 0);
     long nValid = 0, nLayer1 = 0;
+    const int borderWidth = static_cast<int>(std::lround(BorderFraction * h));
     for (size_t i = 0; i < np; ++i)
     {
+      const int x = static_cast<int>(i % w), y = static_cast<int>(i / w);
       mask[i] = valid0[i] > 0;
       layer1[i] = mask[i] && valid1[i] > 0;
+      border[i] = mask[i] &&
+        (x < borderWidth || y < borderWidth || x >= w - borderWidth || y >= h - borderWidth);
       nValid += mask[i];
       nLayer1 += layer1[i];
     }
@@ -639,6 +663,8 @@ int main(int argc, char* argv[])
       res.Limited = Errors(e, ref, mask);
       res.Unlimited = Errors(e, refAll, mask);
       res.Layer1 = Errors(e, ref, layer1);
+      res.Border = Errors(e, ref, border);
+      res.BorderUnlimited = Errors(e, refAll, border);
       res.RawM = Errors(raw, ref, mask);
       res.RawN = Errors(rawN, ref, mask);
       res.FilteredN = Errors(eN, ref, mask);
@@ -695,6 +721,7 @@ int main(int argc, char* argv[])
     }
     gbuffer1->ReleaseGraphicsResources(window);
     gbuffer2->ReleaseGraphicsResources(window);
+    gbuffer2Guard->ReleaseGraphicsResources(window);
     std::fprintf(stderr, "%s: scene %s done\n", Program, sceneName.c_str());
   }
 
@@ -728,7 +755,8 @@ int main(int argc, char* argv[])
          "relative,"
          "rmse_layer1,rmse_unlimited,mae_unlimited,bias_unlimited,relative_unlimited,"
          "rmse_raw_m,bias_raw_m,rmse_raw_n,bias_raw_n,rmse_filtered_n,bias_filtered_n,"
-         "mae_low_confidence,mae_high_confidence\n";
+         "mae_low_confidence,mae_high_confidence,guard_band,rmse_border,bias_border,"
+         "rmse_border_unlimited\n";
   for (const Result& r : results)
   {
     char b[1024];
@@ -739,12 +767,13 @@ int main(int argc, char* argv[])
     md << b;
     std::snprintf(b, sizeof(b),
       "\"%s\",\"%s\",\"%s\",%d,%d,%d,%d,%.4f,%.5g,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,"
-      "%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f\n",
+      "%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%d,%.5f,%.5f,%.5f\n",
       r.Scene.c_str(), r.M.Name.c_str(), r.M.Family.c_str(), r.M.Layers, r.M.Preset,
       r.M.NormalTest ? 1 : 0, r.M.Estimator, r.FrameMs, r.Radius, r.Limited.Rmse, r.Limited.Mae,
       r.Limited.Bias, r.Limited.Relative, r.Layer1.Rmse, r.Unlimited.Rmse, r.Unlimited.Mae,
       r.Unlimited.Bias, r.Unlimited.Relative, r.RawM.Rmse, r.RawM.Bias, r.RawN.Rmse, r.RawN.Bias,
-      r.FilteredN.Rmse, r.FilteredN.Bias, r.LowConfidenceError, r.HighConfidenceError);
+      r.FilteredN.Rmse, r.FilteredN.Bias, r.LowConfidenceError, r.HighConfidenceError,
+      r.M.GuardBand ? 1 : 0, r.Border.Rmse, r.Border.Bias, r.BorderUnlimited.Rmse);
     csv << b;
   }
 
@@ -777,6 +806,28 @@ int main(int argc, char* argv[])
     std::snprintf(b, sizeof(b), "| %s | %s | %.4f | %.4f | %.2f |\n", r.Scene.c_str(),
       r.M.Name.c_str(), r.LowConfidenceError, r.HighConfidenceError,
       r.LowConfidenceError / std::max(1e-9, r.HighConfidenceError));
+    md << b;
+  }
+
+  md << "\n### Guard band\n\n"
+     << "Two layers, SOLID_ANGLE, each preset, without and with a guard band of "
+     << vtkDeepRadiosityPass::DEFAULT_GUARD_BAND
+     << " of the height per side (shaded fraction from the preset). Border: the valid pixels "
+        "within "
+     << BorderFraction << " of the height of the frame's edge.\n\n"
+     << "| scene | method | frame [ms] | RMSE vs E_ref,r | RMSE border | bias border | RMSE "
+        "border vs E_ref | border px |\n|---|---|---|---|---|---|---|---|\n";
+  for (const Result& r : results)
+  {
+    if (r.M.Layers != 2 || !r.M.NormalTest ||
+      r.M.Estimator != vtkDeepRadiosityPass::SOLID_ANGLE)
+    {
+      continue;
+    }
+    char b[512];
+    std::snprintf(b, sizeof(b), "| %s | %s | %.2f | %.4f | %.4f | %+.4f | %.4f | %ld |\n",
+      r.Scene.c_str(), r.M.Name.c_str(), r.FrameMs, r.Limited.Rmse, r.Border.Rmse,
+      r.Border.Bias, r.BorderUnlimited.Rmse, r.Border.Pixels);
     md << b;
   }
 

@@ -1139,9 +1139,14 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
   // The layers: the frame and the guard band around it (paper section 3.5).
   GLint maximumTextureSize = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maximumTextureSize);
+  // Rounded up to a multiple of GUARD_BAND_ALIGNMENT so that the frame keeps
+  // its place in the blocks of the consumers' MIP levels.
+  const int alignment = GUARD_BAND_ALIGNMENT;
   int guard = static_cast<int>(std::lround(this->GuardBand * frameHeight));
-  const int guardLimit =
-    std::max(0, (static_cast<int>(maximumTextureSize) - std::max(frameWidth, frameHeight)) / 2);
+  guard = (guard + alignment - 1) / alignment * alignment;
+  const int guardLimit = std::max(0,
+    (static_cast<int>(maximumTextureSize) - std::max(frameWidth, frameHeight)) / 2 / alignment *
+      alignment);
   if (guard > guardLimit)
   {
     in.WarnOnce(this, 4,

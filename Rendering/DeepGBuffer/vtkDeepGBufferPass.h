@@ -104,6 +104,10 @@ public:
   /// The largest guard band, as a fraction of the viewport's height per side.
   static constexpr double MAXIMUM_GUARD_BAND = 0.5;
 
+  /// The guard band in pixels is a multiple of this: 8, the block of MIP
+  /// level 3 (Table 2's coarsest minimum level).
+  static constexpr int GUARD_BAND_ALIGNMENT = 8;
+
   ///@{
   /**
    * Oracle used to build layers j > 0 (see the class description).
@@ -196,7 +200,11 @@ public:
   ///@{
   /**
    * Guard band (paper section 3.5): the layers extend beyond the frame by
-   * round(GuardBand x viewport height) pixels on each side, rasterised with
+   * round(GuardBand x viewport height) pixels on each side, rounded up to a
+   * multiple of GUARD_BAND_ALIGNMENT so that the frame keeps its alignment
+   * to the rotated-grid MIP blocks the screen-space passes read (their
+   * pixels whose taps stay inside the frame then get the result they have
+   * without a guard band, up to MIP level 3), rasterised with
    * the camera's frustum widened to match (clip x and y scaled by
    * frame / (frame + 2 x band)), so the frame's pixels are exactly those of
    * the camera and the band holds what lies just outside the view. The

@@ -106,23 +106,32 @@ void TestEnergy(double alpha)
   const double direct = LargestDirect(layers);
   const double bound = 2.0 * rho * direct / (1.0 - 2.0 * rho * delta);
   const double frames90 = std::abs(total[99] - total[89]) / total[99];
+  // With the temporal filter every frame rotates the spiral, so the total
+  // fluctuates from frame to frame (about 1 % here); convergence is the
+  // absence of drift between the means of frames 81-90 and 91-100.
+  double earlier = 0.0, later = 0.0;
+  for (int k = 80; k < 90; ++k)
+  {
+    earlier += total[k] / 10.0;
+    later += total[k + 10] / 10.0;
+  }
+  const double drift = std::abs(later - earlier) / later;
   std::printf("alpha %.2f: total L_ind frame 1 %.2f, 2 %.2f, 10 %.2f, 50 %.2f, 100 %.2f; change "
-              "90..100 %.2e; largest L_ind %.3f, bound %.3f (D = %.3f); layer 1 total frame 1 "
-              "%.3f, 100 %.3f\n",
-    alpha, total[0], total[1], total[9], total[49], total[99], frames90, largest, bound, direct,
-    layer1[0], layer1[99]);
+              "90..100 %.2e, drift of the 10-frame mean %.2e; largest L_ind %.3f, bound %.3f (D = "
+              "%.3f); layer 1 total frame 1 %.3f, 100 %.3f\n",
+    alpha, total[0], total[1], total[9], total[49], total[99], frames90, drift, largest, bound,
+    direct, layer1[0], layer1[99]);
   Check(finite, "finite and non-negative every frame");
   Check(largest <= bound, "L_ind below the derived bound");
   // The default SOLID_ANGLE gathers only the solid angle the taps see
   // within r, so each bounce adds less than eq. 4's division by M did (its
-  // bound was x 1.2): measured x 1.072 (alpha 0) and x 1.058 (alpha 0.85)
-  // with the default guard band.
+  // bound was x 1.2): measured x 1.078 (alpha 0) and x 1.112 (alpha 0.85)
+  // with the default guard band (x 1.074 and x 1.048 without one).
   Check(total[99] > total[0] * 1.03, "bounces add light");
-  // Layer 1 (the floor and walls behind the box, Figure 5) gains x 1.034
-  // (alpha 0) and x 1.089 (alpha 0.85) with the default guard band, x 1.069
-  // and x 1.099 without one (its first bounce is 5 % smaller there); no
-  // propagation into layer 1 would give x 1.
-  Check(layer1[99] > layer1[0] * 1.02, "layer-1 pixels gain light from the bounces");
+  // Layer 1 (the floor and walls behind the box, Figure 5) gains x 1.083
+  // (alpha 0) and x 1.181 (alpha 0.85) with the default guard band, x 1.069
+  // and x 1.099 without one; no propagation into layer 1 would give x 1.
+  Check(layer1[99] > layer1[0] * 1.05, "layer-1 pixels gain light from the bounces");
   if (alpha == 0.0)
   {
     Check(monotone, "total never decreases (alpha 0)");
@@ -131,7 +140,7 @@ void TestEnergy(double alpha)
   }
   else
   {
-    Check(frames90 < 1e-2, "converged by frame 90 (alpha 0.85)");
+    Check(drift < 5e-3, "converged by frame 90 (alpha 0.85)");
   }
   pass->ReleaseGraphicsResources(window);
 }

@@ -10,11 +10,11 @@
 // out over a quarter of the pixels).
 //
 // Measured with the default estimator SOLID_ANGLE and the pass's default
-// guard band (relative error lowest / highest quarter): demo 0.993 / 0.677
-// (1.47 x), Cornell box lit by its lamp (its spot light, and its emitting
-// quad through the scene's "Emission" cell array) 1.000 / 0.819 (1.22 x);
+// guard band (relative error lowest / highest quarter): demo 0.993 / 0.666
+// (1.49 x), Cornell box lit by its lamp (its spot light, and its emitting
+// quad through the scene's "Emission" cell array) 1.000 / 0.729 (1.37 x);
 // without a guard band, and the reference without the lamp's emission,
-// 0.993 / 0.715 (1.39 x) and 1.000 / 0.714 (1.40 x). MinimumRatio 1.15
+// 0.993 / 0.715 (1.39 x) and 1.000 / 0.714 (1.40 x). MinimumRatio 1.25
 // leaves a margin below the smaller. With eq. 4 (ACCEPTED_TAPS, the default before) it was
 // 0.94 / 0.42 (2.25 x) and 1.00 / 0.69 (1.45 x):
 // SOLID_ANGLE is darker, so its high-confidence pixels are further below
@@ -38,7 +38,7 @@ using namespace DeepRadiosityReferenceTest;
 
 namespace
 {
-constexpr double MinimumRatio = 1.15;
+constexpr double MinimumRatio = 1.25;
 
 // Relative error of the lowest and of the highest confidence quarter.
 std::pair<double, double> Measure(const std::string& sceneName, const std::string& data)
