@@ -31,6 +31,7 @@
 #include "vtkDataArray.h"
 #include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferPass.h"
+#include "vtkDeepRadiosityPass.h"
 #include "vtkDeepGIReferenceReflection.h"
 #include "vtkDeepGIRenderWindowFactory.h"
 #include "vtkDeepReflectionPass.h"
@@ -53,6 +54,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -224,6 +226,7 @@ struct Result
 {
   std::string Scene;
   int Layers = 0;
+  double GuardBand = 0.0;
   long Traced = 0, TruthHits = 0, MatchedLayer0 = 0, MatchedLayer1 = 0, Missed = 0, Wrong = 0,
        TruthMisses = 0, FalseHits = 0;
   double MaximumDistance = 0, Thickness = 0, FrameMs = 0;
@@ -247,8 +250,13 @@ int main(int argc, char* argv[])
   std::vector<Result> results;
   for (const std::string& sceneName : options.Scenes)
   {
-    for (int layers = 1; layers <= 2; ++layers)
+    // 1 layer, 2 layers, and 2 layers with the G-buffer guard band of the
+    // radiosity and GI passes (rays that leave the frame can hit the band).
+    const std::pair<int, double> configurations[] = { { 1, 0.0 }, { 2, 0.0 },
+      { 2, vtkDeepRadiosityPass::DEFAULT_GUARD_BAND } };
+    for (const auto& configuration : configurations)
     {
+      const int layers = configuration.first;
       vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::Take(
         vtkDeepGIRenderWindowFactory::NewRenderWindow(options.Backend));
       if (!window)
@@ -266,6 +274,7 @@ int main(int argc, char* argv[])
       vtkSmartPointer<vtkPolyData> geometry = LoadScene(sceneName, renderer, keep);
       vtkNew<vtkDeepReflectionPass> pass;
       pass->GetGBufferPass()->SetNumberOfLayers(layers);
+      pass->GetGBufferPass()->SetGuardBand(configuration.second);
       renderer->SetPass(pass);
       const std::vector<double> ms = TimeFrames(
         [&]()
@@ -292,6 +301,7 @@ int main(int argc, char* argv[])
       Result r;
       r.Scene = sceneName;
       r.Layers = layers;
+      r.GuardBand = configuration.second;
       r.MaximumDistance = pass->GetEffectiveMaximumDistance();
       r.Thickness = pass->GetEffectiveThickness();
       r.FrameMs = Median(ms);
@@ -334,7 +344,8 @@ int main(int argc, char* argv[])
         }
       }
       results.push_back(r);
-      std::fprintf(stderr, "%s: %s, %d layer(s) done\n", Program, sceneName.c_str(), layers);
+      std::fprintf(stderr, "%s: %s, %d layer(s), guard band %g done\n", Program,
+        sceneName.c_str(), layers, configuration.second);
     }
   }
 
@@ -346,23 +357,24 @@ int main(int argc, char* argv[])
      << " % of the traced distance + dz. Percentages of the traced pixels where the truth hits "
         "(matched layer 0, matched layer 1, missed, wrong point) and of those where it misses "
         "(false hits).\n\n"
-     << "| scene | layers | t_max | dz | traced px | truth hits | matched layer 0 [%] | matched "
-        "layer 1 [%] | matched [%] | missed [%] | wrong point [%] | truth misses | false hits "
-        "[%] |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  csv << "scene,layers,max_distance,thickness,traced,truth_hits,matched_layer0,matched_layer1,"
-         "missed,wrong,truth_misses,false_hits\n";
+     << "| scene | layers | guard band | t_max | dz | traced px | truth hits | matched layer 0 "
+        "[%] | matched layer 1 [%] | matched [%] | missed [%] | wrong point [%] | truth misses | "
+        "false hits [%] |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  csv << "scene,layers,guard_band,max_distance,thickness,traced,truth_hits,matched_layer0,"
+         "matched_layer1,missed,wrong,truth_misses,false_hits\n";
   for (const Result& r : results)
   {
     char b[1024];
     std::snprintf(b, sizeof(b),
-      "| %s | %d | %.4g | %.4g | %ld | %ld | %.1f | %.1f | %.1f | %.1f | %.1f | %ld | %.1f |\n",
-      r.Scene.c_str(), r.Layers, r.MaximumDistance, r.Thickness, r.Traced, r.TruthHits,
+      "| %s | %d | %.2g | %.4g | %.4g | %ld | %ld | %.1f | %.1f | %.1f | %.1f | %.1f | %ld | "
+      "%.1f |\n",
+      r.Scene.c_str(), r.Layers, r.GuardBand, r.MaximumDistance, r.Thickness, r.Traced, r.TruthHits,
       Percent(r.MatchedLayer0, r.TruthHits), Percent(r.MatchedLayer1, r.TruthHits),
       Percent(r.MatchedLayer0 + r.MatchedLayer1, r.TruthHits), Percent(r.Missed, r.TruthHits),
       Percent(r.Wrong, r.TruthHits), r.TruthMisses, Percent(r.FalseHits, r.TruthMisses));
     md << b;
-    std::snprintf(b, sizeof(b), "%s,%d,%.5g,%.5g,%ld,%ld,%ld,%ld,%ld,%ld,%ld,%ld\n",
-      r.Scene.c_str(), r.Layers, r.MaximumDistance, r.Thickness, r.Traced, r.TruthHits,
+    std::snprintf(b, sizeof(b), "%s,%d,%.3g,%.5g,%.5g,%ld,%ld,%ld,%ld,%ld,%ld,%ld,%ld\n",
+      r.Scene.c_str(), r.Layers, r.GuardBand, r.MaximumDistance, r.Thickness, r.Traced, r.TruthHits,
       r.MatchedLayer0, r.MatchedLayer1, r.Missed, r.Wrong, r.TruthMisses, r.FalseHits);
     csv << b;
   }
