@@ -130,6 +130,12 @@ struct vtkDeepAmbientObscuranceRendererState
     return this->Temporal ? this->History[this->HistoryCurrent] : this->Targets[FILTERED];
   }
 
+  void Attach(vtkRenderer* renderer)
+  {
+    this->Renderer = renderer;
+    this->Renders.Observe(renderer);
+  }
+
   void Release(vtkWindow* w)
   {
     this->ReleaseMip();
@@ -150,8 +156,7 @@ struct vtkDeepAmbientObscuranceRendererState
 class vtkDeepAmbientObscurancePass::vtkInternals
 {
 public:
-  std::map<vtkRenderer*, std::unique_ptr<vtkDeepAmbientObscuranceRendererState>> States;
-  vtkRenderer* FirstRenderer = nullptr;
+  vtkDeepScreenSpace::RendererStates<vtkDeepAmbientObscuranceRendererState> States;
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
   vtkOpenGLQuadHelper* AOQuad = nullptr;
   vtkOpenGLQuadHelper* BlurQuad = nullptr;
@@ -160,11 +165,6 @@ public:
   vtkOpenGLQuadHelper* TemporalQuad = nullptr;
   bool WarnedUnsupported = false;
 
-  vtkDeepAmbientObscuranceRendererState* Find(vtkRenderer* renderer)
-  {
-    auto it = this->States.find(renderer ? renderer : this->FirstRenderer);
-    return (it == this->States.end() || !it->second->HasFrame) ? nullptr : it->second.get();
-  }
 };
 
 //------------------------------------------------------------------------------
@@ -177,7 +177,7 @@ vtkDeepAmbientObscurancePass::vtkDeepAmbientObscurancePass()
 vtkDeepAmbientObscurancePass::~vtkDeepAmbientObscurancePass()
 {
   vtkInternals& in = *this->Internals;
-  if (in.AOQuad || in.Framebuffer || !in.States.empty())
+  if (in.AOQuad || in.Framebuffer || !in.States.Empty())
   {
     vtkWarningMacro("Destroyed without ReleaseGraphicsResources(); OpenGL objects are leaked "
                     "unless the context was destroyed first.");
@@ -356,11 +356,10 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
       in.WarnedUnsupported = true;
       vtkWarningMacro("The deep G-buffer is unavailable; rendering without ambient obscurance.");
     }
-    auto it = in.States.find(renderer);
-    if (it != in.States.end())
+    if (vtkDeepAmbientObscuranceRendererState* state = in.States.Existing(renderer))
     {
-      it->second->HasFrame = false;
-      it->second->ResetHistory(renderer->GetRenderWindow());
+      state->HasFrame = false;
+      state->ResetHistory(renderer->GetRenderWindow());
     }
     return;
   }
@@ -372,7 +371,7 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
   }
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   vtkOpenGLState* ostate = window->GetState();
-  vtkDeepAmbientObscuranceRendererState& state = *in.States[renderer];
+  vtkDeepAmbientObscuranceRendererState& state = *in.States.Existing(renderer);
   if (!ReadyQuad(in.CompositeQuad, window, vtkDeepAmbientObscuranceCompositeFS))
   {
     vtkErrorMacro("The ambient obscurance composite shader failed to compile.");
@@ -449,20 +448,18 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
   vtkOpenGLState* ostate = window->GetState();
   vtkOpenGLClearErrorMacro();
 
-  double view[16], projection[16];
-  const int layers = gbuffer->GetLayerCamera(renderer, view, projection);
-  if (layers <= 0)
+  LayerFrame frame;
+  if (!this->GetLayerFrame(renderer, "UpdateAmbientVisibility", frame))
   {
-    vtkErrorMacro("UpdateAmbientVisibility: the G-buffer pass has no layers for this renderer; "
-                  "call GetGBufferPass()->RenderLayers first.");
     return false;
   }
-  int size[2] = { 0, 0 };
-  int guardBand = 0;
-  gbuffer->GetLayerExtent(renderer, size, guardBand);
-  const int width = size[0], height = size[1];
+  const double* view = frame.View;
+  const double* projection = frame.Projection;
+  const int layers = frame.Layers;
+  const int width = frame.Size[0], height = frame.Size[1];
+  const int guardBand = frame.GuardBand;
   int region[4];
-  vtkDeepScreenSpace::ShadedRegion(size, guardBand, this->GuardBandShadedFraction, region);
+  vtkDeepScreenSpace::ShadedRegion(frame.Size, guardBand, this->GuardBandShadedFraction, region);
 
   // Effective radius.
   double radius = this->Radius;
@@ -472,18 +469,7 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
   }
   this->EffectiveRadius = radius;
 
-  auto& slot = in.States[renderer];
-  if (!slot)
-  {
-    slot.reset(new vtkDeepAmbientObscuranceRendererState);
-    slot->Renderer = renderer;
-    slot->Renders.Observe(renderer);
-  }
-  if (!in.FirstRenderer || !in.States.count(in.FirstRenderer))
-  {
-    in.FirstRenderer = renderer;
-  }
-  vtkDeepAmbientObscuranceRendererState& state = *slot;
+  vtkDeepAmbientObscuranceRendererState& state = in.States.Get(renderer);
   state.HasFrame = false;
   // Temporal history: reset when off, on a resize or a new shaded region,
   // and when this renderer was rendered without this pass since the
@@ -677,7 +663,7 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
 //------------------------------------------------------------------------------
 int vtkDeepAmbientObscurancePass::ActivateVisibilityTexture(vtkRenderer* renderer)
 {
-  vtkDeepAmbientObscuranceRendererState* state = this->Internals->Find(renderer);
+  vtkDeepAmbientObscuranceRendererState* state = this->Internals->States.Find(renderer);
   vtkTextureObject* texture = state ? state->Visibility() : nullptr;
   if (!texture)
   {
@@ -690,7 +676,7 @@ int vtkDeepAmbientObscurancePass::ActivateVisibilityTexture(vtkRenderer* rendere
 //------------------------------------------------------------------------------
 void vtkDeepAmbientObscurancePass::DeactivateVisibilityTexture(vtkRenderer* renderer)
 {
-  vtkDeepAmbientObscuranceRendererState* state = this->Internals->Find(renderer);
+  vtkDeepAmbientObscuranceRendererState* state = this->Internals->States.Find(renderer);
   if (vtkTextureObject* texture = state ? state->Visibility() : nullptr)
   {
     texture->Deactivate();
@@ -700,7 +686,7 @@ void vtkDeepAmbientObscurancePass::DeactivateVisibilityTexture(vtkRenderer* rend
 //------------------------------------------------------------------------------
 unsigned int vtkDeepAmbientObscurancePass::GetVisibilityTextureHandle(vtkRenderer* renderer)
 {
-  vtkDeepAmbientObscuranceRendererState* state = this->Internals->Find(renderer);
+  vtkDeepAmbientObscuranceRendererState* state = this->Internals->States.Find(renderer);
   vtkTextureObject* texture = state ? state->Visibility() : nullptr;
   return texture ? texture->GetHandle() : 0;
 }
@@ -794,7 +780,7 @@ int vtkDeepAmbientObscurancePass::BuildDistancePyramid(
 bool vtkDeepAmbientObscurancePass::CaptureDistancePyramid(
   int level, vtkImageData* output, vtkRenderer* renderer)
 {
-  vtkDeepAmbientObscuranceRendererState* state = this->Internals->Find(renderer);
+  vtkDeepAmbientObscuranceRendererState* state = this->Internals->States.Find(renderer);
   if (!output || !state || !state->Renderer)
   {
     vtkErrorMacro("CaptureDistancePyramid: no ambient obscurance has been rendered for this "
@@ -858,12 +844,7 @@ bool vtkDeepAmbientObscurancePass::CaptureDistancePyramid(
 void vtkDeepAmbientObscurancePass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkInternals& in = *this->Internals;
-  for (auto& entry : in.States)
-  {
-    entry.second->Release(w);
-  }
-  in.States.clear();
-  in.FirstRenderer = nullptr;
+  in.States.Release(w);
   for (vtkOpenGLQuadHelper** quad :
     { &in.AOQuad, &in.BlurQuad, &in.CompositeQuad, &in.MinifyQuad, &in.TemporalQuad })
   {
@@ -883,7 +864,7 @@ void vtkDeepAmbientObscurancePass::ReleaseGraphicsResources(vtkWindow* w)
 bool vtkDeepAmbientObscurancePass::CaptureAmbientVisibility(
   vtkImageData* output, vtkRenderer* renderer)
 {
-  vtkDeepAmbientObscuranceRendererState* state = this->Internals->Find(renderer);
+  vtkDeepAmbientObscuranceRendererState* state = this->Internals->States.Find(renderer);
   if (!output || !state || !state->Renderer)
   {
     vtkErrorMacro("CaptureAmbientVisibility: no ambient obscurance has been rendered for this "

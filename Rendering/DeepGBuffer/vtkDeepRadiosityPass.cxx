@@ -120,6 +120,12 @@ struct vtkDeepRadiosityRendererState
     this->FrameIndex = 0;
   }
 
+  void Attach(vtkRenderer* renderer)
+  {
+    this->Renderer = renderer;
+    this->Renders.Observe(renderer);
+  }
+
   void Release(vtkWindow* w)
   {
     for (auto& perLayer : this->Targets)
@@ -156,8 +162,7 @@ struct vtkDeepRadiosityRendererState
 class vtkDeepRadiosityPass::vtkInternals
 {
 public:
-  std::map<vtkRenderer*, std::unique_ptr<vtkDeepRadiosityRendererState>> States;
-  vtkRenderer* FirstRenderer = nullptr;
+  vtkDeepScreenSpace::RendererStates<vtkDeepRadiosityRendererState> States;
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
   vtkOpenGLQuadHelper* BounceQuad = nullptr;
   vtkOpenGLQuadHelper* GatherQuad = nullptr;
@@ -166,11 +171,6 @@ public:
   vtkOpenGLQuadHelper* CompositeQuad = nullptr;
   bool WarnedUnsupported = false;
 
-  vtkDeepRadiosityRendererState* Find(vtkRenderer* renderer)
-  {
-    auto it = this->States.find(renderer ? renderer : this->FirstRenderer);
-    return (it == this->States.end() || !it->second->HasFrame) ? nullptr : it->second.get();
-  }
 };
 
 //------------------------------------------------------------------------------
@@ -186,7 +186,7 @@ vtkDeepRadiosityPass::vtkDeepRadiosityPass()
 vtkDeepRadiosityPass::~vtkDeepRadiosityPass()
 {
   vtkInternals& in = *this->Internals;
-  if (in.GatherQuad || in.Framebuffer || !in.States.empty())
+  if (in.GatherQuad || in.Framebuffer || !in.States.Empty())
   {
     vtkWarningMacro("Destroyed without ReleaseGraphicsResources(); OpenGL objects are leaked "
                     "unless the context was destroyed first.");
@@ -401,11 +401,10 @@ void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
       in.WarnedUnsupported = true;
       vtkWarningMacro("The deep G-buffer is unavailable; rendering without radiosity.");
     }
-    auto it = in.States.find(renderer);
-    if (it != in.States.end())
+    if (vtkDeepRadiosityRendererState* state = in.States.Existing(renderer))
     {
-      it->second->HasFrame = false;
-      it->second->ResetHistory();
+      state->HasFrame = false;
+      state->ResetHistory();
     }
     return;
   }
@@ -423,7 +422,7 @@ void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
   }
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   vtkOpenGLState* ostate = window->GetState();
-  vtkDeepRadiosityRendererState& state = *in.States[renderer];
+  vtkDeepRadiosityRendererState& state = *in.States.Existing(renderer);
   vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
@@ -459,33 +458,20 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
   vtkOpenGLState* ostate = window->GetState();
   vtkOpenGLClearErrorMacro();
 
-  double view[16], projection[16];
-  const int layers = std::min(gbuffer->GetLayerCamera(renderer, view, projection), Layers);
-  if (layers <= 0)
+  LayerFrame frame;
+  if (!this->GetLayerFrame(renderer, "UpdateRadiosity", frame))
   {
-    vtkErrorMacro("UpdateRadiosity: the G-buffer pass has no layers for this renderer; call "
-                  "GetGBufferPass()->RenderLayers first.");
     return false;
   }
-  int size[2] = { 0, 0 };
-  int guardBand = 0;
-  gbuffer->GetLayerExtent(renderer, size, guardBand);
-  const int width = size[0], height = size[1];
+  const double* view = frame.View;
+  const double* projection = frame.Projection;
+  const int layers = std::min(frame.Layers, Layers);
+  const int width = frame.Size[0], height = frame.Size[1];
+  const int guardBand = frame.GuardBand;
   int region[4];
-  vtkDeepScreenSpace::ShadedRegion(size, guardBand, this->GuardBandShadedFraction, region);
+  vtkDeepScreenSpace::ShadedRegion(frame.Size, guardBand, this->GuardBandShadedFraction, region);
 
-  auto& slot = in.States[renderer];
-  if (!slot)
-  {
-    slot.reset(new vtkDeepRadiosityRendererState);
-    slot->Renderer = renderer;
-    slot->Renders.Observe(renderer);
-  }
-  if (!in.FirstRenderer || !in.States.count(in.FirstRenderer))
-  {
-    in.FirstRenderer = renderer;
-  }
-  vtkDeepRadiosityRendererState& state = *slot;
+  vtkDeepRadiosityRendererState& state = in.States.Get(renderer);
   state.HasFrame = false;
 
   // Scene-relative parameters.
@@ -791,7 +777,7 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 int vtkDeepRadiosityPass::ActivateTexture(vtkRenderer* renderer, int quantity, int layer)
 {
-  vtkDeepRadiosityRendererState* state = this->Internals->Find(renderer);
+  vtkDeepRadiosityRendererState* state = this->Internals->States.Find(renderer);
   vtkTextureObject* texture = state ? state->Output(quantity, layer) : nullptr;
   if (!texture)
   {
@@ -804,7 +790,7 @@ int vtkDeepRadiosityPass::ActivateTexture(vtkRenderer* renderer, int quantity, i
 //------------------------------------------------------------------------------
 void vtkDeepRadiosityPass::DeactivateTexture(vtkRenderer* renderer, int quantity, int layer)
 {
-  vtkDeepRadiosityRendererState* state = this->Internals->Find(renderer);
+  vtkDeepRadiosityRendererState* state = this->Internals->States.Find(renderer);
   if (vtkTextureObject* texture = state ? state->Output(quantity, layer) : nullptr)
   {
     texture->Deactivate();
@@ -814,7 +800,7 @@ void vtkDeepRadiosityPass::DeactivateTexture(vtkRenderer* renderer, int quantity
 //------------------------------------------------------------------------------
 unsigned int vtkDeepRadiosityPass::GetTextureHandle(vtkRenderer* renderer, int quantity, int layer)
 {
-  vtkDeepRadiosityRendererState* state = this->Internals->Find(renderer);
+  vtkDeepRadiosityRendererState* state = this->Internals->States.Find(renderer);
   vtkTextureObject* texture = state ? state->Output(quantity, layer) : nullptr;
   return texture ? texture->GetHandle() : 0;
 }
@@ -823,12 +809,7 @@ unsigned int vtkDeepRadiosityPass::GetTextureHandle(vtkRenderer* renderer, int q
 void vtkDeepRadiosityPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkInternals& in = *this->Internals;
-  for (auto& entry : in.States)
-  {
-    entry.second->Release(w);
-  }
-  in.States.clear();
-  in.FirstRenderer = nullptr;
+  in.States.Release(w);
   for (vtkOpenGLQuadHelper** quad :
     { &in.BounceQuad, &in.GatherQuad, &in.BlurQuad, &in.TemporalQuad, &in.CompositeQuad })
   {
@@ -847,7 +828,7 @@ void vtkDeepRadiosityPass::ReleaseGraphicsResources(vtkWindow* w)
 //------------------------------------------------------------------------------
 bool vtkDeepRadiosityPass::CaptureIrradiance(vtkImageData* output, vtkRenderer* renderer)
 {
-  vtkDeepRadiosityRendererState* state = this->Internals->Find(renderer);
+  vtkDeepRadiosityRendererState* state = this->Internals->States.Find(renderer);
   if (!output || !state || !state->Renderer)
   {
     vtkErrorMacro("CaptureIrradiance: no radiosity has been rendered for this renderer.");

@@ -156,6 +156,11 @@ struct vtkDeepReflectionRendererState
   double View[16];
   double FrameProjection[16]; // the camera's: the frame without the guard band
 
+  void Attach(vtkRenderer* renderer)
+  {
+    this->Renderer = renderer;
+  }
+
   void Release(vtkWindow* w)
   {
     for (auto& t : this->Targets)
@@ -175,8 +180,7 @@ struct vtkDeepReflectionRendererState
 class vtkDeepReflectionPass::vtkInternals
 {
 public:
-  std::map<vtkRenderer*, std::unique_ptr<vtkDeepReflectionRendererState>> States;
-  vtkRenderer* FirstRenderer = nullptr;
+  vtkDeepScreenSpace::RendererStates<vtkDeepReflectionRendererState> States;
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
   vtkOpenGLQuadHelper* TraceQuads[NUMBER_OF_ENVIRONMENTS] = { nullptr, nullptr, nullptr };
   vtkOpenGLQuadHelper* CompositeQuad = nullptr;
@@ -203,11 +207,6 @@ public:
     return any;
   }
 
-  vtkDeepReflectionRendererState* Find(vtkRenderer* renderer)
-  {
-    auto it = this->States.find(renderer ? renderer : this->FirstRenderer);
-    return (it == this->States.end() || !it->second->HasFrame) ? nullptr : it->second.get();
-  }
 };
 
 //------------------------------------------------------------------------------
@@ -220,7 +219,7 @@ vtkDeepReflectionPass::vtkDeepReflectionPass()
 vtkDeepReflectionPass::~vtkDeepReflectionPass()
 {
   vtkInternals& in = *this->Internals;
-  if (in.CompositeQuad || in.Framebuffer || !in.States.empty())
+  if (in.CompositeQuad || in.Framebuffer || !in.States.Empty())
   {
     vtkWarningMacro("Destroyed without ReleaseGraphicsResources(); OpenGL objects are leaked "
                     "unless the context was destroyed first.");
@@ -382,10 +381,9 @@ void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
   vtkInternals& in = *this->Internals;
   vtkOpenGLRenderer* renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   vtkDeepGBufferPass* gbuffer = this->GBufferPass;
-  auto existing = in.States.find(renderer);
-  if (existing != in.States.end())
+  if (vtkDeepReflectionRendererState* existing = in.States.Existing(renderer))
   {
-    existing->second->HasFrame = false;
+    existing->HasFrame = false;
   }
   if (!gbuffer->RenderLayers(s))
   {
@@ -405,7 +403,7 @@ void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
     return;
   }
   gbuffer->ResolveToFramebuffer(s);
-  vtkDeepReflectionRendererState& state = *in.States[renderer];
+  vtkDeepReflectionRendererState& state = *in.States.Existing(renderer);
   this->LastFrameTraced = state.Traced;
   if (!state.Traced)
   {
@@ -458,18 +456,17 @@ bool vtkDeepReflectionPass::UpdateReflections(const vtkRenderState* s)
   vtkOpenGLState* ostate = window->GetState();
   vtkOpenGLClearErrorMacro();
 
-  double view[16], projection[16];
-  const int layers = gbuffer->GetLayerCamera(renderer, view, projection);
-  if (layers <= 0)
+  LayerFrame frame;
+  if (!this->GetLayerFrame(renderer, "UpdateReflections", frame))
   {
-    vtkErrorMacro("UpdateReflections: the G-buffer pass has no layers for this renderer; call "
-                  "GetGBufferPass()->RenderLayers first.");
     return false;
   }
-  int size[2] = { 0, 0 };
-  int guardBand = 0;
-  gbuffer->GetLayerExtent(renderer, size, guardBand);
+  const double* view = frame.View;
+  const double* projection = frame.Projection;
+  const int layers = frame.Layers;
+  const int* size = frame.Size;
   const int width = size[0], height = size[1];
+  const int guardBand = frame.GuardBand;
   // Rays are traced for the frame's pixels; they march through the whole
   // layers, so leaving the guard band ends them (section 3.6).
   int frameRegion[4];
@@ -492,17 +489,7 @@ bool vtkDeepReflectionPass::UpdateReflections(const vtkRenderState* s)
   this->EffectiveMaximumDistance = maximumDistance;
   this->EffectiveThickness = thickness;
 
-  auto& slot = in.States[renderer];
-  if (!slot)
-  {
-    slot.reset(new vtkDeepReflectionRendererState);
-    slot->Renderer = renderer;
-  }
-  if (!in.FirstRenderer || !in.States.count(in.FirstRenderer))
-  {
-    in.FirstRenderer = renderer;
-  }
-  vtkDeepReflectionRendererState& state = *slot;
+  vtkDeepReflectionRendererState& state = in.States.Get(renderer);
   state.HasFrame = false;
   state.Traced = false;
   std::copy(view, view + 16, state.View);
@@ -606,7 +593,7 @@ bool vtkDeepReflectionPass::UpdateReflections(const vtkRenderState* s)
   vtkMath::Normalize(up);
   vtkMath::Normalize(right);
   vtkMath::Cross(right, up, front);
-  const double* frame[3] = { right, up, front };
+  const double* environmentFrame[3] = { right, up, front };
   double toEnvironment[3][3];
   for (int r = 0; r < 3; ++r)
   {
@@ -615,7 +602,7 @@ bool vtkDeepReflectionPass::UpdateReflections(const vtkRenderState* s)
       toEnvironment[r][c] = 0.0;
       for (int k = 0; k < 3; ++k)
       {
-        toEnvironment[r][c] += frame[r][k] * inverseView->GetElement(k, c);
+        toEnvironment[r][c] += environmentFrame[r][k] * inverseView->GetElement(k, c);
       }
     }
   }
@@ -721,13 +708,13 @@ bool vtkDeepReflectionPass::UpdateReflections(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 unsigned int vtkDeepReflectionPass::GetReflectionTextureHandle(vtkRenderer* renderer)
 {
-  vtkDeepReflectionRendererState* state = this->Internals->Find(renderer);
+  vtkDeepReflectionRendererState* state = this->Internals->States.Find(renderer);
   return state && state->Traced ? state->Targets[REFLECTED]->GetHandle() : 0;
 }
 
 int vtkDeepReflectionPass::ActivateReflectionTexture(vtkRenderer* renderer)
 {
-  vtkDeepReflectionRendererState* state = this->Internals->Find(renderer);
+  vtkDeepReflectionRendererState* state = this->Internals->States.Find(renderer);
   if (!state || !state->Traced)
   {
     return -1;
@@ -738,7 +725,7 @@ int vtkDeepReflectionPass::ActivateReflectionTexture(vtkRenderer* renderer)
 
 void vtkDeepReflectionPass::DeactivateReflectionTexture(vtkRenderer* renderer)
 {
-  vtkDeepReflectionRendererState* state = this->Internals->Find(renderer);
+  vtkDeepReflectionRendererState* state = this->Internals->States.Find(renderer);
   if (state && state->Traced)
   {
     state->Targets[REFLECTED]->Deactivate();
@@ -748,7 +735,7 @@ void vtkDeepReflectionPass::DeactivateReflectionTexture(vtkRenderer* renderer)
 //------------------------------------------------------------------------------
 bool vtkDeepReflectionPass::CaptureReflections(vtkImageData* output, vtkRenderer* renderer)
 {
-  vtkDeepReflectionRendererState* state = this->Internals->Find(renderer);
+  vtkDeepReflectionRendererState* state = this->Internals->States.Find(renderer);
   if (!output || !state || !state->Renderer)
   {
     vtkErrorMacro("CaptureReflections: no reflections have been rendered for this renderer.");
@@ -876,13 +863,8 @@ bool vtkDeepReflectionPass::CaptureReflections(vtkImageData* output, vtkRenderer
 void vtkDeepReflectionPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkInternals& in = *this->Internals;
-  for (auto& entry : in.States)
-  {
-    entry.second->Release(w);
-  }
-  in.States.clear();
+  in.States.Release(w);
   in.Reflects.clear();
-  in.FirstRenderer = nullptr;
   for (vtkOpenGLQuadHelper*& quad : in.TraceQuads)
   {
     if (quad)

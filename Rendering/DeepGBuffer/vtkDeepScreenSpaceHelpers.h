@@ -15,6 +15,9 @@
 #include "vtkTextureObject.h"
 #include "vtkWeakPointer.h"
 
+#include <map>    // for RendererStates
+#include <memory> // for RendererStates
+
 class vtkImageData;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLState;
@@ -82,6 +85,67 @@ void FrameProjection(
 /// Sets the deepShadedMin and deepShadedMax uniforms of
 /// vtkDeepScreenSpaceCommon.glsl on `program` where it uses them.
 void SetShadedRegionUniforms(vtkShaderProgram* program, const int region[4]);
+
+/**
+ * The per-renderer states of a screen-space pass, so that renderers (or
+ * viewports) sharing a pass never read each other's targets or history.
+ * State provides Attach(vtkRenderer*) (called once, on creation), a bool
+ * HasFrame (the state holds the renderer's last frame) and
+ * Release(vtkWindow*).
+ */
+template <typename State>
+class RendererStates
+{
+public:
+  /// The state of `renderer`, created on its first frame. The first renderer
+  /// drawn (while its state exists) is the default of Find.
+  State& Get(vtkRenderer* renderer)
+  {
+    std::unique_ptr<State>& slot = this->States[renderer];
+    if (!slot)
+    {
+      slot.reset(new State);
+      slot->Attach(renderer);
+    }
+    if (!this->First || !this->States.count(this->First))
+    {
+      this->First = renderer;
+    }
+    return *slot;
+  }
+
+  /// The state of `renderer` (the first renderer drawn if null) when it
+  /// holds a frame; null otherwise.
+  State* Find(vtkRenderer* renderer)
+  {
+    State* state = this->Existing(renderer ? renderer : this->First);
+    return state && state->HasFrame ? state : nullptr;
+  }
+
+  /// The state of `renderer` if it has one, with or without a frame.
+  State* Existing(vtkRenderer* renderer)
+  {
+    auto it = this->States.find(renderer);
+    return it == this->States.end() ? nullptr : it->second.get();
+  }
+
+  /// Releases the graphics resources of every state and forgets them.
+  void Release(vtkWindow* window)
+  {
+    for (auto& entry : this->States)
+    {
+      entry.second->Release(window);
+    }
+    this->States.clear();
+    this->First = nullptr;
+  }
+
+  bool Empty() const { return this->States.empty(); }
+
+private:
+  std::map<vtkRenderer*, std::unique_ptr<State>> States;
+  vtkRenderer* First = nullptr;
+};
 
 /// Counts a renderer's StartEvents. A temporal history is valid for the
 /// next frame only when exactly one render of the renderer happened since

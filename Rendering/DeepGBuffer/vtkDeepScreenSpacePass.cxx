@@ -85,6 +85,22 @@ void vtkDeepScreenSpacePass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
+bool vtkDeepScreenSpacePass::GetLayerFrame(
+  vtkRenderer* renderer, const char* caller, LayerFrame& frame)
+{
+  frame.Layers = this->GBufferPass->GetLayerCamera(renderer, frame.View, frame.Projection);
+  if (frame.Layers <= 0 ||
+    !this->GBufferPass->GetLayerExtent(renderer, frame.Size, frame.GuardBand))
+  {
+    vtkErrorMacro(<< caller
+                  << ": the G-buffer pass has no layers for this renderer; call "
+                     "GetGBufferPass()->RenderLayers first.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkDeepScreenSpacePass::SetFraction(const char* name, double fraction, double& value)
 {
   if (std::isnan(fraction))

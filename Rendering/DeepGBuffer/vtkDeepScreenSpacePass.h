@@ -25,6 +25,7 @@
 #include "vtkRenderPass.h"
 
 class vtkDeepGBufferPass;
+class vtkRenderer;
 
 class VTKDEEPGIRENDERING_EXPORT vtkDeepScreenSpacePass : public vtkRenderPass
 {
@@ -62,6 +63,21 @@ protected:
    */
   void SetManualLength(const char* name, double length, double& value, bool& automatic,
     bool allowInfinity = false, const char* atZero = "");
+
+  /// The layers of a renderer's last G-buffer frame, as the subclasses read them.
+  struct LayerFrame
+  {
+    double View[16];
+    double Projection[16]; ///< of the layers (frame and guard band), row-major
+    int Layers = 0;
+    int Size[2] = { 0, 0 }; ///< of the layers, texels
+    int GuardBand = 0;      ///< pixels on each side of the frame
+  };
+
+  /// Fills `frame` from GBufferPass (GetLayerCamera, GetLayerExtent); false,
+  /// with an error naming `caller`, when it has no layers for `renderer`
+  /// (its RenderLayers was not called).
+  bool GetLayerFrame(vtkRenderer* renderer, const char* caller, LayerFrame& frame);
 
   /// Sets a fraction in [0, 1]: NaN keeps `value` with a warning; values
   /// outside are clamped with a warning; Modified() when it changes.
