@@ -227,8 +227,8 @@ public:
    *   Dividing by the M accepted taps instead of N treats the rejected
    *   directions as if they saw the same light as the accepted ones: next
    *   to a single bright surface, where few taps pass, E is overestimated
-   *   (by about 2x to 3x against the ray-traced reference limited to r,
-   *   see Documentation/benchmark-radiosity.md).
+   *   (on average 1.7x to 5.6x against the ray-traced reference limited
+   *   to r, see Documentation/benchmark-radiosity.md).
    * - ALL_TAPS: 2 pi / N sum B (w.n_X): a rejected tap (beyond r, below
    *   X's horizon, facing away, off screen) contributes 0.
    * - SOLID_ANGLE: sum B (w.n_X) dOmega_i with dOmega_i the solid angle,
@@ -237,10 +237,11 @@ public:
    *   (-w.n_Y) / |Y - X|^2, at most 2 pi): the form-factor sum of the
    *   visible surfaces; it reads n_Y even without UseNormalTest.
    * Default SOLID_ANGLE: against the ray-traced one-bounce irradiance
-   * limited to r its RMSE is 2.4x to 6.8x lower than eq. 4's on every scene
-   * of Documentation/benchmark-radiosity.md at BALANCED and HIGH_QUALITY,
-   * where eq. 4 is 2.1x to 5.6x too bright on average. SetPreset does not
-   * change the estimator.
+   * limited to r its RMSE is 2.6x to 6.8x lower than eq. 4's at BALANCED
+   * and HIGH_QUALITY on the three scenes of
+   * Documentation/benchmark-radiosity.md without emitters (1.2x to 1.4x on
+   * the lamp-lit Cornell box), where eq. 4 is 2.4x to 5.6x too bright on
+   * average. SetPreset does not change the estimator.
    * Values outside the enum are clamped.
    */
   vtkSetClampMacro(Estimator, int, ACCEPTED_TAPS, SOLID_ANGLE);
