@@ -182,7 +182,8 @@ bool WritePlot(const std::string& file, const std::string& title, const std::str
   chart->GetAxis(vtkAxis::BOTTOM)->SetTitle(xTitle);
   chart->GetAxis(vtkAxis::LEFT)->SetTitle(yTitle);
   const unsigned char colors[][3] = { { 200, 40, 40 }, { 40, 90, 200 }, { 30, 150, 60 },
-    { 150, 60, 170 }, { 230, 140, 20 }, { 20, 160, 170 } };
+    { 150, 60, 170 }, { 230, 140, 20 }, { 20, 160, 170 }, { 60, 60, 60 }, { 140, 90, 40 } };
+  const int colorCount = static_cast<int>(sizeof(colors) / sizeof(colors[0]));
   int c = 0;
   // The tables must live until the chart is rendered.
   std::vector<vtkSmartPointer<vtkTable>> tables;
@@ -209,7 +210,7 @@ bool WritePlot(const std::string& file, const std::string& title, const std::str
     tables.push_back(table);
     vtkPlot* line = chart->AddPlot(pts.size() > 1 ? vtkChart::LINE : vtkChart::POINTS);
     line->SetInputData(table, 0, 1);
-    const unsigned char* col = colors[c++ % 6];
+    const unsigned char* col = colors[c++ % colorCount];
     line->SetColor(col[0], col[1], col[2], 255);
     line->SetWidth(2.5);
   }
