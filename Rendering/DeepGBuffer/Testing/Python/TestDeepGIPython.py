@@ -6,6 +6,7 @@ BALANCED preset:
   the last with progress 1;
 - GetLastFrameEffects() names ambient obscurance and radiosity (the demo
   scene has no specular prop: no reflections) and two layers;
+- the G-buffer has the default guard band (0.1 of the height, 16 pixels);
 - the image differs from the plain vtkDeepGBufferPass image (GI adds and
   removes light) but keeps the same background, and the G-buffer shared
   by the sub-passes is the GI pass's;
@@ -76,6 +77,11 @@ def main():
         failures.append("expected %s" % gi.GetEffectsAsString(wanted))
     if gi.GetRadiosityPass().GetGBufferPass() is not gi.GetGBufferPass():
         failures.append("the radiosity pass does not share the G-buffer")
+    # The G-buffer's guard band: 0.1 of the height, rounded up to 8 pixels.
+    band = gi.GetGBufferPass().GetEffectiveGuardBand()
+    print("guard band %.2f: %d pixels" % (gi.GetGBufferPass().GetGuardBand(), band))
+    if gi.GetGBufferPass().GetGuardBand() != 0.1 or band != 16:
+        failures.append("expected the default guard band of 0.1 (16 pixels at 150)")
 
     layers, av, radiosity = vtkImageData(), vtkImageData(), vtkImageData()
     ok = (gi.GetGBufferPass().CaptureLayers(layers, renderer)
