@@ -11,7 +11,10 @@
  *
  * It owns one vtkDeepGBufferPass and the three effects that read it,
  * sharing it (GetGBufferPass, GetAmbientObscurancePass, GetRadiosityPass,
- * GetReflectionPass; tune them there). Each frame it renders the camera,
+ * GetReflectionPass; tune them there). The G-buffer has a guard band of
+ * vtkDeepRadiosityPass::DEFAULT_GUARD_BAND (0.1 of the height on each side,
+ * section 3.5): the effects gather light and occluders just outside the
+ * view. Each frame it renders the camera,
  * lights, the opaque props into the layers, the effects the scene needs
  * (UpdateAmbientVisibility, UpdateRadiosity, UpdateReflections), ONE
  * composite, then VTK's translucent, volumetric and overlay steps against
