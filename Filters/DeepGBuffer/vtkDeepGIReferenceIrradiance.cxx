@@ -613,23 +613,12 @@ void vtkDeepGIReferenceIrradiance::AddBounces(vtkIdType pixel, int sample, const
     {
       return;
     }
-    // rho E(Y) / pi with one cosine-weighted direction: E ~ pi L(Y'), so
-    // the reflected radiance is rho L(Y'). Malley's method about n_Y, with
-    // the sample's own random dimensions for this level.
-    const double u1 = this->Random(pixel, sample, 2 * bounce);
-    const double u2 = this->Random(pixel, sample, 2 * bounce + 1);
-    const double radius = std::sqrt(u1);
-    const double phi = 2.0 * vtkMath::Pi() * u2;
-    const double lx = radius * std::cos(phi), ly = radius * std::sin(phi);
-    const double lz = std::sqrt(std::max(0.0, 1.0 - u1));
-    double t[3], b[3];
-    vtkMath::Perpendiculars(n, t, b, 0.0);
+    // rho E(Y) / pi with one cosine-weighted direction about n_Y: E ~
+    // pi L(Y'), so the reflected radiance is rho L(Y'). The sample's own
+    // random dimensions for this level (0 and 1 are the ray from X).
     double next[3];
-    for (int c = 0; c < 3; ++c)
-    {
-      next[c] = lx * t[c] + ly * b[c] + lz * n[c];
-    }
-    vtkMath::Normalize(next);
+    CosineDirection(
+      n, this->Random(pixel, sample, 2 * bounce), this->Random(pixel, sample, 2 * bounce + 1), next);
     // The side of the triangle the path arrived on; a direction below it
     // (shading and winding normals disagree) would go through the surface.
     const double side = vtkMath::Dot(hit.Normal, w) > 0.0 ? -1.0 : 1.0;
