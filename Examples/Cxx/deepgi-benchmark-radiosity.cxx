@@ -984,21 +984,21 @@ int main(int argc, char* argv[])
        << " frames against vtkDeepGIReferenceIrradiance with NumberOfBounces "
        << options.Bounces << " and BounceDamping delta (" << options.Samples
        << " paths per pixel), MaximumDistance r on every segment (E_ref,r) and unlimited "
-          "(E_ref). change: RMS of the change of E between the last two frames over the mean E; "
-          "fixed from: the first frame whose E equals the frame before's exactly. 1 bounce: the same method's first frame with Damping 0 against the one-bounce "
-          "E_ref,r.\n\n"
-       << "| scene | delta | change | fixed from | mean E | mean E_ref,r | mean E_ref | RMSE vs E_ref,r | bias "
-          "| rel. error | RMSE vs E_ref | bias vs E_ref | rel. error vs E_ref | 1 bounce: RMSE | "
-          "bias | rel. error | reference std. error | reference [s] |\n"
+          "(E_ref). change: RMS of the change of E between the last two frames over the mean "
+          "E; fixed from: the first frame whose E equals the frame before's exactly. 1 bounce: "
+          "the same method's first frame with Damping 0 against the one-bounce E_ref,r.\n\n"
+       << "| scene | delta | change | fixed from | mean E | mean E_ref,r | mean E_ref | RMSE vs "
+          "E_ref,r | bias | rel. error | RMSE vs E_ref | bias vs E_ref | rel. error vs E_ref | "
+          "1 bounce: RMSE | bias | rel. error | reference std. error | reference [s] |\n"
           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const BounceResult& b : bounceResults)
     {
+      const std::string fixed = b.UnchangedFrom ? std::to_string(b.UnchangedFrom) : "-";
       char line[1024];
       std::snprintf(line, sizeof(line),
-        "| %s | %.2g | %.1e | %s | %.4f | %.4f | %.4f | %.4f | %+.4f | %.3f | %.4f | %+.4f | %.3f | "
-        "%.4f | %+.4f | %.3f | %.4f | %.1f |\n",
-        b.Scene.c_str(), b.Damping, b.Change,
-        b.UnchangedFrom ? std::to_string(b.UnchangedFrom).c_str() : "-", b.MeanPass, b.MeanReference,
+        "| %s | %.2g | %.1e | %s | %.4f | %.4f | %.4f | %.4f | %+.4f | %.3f | %.4f | %+.4f | "
+        "%.3f | %.4f | %+.4f | %.3f | %.4f | %.1f |\n",
+        b.Scene.c_str(), b.Damping, b.Change, fixed.c_str(), b.MeanPass, b.MeanReference,
         b.MeanReferenceUnlimited, b.Limited.Rmse, b.Limited.Bias, b.Limited.Relative,
         b.Unlimited.Rmse, b.Unlimited.Bias, b.Unlimited.Relative, b.OneBounce.Rmse,
         b.OneBounce.Bias, b.OneBounce.Relative, b.ReferenceError, b.ReferenceSeconds);

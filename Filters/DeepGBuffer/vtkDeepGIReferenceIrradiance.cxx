@@ -616,9 +616,10 @@ void vtkDeepGIReferenceIrradiance::AddBounces(vtkIdType pixel, int sample, const
     // rho E(Y) / pi with one cosine-weighted direction about n_Y: E ~
     // pi L(Y'), so the reflected radiance is rho L(Y'). The sample's own
     // random dimensions for this level (0 and 1 are the ray from X).
+    const double u1 = this->Random(pixel, sample, 2 * bounce);
+    const double u2 = this->Random(pixel, sample, 2 * bounce + 1);
     double next[3];
-    CosineDirection(
-      n, this->Random(pixel, sample, 2 * bounce), this->Random(pixel, sample, 2 * bounce + 1), next);
+    CosineDirection(n, u1, u2, next);
     // The side of the triangle the path arrived on; a direction below it
     // (shading and winding normals disagree) would go through the surface.
     const double side = vtkMath::Dot(hit.Normal, w) > 0.0 ? -1.0 : 1.0;

@@ -1,7 +1,7 @@
 /**
  * @class   vtkDeepGIReferenceIrradiance
- * @brief   ray-traced (Embree) ground truth of one-bounce diffuse indirect
- *          light on the pixels of a deep G-buffer capture
+ * @brief   ray-traced (Embree) ground truth of one- or multi-bounce
+ *          diffuse indirect light on the pixels of a deep G-buffer capture
  *
  * The reference for the screen-space radiosity of the paper (section 3.2,
  * eq. 3-7): for the surface point X and normal n_X of each pixel of layer
