@@ -28,6 +28,13 @@
 // - time (at --size, default 320x240): median over the frames of every
 //   round after warm-up; each method's frames back to back, all methods
 //   in each round; every frame timed from Render() to WaitForCompletion().
+// - multiple bounces (--bounces N, default 4; 0 skips it): two layers,
+//   SOLID_ANGLE, BALANCED, the default guard band, TemporalAlpha 0, still
+//   camera: the pass with Damping 1 and 0.5 after BounceFrames frames (the
+//   converged sum of the damped bounces, section 3.3) against the reference
+//   with NumberOfBounces N and BounceDamping equal to the Damping, limited to
+//   r on every segment and unlimited; the same method's first frame with
+//   Damping 0 against the one-bounce reference for comparison.
 //
 // Outputs in --output DIR: benchmark-radiosity.md, benchmark-radiosity.csv,
 // benchmark-radiosity-plot.png (RMSE against time, one curve per method
@@ -93,7 +100,14 @@ struct Options
   std::vector<std::string> Scenes = { "demo", "cornell-lucy", "cornell-original", "dragon" };
   std::vector<std::string> Methods;
   bool ErrorMaps = true;
+  int Bounces = 4;
 };
+
+// Still frames of the multi-bounce measurement: frame t adds bounce t, so
+// after 20 frames the remaining terms are (delta rho K)^20, far below the
+// reference's noise for any albedo below 1 (the change between the last two
+// frames is printed).
+constexpr int BounceFrames = 20;
 
 // layers (1 or 2) : preset (hp, balanced, hq) [: nt (no n_Y test)] [: n | sa
 // (estimator)] [: gb (guard band)]
@@ -125,6 +139,8 @@ void Usage()
               "                       vtkDeepRadiosityPass::DEFAULT_GUARD_BAND (else none).\n"
               "                       Default: %s\n"
               "  --data DIR           shared data directory (default %s)\n"
+              "  --bounces N          multi-bounce comparison against the reference with N\n"
+              "                       bounces, 1..16 (default 4; 0 skips it)\n"
               "  --no-error-maps      do not write the error-map PNGs\n"
               "  --backend NAME       auto, x11 or egl (default auto)\n"
               "  --output DIR         output directory (default output)\n"
@@ -215,7 +231,7 @@ bool ParseOptions(int argc, char* argv[], Options& o)
       continue;
     }
     static const char* const withValue[] = { "--size", "--accuracy-size", "--frames", "--rounds",
-      "--samples", "--scenes", "--methods", "--data", "--backend", "--output" };
+      "--samples", "--scenes", "--methods", "--bounces", "--data", "--backend", "--output" };
     if (std::find_if(std::begin(withValue), std::end(withValue),
           [&](const char* s) { return arg == s; }) == std::end(withValue))
     {
@@ -245,6 +261,10 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     if (arg == "--samples" && (!ParseInt(value, o.Samples) || o.Samples < 1 || o.Samples > 1048576))
     {
       return bad("--samples needs an integer 1..1048576, got '" + value + "'");
+    }
+    if (arg == "--bounces" && (!ParseInt(value, o.Bounces) || o.Bounces < 0 || o.Bounces > 16))
+    {
+      return bad("--bounces needs an integer 0..16, got '" + value + "'");
     }
     if (arg == "--scenes")
     {
@@ -483,6 +503,18 @@ struct Result
   Stats Border, BorderUnlimited; // the pixels within BorderFraction of the frame's edge
 };
 
+/// The multi-bounce measurement of one scene and damping.
+struct BounceResult
+{
+  std::string Scene;
+  double Damping = 0;
+  double Change = 0;    // RMS change of E between the last two frames / mean E
+  int UnchangedFrom = 0; // first frame equal to the one before (0: none)
+  double MeanPass = 0, MeanReference = 0, MeanReferenceUnlimited = 0;
+  Stats Limited, Unlimited, OneBounce;
+  double ReferenceError = 0, ReferenceSeconds = 0;
+};
+
 struct SceneInfo
 {
   std::string Name;
@@ -516,6 +548,7 @@ int main(int argc, char* argv[])
 
   std::vector<Result> results;
   std::vector<SceneInfo> infos;
+  std::vector<BounceResult> bounceResults;
   for (const std::string& sceneName : options.Scenes)
   {
     vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::Take(
@@ -680,6 +713,117 @@ int main(int argc, char* argv[])
       sceneResults.push_back(res);
     }
 
+    // ---- multiple bounces ----
+    if (options.Bounces > 0)
+    {
+      // `frames` still frames of a fresh two-layer SOLID_ANGLE BALANCED pass
+      // with the guard band and Damping `delta`: the luminance of E in the
+      // last frame, the RMS change of E from the frame before over the mean
+      // E, and the first frame that did not change E at all (0: none).
+      auto still = [&](double delta, int frames, std::vector<float>& last, double& change,
+                     int& unchangedFrom) -> bool
+      {
+        vtkNew<vtkDeepRadiosityPass> pass;
+        pass->SetGBufferPass(gbuffer2Guard);
+        pass->SetPreset(vtkDeepRadiosityPass::BALANCED);
+        pass->SetEstimator(vtkDeepRadiosityPass::SOLID_ANGLE);
+        pass->SetUseNormalTest(true);
+        pass->SetDamping(delta);
+        pass->SetTemporalAlpha(0.0);
+        renderer->SetPass(pass);
+        bool ok = true;
+        change = 0;
+        unchangedFrom = 0;
+        std::vector<float> before;
+        for (int f = 1; f <= frames && ok; ++f)
+        {
+          window->Render();
+          vtkNew<vtkImageData> c;
+          ok = pass->CaptureIrradiance(c, renderer);
+          before.swap(last);
+          last = Luminance(c, "Irradiance_0");
+          if (f > 1)
+          {
+            double d2 = 0, sum = 0;
+            for (size_t i = 0; i < np; ++i)
+            {
+              d2 += mask[i] ? (last[i] - before[i]) * (last[i] - before[i]) : 0.0;
+              sum += mask[i] ? last[i] : 0.0;
+            }
+            change = std::sqrt(d2 / std::max(1L, nValid)) /
+              std::max(1e-12, sum / std::max(1L, nValid));
+            unchangedFrom = d2 == 0.0 && unchangedFrom == 0 ? f : unchangedFrom;
+          }
+        }
+        renderer->SetPass(nullptr);
+        pass->ReleaseGraphicsResources(window);
+        if (!ok)
+        {
+          std::fprintf(
+            stderr, "%s: the radiosity capture failed on %s\n", Program, sceneName.c_str());
+        }
+        return ok;
+      };
+      std::vector<float> single;
+      double unusedChange;
+      int unusedFrame;
+      if (!still(0.0, 1, single, unusedChange, unusedFrame))
+      {
+        return 1;
+      }
+      const Stats oneBounce = Errors(single, ref, mask);
+      for (double delta : { 1.0, 0.5 })
+      {
+        BounceResult b;
+        b.Scene = sceneName;
+        b.Damping = delta;
+        b.OneBounce = oneBounce;
+        std::vector<float> e;
+        if (!still(delta, BounceFrames, e, b.Change, b.UnchangedFrom))
+        {
+          return 1;
+        }
+        for (size_t i = 0; i < np; ++i)
+        {
+          b.MeanPass += mask[i] ? e[i] : 0.0;
+        }
+        b.MeanPass /= std::max(1L, nValid);
+        const auto start = std::chrono::steady_clock::now();
+        reference->SetNumberOfBounces(options.Bounces);
+        reference->SetBounceDamping(delta);
+        reference->SetMaximumDistance(r);
+        if (!reference->Compute(capture))
+        {
+          std::fprintf(stderr, "%s: the reference failed on %s\n", Program, sceneName.c_str());
+          return 1;
+        }
+        const std::vector<float> refN = Luminance(reference->GetOutput(), "IndirectIrradiance");
+        b.ReferenceError = reference->GetMeanStandardError();
+        reference->SetMaximumDistance(VTK_DOUBLE_MAX);
+        if (!reference->Compute(capture))
+        {
+          std::fprintf(stderr, "%s: the reference failed on %s\n", Program, sceneName.c_str());
+          return 1;
+        }
+        const std::vector<float> refNAll =
+          Luminance(reference->GetOutput(), "IndirectIrradiance");
+        b.ReferenceSeconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        for (size_t i = 0; i < np; ++i)
+        {
+          b.MeanReference += mask[i] ? refN[i] : 0.0;
+          b.MeanReferenceUnlimited += mask[i] ? refNAll[i] : 0.0;
+        }
+        b.MeanReference /= std::max(1L, nValid);
+        b.MeanReferenceUnlimited /= std::max(1L, nValid);
+        b.Limited = Errors(e, refN, mask);
+        b.Unlimited = Errors(e, refNAll, mask);
+        bounceResults.push_back(b);
+      }
+      reference->SetNumberOfBounces(1);
+      reference->SetBounceDamping(1.0);
+    }
+
     // ---- time ----
     window->SetSize(options.Width, options.Height);
     std::vector<std::vector<double>> ms(methods.size() + 2);
@@ -829,6 +973,37 @@ int main(int argc, char* argv[])
       r.Scene.c_str(), r.M.Name.c_str(), r.FrameMs, r.Limited.Rmse, r.Border.Rmse,
       r.Border.Bias, r.BorderUnlimited.Rmse, r.Border.Pixels);
     md << b;
+  }
+
+  if (!bounceResults.empty())
+  {
+    md << "\n### Multiple bounces\n\n"
+       << "Two layers, SOLID_ANGLE, BALANCED, guard band "
+       << vtkDeepRadiosityPass::DEFAULT_GUARD_BAND << ", TemporalAlpha 0, still camera: E of "
+       << "the pass with Damping delta after " << BounceFrames
+       << " frames against vtkDeepGIReferenceIrradiance with NumberOfBounces "
+       << options.Bounces << " and BounceDamping delta (" << options.Samples
+       << " paths per pixel), MaximumDistance r on every segment (E_ref,r) and unlimited "
+          "(E_ref). change: RMS of the change of E between the last two frames over the mean "
+          "E; fixed from: the first frame whose E equals the frame before's exactly. 1 bounce: "
+          "the same method's first frame with Damping 0 against the one-bounce E_ref,r.\n\n"
+       << "| scene | delta | change | fixed from | mean E | mean E_ref,r | mean E_ref | RMSE vs "
+          "E_ref,r | bias | rel. error | RMSE vs E_ref | bias vs E_ref | rel. error vs E_ref | "
+          "1 bounce: RMSE | bias | rel. error | reference std. error | reference [s] |\n"
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const BounceResult& b : bounceResults)
+    {
+      const std::string fixed = b.UnchangedFrom ? std::to_string(b.UnchangedFrom) : "-";
+      char line[1024];
+      std::snprintf(line, sizeof(line),
+        "| %s | %.2g | %.1e | %s | %.4f | %.4f | %.4f | %.4f | %+.4f | %.3f | %.4f | %+.4f | "
+        "%.3f | %.4f | %+.4f | %.3f | %.4f | %.1f |\n",
+        b.Scene.c_str(), b.Damping, b.Change, fixed.c_str(), b.MeanPass, b.MeanReference,
+        b.MeanReferenceUnlimited, b.Limited.Rmse, b.Limited.Bias, b.Limited.Relative,
+        b.Unlimited.Rmse, b.Unlimited.Bias, b.Unlimited.Relative, b.OneBounce.Rmse,
+        b.OneBounce.Bias, b.OneBounce.Relative, b.ReferenceError, b.ReferenceSeconds);
+      md << line;
+    }
   }
 
   md << "\n### Time ratios (same run)\n\n"

@@ -161,6 +161,8 @@ vtkDeepGIReferenceIrradiance::vtkDeepGIReferenceIrradiance()
   , MaximumDistance(std::numeric_limits<double>::infinity())
   , DiffuseCoefficient(1.0)
   , EmissionArrayName(nullptr)
+  , NumberOfBounces(1)
+  , BounceDamping(1.0)
   , Data(new Lighting)
 {
   this->SetEmissionArrayName("Emission");
@@ -273,6 +275,41 @@ bool vtkDeepGIReferenceIrradiance::GetLight(
   }
   positional = light.Positional;
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGIReferenceIrradiance::SetNumberOfBounces(int bounces)
+{
+  const int clamped = std::min(16, std::max(1, bounces));
+  if (clamped != bounces)
+  {
+    vtkWarningMacro("NumberOfBounces " << bounces << " is outside [1, 16]; using " << clamped
+                                       << ".");
+  }
+  if (clamped != this->NumberOfBounces)
+  {
+    this->NumberOfBounces = clamped;
+    this->Modified();
+  }
+}
+
+void vtkDeepGIReferenceIrradiance::SetBounceDamping(double delta)
+{
+  if (std::isnan(delta))
+  {
+    vtkWarningMacro("BounceDamping NaN ignored; keeping " << this->BounceDamping << ".");
+    return;
+  }
+  const double clamped = std::min(1.0, std::max(0.0, delta));
+  if (clamped != delta)
+  {
+    vtkWarningMacro("BounceDamping " << delta << " is outside [0, 1]; using " << clamped << ".");
+  }
+  if (clamped != this->BounceDamping)
+  {
+    this->BounceDamping = clamped;
+    this->Modified();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -501,24 +538,18 @@ void vtkDeepGIReferenceIrradiance::OutgoingRadiance(
   }
 }
 
-void vtkDeepGIReferenceIrradiance::DirectRadiance(
-  const double y[3], const double w[3], const HitRecord& hit, double radiance[3]) const
+bool vtkDeepGIReferenceIrradiance::ShadingNormal(
+  const double w[3], const HitRecord& hit, double n[3]) const
 {
   const Lighting& d = *this->Data;
-  radiance[0] = radiance[1] = radiance[2] = 0.0;
-  const float* rho = &d.CellAlbedo[3 * hit.Cell];
-  if (d.Lights.empty() || (rho[0] == 0.0f && rho[1] == 0.0f && rho[2] == 0.0f))
-  {
-    return;
-  }
   // The ray arrives on the triangle's back when it travels along the
   // winding normal (gl_FrontFacing false for a viewer at the ray's origin).
   const bool backFace = vtkMath::Dot(hit.Normal, w) > 0.0;
   if (backFace && !this->TwoSidedLighting)
   {
-    return;
+    return false;
   }
-  double n[3] = { hit.Normal[0], hit.Normal[1], hit.Normal[2] };
+  std::copy(hit.Normal, hit.Normal + 3, n);
   if (!d.PointNormals.empty())
   {
     for (int c = 0; c < 3; ++c)
@@ -531,7 +562,7 @@ void vtkDeepGIReferenceIrradiance::DirectRadiance(
     }
     if (vtkMath::Normalize(n) == 0.0)
     {
-      return;
+      return false;
     }
   }
   else if (!d.CellNormals.empty())
@@ -542,7 +573,7 @@ void vtkDeepGIReferenceIrradiance::DirectRadiance(
     }
     if (vtkMath::Normalize(n) == 0.0)
     {
-      return;
+      return false;
     }
   }
   // VTK flips the shading normal of back faces (two-sided lighting).
@@ -551,6 +582,101 @@ void vtkDeepGIReferenceIrradiance::DirectRadiance(
   {
     n[c] *= side;
   }
+  return true;
+}
+
+void vtkDeepGIReferenceIrradiance::AddBounces(vtkIdType pixel, int sample, const double y0[3],
+  const double w0[3], const HitRecord& hit0, double radiance[3]) const
+{
+  const Lighting& d = *this->Data;
+  const double maximum = this->MaximumDistance;
+  double y[3], w[3];
+  std::copy(y0, y0 + 3, y);
+  std::copy(w0, w0 + 3, w);
+  HitRecord hit = hit0;
+  // Product of delta rho_i along the path: the weight of the light that
+  // reaches the first hit after the bounces so far.
+  double throughput[3] = { 1.0, 1.0, 1.0 };
+  for (int bounce = 1; bounce < this->NumberOfBounces; ++bounce)
+  {
+    double n[3];
+    if (!this->ShadingNormal(w, hit, n))
+    {
+      return; // Y sends no light, reflected light included
+    }
+    const float* rho = &d.CellAlbedo[3 * hit.Cell];
+    for (int c = 0; c < 3; ++c)
+    {
+      throughput[c] *= this->BounceDamping * rho[c];
+    }
+    if (throughput[0] == 0.0 && throughput[1] == 0.0 && throughput[2] == 0.0)
+    {
+      return;
+    }
+    // rho E(Y) / pi with one cosine-weighted direction about n_Y: E ~
+    // pi L(Y'), so the reflected radiance is rho L(Y'). The sample's own
+    // random dimensions for this level (0 and 1 are the ray from X).
+    const double u1 = this->Random(pixel, sample, 2 * bounce);
+    const double u2 = this->Random(pixel, sample, 2 * bounce + 1);
+    double next[3];
+    CosineDirection(n, u1, u2, next);
+    // The side of the triangle the path arrived on; a direction below it
+    // (shading and winding normals disagree) would go through the surface.
+    const double side = vtkMath::Dot(hit.Normal, w) > 0.0 ? -1.0 : 1.0;
+    if (side * vtkMath::Dot(hit.Normal, next) <= 0.0)
+    {
+      return;
+    }
+    const double offset = this->GetRayOffset(y);
+    double origin[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      origin[c] = y[c] + offset * side * hit.Normal[c];
+    }
+    HitRecord nextHit;
+    if (!this->TraceRay(origin, next, 2.0 * maximum, nextHit))
+    {
+      return;
+    }
+    double nextY[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      nextY[c] = origin[c] + nextHit.Distance * next[c];
+    }
+    // Every bounce is gathered within MaximumDistance (see the class
+    // description).
+    if (std::isfinite(maximum) && vtkMath::Distance2BetweenPoints(y, nextY) > maximum * maximum)
+    {
+      return;
+    }
+    double leaving[3];
+    this->OutgoingRadiance(nextY, next, nextHit, leaving);
+    for (int c = 0; c < 3; ++c)
+    {
+      radiance[c] += throughput[c] * leaving[c];
+    }
+    std::copy(nextY, nextY + 3, y);
+    std::copy(next, next + 3, w);
+    hit = nextHit;
+  }
+}
+
+void vtkDeepGIReferenceIrradiance::DirectRadiance(
+  const double y[3], const double w[3], const HitRecord& hit, double radiance[3]) const
+{
+  const Lighting& d = *this->Data;
+  radiance[0] = radiance[1] = radiance[2] = 0.0;
+  const float* rho = &d.CellAlbedo[3 * hit.Cell];
+  if (d.Lights.empty() || (rho[0] == 0.0f && rho[1] == 0.0f && rho[2] == 0.0f))
+  {
+    return;
+  }
+  double n[3];
+  if (!this->ShadingNormal(w, hit, n))
+  {
+    return;
+  }
+  const double side = vtkMath::Dot(hit.Normal, w) > 0.0 ? -1.0 : 1.0;
   // Shadow rays start just off the surface on the side the ray came from.
   double origin[3];
   const double offset = this->Shadows ? this->GetRayOffset(y) : 0.0;
@@ -609,8 +735,8 @@ void vtkDeepGIReferenceIrradiance::DirectRadiance(
   }
 }
 
-void vtkDeepGIReferenceIrradiance::EvaluateSample(
-  const SurfacePoint& x, const double direction[3], const HitRecord& hit, int, double* values) const
+void vtkDeepGIReferenceIrradiance::EvaluateSample(const SurfacePoint& x,
+  const double direction[3], const HitRecord& hit, int sample, double* values) const
 {
   values[0] = values[1] = values[2] = 0.0;
   if (this->Quantity == DIRECT_RADIANCE)
@@ -666,6 +792,10 @@ void vtkDeepGIReferenceIrradiance::EvaluateSample(
   }
   double radiance[3];
   this->OutgoingRadiance(y, direction, hit, radiance);
+  if (this->NumberOfBounces > 1)
+  {
+    this->AddBounces(x.Pixel, sample, y, direction, hit, radiance);
+  }
   // A cosine-weighted sample of E = int L cos dw is L cos / (cos / pi).
   for (int c = 0; c < 3; ++c)
   {
@@ -738,6 +868,8 @@ void vtkDeepGIReferenceIrradiance::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DiffuseCoefficient: " << this->DiffuseCoefficient << "\n";
   os << indent << "EmissionArrayName: "
      << (this->EmissionArrayName ? this->EmissionArrayName : "(none)") << "\n";
+  os << indent << "NumberOfBounces: " << this->NumberOfBounces << "\n";
+  os << indent << "BounceDamping: " << this->BounceDamping << "\n";
   os << indent << "NumberOfLights: " << this->GetNumberOfLights() << "\n";
   for (const ResolvedLight& light : this->Data->Lights)
   {

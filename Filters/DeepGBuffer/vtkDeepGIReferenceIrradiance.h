@@ -1,7 +1,7 @@
 /**
  * @class   vtkDeepGIReferenceIrradiance
- * @brief   ray-traced (Embree) ground truth of one-bounce diffuse indirect
- *          light on the pixels of a deep G-buffer capture
+ * @brief   ray-traced (Embree) ground truth of one- or multi-bounce
+ *          diffuse indirect light on the pixels of a deep G-buffer capture
  *
  * The reference for the screen-space radiosity of the paper (section 3.2,
  * eq. 3-7): for the surface point X and normal n_X of each pixel of layer
@@ -69,6 +69,39 @@
  * each sample is pi * L(Y) and E is their mean; the reflected
  * one-bounce radiance is L_indirect(X) = rho_X * E(X) / pi with rho_X the
  * capture's Albedo_j (the diffuse BRDF rho / pi).
+ *
+ * ## Multiple bounces
+ *
+ * With NumberOfBounces k > 1 the radiance leaving a hit Y also carries the
+ * light Y reflects after k - 1 bounces:
+ *
+ *   L_1(Y) = L_emitted(Y) + L_direct(Y)
+ *   L_k(Y) = L_1(Y) + delta * rho_Y * E_{k-1}(Y) / pi
+ *   E_k(X) = integral over the hemisphere of L_k(Y(w)) max(0, n_X . w) dw
+ *
+ * with delta = BounceDamping and E_{k-1}(Y) the same integral over the
+ * hemisphere of Y's shading normal n_Y (flipped on back faces). E_1 is the
+ * one-bounce irradiance above, and E_k = E_1 + delta K E_1 + ... +
+ * delta^(k-1) K^(k-1) E_1 with K "reflect diffusely (rho / pi), then
+ * gather": what vtkDeepRadiosityPass reaches after k still frames with
+ * Damping delta and no colour boost (B_t(Y) = direct(Y) + delta
+ * L_ind,t-1(Y), paper section 3.3); its converged result is k -> infinity.
+ * Each E_{k-1}(Y) is estimated by diffuse path tracing: one cosine-weighted
+ * continuation ray from Y per level and sample (random dimensions 2j and
+ * 2j + 1 of the sample for the j-th continuation, so the result stays
+ * independent of the thread count), so a sample is
+ *
+ *   pi (L_1(Y_1) + delta rho_1 L_1(Y_2) + delta^2 rho_1 rho_2 L_1(Y_3) + ...)
+ *
+ * and the standard error covers all bounces. A path ends where it escapes,
+ * at a surface that sends no light (a back face with TwoSidedLighting off),
+ * and where its continuation direction lies below the triangle of Y
+ * (possible only where the shading normal departs from the triangle's).
+ * MaximumDistance limits every segment of a path, not only the first: the
+ * screen-space pass gathers each bounce within r around the surface that
+ * receives it (the B(Y) it gathers at Y came itself from a gather within r
+ * around Y), so with MaximumDistance = r both ignore light that travels
+ * farther than r on any bounce.
  *
  * Shadows (default off): VTK's default rendering, and therefore the radiance
  * layers the screen-space pass gathers, has no shadows; with Shadows on a
@@ -225,12 +258,37 @@ public:
   ///@{
   /**
    * Only surfaces within this distance of X count (world units; (0, inf];
-   * default infinity: the full one-bounce irradiance). Set it to the
-   * screen-space gather radius r to compare with a gather limited to r.
+   * default infinity: the full irradiance); with NumberOfBounces > 1 it
+   * limits every segment of a path. Set it to the screen-space gather
+   * radius r to compare with a gather limited to r.
    * Compute() fails with an error when it is NaN or not positive.
    */
   vtkSetMacro(MaximumDistance, double);
   vtkGetMacro(MaximumDistance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Bounces of light that reach X (see "Multiple bounces" in the class
+   * description), [1, 16]; default 1: the one-bounce irradiance. Values
+   * outside the range are clamped with a warning. The cost grows about
+   * linearly with it (one continuation ray, plus shadow rays, per bounce);
+   * NumberOfRays counts the rays that leave X only.
+   */
+  void SetNumberOfBounces(int bounces);
+  vtkGetMacro(NumberOfBounces, int);
+  ///@}
+
+  ///@{
+  /**
+   * delta that multiplies each bounce beyond the first, the
+   * vtkDeepRadiosityPass's Damping (paper section 3.3), [0, 1]; default 1
+   * (undamped, the physical multi-bounce irradiance). Out-of-range values
+   * are clamped and NaN is ignored, both with a warning. Has no effect with
+   * NumberOfBounces 1.
+   */
+  void SetBounceDamping(double delta);
+  vtkGetMacro(BounceDamping, double);
   ///@}
 
   ///@{
@@ -278,6 +336,8 @@ protected:
   double MaximumDistance;
   double DiffuseCoefficient;
   char* EmissionArrayName;
+  int NumberOfBounces;
+  double BounceDamping;
 
 private:
   vtkDeepGIReferenceIrradiance(const vtkDeepGIReferenceIrradiance&) = delete;
@@ -290,6 +350,16 @@ private:
   /// Direct diffuse radiance leaving the hit (seen from direction w).
   void DirectRadiance(
     const double y[3], const double w[3], const HitRecord& hit, double radiance[3]) const;
+
+  /// VTK's shading normal at the hit reached along w, flipped on back
+  /// faces; false where the hit sends no light (a back face with one-sided
+  /// lighting) or the interpolated normal vanishes.
+  bool ShadingNormal(const double w[3], const HitRecord& hit, double n[3]) const;
+
+  /// Adds to `radiance` (what leaves the first hit y along w) the bounces
+  /// 2..NumberOfBounces by diffuse path tracing from y.
+  void AddBounces(vtkIdType pixel, int sample, const double y[3], const double w[3],
+    const HitRecord& hit, double radiance[3]) const;
 
   /// Reads the scene's emission array into the per-cell table (empty: none).
   void PrepareEmission();

@@ -352,6 +352,23 @@ double vtkDeepGIReferenceObscurance::Random(vtkIdType pixel, int sample, int dim
   return static_cast<double>(h >> 11) * (1.0 / 9007199254740992.0);
 }
 
+void vtkDeepGIReferenceObscurance::CosineDirection(
+  const double n[3], double u1, double u2, double w[3])
+{
+  // Malley's method: uniform on the disc, projected up onto the hemisphere.
+  double t[3], b[3];
+  Basis(n, t, b);
+  const double radius = std::sqrt(u1);
+  const double phi = 2.0 * vtkMath::Pi() * u2;
+  const double lx = radius * std::cos(phi), ly = radius * std::sin(phi);
+  const double lz = std::sqrt(std::max(0.0, 1.0 - u1));
+  for (int c = 0; c < 3; ++c)
+  {
+    w[c] = lx * t[c] + ly * b[c] + lz * n[c];
+  }
+  vtkMath::Normalize(w);
+}
+
 //------------------------------------------------------------------------------
 void vtkDeepGIReferenceObscurance::EvaluateSample(const SurfacePoint& x,
   const double direction[3], const HitRecord& hit, int, double* values) const
@@ -549,25 +566,12 @@ bool vtkDeepGIReferenceObscurance::Compute(vtkImageData* capture)
         {
           x.Origin[c] = x.Position[c] + offset * x.Normal[c];
         }
-        double t[3], bt[3];
-        Basis(x.Normal, t, bt);
         std::fill(sum.begin(), sum.end(), 0.0);
         std::fill(sum2.begin(), sum2.end(), 0.0);
         for (int i = 0; i < spp; ++i)
         {
-          // Cosine-weighted direction (Malley: uniform disc, projected up).
-          const double u1 = this->Random(pixel, i, 0);
-          const double u2 = this->Random(pixel, i, 1);
-          const double radius = std::sqrt(u1);
-          const double phi = 2.0 * vtkMath::Pi() * u2;
-          const double lx = radius * std::cos(phi), ly = radius * std::sin(phi);
-          const double lz = std::sqrt(std::max(0.0, 1.0 - u1));
           double w[3];
-          for (int c = 0; c < 3; ++c)
-          {
-            w[c] = lx * t[c] + ly * bt[c] + lz * x.Normal[c];
-          }
-          vtkMath::Normalize(w);
+          CosineDirection(x.Normal, this->Random(pixel, i, 0), this->Random(pixel, i, 1), w);
           HitRecord hit;
           this->TraceRay(x.Origin, w, tmax, hit);
           this->EvaluateSample(x, w, hit, i, values.data());

@@ -286,6 +286,10 @@ protected:
   /// counter-based hash of Seed and the three indices.
   double Random(vtkIdType pixel, int sample, int dimension) const;
 
+  /// Unit direction about the unit normal n with density cos / pi from two
+  /// uniform numbers in [0, 1): the sampling of the rays from X.
+  static void CosineDirection(const double n[3], double u1, double u2, double w[3]);
+
   /// Values EvaluateSample returns per sample (1 here: the obscurance).
   virtual int GetNumberOfSampleComponents() const { return 1; }
 
