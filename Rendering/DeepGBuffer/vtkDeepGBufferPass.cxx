@@ -581,8 +581,8 @@ bool vtkDeepGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
   // The guard band (SetGuardBand) widens the frustum: clip x and y are
   // scaled by deepGuardBandScale where clip positions are made, in the vertex
   // shader, or, for mappers whose geometry shader projects view-space
-  // positions itself (VCDCMatrix: spheres, sticks, point Gaussians), at each
-  // vertex that geometry shader emits.
+  // positions itself (VCDCMatrix, e.g. vtkPointGaussianMapper's splats), at
+  // each vertex that geometry shader emits.
   const bool geometryShaderProjects = geometryShader.find("VCDCMatrix") != std::string::npos;
   vtkShaderProgram::Substitute(vertexShader, "//VTK::Camera::Dec",
     "//VTK::Camera::Dec\n"
@@ -790,10 +790,9 @@ bool vtkDeepGBufferPass::SetShaderParameters(vtkShaderProgram* program,
   {
     program->SetUniform2f("deepGuardBandScale", in.GuardBandScale.data());
   }
-  if (!program->IsUniformUsed("deepOtherMCDC"))
-  {
-    return true;
-  }
+  // Every program gets the uniforms it uses, also those whose vertex shader
+  // has no position hook (and so no deepOtherMCDC), such as point Gaussian
+  // splats: their fragment shaders still write the layers.
   vtkDeepGBufferRendererState& state = *in.Current;
 
   // The other frame's clip position of this prop's vertices, computed like

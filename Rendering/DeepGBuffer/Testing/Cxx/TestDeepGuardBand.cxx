@@ -13,9 +13,10 @@
 //    wide render is many times the guard band's.
 // 3. GuardBandShadedFraction 0 shades only the frame, yet its raw gather
 //    still reads the whole guard band (equal to the wide render).
-// 4. The resolved image and depth are VTK's frame, with and without a
-//    guard band, also for props drawn without the routing geometry shader
-//    (wide lines use VTK's own geometry shader).
+// 4. The resolved image and depth are VTK's own, with and without a guard
+//    band, also for props drawn without the routing geometry shader: wide
+//    lines (VTK's geometry shader widens clip-space lines) and point
+//    Gaussian splats (their geometry shader projects view-space quads).
 // 5. Bad values of the guard band are clamped or ignored with a warning.
 
 #include "DeepRadiosityTest.h"
@@ -26,6 +27,9 @@
 #include "vtkDeepGBufferPass.h"
 #include "vtkDeepRadiosityPass.h"
 #include "vtkMath.h"
+#include "vtkPointGaussianMapper.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkSphereSource.h"
 
 #include <algorithm>
@@ -251,12 +255,16 @@ void TestExactness()
   Check(MostlyEqual(bounces), "bounces = the wide render's centre");
 }
 
-// Resolved colour and depth with a guard band = without one (VTK's frame),
-// with a wide-line wireframe prop drawn through VTK's own geometry shader.
+// Resolved colour and depth with a guard band = without one = VTK's own
+// image, with a wide-line wireframe prop (VTK's geometry shader widens
+// clip-space lines) and point Gaussian splats (their geometry shader
+// projects view-space quads; their vertex shader has no position hook).
 void TestResolve()
 {
-  vtkNew<vtkImageData> rgb[2], depth[2];
-  for (int k = 0; k < 2; ++k)
+  // 0: VTK without a pass; 1: G-buffer without a guard band; 2: with 0.25;
+  // 3: with 0.25 and without the splats.
+  vtkNew<vtkImageData> rgb[4], depth[4];
+  for (int k = 0; k < 4; ++k)
   {
     auto window = MakeWindow(Width, Height);
     vtkNew<vtkRenderer> renderer;
@@ -269,33 +277,79 @@ void TestResolve()
     wire->GetProperty()->SetRepresentationToWireframe();
     wire->GetProperty()->SetLineWidth(3.0);
     wire->GetProperty()->SetColor(1.0, 1.0, 0.2);
+    vtkNew<vtkPoints> centers;
+    centers->InsertNextPoint(1.8, 0.4, 1.2);
+    centers->InsertNextPoint(-0.5, 2.0, -1.0);
+    vtkNew<vtkPolyData> points;
+    points->SetPoints(centers);
+    vtkNew<vtkPointGaussianMapper> splats;
+    splats->SetInputData(points);
+    splats->SetScaleFactor(0.35);
+    splats->EmissiveOff();
+    vtkNew<vtkActor> splatActor;
+    splatActor->SetMapper(splats);
+    splatActor->GetProperty()->SetColor(0.3, 0.5, 1.0);
+    splatActor->SetVisibility(k != 3);
+    renderer->AddActor(splatActor);
     renderer->ResetCameraClippingRange();
     vtkNew<vtkDeepGBufferPass> pass;
-    pass->SetGuardBand(k == 0 ? 0.0 : 0.25);
-    renderer->SetPass(pass);
+    pass->SetGuardBand(k >= 2 ? 0.25 : 0.0);
+    if (k > 0)
+    {
+      renderer->SetPass(pass);
+    }
     window->Render();
     // 0.25 x 72 = 18 pixels, rounded up to a multiple of 8.
-    Check(pass->GetEffectiveGuardBand() == (k == 0 ? 0 : 24), "effective guard band in pixels");
+    Check(pass->GetEffectiveGuardBand() == (k >= 2 ? 24 : 0), "effective guard band in pixels");
     ReadWindow(window, rgb[k], depth[k]);
     renderer->SetPass(nullptr);
     pass->ReleaseGraphicsResources(window);
   }
-  const double colour = MaximumColorDifference(rgb[0], rgb[1]);
-  double largestDepth = 0.0;
-  vtkDataArray* d0 = depth[0]->GetPointData()->GetScalars();
-  vtkDataArray* d1 = depth[1]->GetPointData()->GetScalars();
-  int differing = 0;
-  for (vtkIdType p = 0; p < d0->GetNumberOfTuples(); ++p)
+  auto depthDifference = [&](int a, int b, double& largest)
   {
-    const double d = std::abs(d0->GetComponent(p, 0) - d1->GetComponent(p, 0));
-    largestDepth = std::max(largestDepth, d);
-    differing += d > 1e-5 ? 1 : 0;
-  }
+    vtkDataArray* da = depth[a]->GetPointData()->GetScalars();
+    vtkDataArray* db = depth[b]->GetPointData()->GetScalars();
+    int differing = 0;
+    largest = 0.0;
+    for (vtkIdType p = 0; p < da->GetNumberOfTuples(); ++p)
+    {
+      const double d = std::abs(da->GetComponent(p, 0) - db->GetComponent(p, 0));
+      largest = std::max(largest, d);
+      differing += d > 1e-5 ? 1 : 0;
+    }
+    return differing;
+  };
+  auto colourDiffering = [&](int a, int b)
+  {
+    vtkDataArray* x = rgb[a]->GetPointData()->GetScalars();
+    vtkDataArray* y = rgb[b]->GetPointData()->GetScalars();
+    int differing = 0;
+    for (vtkIdType p = 0; p < x->GetNumberOfTuples(); ++p)
+    {
+      double d = 0.0;
+      for (int c = 0; c < 3; ++c)
+      {
+        d = std::max(d, std::abs(x->GetComponent(p, c) - y->GetComponent(p, c)));
+      }
+      differing += d > 8.0 ? 1 : 0;
+    }
+    return differing;
+  };
+  double largestGuard = 0.0, largestVTK = 0.0;
+  const int depthGuard = depthDifference(2, 1, largestGuard);
+  const int depthVTK = depthDifference(1, 0, largestVTK);
+  const double colourGuard = MaximumColorDifference(rgb[2], rgb[1]);
+  const int colourVTK = colourDiffering(1, 0);
+  const int splatPixels = colourDiffering(2, 3);
   std::printf("resolve with guard band 0.25 vs none: largest colour difference %.3g, %d depth "
-              "pixels differ by > 1e-5 (largest %.3g)\n",
-    colour, differing, largestDepth);
-  Check(differing <= Width * Height / 200, "resolved depth is VTK's frame");
-  Check(colour <= 3.0, "resolved colour is VTK's frame");
+              "pixels differ by > 1e-5 (largest %.3g); G-buffer vs VTK: %d pixels differ by "
+              "> 8/255, %d depth pixels by > 1e-5 (largest %.3g); the splats cover %d pixels\n",
+    colourGuard, depthGuard, largestGuard, colourVTK, depthVTK, largestVTK, splatPixels);
+  Check(depthGuard <= Width * Height / 200, "resolved depth with a guard band is the frame's");
+  Check(colourGuard <= 3.0, "resolved colour with a guard band is the frame's");
+  Check(colourVTK <= Width * Height / 200 && depthVTK <= Width * Height / 200,
+    "the resolved G-buffer is VTK's image");
+  Check(splatPixels > 200, "the point Gaussian splats are drawn in the layers");
 }
 
 void TestBadValues()
