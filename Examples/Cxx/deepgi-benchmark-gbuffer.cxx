@@ -7,7 +7,10 @@
 //   - the G-buffer with one layer (the first layer's cost),
 //   - two layers with DEPTH_PEEL (two geometry submissions),
 //   - two layers with each single-pass oracle (PREVIOUS, REPROJECT,
-//     PREDICT, DELAY: one submission through the routing geometry shader).
+//     PREDICT, DELAY: one submission through the routing geometry shader),
+//   - two layers with REPROJECT and the guard band of the radiosity and GI
+//     passes (vtkDeepRadiosityPass::DEFAULT_GUARD_BAND), whose cost is
+//     reported against REPROJECT without it.
 // Each method renders the same camera sequence; every frame is timed from
 // Render() to glFinish (vtkRenderWindow::WaitForCompletion). The methods run
 // in rounds (all methods, then all again) so that slow drifts of the
@@ -18,6 +21,7 @@
 #include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDeepGIRenderWindowFactory.h"
+#include "vtkDeepRadiosityPass.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderWindow.h"
@@ -131,6 +135,7 @@ struct Method
   std::string Name;
   int Layers = 0; // 0: VTK without the pass
   int Oracle = vtkDeepGBufferPass::DEPTH_PEEL;
+  double GuardBand = 0.0;
   vtkSmartPointer<vtkDeepGBufferPass> Pass;
   std::vector<double> Milliseconds;
   int GeometryPasses = 0;
@@ -177,6 +182,11 @@ int main(int argc, char* argv[])
     methods.push_back(
       { std::string("2 layers, ") + vtkDeepGBufferPass::GetOracleAsString(oracle), 2, oracle });
   }
+  // The default oracle with the guard band of the radiosity and GI passes.
+  const double guardBand = vtkDeepRadiosityPass::DEFAULT_GUARD_BAND;
+  char guardName[64];
+  std::snprintf(guardName, sizeof(guardName), "2 layers, REPROJECT, guard band %g", guardBand);
+  methods.push_back({ guardName, 2, vtkDeepGBufferPass::REPROJECT, guardBand });
   for (Method& m : methods)
   {
     if (m.Layers > 0)
@@ -184,6 +194,7 @@ int main(int argc, char* argv[])
       m.Pass = vtkSmartPointer<vtkDeepGBufferPass>::New();
       m.Pass->SetNumberOfLayers(m.Layers);
       m.Pass->SetOracle(m.Oracle);
+      m.Pass->SetGuardBand(m.GuardBand);
     }
   }
 
@@ -249,7 +260,7 @@ int main(int argc, char* argv[])
   for (const Method& m : methods)
   {
     const double t = Median(m.Milliseconds);
-    if (m.Layers < 2)
+    if (m.Layers < 2 || m.GuardBand > 0.0)
     {
       std::snprintf(buffer, sizeof(buffer), "| %s | %d | %.1f | | |\n", m.Name.c_str(),
         m.Layers == 0 ? 1 : m.GeometryPasses, t);
@@ -272,6 +283,27 @@ int main(int argc, char* argv[])
     "Paper (Table 5, GTX 980, 1080p): REPROJECT adds about 0.4-0.6 of the first layer's cost "
     "and is about twice as fast as depth peeling.\n",
     firstLayer, firstLayer / vtkOnly, vtkOnly);
+  md << buffer;
+  double reproject = 0.0, guarded = 0.0;
+  int guardPixels = 0;
+  for (const Method& m : methods)
+  {
+    if (m.Layers == 2 && m.Oracle == vtkDeepGBufferPass::REPROJECT)
+    {
+      (m.GuardBand > 0.0 ? guarded : reproject) = Median(m.Milliseconds);
+      if (m.GuardBand > 0.0)
+      {
+        guardPixels = m.Pass->GetEffectiveGuardBand();
+      }
+    }
+  }
+  std::snprintf(buffer, sizeof(buffer),
+    "Guard band %g (%d pixels per side: %.2f x the pixels): 2 layers, REPROJECT %.1f ms = %.2f x "
+    "without it (%.1f ms).\n",
+    guardBand, guardPixels,
+    static_cast<double>(options.Width + 2 * guardPixels) * (options.Height + 2 * guardPixels) /
+      (static_cast<double>(options.Width) * options.Height),
+    guarded, reproject > 0.0 ? guarded / reproject : 0.0, reproject);
   md << buffer;
 
   std::fputs(md.str().c_str(), stdout);
