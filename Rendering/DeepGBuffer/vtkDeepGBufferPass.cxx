@@ -152,12 +152,6 @@ Matrix WithGuardBand(const Matrix& projection, const std::array<float, 2>& scale
   return p;
 }
 
-// The inverse of WithGuardBand: the projection of the frame alone.
-Matrix WithoutGuardBand(const Matrix& projection, const std::array<float, 2>& scale)
-{
-  return WithGuardBand(projection, { { 1.0f / scale[0], 1.0f / scale[1] } });
-}
-
 // (P22, P23, P32, P33): what deepDistanceFromClip needs of a projection.
 std::array<float, 4> ProjectionDepthRows(const Matrix& projection)
 {
@@ -220,6 +214,8 @@ struct vtkDeepGBufferRendererState
   bool HasPreviousCamera = false;
   Matrix View = Identity(), Projection = Identity();
   Matrix PreviousView = Identity(), PreviousProjection = Identity();
+  // The camera's own projections (the frame without the guard band).
+  Matrix FrameProjection = Identity(), PreviousFrameProjection = Identity();
   // The camera the displayed layers were rasterised with: the current one,
   // or the previous one for DELAY. LayerProjection covers the layers (frame
   // and guard band); LayerFrameProjection is the camera's own, which covers
@@ -1260,11 +1256,12 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
   const double aspect = renderer->GetTiledAspectRatio();
   state.PreviousView = state.View;
   state.PreviousProjection = state.Projection;
+  state.PreviousFrameProjection = state.FrameProjection;
   state.View = ToArray(camera->GetModelViewTransformMatrix());
-  const Matrix frameProjection = ToArray(camera->GetProjectionTransformMatrix(aspect, -1, 1));
+  state.FrameProjection = ToArray(camera->GetProjectionTransformMatrix(aspect, -1, 1));
   // VTK's vertex shaders see the camera's projection; the layers' vertex
   // stage scales clip x and y by the same GuardBandScale (deepGuardBandScale).
-  state.Projection = WithGuardBand(frameProjection, in.GuardBandScale);
+  state.Projection = WithGuardBand(state.FrameProjection, in.GuardBandScale);
   const bool hadPreviousCamera = state.HasPreviousCamera;
   state.HasPreviousCamera = true;
   camera->GetClippingRange(state.ClippingRange);
@@ -1479,7 +1476,9 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
   state.RenderedLayers = layers;
   state.LayerView = oracle == DELAY ? in.OtherView : state.View;
   state.LayerProjection = oracle == DELAY ? in.OtherProjection : state.Projection;
-  state.LayerFrameProjection = WithoutGuardBand(state.LayerProjection, in.GuardBandScale);
+  state.LayerFrameProjection = oracle == DELAY && in.OtherUsesPreviousFrame
+    ? state.PreviousFrameProjection
+    : state.FrameProjection;
   state.GuardBand = guard;
   this->EffectiveGuardBand = guard;
   state.MinimumSeparation = dz;
