@@ -786,58 +786,60 @@ bool vtkDeepGBufferPass::SetShaderParameters(vtkShaderProgram* program,
   {
     program->SetUniform2f("deepGuardBandScale", in.GuardBandScale.data());
   }
+  vtkDeepGBufferRendererState& state = *in.Current;
   // Every program gets the uniforms it uses, also those whose vertex shader
   // has no position hook (and so no deepOtherMCDC), such as point Gaussian
   // splats: their fragment shaders still write the layers.
-  vtkDeepGBufferRendererState& state = *in.Current;
-
-  // The other frame's clip position of this prop's vertices, computed like
-  // VTK's own MCDCMatrix (P V M, then the vertex buffer's coordinate shift
-  // and scale) so that DELAY rasterises exactly what the previous frame did.
-  auto& history = state.Props[prop];
-  if (history.Frame != state.FrameIndex)
+  if (program->IsUniformUsed("deepOtherMCDC"))
   {
-    vtkProp3D* prop3D = vtkProp3D::SafeDownCast(prop);
-    Matrix model = prop3D ? ToArray(prop3D->GetMatrix()) : Identity();
-    history.PreviousModel = history.Model;
-    history.PreviousFrame = history.Frame;
-    history.Model = model;
-    history.Frame = state.FrameIndex;
-    state.PropLiveness[prop] = prop;
+    // The other frame's clip position of this prop's vertices, computed like
+    // VTK's own MCDCMatrix (P V M, then the vertex buffer's coordinate shift
+    // and scale) so that DELAY rasterises exactly what the previous frame did.
+    auto& history = state.Props[prop];
+    if (history.Frame != state.FrameIndex)
+    {
+      vtkProp3D* prop3D = vtkProp3D::SafeDownCast(prop);
+      Matrix model = prop3D ? ToArray(prop3D->GetMatrix()) : Identity();
+      history.PreviousModel = history.Model;
+      history.PreviousFrame = history.Frame;
+      history.Model = model;
+      history.Frame = state.FrameIndex;
+      state.PropLiveness[prop] = prop;
 
-    Matrix otherModel = model;
-    if (history.PreviousFrame + 1 == state.FrameIndex && history.PreviousFrame != 0)
-    {
-      if (in.OtherUsesPreviousFrame)
+      Matrix otherModel = model;
+      if (history.PreviousFrame + 1 == state.FrameIndex && history.PreviousFrame != 0)
       {
-        otherModel = history.PreviousModel;
+        if (in.OtherUsesPreviousFrame)
+        {
+          otherModel = history.PreviousModel;
+        }
+        else if (in.OtherIsPrediction)
+        {
+          otherModel = Extrapolate(history.PreviousModel, model);
+        }
       }
-      else if (in.OtherIsPrediction)
-      {
-        otherModel = Extrapolate(history.PreviousModel, model);
-      }
+      history.OtherModel = otherModel;
     }
-    history.OtherModel = otherModel;
-  }
-  // Same association as vtkOpenGLPolyDataMapper: (P V) (M S^-1).
-  Matrix modelToStored = history.OtherModel;
-  vtkOpenGLVertexBufferObject* positions =
-    static_cast<vtkOpenGLPolyDataMapper*>(mapper)->GetVBOs()->GetVBO("vertexMC");
-  if (positions && positions->GetCoordShiftAndScaleEnabled())
-  {
-    // Stored coordinates are (x - shift) * scale.
-    const std::vector<double>& shift = positions->GetShift();
-    const std::vector<double>& scale = positions->GetScale();
-    Matrix unshift = Identity();
-    for (int i = 0; i < 3 && i < static_cast<int>(shift.size()); ++i)
+    // Same association as vtkOpenGLPolyDataMapper: (P V) (M S^-1).
+    Matrix modelToStored = history.OtherModel;
+    vtkOpenGLVertexBufferObject* positions =
+      static_cast<vtkOpenGLPolyDataMapper*>(mapper)->GetVBOs()->GetVBO("vertexMC");
+    if (positions && positions->GetCoordShiftAndScaleEnabled())
     {
-      unshift[i * 4 + i] = 1.0 / scale[i];
-      unshift[i * 4 + 3] = shift[i];
+      // Stored coordinates are (x - shift) * scale.
+      const std::vector<double>& shift = positions->GetShift();
+      const std::vector<double>& scale = positions->GetScale();
+      Matrix unshift = Identity();
+      for (int i = 0; i < 3 && i < static_cast<int>(shift.size()); ++i)
+      {
+        unshift[i * 4 + i] = 1.0 / scale[i];
+        unshift[i * 4 + 3] = shift[i];
+      }
+      modelToStored = Multiply(modelToStored, unshift);
     }
-    modelToStored = Multiply(modelToStored, unshift);
+    std::array<float, 16> otherMCDC = ToColumnMajor(Multiply(in.OtherWorldToClip, modelToStored));
+    program->SetUniformMatrix4x4("deepOtherMCDC", otherMCDC.data());
   }
-  const std::array<float, 16> otherMCDCUniform =
-    ToColumnMajor(Multiply(in.OtherWorldToClip, modelToStored));
 
   // Uniforms the compiler removed (e.g. the routing ones without a geometry
   // shader) are skipped.
@@ -862,7 +864,6 @@ bool vtkDeepGBufferPass::SetShaderParameters(vtkShaderProgram* program,
   // Shaders with the routing geometry shader choose positions per layer
   // there; the others swap in the vertex shader for the layer they draw.
   const bool routedProgram = program->IsUniformUsed("deepEmitMask");
-  setMatrix("deepOtherMCDC", otherMCDCUniform.data());
   setInt("deepVertexUsesOtherClip",
     routedProgram ? 0 : (in.OtherClipLayerMask >> in.TargetLayer) & 1);
   setInt("deepEmitMask", in.EmitMask);
