@@ -40,6 +40,7 @@
 #include "vtkDeepGBufferSceneLoader.h"
 #include "vtkDeepGIReferenceObscurance.h"
 #include "vtkDeepGIRenderWindowFactory.h"
+#include "vtkDeepRadiosityPass.h"
 #include "vtkImageData.h"
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
@@ -119,7 +120,8 @@ void Usage()
     "  --methods LIST       comma list of ssao:K (vtkSSAOPass, kernel size K, blur on),\n"
     "                       ours1:N[:B] / ours2:N[:B] (one / two layers, N samples,\n"
     "                       BlurRadius B, default 4), ours2nc:N[:B] (two layers,\n"
-    "                       layer 1 without back-face culling), low, medium, high (two\n"
+    "                       layer 1 without back-face culling), ours2gb:N[:B] (two\n"
+    "                       layers, a G-buffer guard band of 0.1), low, medium, high (two\n"
     "                       layers with a quality preset). Default:\n"
     "                       %s\n"
     "  --data DIR           shared data directory (default %s)\n"
@@ -140,7 +142,12 @@ struct Method
   int Blur = 4;       // ours
   int Preset = -1;    // ours: a vtkDeepAmbientObscurancePass quality preset, or -1
   bool DeepLayerBackfaceCulling = true; // ours: the G-buffer's culling in layer 1
+  double GuardBand = 0.0;               // ours: the G-buffer's guard band
 };
+
+/// Width of the frame's border, as a fraction of the height, on which the
+/// guard band's effect is measured separately.
+constexpr double BorderFraction = 0.1;
 
 bool ParseMethod(const std::string& spec, Method& m)
 {
@@ -169,7 +176,7 @@ bool ParseMethod(const std::string& spec, Method& m)
     return true;
   }
   if ((p.size() == 2 || p.size() == 3) &&
-    (p[0] == "ours1" || p[0] == "ours2" || p[0] == "ours2nc"))
+    (p[0] == "ours1" || p[0] == "ours2" || p[0] == "ours2nc" || p[0] == "ours2gb"))
   {
     int n = 0, b = 4;
     if (!ParseInt(p[1], n) || n < 1 || n > 98 || (p.size() == 3 && (!ParseInt(p[2], b) || b < 0 || b > 16)))
@@ -182,9 +189,11 @@ bool ParseMethod(const std::string& spec, Method& m)
     m.Layers = layers;
     m.Blur = b;
     m.DeepLayerBackfaceCulling = p[0] != "ours2nc";
+    m.GuardBand = p[0] == "ours2gb" ? vtkDeepRadiosityPass::DEFAULT_GUARD_BAND : 0.0;
     const std::string label = layers == 1 ? "1 layer"
-      : m.DeepLayerBackfaceCulling        ? "2 layers"
-                                          : "2 layers, no layer-1 culling";
+      : !m.DeepLayerBackfaceCulling       ? "2 layers, no layer-1 culling"
+      : m.GuardBand > 0.0                 ? "2 layers, guard band"
+                                          : "2 layers";
     m.Name = "ours " + label + " N=" + p[1] + (b != 4 ? " B=" + std::to_string(b) : "");
     m.Family = b == 4 ? "ours, " + label + " (N)" : "";
     return true;
@@ -292,7 +301,8 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     Method parsed;
     if (!ParseMethod(m, parsed))
     {
-      return bad("unknown method '" + m + "' (ssao:K, ours1:N[:B], ours2:N[:B], ours2nc:N[:B], low, medium, high)");
+      return bad("unknown method '" + m +
+        "' (ssao:K, ours1:N[:B], ours2:N[:B], ours2nc:N[:B], ours2gb:N[:B], low, medium, high)");
     }
   }
   return true;
@@ -326,6 +336,8 @@ struct Accuracy
   double Gamma = 1, CRmse = 0, CMae = 0, CRmseLayer1 = 0; // calibrated
   double CaptureDifference = -1;                      // ours: mean |ratio - captured AV|
   double MeanAV = 0;
+  double CRmseBorder = 0; // calibrated, on the valid pixels within BorderFraction of the edge
+  long BorderPixels = 0;
 };
 
 struct Result
@@ -579,6 +591,7 @@ int main(int argc, char* argv[])
         ao->SetUseSecondLayer(m.Layers == 2);
         ao->GetGBufferPass()->SetNumberOfLayers(m.Layers);
         ao->GetGBufferPass()->SetDeepLayerBackfaceCulling(m.DeepLayerBackfaceCulling);
+        ao->GetGBufferPass()->SetGuardBand(m.GuardBand);
         passes.push_back(ao);
       }
     }
@@ -623,7 +636,9 @@ int main(int argc, char* argv[])
       return 1;
     }
     const size_t np = static_cast<size_t>(w) * h;
-    std::vector<unsigned char> mask(np, 0), layer1(np, 0);
+    std::vector<unsigned char> mask(np, 0), layer1(np, 0), border(np, 0);
+    const int borderWidth = static_cast<int>(std::lround(BorderFraction * h));
+    long nBorder = 0;
     vtkDataArray* valid0 = capture->GetPointData()->GetArray("Valid_0");
     vtkDataArray* valid1 = capture->GetPointData()->GetArray("Valid_1");
     long nValid = 0, nExcluded = 0, nLayer1 = 0;
@@ -635,6 +650,12 @@ int main(int argc, char* argv[])
         {
           mask[i] = 1;
           ++nValid;
+          const int x = static_cast<int>(i % w), y = static_cast<int>(i / w);
+          if (x < borderWidth || y < borderWidth || x >= w - borderWidth || y >= h - borderWidth)
+          {
+            border[i] = 1;
+            ++nBorder;
+          }
           if (valid1 && valid1->GetComponent(i, 0) > 0)
           {
             layer1[i] = 1;
@@ -718,6 +739,8 @@ int main(int argc, char* argv[])
       res.A.CRmse = cal.Rmse;
       res.A.CMae = cal.Mae;
       res.A.CRmseLayer1 = cal.RmseLayer1;
+      res.A.CRmseBorder = Errors(av, ref, border, border, res.A.Gamma).Rmse;
+      res.A.BorderPixels = nBorder;
       if (options.ErrorMaps)
       {
         std::vector<float> error(np);
@@ -926,6 +949,19 @@ int main(int argc, char* argv[])
       }
       md << "| " << s.Name << " | " << g1s << " | " << g2.str() << " |\n";
     }
+  }
+
+  md << "\n### The frame's border\n\n"
+     << "Calibrated RMSE on all valid pixels and on those within " << BorderFraction
+     << " of the height of the frame's edge, where the screen-space methods lack the "
+        "occluders outside the view unless the G-buffer has a guard band.\n\n"
+     << "| scene | method | frame [ms] | RMSE cal. | RMSE cal. border | border px |\n"
+        "|---|---|---|---|---|---|\n";
+  for (const Result& r : results)
+  {
+    md << "| " << r.Scene << " | " << r.M.Name << " | " << Fmt("%.2f", r.FrameMs) << " | "
+       << Fmt("%.4f", r.A.CRmse) << " | " << Fmt("%.4f", r.A.CRmseBorder) << " | "
+       << r.A.BorderPixels << " |\n";
   }
 
   md << "\n### Where the second layer changes AV\n\n"
