@@ -1135,21 +1135,15 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
   // The layers: the frame and the guard band around it (paper section 3.5).
   GLint maximumTextureSize = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maximumTextureSize);
-  // Rounded up to a multiple of GUARD_BAND_ALIGNMENT so that the frame keeps
-  // its place in the blocks of the consumers' MIP levels.
-  const int alignment = GUARD_BAND_ALIGNMENT;
-  int guard = static_cast<int>(std::lround(this->GuardBand * frameHeight));
-  guard = (guard + alignment - 1) / alignment * alignment;
-  const int guardLimit = std::max(0,
-    (static_cast<int>(maximumTextureSize) - std::max(frameWidth, frameHeight)) / 2 / alignment *
-      alignment);
-  if (guard > guardLimit)
+  bool limited = false;
+  const int guard = ComputeGuardBandPixels(
+    this->GuardBand, frameWidth, frameHeight, static_cast<int>(maximumTextureSize), &limited);
+  if (limited)
   {
     in.WarnOnce(this, 4,
-      "A guard band of " + std::to_string(guard) + " pixels exceeds this GPU's texture size " +
-        std::to_string(maximumTextureSize) + "; it is limited to " + std::to_string(guardLimit) +
-        " pixels.");
-    guard = guardLimit;
+      "The guard band of " + std::to_string(this->GuardBand) +
+        " of the height exceeds this GPU's texture size " + std::to_string(maximumTextureSize) +
+        "; it is limited to " + std::to_string(guard) + " pixels.");
   }
   const int width = frameWidth + 2 * guard, height = frameHeight + 2 * guard;
   in.GuardBandScale = { static_cast<float>(static_cast<double>(frameWidth) / width),
@@ -1678,6 +1672,25 @@ vtkDeepGBufferRendererState* FindState(
   auto it = states.find(renderer ? renderer : first);
   return (it == states.end() || !it->second->LayeredFramebuffer) ? nullptr : it->second.get();
 }
+}
+
+int vtkDeepGBufferPass::ComputeGuardBandPixels(
+  double fraction, int width, int height, int maximumTextureSize, bool* limited)
+{
+  // Rounded up to a multiple of GUARD_BAND_ALIGNMENT so that the frame keeps
+  // its place in the blocks of the consumers' MIP levels.
+  const int alignment = GUARD_BAND_ALIGNMENT;
+  const double clamped =
+    std::isfinite(fraction) ? std::min(std::max(fraction, 0.0), MAXIMUM_GUARD_BAND) : 0.0;
+  int guard = static_cast<int>(std::lround(clamped * std::max(height, 0)));
+  guard = (guard + alignment - 1) / alignment * alignment;
+  const int limit =
+    std::max(0, (maximumTextureSize - std::max(width, height)) / 2 / alignment * alignment);
+  if (limited)
+  {
+    *limited = guard > limit;
+  }
+  return std::min(guard, limit);
 }
 
 bool vtkDeepGBufferPass::GetLayerExtent(vtkRenderer* renderer, int size[2], int& guardBand)

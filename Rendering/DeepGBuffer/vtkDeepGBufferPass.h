@@ -226,6 +226,17 @@ public:
   /// The guard band of the last rendered frame, in pixels on each side.
   vtkGetMacro(EffectiveGuardBand, int);
 
+  /**
+   * The guard band in pixels on each side for a frame of width x height
+   * pixels: round(fraction x height) (fraction clamped to [0,
+   * MAXIMUM_GUARD_BAND], 0 if not finite) rounded up to a multiple of
+   * GUARD_BAND_ALIGNMENT, at most what keeps the layers within
+   * maximumTextureSize (GL_MAX_TEXTURE_SIZE), also a multiple of the
+   * alignment. `limited` (if not null) tells whether that limit applied.
+   */
+  static int ComputeGuardBandPixels(
+    double fraction, int width, int height, int maximumTextureSize, bool* limited = nullptr);
+
   /// The dz used by the last rendered frame (world units).
   vtkGetMacro(EffectiveMinimumSeparation, double);
 

@@ -17,7 +17,8 @@
 //    band, also for props drawn without the routing geometry shader: wide
 //    lines (VTK's geometry shader widens clip-space lines) and point
 //    Gaussian splats (their geometry shader projects view-space quads).
-// 5. Bad values of the guard band are clamped or ignored with a warning.
+// 5. Bad values of the guard band are clamped or ignored with a warning;
+//    the pixel count is aligned to 8 and limited by the largest texture.
 
 #include "DeepRadiosityTest.h"
 
@@ -369,6 +370,25 @@ void TestBadValues()
   pass->SetGuardBand(7.0);
   Check(pass->GetGuardBand() == vtkDeepGBufferPass::MAXIMUM_GUARD_BAND && warnings == 3,
     "huge guard band clamped to the maximum");
+  // The pixel count: rounded up to 8, limited by the largest texture.
+  bool limited = true;
+  Check(vtkDeepGBufferPass::ComputeGuardBandPixels(0.1, 1920, 1080, 16384, &limited) == 112 &&
+      !limited,
+    "0.1 of 1080 is 108 pixels, rounded up to 112");
+  Check(vtkDeepGBufferPass::ComputeGuardBandPixels(0.0, 640, 480, 16384) == 0 &&
+      vtkDeepGBufferPass::ComputeGuardBandPixels(0.001, 640, 480, 16384) == 0 &&
+      vtkDeepGBufferPass::ComputeGuardBandPixels(0.002, 640, 480, 16384) == 8,
+    "small bands round to 0 or up to 8");
+  Check(vtkDeepGBufferPass::ComputeGuardBandPixels(0.5, 12000, 6000, 16384, &limited) == 2192 &&
+      limited,
+    "a band that would exceed the largest texture is limited to fit (12000 + 2 x 2192 <= 16384)");
+  Check(vtkDeepGBufferPass::ComputeGuardBandPixels(0.1, 20000, 100, 16384, &limited) == 0 &&
+      limited,
+    "a frame wider than the largest texture gets no band");
+  Check(vtkDeepGBufferPass::ComputeGuardBandPixels(std::nan(""), 640, 480, 16384) == 0 &&
+      vtkDeepGBufferPass::ComputeGuardBandPixels(9.0, 640, 480, 16384) == 240,
+    "NaN gives no band, a huge fraction the maximum");
+
   vtkNew<vtkDeepRadiosityPass> radiosity;
   radiosity->AddObserver(vtkCommand::WarningEvent, counter);
   Check(radiosity->GetGBufferPass()->GetGuardBand() == vtkDeepRadiosityPass::DEFAULT_GUARD_BAND,
