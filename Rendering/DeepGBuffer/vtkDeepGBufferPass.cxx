@@ -314,6 +314,7 @@ public:
   vtkOpenGLRenderWindow* CheckedWindow = nullptr;
   bool Supported = false;
   int MaximumSlots = 1;
+  int MaximumTextureSize = 0; // GL_MAX_TEXTURE_SIZE, which limits the guard band
   bool Warned[8] = { false, false, false, false, false, false, false, false };
 
   vtkOpenGLQuadHelper* ResolveQuad = nullptr;
@@ -1111,6 +1112,9 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
   {
     std::string why;
     in.CheckedWindow = window;
+    GLint maximumTextureSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maximumTextureSize);
+    in.MaximumTextureSize = static_cast<int>(maximumTextureSize);
     in.Supported = CheckSupport(window, in.MaximumSlots, why);
     if (!in.Supported)
     {
@@ -1133,16 +1137,14 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
     return false;
   }
   // The layers: the frame and the guard band around it (paper section 3.5).
-  GLint maximumTextureSize = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maximumTextureSize);
   bool limited = false;
   const int guard = ComputeGuardBandPixels(
-    this->GuardBand, frameWidth, frameHeight, static_cast<int>(maximumTextureSize), &limited);
+    this->GuardBand, frameWidth, frameHeight, in.MaximumTextureSize, &limited);
   if (limited)
   {
     in.WarnOnce(this, 4,
       "The guard band of " + std::to_string(this->GuardBand) +
-        " of the height exceeds this GPU's texture size " + std::to_string(maximumTextureSize) +
+        " of the height exceeds this GPU's texture size " + std::to_string(in.MaximumTextureSize) +
         "; it is limited to " + std::to_string(guard) + " pixels.");
   }
   const int width = frameWidth + 2 * guard, height = frameHeight + 2 * guard;

@@ -14,6 +14,8 @@
 //  5. bad input: missing file, not an EXR file, unwritable path, empty and
 //     3D images, no numeric arrays, no file name, no input: errors, no crash.
 
+#include "DeepGIReferenceTestUtilities.h"
+
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
@@ -50,29 +52,10 @@
 #include <string>
 #include <vector>
 
+using namespace DeepGIReferenceTest;
+
 namespace
 {
-int Failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  std::cout << (ok ? "ok: " : "FAILED: ") << what << "\n";
-  Failures += ok ? 0 : 1;
-}
-
-class EventCounter : public vtkCommand
-{
-public:
-  static EventCounter* New() { return new EventCounter; }
-  void Execute(vtkObject*, unsigned long event, void*) override
-  {
-    this->Errors += event == vtkCommand::ErrorEvent;
-    this->Warnings += event == vtkCommand::WarningEvent;
-  }
-  int Errors = 0;
-  int Warnings = 0;
-};
-
 // A deterministic value for (array, tuple, component), covering signs and
 // magnitudes from 1e-30 to 1e30 (float) or a half-representable range.
 double Value(int array, vtkIdType tuple, int component, bool halfRange)
@@ -570,9 +553,9 @@ int TestDeepGIEXR(int argc, char* argv[])
     reader->Print(std::cout);
   }
 
-  if (Failures)
+  if (Failures())
   {
-    std::cerr << Failures << " failures\n";
+    std::cerr << Failures() << " failures\n";
     return EXIT_FAILURE;
   }
   return EXIT_SUCCESS;

@@ -36,13 +36,13 @@
 // The sphere's facets (and no point normals) make the closed form exact
 // only up to the faceting, about 1e-4 relative here, far below the noise.
 
+#include "DeepGIReferenceTestUtilities.h"
+
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDeepGIReferenceIrradiance.h"
-#include "vtkDoubleArray.h"
-#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
@@ -62,29 +62,10 @@
 #include <string>
 #include <vector>
 
+using namespace DeepGIReferenceTest;
+
 namespace
 {
-int Failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  std::cout << (ok ? "ok: " : "FAILED: ") << what << "\n";
-  Failures += ok ? 0 : 1;
-}
-
-class EventCounter : public vtkCommand
-{
-public:
-  static EventCounter* New() { return new EventCounter; }
-  void Execute(vtkObject*, unsigned long event, void*) override
-  {
-    this->Errors += event == vtkCommand::ErrorEvent;
-    this->Warnings += event == vtkCommand::WarningEvent;
-  }
-  int Errors = 0;
-  int Warnings = 0;
-};
-
 const double Radius = 1.0;
 const int Rings = 48, Sectors = 96;
 const double Albedo[3] = { 0.9, 0.6, 0.3 };
@@ -226,21 +207,11 @@ vtkSmartPointer<vtkImageData> MakeCapture(const Sphere& sphere)
   vtkMatrix4x4::Invert(view, inverseView);
   vtkMatrix4x4::Invert(projection, inverseProjection);
 
-  auto capture = vtkSmartPointer<vtkImageData>::New();
-  capture->SetDimensions(Width, Height, 1);
-  const vtkIdType n = Width * Height;
-  vtkNew<vtkFloatArray> depth, normal, albedo;
-  vtkNew<vtkUnsignedCharArray> valid;
-  depth->SetName("Depth_0");
-  depth->SetNumberOfTuples(n);
-  normal->SetName("Normal_0");
-  normal->SetNumberOfComponents(3);
-  normal->SetNumberOfTuples(n);
-  albedo->SetName("Albedo_0");
-  albedo->SetNumberOfComponents(3);
-  albedo->SetNumberOfTuples(n);
-  valid->SetName("Valid_0");
-  valid->SetNumberOfTuples(n);
+  Layer0Capture capture(Width, Height, view, projection);
+  vtkFloatArray* depth = capture.Depth;
+  vtkFloatArray* normal = capture.Normal;
+  vtkFloatArray* albedo = capture.Albedo;
+  vtkUnsignedCharArray* valid = capture.Valid;
   const double eye[3] = { 0, 0, 0 };
   for (int j = 0; j < Height; ++j)
   {
@@ -281,20 +252,7 @@ vtkSmartPointer<vtkImageData> MakeCapture(const Sphere& sphere)
       }
     }
   }
-  capture->GetPointData()->AddArray(depth);
-  capture->GetPointData()->AddArray(normal);
-  capture->GetPointData()->AddArray(albedo);
-  capture->GetPointData()->AddArray(valid);
-  for (auto m :
-    { std::make_pair("ViewMatrix", view), std::make_pair("ProjectionMatrix", projection) })
-  {
-    vtkNew<vtkDoubleArray> values;
-    values->SetName(m.first);
-    values->SetNumberOfComponents(16);
-    values->InsertNextTuple(&m.second->Element[0][0]);
-    capture->GetFieldData()->AddArray(values);
-  }
-  return capture;
+  return capture.Image;
 }
 
 vtkFloatArray* Array(vtkDeepGIReferenceIrradiance* reference, const char* name)
@@ -501,6 +459,6 @@ int TestDeepGIReferenceBounces(int, char*[])
       "BounceDamping 0: no warning");
   }
 
-  std::cout << (Failures ? "FAILED" : "passed") << " (" << Failures << " failures)\n";
-  return Failures ? EXIT_FAILURE : EXIT_SUCCESS;
+  std::cout << (Failures() ? "FAILED" : "passed") << " (" << Failures() << " failures)\n";
+  return Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
 }

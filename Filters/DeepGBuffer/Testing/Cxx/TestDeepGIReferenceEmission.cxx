@@ -25,13 +25,13 @@
 //     TwoSidedLighting on and 0 with it off;
 //  7. an unsigned char array is a colour: divided by 255.
 
+#include "DeepGIReferenceTestUtilities.h"
+
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDeepGIReferenceIrradiance.h"
-#include "vtkDoubleArray.h"
-#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
@@ -51,29 +51,10 @@
 #include <string>
 #include <vector>
 
+using namespace DeepGIReferenceTest;
+
 namespace
 {
-int Failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  std::cout << (ok ? "ok: " : "FAILED: ") << what << "\n";
-  Failures += ok ? 0 : 1;
-}
-
-class EventCounter : public vtkCommand
-{
-public:
-  static EventCounter* New() { return new EventCounter; }
-  void Execute(vtkObject*, unsigned long event, void*) override
-  {
-    this->Errors += event == vtkCommand::ErrorEvent;
-    this->Warnings += event == vtkCommand::WarningEvent;
-  }
-  int Errors = 0;
-  int Warnings = 0;
-};
-
 const int Width = 12, Height = 12;
 const double CameraHeight = 3.0, CameraX = 0.3, CameraY = -0.2;
 
@@ -94,21 +75,12 @@ vtkSmartPointer<vtkImageData> MakeCapture(std::vector<std::array<double, 3>>& po
   vtkMatrix4x4::Invert(view, inverseView);
   vtkMatrix4x4::Invert(projection, inverseProjection);
 
-  auto capture = vtkSmartPointer<vtkImageData>::New();
-  capture->SetDimensions(Width, Height, 1);
+  Layer0Capture capture(Width, Height, view, projection);
+  vtkFloatArray* depth = capture.Depth;
+  vtkFloatArray* normal = capture.Normal;
+  vtkFloatArray* albedo = capture.Albedo;
+  vtkUnsignedCharArray* valid = capture.Valid;
   const vtkIdType n = Width * Height;
-  vtkNew<vtkFloatArray> depth, normal, albedo;
-  vtkNew<vtkUnsignedCharArray> valid;
-  depth->SetName("Depth_0");
-  depth->SetNumberOfTuples(n);
-  normal->SetName("Normal_0");
-  normal->SetNumberOfComponents(3);
-  normal->SetNumberOfTuples(n);
-  albedo->SetName("Albedo_0");
-  albedo->SetNumberOfComponents(3);
-  albedo->SetNumberOfTuples(n);
-  valid->SetName("Valid_0");
-  valid->SetNumberOfTuples(n);
   positions.assign(n, { 0, 0, 0 });
   double up[4] = { 0, 0, 1, 0 }, upCamera[4];
   view->MultiplyPoint(up, upCamera);
@@ -134,45 +106,7 @@ vtkSmartPointer<vtkImageData> MakeCapture(std::vector<std::array<double, 3>>& po
       }
     }
   }
-  capture->GetPointData()->AddArray(depth);
-  capture->GetPointData()->AddArray(normal);
-  capture->GetPointData()->AddArray(albedo);
-  capture->GetPointData()->AddArray(valid);
-  for (auto m :
-    { std::make_pair("ViewMatrix", view), std::make_pair("ProjectionMatrix", projection) })
-  {
-    vtkNew<vtkDoubleArray> values;
-    values->SetName(m.first);
-    values->SetNumberOfComponents(16);
-    values->InsertNextTuple(&m.second->Element[0][0]);
-    capture->GetFieldData()->AddArray(values);
-  }
-  return capture;
-}
-
-// View factor from a differential area to a parallel rectangle at height h
-// whose corner lies straight above it, sides a and b (signed: a corner
-// rectangle on the far side of the point subtracts).
-double CornerViewFactor(double a, double b, double h)
-{
-  const double x = a / h, y = b / h;
-  const double sx = std::sqrt(1 + x * x), sy = std::sqrt(1 + y * y);
-  return (x / sx * std::atan(y / sx) + y / sy * std::atan(x / sy)) / (2 * vtkMath::Pi());
-}
-
-// ... to the square [-s, s]^2 at height h from the point (px, py) (the
-// corner sides are signed, so points beside the square work too).
-double SquareViewFactor(double px, double py, double s, double h)
-{
-  double f = 0;
-  for (double a : { s - px, s + px })
-  {
-    for (double b : { s - py, s + py })
-    {
-      f += CornerViewFactor(a, b, h);
-    }
-  }
-  return f;
+  return capture.Image;
 }
 
 // One quad (corners in order) with Colors `rgb`; `emission` (may be null)
@@ -490,6 +424,6 @@ int TestDeepGIReferenceEmission(int, char*[])
       "unsigned char emission / 255 (closed form)");
   }
 
-  std::cout << (Failures ? "FAILED" : "passed") << " (" << Failures << " failures)\n";
-  return Failures ? EXIT_FAILURE : EXIT_SUCCESS;
+  std::cout << (Failures() ? "FAILED" : "passed") << " (" << Failures() << " failures)\n";
+  return Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
 }

@@ -24,13 +24,14 @@
 //     switched-off light, automatic headlight); bad input: no lights (warning,
 //     E = 0), no scene, NaN and negative MaximumDistance (errors).
 
+#include "DeepGIReferenceTestUtilities.h"
+
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDeepGIReferenceIrradiance.h"
 #include "vtkDoubleArray.h"
-#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
@@ -51,29 +52,10 @@
 #include <string>
 #include <vector>
 
+using namespace DeepGIReferenceTest;
+
 namespace
 {
-int Failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  std::cout << (ok ? "ok: " : "FAILED: ") << what << "\n";
-  Failures += ok ? 0 : 1;
-}
-
-class EventCounter : public vtkCommand
-{
-public:
-  static EventCounter* New() { return new EventCounter; }
-  void Execute(vtkObject*, unsigned long event, void*) override
-  {
-    this->Errors += event == vtkCommand::ErrorEvent;
-    this->Warnings += event == vtkCommand::WarningEvent;
-  }
-  int Errors = 0;
-  int Warnings = 0;
-};
-
 // Lengths of a test are multiplied by Scale and shifted by Shift.
 struct Frame
 {
@@ -149,20 +131,11 @@ vtkSmartPointer<vtkImageData> MakeCapture(const Frame& f, int w, int h, double c
   vtkMatrix4x4::Invert(view, inverseView);
   vtkMatrix4x4::Invert(projection, inverseProjection);
 
-  auto capture = vtkSmartPointer<vtkImageData>::New();
-  capture->SetDimensions(w, h, 1);
-  vtkNew<vtkFloatArray> depth, normal, alb;
-  vtkNew<vtkUnsignedCharArray> valid;
-  depth->SetName("Depth_0");
-  depth->SetNumberOfTuples(w * h);
-  normal->SetName("Normal_0");
-  normal->SetNumberOfComponents(3);
-  normal->SetNumberOfTuples(w * h);
-  alb->SetName("Albedo_0");
-  alb->SetNumberOfComponents(3);
-  alb->SetNumberOfTuples(w * h);
-  valid->SetName("Valid_0");
-  valid->SetNumberOfTuples(w * h);
+  Layer0Capture capture(w, h, view, projection);
+  vtkFloatArray* depth = capture.Depth;
+  vtkFloatArray* normal = capture.Normal;
+  vtkFloatArray* alb = capture.Albedo;
+  vtkUnsignedCharArray* valid = capture.Valid;
   positions.assign(w * h, { 0, 0, 0 });
   double up[4] = { 0, 0, 1, 0 }, nc[4];
   view->MultiplyPoint(up, nc);
@@ -201,43 +174,7 @@ vtkSmartPointer<vtkImageData> MakeCapture(const Frame& f, int w, int h, double c
       }
     }
   }
-  capture->GetPointData()->AddArray(depth);
-  capture->GetPointData()->AddArray(normal);
-  capture->GetPointData()->AddArray(alb);
-  capture->GetPointData()->AddArray(valid);
-  for (auto m :
-    { std::make_pair("ViewMatrix", view), std::make_pair("ProjectionMatrix", projection) })
-  {
-    vtkNew<vtkDoubleArray> values;
-    values->SetName(m.first);
-    values->SetNumberOfComponents(16);
-    values->InsertNextTuple(&m.second->Element[0][0]);
-    capture->GetFieldData()->AddArray(values);
-  }
-  return capture;
-}
-
-// View factor from a differential area to a parallel rectangle at height h
-// whose corner lies straight above it, sides a and b.
-double CornerViewFactor(double a, double b, double h)
-{
-  const double x = a / h, y = b / h;
-  const double sx = std::sqrt(1 + x * x), sy = std::sqrt(1 + y * y);
-  return (x / sx * std::atan(y / sx) + y / sy * std::atan(x / sy)) / (2 * vtkMath::Pi());
-}
-
-// ... to the square [-s, s]^2 at height h from the point (px, py), under it.
-double SquareViewFactor(double px, double py, double s, double h)
-{
-  double f = 0;
-  for (double a : { s - px, s + px })
-  {
-    for (double b : { s - py, s + py })
-    {
-      f += CornerViewFactor(a, b, h);
-    }
-  }
-  return f;
+  return capture.Image;
 }
 
 vtkFloatArray* Array(vtkDeepGIReferenceIrradiance* reference, const char* name)
@@ -734,9 +671,9 @@ int TestDeepGIReferenceIrradiance(int, char*[])
     Check(!bad->Compute(nullptr) && events->Errors == 4, "null capture: error");
   }
 
-  if (Failures)
+  if (Failures())
   {
-    std::cerr << Failures << " failures\n";
+    std::cerr << Failures() << " failures\n";
     return EXIT_FAILURE;
   }
   return EXIT_SUCCESS;

@@ -1,0 +1,118 @@
+// Helpers shared by the tests of the ray-traced references and the OpenEXR
+// I/O: checks with a failure count, an observer counting error and warning
+// events, hand-made layer-0 captures in the layout of
+// vtkDeepGBufferPass::CaptureLayers, and the closed-form view factor from a
+// point to a parallel square.
+#ifndef DeepGIReferenceTestUtilities_h
+#define DeepGIReferenceTestUtilities_h
+
+#include "vtkCommand.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
+#include <iostream>
+#include <string>
+#include <utility>
+
+namespace DeepGIReferenceTest
+{
+inline int& Failures()
+{
+  static int failures = 0;
+  return failures;
+}
+
+inline void Check(bool ok, const std::string& what)
+{
+  std::cout << (ok ? "ok: " : "FAILED: ") << what << "\n";
+  Failures() += ok ? 0 : 1;
+}
+
+/// Counts the ErrorEvents and WarningEvents of the objects it observes.
+class EventCounter : public vtkCommand
+{
+public:
+  static EventCounter* New() { return new EventCounter; }
+  void Execute(vtkObject*, unsigned long event, void*) override
+  {
+    this->Errors += event == vtkCommand::ErrorEvent;
+    this->Warnings += event == vtkCommand::WarningEvent;
+  }
+  int Errors = 0;
+  int Warnings = 0;
+};
+
+/// A w x h capture with layer 0 only: the arrays Depth_0, Normal_0 (3
+/// components), Albedo_0 (3) and Valid_0, for the caller to fill, and the
+/// field data ViewMatrix and ProjectionMatrix of the given camera.
+struct Layer0Capture
+{
+  Layer0Capture(int w, int h, vtkMatrix4x4* view, vtkMatrix4x4* projection)
+  {
+    this->Image->SetDimensions(w, h, 1);
+    const vtkIdType n = static_cast<vtkIdType>(w) * h;
+    vtkPointData* pd = this->Image->GetPointData();
+    for (auto array : { std::make_pair(this->Depth.GetPointer(), "Depth_0"),
+           std::make_pair(this->Normal.GetPointer(), "Normal_0"),
+           std::make_pair(this->Albedo.GetPointer(), "Albedo_0") })
+    {
+      array.first->SetName(array.second);
+      array.first->SetNumberOfComponents(array.first == this->Depth ? 1 : 3);
+      array.first->SetNumberOfTuples(n);
+      pd->AddArray(array.first);
+    }
+    this->Valid->SetName("Valid_0");
+    this->Valid->SetNumberOfTuples(n);
+    pd->AddArray(this->Valid);
+    for (auto m :
+      { std::make_pair("ViewMatrix", view), std::make_pair("ProjectionMatrix", projection) })
+    {
+      vtkNew<vtkDoubleArray> values;
+      values->SetName(m.first);
+      values->SetNumberOfComponents(16);
+      values->InsertNextTuple(&m.second->Element[0][0]);
+      this->Image->GetFieldData()->AddArray(values);
+    }
+  }
+
+  vtkSmartPointer<vtkImageData> Image = vtkSmartPointer<vtkImageData>::New();
+  vtkNew<vtkFloatArray> Depth, Normal, Albedo;
+  vtkNew<vtkUnsignedCharArray> Valid;
+};
+
+/// View factor from a differential area to a parallel rectangle at height
+/// h whose corner lies straight above it, sides a and b (signed: a corner
+/// rectangle on the far side of the point subtracts).
+inline double CornerViewFactor(double a, double b, double h)
+{
+  const double x = a / h, y = b / h;
+  const double sx = std::sqrt(1 + x * x), sy = std::sqrt(1 + y * y);
+  return (x / sx * std::atan(y / sx) + y / sy * std::atan(x / sy)) / (2 * vtkMath::Pi());
+}
+
+/// ... to the square [-s, s]^2 at height h from the point (px, py) (the
+/// corner sides are signed, so points beside the square work too).
+inline double SquareViewFactor(double px, double py, double s, double h)
+{
+  double f = 0;
+  for (double a : { s - px, s + px })
+  {
+    for (double b : { s - py, s + py })
+    {
+      f += CornerViewFactor(a, b, h);
+    }
+  }
+  return f;
+}
+}
+
+#endif
