@@ -66,8 +66,9 @@
 #include <string>
 #include <vector>
 
+// The project's test data folder (Testing/Data), set by CMake.
 #ifndef DEEPGI_DATA_DIR
-#define DEEPGI_DATA_DIR "../shared/data"
+#error "DEEPGI_DATA_DIR must name the project's Testing/Data folder"
 #endif
 
 namespace
@@ -124,7 +125,7 @@ void Usage()
     "                       layers, a G-buffer guard band of 0.1), low, medium, high (two\n"
     "                       layers with a quality preset). Default:\n"
     "                       %s\n"
-    "  --data DIR           shared data directory (default %s)\n"
+    "  --data DIR           test data folder (default %s)\n"
     "  --no-error-maps      do not write the error-map PNGs\n"
     "  --backend NAME       auto, x11 or egl (default auto)\n"
     "  --output DIR         output directory (default output)\n"

@@ -74,8 +74,9 @@
 #include <string>
 #include <vector>
 
+// The project's test data folder (Testing/Data), set by CMake.
 #ifndef DEEPGI_DATA_DIR
-#define DEEPGI_DATA_DIR "../shared/data"
+#error "DEEPGI_DATA_DIR must name the project's Testing/Data folder"
 #endif
 
 namespace
@@ -138,7 +139,7 @@ void Usage()
               "                       it ACCEPTED_TAPS (eq. 4); gb: a G-buffer guard band of\n"
               "                       vtkDeepRadiosityPass::DEFAULT_GUARD_BAND (else none).\n"
               "                       Default: %s\n"
-              "  --data DIR           shared data directory (default %s)\n"
+              "  --data DIR           test data folder (default %s)\n"
               "  --bounces N          multi-bounce comparison against the reference with N\n"
               "                       bounces, 1..16 (default 4; 0 skips it)\n"
               "  --no-error-maps      do not write the error-map PNGs\n"

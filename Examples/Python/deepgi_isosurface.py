@@ -6,8 +6,8 @@ iso-surface, switch global illumination on in one line, converge, save.
         [--preset balanced] [--frames 20] [--size 400x300] [--output gi.png] \
         [--plain plain.png]
 
---data is the shared data directory holding volumes/headsq (default
-../shared/data next to the repository); --plain also writes the same view
+--data is the folder holding volumes/headsq (default: the repository's
+Testing/Data); --plain also writes the same view
 rendered by VTK without the pass, for comparison.
 """
 import argparse
@@ -40,7 +40,7 @@ def save(window, path):
 
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--data", default=os.path.join(HERE, "..", "..", "..", "shared", "data"))
+    parser.add_argument("--data", default=os.path.join(HERE, "..", "..", "Testing", "Data"))
     parser.add_argument("--iso", type=float, default=500.0)
     parser.add_argument("--preset", default="balanced",
                         choices=["high_performance", "balanced", "high_quality"])

@@ -1,5 +1,5 @@
 // Regression image of vtkDeepAmbientObscurancePass on the skin of the
-// headsq CT volume (../shared/data/volumes/headsq, iso-value 500 through
+// headsq CT volume (Testing/Data/volumes/headsq, iso-value 500 through
 // vtkDeepGBufferSceneLoader, its default light and the documented face-on
 // view): left the AO-composited image, right the ambient visibility (see
 // DeepAmbientObscuranceImageTest.h). Automatic radius, N = 16.
@@ -9,12 +9,17 @@
 // quarter-resolution CT), so only 1.1 % of it is fully unoccluded (AV >
 // 0.999): required >= 0.5 %.
 
+#include "DeepGITestData.h"
 #include "DeepAmbientObscuranceImageTest.h"
 #include "vtkDeepGBufferSceneLoader.h"
 
 int TestDeepAmbientObscuranceHeadImage(int argc, char* argv[])
 {
-  const std::string data = DeepGBufferTest::Argument(argc, argv, "--data");
+  const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepAmbientObscuranceHeadImage");
+  if (!DeepGITestData::Require(data, { "volumes/headsq/quarter.nhdr", "volumes/headsq/quarter.1", "volumes/headsq/quarter.93" }, "TestDeepAmbientObscuranceHeadImage"))
+  {
+    return EXIT_FAILURE;
+  }
   return DeepGBufferTest::RunAOImageTest(
     argc, argv,
     [&data](vtkRenderer* renderer) {

@@ -1,9 +1,10 @@
 // Regression image of a real mesh (the Stanford dragon, 43k triangles, from
-// ../shared/data/meshes) in front of a floor and a wall: layer 1 shows the
+// Testing/Data/meshes) in front of a floor and a wall: layer 1 shows the
 // parts of the dragon and the floor hidden behind its body and head, with
 // the automatic minimum separation (1.5 % of the scene's diagonal).
 // Threshold 0.5, as for the demo scene.
 
+#include "DeepGITestData.h"
 #include "DeepGBufferImageTest.h"
 
 #include "vtkLight.h"
@@ -14,7 +15,11 @@
 
 int TestDeepGBufferDragonImage(int argc, char* argv[])
 {
-  const std::string data = DeepGBufferTest::Argument(argc, argv, "--data");
+  const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepGBufferDragonImage");
+  if (!DeepGITestData::Require(data, { "meshes/dragon.ply" }, "TestDeepGBufferDragonImage"))
+  {
+    return EXIT_FAILURE;
+  }
   return DeepGBufferTest::RunLayerImageTest(
     argc, argv,
     [&data](vtkRenderer* renderer) {

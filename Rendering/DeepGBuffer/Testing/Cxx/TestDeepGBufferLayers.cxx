@@ -10,6 +10,7 @@
 // - with dz = 0 the Cornell box's duplicate faces come back in layer 1,
 //   with dz > 0 they do not.
 
+#include "DeepGITestData.h"
 #include "DeepGBufferTestUtilities.h"
 
 #include "vtkCamera.h"
@@ -174,7 +175,11 @@ long DuplicatePixels(vtkImageData* capture)
 
 int TestDeepGBufferLayers(int argc, char* argv[])
 {
-  const std::string data = Argument(argc, argv, "--data");
+  const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepGBufferLayers");
+  if (!DeepGITestData::Require(data, { "scenes/cornell-original/CornellBox-Original.obj", "scenes/cornell-original/CornellBox-Original.mtl" }, "TestDeepGBufferLayers"))
+  {
+    return EXIT_FAILURE;
+  }
 
   SceneBuilder demo = [](vtkRenderWindow*, vtkRenderer* renderer) {
     vtkNew<vtkDeepGBufferDemoScene> scene;

@@ -14,6 +14,7 @@
 // runs every effect; the left runs AO and radiosity; the images after the
 // resize have the new size and are not blank.
 
+#include "DeepGITestData.h"
 #include "DeepRadiosityTest.h"
 
 #include "vtkColorTransferFunction.h"
@@ -84,7 +85,11 @@ double Brightest(vtkImageData* image)
 
 int TestDeepGIComposition(int argc, char* argv[])
 {
-  const std::string data = Argument(argc, argv, "--data");
+  const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepGIComposition");
+  if (!DeepGITestData::Require(data, { "volumes/headsq/quarter.nhdr", "volumes/headsq/quarter.1", "volumes/headsq/quarter.93" }, "TestDeepGIComposition"))
+  {
+    return EXIT_FAILURE;
+  }
   vtkNew<vtkVolume16Reader> reader;
   reader->SetFilePrefix((data + "/volumes/headsq/quarter").c_str());
   reader->SetDataDimensions(64, 64);

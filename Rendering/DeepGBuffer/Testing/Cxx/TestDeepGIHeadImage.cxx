@@ -1,5 +1,5 @@
 // Regression image of vtkDeepGIPass on a volume scene: the headsq CT
-// (../shared/data/volumes/headsq) as an opaque skin iso-surface
+// (Testing/Data/volumes/headsq) as an opaque skin iso-surface
 // (vtkFlyingEdges3D at 500, ambient 0.2) and, in the same renderer, the
 // same volume through vtkSmartVolumeMapper (bone, translucent), seen from
 // the side at 300 x 300, HIGH_PERFORMANCE preset, converged over 12 frames.
@@ -16,6 +16,7 @@
 // eq. 4 it was +20.6/255 the other way round), 0.508 of the skin changed;
 // the volume changes 7529 px.
 
+#include "DeepGITestData.h"
 #include "DeepRadiosityTest.h"
 
 #include "vtkColorTransferFunction.h"
@@ -39,7 +40,11 @@ constexpr double MEAN_LOW = -5.2, MEAN_HIGH = -3.5, FRACTION_LOW = 0.41, FRACTIO
 
 int TestDeepGIHeadImage(int argc, char* argv[])
 {
-  const std::string data = Argument(argc, argv, "--data");
+  const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepGIHeadImage");
+  if (!DeepGITestData::Require(data, { "volumes/headsq/quarter.nhdr", "volumes/headsq/quarter.1", "volumes/headsq/quarter.93" }, "TestDeepGIHeadImage"))
+  {
+    return EXIT_FAILURE;
+  }
   vtkNew<vtkVolume16Reader> reader;
   reader->SetFilePrefix((data + "/volumes/headsq/quarter").c_str());
   reader->SetDataDimensions(64, 64);

@@ -24,6 +24,7 @@
 // where a few taps find a bright surface; see
 // Documentation/benchmark-radiosity.md.
 
+#include "DeepGITestData.h"
 #include "DeepRadiosityReferenceTest.h"
 
 #include "vtkDeepGBufferPass.h"
@@ -113,7 +114,11 @@ std::pair<double, double> Measure(const std::string& sceneName, const std::strin
 
 int TestDeepRadiosityConfidence(int argc, char* argv[])
 {
-  const std::string data = Argument(argc, argv, "--data", "../shared/data");
+  const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepRadiosityConfidence");
+  if (!DeepGITestData::Require(data, { "scenes/cornell-original/CornellBox-Original.obj", "scenes/cornell-original/CornellBox-Original.mtl" }, "TestDeepRadiosityConfidence"))
+  {
+    return EXIT_FAILURE;
+  }
   for (const char* scene : { "demo", "cornell-original" })
   {
     const std::pair<double, double> q = Measure(scene, data);

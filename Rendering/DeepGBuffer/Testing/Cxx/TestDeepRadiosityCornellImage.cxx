@@ -1,5 +1,5 @@
 // Regression image of vtkDeepRadiosityPass on the original Cornell box
-// (../shared/data/scenes/cornell-original) as vtkDeepGBufferSceneLoader
+// (Testing/Data/scenes/cornell-original) as vtkDeepGBufferSceneLoader
 // populates it: the lamp quad (MTL Ke 17 12 4) drawn EMISSIVE with colour
 // Ke / max(Ke), and lit by the spot light AddEmitterLight puts on it.
 // BALANCED preset, TemporalAlpha 0 so the progressive bounces converge in
@@ -25,6 +25,7 @@
 //   (0.0489, 0.0272, 0.0063); with eq. 4 (the default before) they were
 //   (0.152, 0.0895, 0.0210) and (0.151, 0.0854, 0.0199).
 
+#include "DeepGITestData.h"
 #include "DeepRadiosityTest.h"
 
 #include "vtkDeepGBufferSceneLoader.h"
@@ -59,7 +60,11 @@ struct Region
 
 int TestDeepRadiosityCornellImage(int argc, char* argv[])
 {
-  const std::string data = Argument(argc, argv, "--data");
+  const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepRadiosityCornellImage");
+  if (!DeepGITestData::Require(data, { "scenes/cornell-original/CornellBox-Original.obj", "scenes/cornell-original/CornellBox-Original.mtl" }, "TestDeepRadiosityCornellImage"))
+  {
+    return EXIT_FAILURE;
+  }
   constexpr int W = 256, H = 256, frames = 20;
   constexpr double Exposure = 4.0;
   auto window = MakeWindow(2 * W, H);

@@ -20,15 +20,14 @@
 
 using namespace DeepRadiosityReferenceTest;
 
-int TestDeepRadiosityEstimator(int argc, char* argv[])
+int TestDeepRadiosityEstimator(int, char*[])
 {
-  const std::string data = Argument(argc, argv, "--data", "../shared/data");
   auto window = MakeWindow(160, 120);
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(0, 0, 0);
   window->AddRenderer(renderer);
   vtkSmartPointer<vtkObject> keep;
-  vtkSmartPointer<vtkPolyData> scene = PopulateScene("demo", data, renderer, keep);
+  vtkSmartPointer<vtkPolyData> scene = PopulateScene("demo", std::string(), renderer, keep);
   vtkNew<vtkDeepRadiosityPass> pass;
   pass->SetDamping(0.0);
   pass->SetTemporalAlpha(0.0);
