@@ -1,26 +1,27 @@
-// deepgi-render: renders a scene with vtkDeepGBufferPass and writes the lit
-// image and every layer's G-buffer quantities as PNG files.
-//
-// With no arguments it renders the built-in demo scene (vtkDeepGBufferDemoScene)
-// at 1024x768 along the first frames of its camera path and writes
-// output/lit.png and output/layerJ_{radiance,depth,normal,albedo}.png.
-// With --gi PRESET it also renders the scene with vtkDeepGIPass (ambient
-// obscurance, radiosity and reflections composited) and writes gi.png.
-// Run with --help for the options.
+// deepgi-render: the main job. Renders a scene twice at one still camera,
+// as plain VTK and through vtkDeepGIPass (direct + AV * ambient + indirect
+// light + reflections), converges the GI image until it stops changing,
+// and writes the images and figures that show what global illumination
+// changed. Run with --help for the options.
 
+#include "DeepGIRenderFigures.h"
+
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
+#include "vtkDeepAmbientObscurancePass.h"
 #include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDeepGBufferSceneLoader.h"
 #include "vtkDeepGIPass.h"
 #include "vtkDeepGIRenderWindowFactory.h"
 #include "vtkDeepRadiosityPass.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkNew.h"
-#include "vtkPNGWriter.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <vtksys/SystemTools.hxx>
 
@@ -28,6 +29,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
@@ -37,29 +39,53 @@
 
 namespace
 {
-// Frames in one loop of the demo scene's camera path: --frames N renders
-// frames 0 .. N-1 of this loop.
-constexpr int PathFrames = 120;
+namespace Fig = DeepGIRenderFigures;
 
 constexpr int ExitUsage = 2;
 constexpr int ExitFailure = 1;
 
+// The files this program writes; all are removed before a run, so that a
+// failed or differently configured run never leaves old ones beside new.
+const char* const OutputFiles[] = { "plain.png", "gi.png", "compare.png", "gbuffer.png" };
+
 const char* Usage = R"(Usage: deepgi-render [options]
 
-Renders a scene with the deep G-buffer pass (vtkDeepGBufferPass, Mara et al.
-HPG 2016) offscreen and writes PNG images into the output directory:
-  lit.png                   the image as the pass shows it (layer 0 radiance)
-  layerJ_radiance.png       direct radiance of layer J (J = 0 .. K-1)
-  layerJ_depth.png          camera-space depth of layer J, normalised
-  layerJ_normal.png         camera-space normal of layer J, n * 0.5 + 0.5
-  layerJ_albedo.png         diffuse albedo of layer J
-  gi.png                    with --gi: the global illumination composite
-lit.png is the last of the --frames frames. Each layer image is one more
-frame at the same camera, with the pass's debug display switched to that
-layer and quantity (the oracles then see a still camera). gi.png is
-rendered after them, at the same camera, with vtkDeepGIPass (direct +
-AV * ambient + radiosity + reflections, Documentation/gi.md) converged over
---converge frames.
+Renders a scene with global illumination (vtkDeepGIPass: deep G-buffer
+ambient obscurance, screen-space radiosity and mirror reflections, Mara et
+al. HPG 2016) beside plain VTK, at one still camera, and writes into the
+output directory:
+  plain.png     the scene as plain VTK renders it
+  gi.png        the same view through vtkDeepGIPass, converged
+  compare.png   plain | GI on top; what GI changed below: the ambient
+                visibility (white: open, dark: occluded) and the indirect
+                light it added (scaled to be visible; the factor is shown)
+  gbuffer.png   the G-buffer's layers as one contact sheet (rows: layers;
+                columns: direct radiance, depth, normal, albedo)
+The GI image is converged: frames are rendered at the still camera until
+one changes the image by at most --tolerance (mean over the pixels and
+RGB channels) or --max-frames is reached. Progress is printed per frame.
+
+Global illumination:
+  --preset NAME       high_performance, balanced (default), high_quality,
+                      or off (plain VTK and the G-buffer only)
+  --effects LIST      the effects switched on: a comma-separated subset of
+                      ao, radiosity, reflections, or all (default). Each
+                      still runs only where the scene needs it.
+  --radius F          gather radius of obscurance and radiosity as a
+                      fraction of the scene's diagonal (default: the
+                      passes' own, 0.05 for obscurance and 0.1 for
+                      radiosity); larger gives broader shadows and light
+  --exposure E        multiplies every light's intensity, in both images
+                      (default 1): raise it for a dark result
+  --tolerance T       convergence threshold: the largest mean change of the
+                      last frame, in 8-bit levels (default 0.07; the demo
+                      scene's change falls from 0.11 to a floor of about
+                      0.06 over 10 frames, where the image is within 0.25
+                      levels of 24 converged frames on average); 0 renders
+                      all --max-frames frames
+  --max-frames N      at most N GI frames, 1 to 10000 (default 16)
+  --guard-band B      the G-buffer's guard band, a fraction of the image
+                      height added on each side, 0 to 0.5 (default 0.1)
 
 Scene (default: the built-in demo scene, a room with columns in front of
 banners, mouldings, a decal and a thin panel):
@@ -71,41 +97,26 @@ banners, mouldings, a decal and a thin panel):
   --iso VALUE         iso-value for --volume (default 500)
   --triangles N       demo scene: at least N triangles (default 10000)
   --scale S           demo scene: uniform scale factor (default 1)
-  --view NAME         demo scene: a still camera at a named view instead of
-                      the camera path: default, overview, columns, decal,
-                      panel
+  --view NAME         demo scene: the camera, one of default, overview,
+                      columns, decal, panel (default: default)
 
 Deep G-buffer:
-  --layers K          number of layers, 1 to 8 (default 2)
+  --layers K          layers with --preset off, 1 to 8 (default 2); the GI
+                      pass chooses 1 or 2 itself
   --dz VALUE          minimum separation between layers in world units
                       (default: automatic, 1.5 % of the scene's diagonal)
   --oracle NAME       depth_peel, previous, reproject, predict or delay
                       (default reproject)
 
-Rendering:
-  --size WxH          image size in pixels (default 1024x768)
-  --frames N          frames rendered before the images are written
-                      (default 3, so the oracles have history). The demo
-                      scene's camera moves along its path (frames 0 .. N-1 of
-                      a 120-frame loop); loaded data and --view stay still.
+Output:
+  --size WxH          image size in pixels (default 640x480)
   --backend NAME      auto, x11 or egl (default auto: x11 when an X display
                       can be opened, else egl)
   --output DIR        output directory, created if needed (default output)
-  --gi PRESET         off (default), high_performance, balanced or
-                      high_quality: also render gi.png with vtkDeepGIPass
-                      and that preset
-  --effects LIST      with --gi: the effects switched on, a comma-separated
-                      subset of ao, radiosity, reflections (default all
-                      three; each still runs only where the scene needs it)
-  --converge N        with --gi: frames rendered at the still camera before
-                      gi.png is written, 1 to 10000 (default 20)
-  --guard-band B      with --gi: the G-buffer's guard band, a fraction of
-                      the image height added on each side, 0 to 0.5
-                      (default 0.1); the effects gather from it
   --help              print this text and exit
 
-Exit status: 0 on success, 1 when loading or rendering fails, 2 for bad
-options.
+Exit status: 0 on success, 1 when loading, rendering or writing fails,
+2 for bad options.
 )";
 
 struct Options
@@ -116,25 +127,26 @@ struct Options
   bool IsoGiven = false;
   long long Triangles = 10000;
   double Scale = 1.0;
-  std::string View;
+  std::string View = "default";
+  bool ViewGiven = false;
   int Layers = 2;
+  bool LayersGiven = false;
   double Dz = -1.0; // < 0: automatic
   int Oracle = vtkDeepGBufferPass::REPROJECT;
-  std::string OracleName = "reproject";
-  int Width = 1024;
-  int Height = 768;
-  int Frames = 3;
+  int Width = 640;
+  int Height = 480;
   std::string Backend = "auto";
   std::string Output = "output";
-  int GI = -1; // a vtkDeepGIPass preset; -1: off
-  bool AmbientObscurance = true;
-  bool Radiosity = true;
-  bool Reflections = true;
-  bool EffectsGiven = false;
-  int Converge = 20;
-  bool ConvergeGiven = false;
+  int Preset = vtkDeepGIPass::BALANCED; // -1: off
+  std::string Effects = "all";
+  double RadiusFraction = -1.0; // < 0: the passes' defaults
+  double Exposure = 1.0;
+  double Tolerance = 0.07; // 8-bit levels
+  int MaximumFrames = 16;
   double GuardBand = vtkDeepRadiosityPass::DEFAULT_GUARD_BAND;
-  bool GuardBandGiven = false;
+  bool GiOptionGiven = false;
+
+  bool Loaded() const { return !this->Meshes.empty() || !this->Volume.empty(); }
 };
 
 bool ParseInteger(const std::string& text, long long minimum, long long maximum, long long& value)
@@ -171,6 +183,183 @@ bool ParseReal(const std::string& text, double& value)
   return true;
 }
 
+bool ParseSize(const std::string& value, int& width, int& height)
+{
+  const size_t x = value.find_first_of("xX");
+  long long w = 0, h = 0;
+  if (x == std::string::npos || !ParseInteger(value.substr(0, x), 1, 16384, w) ||
+    !ParseInteger(value.substr(x + 1), 1, 16384, h))
+  {
+    return false;
+  }
+  width = static_cast<int>(w);
+  height = static_cast<int>(h);
+  return true;
+}
+
+// One option's value into `o`: returns "" or what is wrong with the value.
+using OptionHandler = std::string (*)(const std::string& value, Options& o);
+
+struct OptionEntry
+{
+  const char* Name;
+  OptionHandler Handle;
+};
+
+const OptionEntry OptionTable[] = {
+  { "--preset",
+    [](const std::string& v, Options& o) -> std::string {
+      o.Preset = v == "off" ? -1 : vtkDeepGIPass::GetPresetFromString(v.c_str());
+      return v == "off" || o.Preset >= 0
+        ? ""
+        : "needs high_performance, balanced, high_quality or off";
+    } },
+  { "--effects",
+    [](const std::string& v, Options& o) -> std::string {
+      // The pass parses the list; its warning is replaced by this message.
+      vtkNew<vtkDeepGIPass> probe;
+      const int warnings = vtkObject::GetGlobalWarningDisplay();
+      vtkObject::GlobalWarningDisplayOff();
+      const bool valid = v != "none" && probe->SetEffects(v.c_str());
+      vtkObject::SetGlobalWarningDisplay(warnings);
+      o.Effects = v;
+      o.GiOptionGiven = true;
+      return valid
+        ? ""
+        : "needs a comma-separated list of distinct ao, radiosity, reflections, or all";
+    } },
+  { "--radius",
+    [](const std::string& v, Options& o) -> std::string {
+      o.GiOptionGiven = true;
+      return ParseReal(v, o.RadiusFraction) && o.RadiusFraction > 0.0 && o.RadiusFraction <= 1.0
+        ? ""
+        : "needs a fraction of the scene's diagonal in (0, 1]";
+    } },
+  { "--exposure",
+    [](const std::string& v, Options& o) -> std::string {
+      return ParseReal(v, o.Exposure) && o.Exposure > 0.0 && o.Exposure <= 1000.0
+        ? ""
+        : "needs a factor in (0, 1000]";
+    } },
+  { "--tolerance",
+    [](const std::string& v, Options& o) -> std::string {
+      o.GiOptionGiven = true;
+      return ParseReal(v, o.Tolerance) && o.Tolerance >= 0.0 && o.Tolerance <= 255.0
+        ? ""
+        : "needs a number of 8-bit levels from 0 to 255";
+    } },
+  { "--max-frames",
+    [](const std::string& v, Options& o) -> std::string {
+      long long n = 0;
+      o.GiOptionGiven = true;
+      o.MaximumFrames = ParseInteger(v, 1, 10000, n) ? static_cast<int>(n) : 0;
+      return o.MaximumFrames > 0 ? "" : "needs an integer from 1 to 10000";
+    } },
+  { "--guard-band",
+    [](const std::string& v, Options& o) -> std::string {
+      o.GiOptionGiven = true;
+      return ParseReal(v, o.GuardBand) && o.GuardBand >= 0.0 &&
+          o.GuardBand <= vtkDeepGBufferPass::MAXIMUM_GUARD_BAND
+        ? ""
+        : "needs a number from 0 to 0.5";
+    } },
+  { "--mesh",
+    [](const std::string& v, Options& o) -> std::string {
+      o.Meshes.push_back(v);
+      return "";
+    } },
+  { "--volume",
+    [](const std::string& v, Options& o) -> std::string {
+      const bool first = o.Volume.empty();
+      o.Volume = v;
+      return first ? "" : "is given twice";
+    } },
+  { "--iso",
+    [](const std::string& v, Options& o) -> std::string {
+      o.IsoGiven = true;
+      return ParseReal(v, o.Iso) ? "" : "needs a finite number";
+    } },
+  { "--triangles",
+    [](const std::string& v, Options& o) -> std::string {
+      return ParseInteger(v, 0, 500000000, o.Triangles) ? ""
+                                                        : "needs an integer from 0 to 500000000";
+    } },
+  { "--scale",
+    [](const std::string& v, Options& o) -> std::string {
+      return ParseReal(v, o.Scale) && o.Scale > 0.0 ? "" : "needs a positive number";
+    } },
+  { "--view",
+    [](const std::string& v, Options& o) -> std::string {
+      o.View = v;
+      o.ViewGiven = true;
+      for (int i = 0; i < vtkDeepGBufferDemoScene::GetNumberOfNamedViews(); ++i)
+      {
+        if (v == vtkDeepGBufferDemoScene::GetNamedViewName(i))
+        {
+          return "";
+        }
+      }
+      return "needs one of default, overview, columns, decal, panel";
+    } },
+  { "--layers",
+    [](const std::string& v, Options& o) -> std::string {
+      long long n = 0;
+      o.LayersGiven = true;
+      o.Layers = ParseInteger(v, 1, vtkDeepGBufferPass::MAXIMUM_NUMBER_OF_LAYERS, n)
+        ? static_cast<int>(n)
+        : 0;
+      return o.Layers > 0 ? "" : "needs an integer from 1 to 8";
+    } },
+  { "--dz",
+    [](const std::string& v, Options& o) -> std::string {
+      return ParseReal(v, o.Dz) && o.Dz >= 0.0 ? "" : "needs a number >= 0 (world units)";
+    } },
+  { "--oracle",
+    [](const std::string& v, Options& o) -> std::string {
+      o.Oracle = vtkDeepGBufferPass::GetOracleFromString(v.c_str());
+      return o.Oracle >= 0 ? "" : "needs depth_peel, previous, reproject, predict or delay";
+    } },
+  { "--size",
+    [](const std::string& v, Options& o) -> std::string {
+      return ParseSize(v, o.Width, o.Height) ? "" : "needs WIDTHxHEIGHT, each 1 to 16384";
+    } },
+  { "--backend",
+    [](const std::string& v, Options& o) -> std::string {
+      o.Backend = v;
+      return vtkDeepGIRenderWindowFactory::GetBackendFromString(v.c_str()) >= 0
+        ? ""
+        : "needs auto, x11 or egl";
+    } },
+  { "--output",
+    [](const std::string& v, Options& o) -> std::string {
+      o.Output = v;
+      return v.empty() ? "needs a directory name" : "";
+    } },
+};
+
+// Options that only make sense together.
+std::string CheckCombinations(const Options& o)
+{
+  if (o.Preset < 0 && o.GiOptionGiven)
+  {
+    return "--effects, --radius, --tolerance, --max-frames and --guard-band need a preset "
+           "(not --preset off)";
+  }
+  if (o.Preset >= 0 && o.LayersGiven)
+  {
+    return "--layers is for --preset off; the GI pass chooses 1 or 2 layers itself";
+  }
+  if (o.IsoGiven && o.Volume.empty())
+  {
+    return "--iso is only used with --volume";
+  }
+  if (o.Loaded() && o.ViewGiven)
+  {
+    return "--view is for the demo scene; loaded data gets a still camera framing it";
+  }
+  return "";
+}
+
 // Returns 0 to go on, or an exit status (help printed: 0 through `exitNow`).
 int ParseOptions(int argc, char* argv[], Options& o, bool& exitNow)
 {
@@ -188,15 +377,12 @@ int ParseOptions(int argc, char* argv[], Options& o, bool& exitNow)
       exitNow = true;
       return 0;
     }
-    static const char* const withValue[] = { "--mesh", "--volume", "--iso", "--triangles",
-      "--scale", "--view", "--layers", "--dz", "--oracle", "--size", "--frames", "--backend",
-      "--output", "--gi", "--effects", "--converge", "--guard-band" };
-    bool known = false;
-    for (const char* name : withValue)
+    const OptionEntry* entry = nullptr;
+    for (const OptionEntry& e : OptionTable)
     {
-      known = known || arg == name;
+      entry = arg == e.Name ? &e : entry;
     }
-    if (!known)
+    if (!entry)
     {
       return bad("unknown option '" + arg + "'");
     }
@@ -205,220 +391,373 @@ int ParseOptions(int argc, char* argv[], Options& o, bool& exitNow)
       return bad("option " + arg + " needs a value");
     }
     const std::string value = argv[++i];
-    long long n = 0;
-    if (arg == "--mesh")
+    const std::string problem = entry->Handle(value, o);
+    if (!problem.empty())
     {
-      o.Meshes.push_back(value);
-    }
-    else if (arg == "--volume")
-    {
-      if (!o.Volume.empty())
-      {
-        return bad("--volume given twice");
-      }
-      o.Volume = value;
-    }
-    else if (arg == "--iso")
-    {
-      if (!ParseReal(value, o.Iso))
-      {
-        return bad("--iso needs a finite number, got '" + value + "'");
-      }
-      o.IsoGiven = true;
-    }
-    else if (arg == "--triangles")
-    {
-      if (!ParseInteger(value, 0, 500000000, n))
-      {
-        return bad("--triangles needs an integer from 0 to 500000000, got '" + value + "'");
-      }
-      o.Triangles = n;
-    }
-    else if (arg == "--scale")
-    {
-      if (!ParseReal(value, o.Scale) || o.Scale <= 0.0)
-      {
-        return bad("--scale needs a positive number, got '" + value + "'");
-      }
-    }
-    else if (arg == "--view")
-    {
-      bool found = false;
-      for (int v = 0; v < vtkDeepGBufferDemoScene::GetNumberOfNamedViews(); ++v)
-      {
-        found = found || value == vtkDeepGBufferDemoScene::GetNamedViewName(v);
-      }
-      if (!found)
-      {
-        return bad("--view needs one of default, overview, columns, decal, panel; got '" +
-          value + "'");
-      }
-      o.View = value;
-    }
-    else if (arg == "--layers")
-    {
-      if (!ParseInteger(value, 1, vtkDeepGBufferPass::MAXIMUM_NUMBER_OF_LAYERS, n))
-      {
-        return bad("--layers needs an integer from 1 to " +
-          std::to_string(vtkDeepGBufferPass::MAXIMUM_NUMBER_OF_LAYERS) + ", got '" + value +
-          "'");
-      }
-      o.Layers = static_cast<int>(n);
-    }
-    else if (arg == "--dz")
-    {
-      if (!ParseReal(value, o.Dz) || o.Dz < 0.0)
-      {
-        return bad("--dz needs a number >= 0 (world units), got '" + value + "'");
-      }
-    }
-    else if (arg == "--oracle")
-    {
-      const int oracle = vtkDeepGBufferPass::GetOracleFromString(value.c_str());
-      if (oracle < 0)
-      {
-        return bad("--oracle needs depth_peel, previous, reproject, predict or delay, got '" +
-          value + "'");
-      }
-      o.Oracle = oracle;
-      o.OracleName = value;
-    }
-    else if (arg == "--size")
-    {
-      const size_t x = value.find_first_of("xX");
-      long long w = 0, h = 0;
-      if (x == std::string::npos || !ParseInteger(value.substr(0, x), 1, 16384, w) ||
-        !ParseInteger(value.substr(x + 1), 1, 16384, h))
-      {
-        return bad("--size needs WIDTHxHEIGHT, each 1 to 16384, got '" + value + "'");
-      }
-      o.Width = static_cast<int>(w);
-      o.Height = static_cast<int>(h);
-    }
-    else if (arg == "--frames")
-    {
-      if (!ParseInteger(value, 1, 100000, n))
-      {
-        return bad("--frames needs an integer from 1 to 100000, got '" + value + "'");
-      }
-      o.Frames = static_cast<int>(n);
-    }
-    else if (arg == "--backend")
-    {
-      if (vtkDeepGIRenderWindowFactory::GetBackendFromString(value.c_str()) < 0)
-      {
-        return bad("--backend needs auto, x11 or egl, got '" + value + "'");
-      }
-      o.Backend = value;
-    }
-    else if (arg == "--output")
-    {
-      if (value.empty())
-      {
-        return bad("--output needs a directory name");
-      }
-      o.Output = value;
-    }
-    else if (arg == "--gi")
-    {
-      if (value == "off")
-      {
-        o.GI = -1;
-      }
-      else
-      {
-        o.GI = vtkDeepGIPass::GetPresetFromString(value.c_str());
-        if (o.GI < 0)
-        {
-          return bad(
-            "--gi needs off, high_performance, balanced or high_quality, got '" + value + "'");
-        }
-      }
-    }
-    else if (arg == "--effects")
-    {
-      o.EffectsGiven = true;
-      o.AmbientObscurance = o.Radiosity = o.Reflections = false;
-      std::stringstream list(value);
-      std::string item;
-      int count = 0;
-      while (std::getline(list, item, ','))
-      {
-        bool* flag = item == "ao" ? &o.AmbientObscurance
-          : item == "radiosity"   ? &o.Radiosity
-          : item == "reflections" ? &o.Reflections
-                                  : nullptr;
-        if (!flag || *flag)
-        {
-          return bad("--effects needs a comma-separated list of distinct ao, radiosity, "
-                     "reflections; got '" +
-            value + "'");
-        }
-        *flag = true;
-        ++count;
-      }
-      if (count == 0 || value.back() == ',')
-      {
-        return bad("--effects needs a comma-separated list of distinct ao, radiosity, "
-                   "reflections; got '" +
-          value + "'");
-      }
-    }
-    else if (arg == "--converge")
-    {
-      long long n = 0;
-      if (!ParseInteger(value, 1, 10000, n))
-      {
-        return bad("--converge needs an integer from 1 to 10000, got '" + value + "'");
-      }
-      o.Converge = static_cast<int>(n);
-      o.ConvergeGiven = true;
-    }
-    else if (arg == "--guard-band")
-    {
-      if (!ParseReal(value, o.GuardBand) || o.GuardBand < 0.0 ||
-        o.GuardBand > vtkDeepGBufferPass::MAXIMUM_GUARD_BAND)
-      {
-        return bad("--guard-band needs a number from 0 to 0.5, got '" + value + "'");
-      }
-      o.GuardBandGiven = true;
+      return bad(arg + " " + problem + ", got '" + value + "'");
     }
   }
-  if (o.GI < 0 && (o.EffectsGiven || o.ConvergeGiven || o.GuardBandGiven))
-  {
-    return bad("--effects, --converge and --guard-band need --gi with a preset");
-  }
-  const bool loaded = !o.Meshes.empty() || !o.Volume.empty();
-  if (o.IsoGiven && o.Volume.empty())
-  {
-    return bad("--iso is only used with --volume");
-  }
-  if (loaded && !o.View.empty())
-  {
-    return bad("--view is for the demo scene; loaded data gets a still camera framing it");
-  }
-  return 0;
+  const std::string conflict = CheckCombinations(o);
+  return conflict.empty() ? 0 : bad(conflict);
 }
 
-bool WritePNG(vtkRenderWindow* window, const std::string& fileName)
+// The scene on the renderer, with its camera; keeps the object that owns it.
+struct Scene
 {
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ReadFrontBufferOff(); // offscreen: the image is in the back buffer
-  grab->ShouldRerenderOff();  // the caller rendered the frame to keep
-  grab->SetInputBufferTypeToRGB();
-  grab->Update();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->SetFileName(fileName.c_str());
-  writer->Write();
-  if (writer->GetErrorCode() != 0 || !vtksys::SystemTools::FileExists(fileName, true))
+  vtkNew<vtkDeepGBufferDemoScene> Demo;
+  vtkNew<vtkDeepGBufferSceneLoader> Loader;
+  vtkIdType Triangles = 0;
+  std::string Description;
+};
+
+bool LoadScene(const Options& o, vtkRenderer* renderer, Scene& scene)
+{
+  if (!o.Loaded())
   {
-    std::cerr << "deepgi-render: cannot write " << fileName << "\n";
+    scene.Demo->SetTargetNumberOfTriangles(o.Triangles);
+    scene.Demo->SetScaleFactor(o.Scale);
+    scene.Demo->Populate(renderer);
+    scene.Demo->SetCameraToNamedView(renderer->GetActiveCamera(), o.View.c_str());
+    scene.Triangles = scene.Demo->GetNumberOfTriangles();
+    scene.Description = "demo scene, view " + o.View;
+    return true;
+  }
+  for (const std::string& mesh : o.Meshes)
+  {
+    if (!scene.Loader->LoadMesh(mesh.c_str()))
+    {
+      std::cerr << "deepgi-render: cannot load the mesh " << mesh << "\n";
+      return false;
+    }
+  }
+  if (!o.Volume.empty())
+  {
+    if (!scene.Loader->LoadVolume(o.Volume.c_str(), o.Iso))
+    {
+      std::cerr << "deepgi-render: cannot load the volume " << o.Volume << "\n";
+      return false;
+    }
+    if (o.Meshes.empty())
+    {
+      // CT data such as headsq: look at the face (from +y), head up (-z).
+      scene.Loader->SetViewDirection(0.0, -1.0, 0.0);
+      scene.Loader->SetViewUp(0.0, 0.0, -1.0);
+    }
+  }
+  scene.Loader->Populate(renderer);
+  scene.Loader->ResetCamera(renderer);
+  scene.Triangles = scene.Loader->GetNumberOfTriangles();
+  scene.Description = "loaded data";
+  return true;
+}
+
+// Scales every light of the renderer (VTK's automatic headlight included,
+// created here) so that plain VTK and GI see the same exposure.
+void ApplyExposure(vtkRenderer* renderer, double exposure)
+{
+  if (renderer->GetLights()->GetNumberOfItems() == 0)
+  {
+    renderer->CreateLight();
+  }
+  vtkLightCollection* lights = renderer->GetLights();
+  lights->InitTraversal();
+  while (vtkLight* light = lights->GetNextItem())
+  {
+    light->SetIntensity(light->GetIntensity() * exposure);
+  }
+}
+
+// Removes this program's outputs from an earlier run.
+bool PrepareOutput(const std::string& dir)
+{
+  if (vtksys::SystemTools::FileExists(dir, /*isFile=*/true) ||
+    !vtksys::SystemTools::MakeDirectory(dir))
+  {
+    std::cerr << "deepgi-render: cannot create the output directory " << dir << "\n";
     return false;
   }
-  std::cout << "  wrote " << fileName << "\n";
+  for (const char* name : OutputFiles)
+  {
+    const std::string path = dir + "/" + name;
+    if (vtksys::SystemTools::FileExists(path) && !vtksys::SystemTools::RemoveFile(path))
+    {
+      std::cerr << "deepgi-render: cannot remove the old " << path << "\n";
+      return false;
+    }
+  }
   return true;
+}
+
+double Milliseconds(std::chrono::steady_clock::time_point since)
+{
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since)
+    .count();
+}
+
+// Plain VTK: the renderer's own passes, one frame (the second, so that the
+// first-frame set-up is not timed).
+vtkSmartPointer<vtkImageData> RenderPlain(vtkRenderWindow* window, double& milliseconds)
+{
+  window->Render();
+  const auto start = std::chrono::steady_clock::now();
+  window->Render();
+  milliseconds = Milliseconds(start);
+  std::cout << "  plain VTK: " << std::fixed << std::setprecision(1) << milliseconds
+            << " ms per frame\n";
+  return Fig::GrabWindow(window);
+}
+
+// Prints "frame k of N" with the frame's time and change while converging.
+struct ProgressPrinter
+{
+  vtkDeepGIPass* Pass = nullptr;
+  int MaximumFrames = 0;
+  int Frame = 0;
+  std::chrono::steady_clock::time_point Last;
+
+  static void Print(vtkObject*, unsigned long, void* clientData, void*)
+  {
+    auto* self = static_cast<ProgressPrinter*>(clientData);
+    ++self->Frame;
+    std::cout << "  GI frame " << self->Frame << " of at most " << self->MaximumFrames << ": "
+              << std::fixed << std::setprecision(1) << Milliseconds(self->Last) << " ms";
+    const double change = self->Pass->GetLastConvergenceChange();
+    if (change >= 0.0)
+    {
+      std::cout << ", change " << std::setprecision(3) << 255.0 * change << "/255";
+    }
+    std::cout << (self->Frame == 1 ? " (includes shader compilation)" : "") << std::endl;
+    self->Last = std::chrono::steady_clock::now();
+  }
+};
+
+void ConfigureGI(const Options& o, vtkDeepGIPass* gi)
+{
+  gi->SetPreset(o.Preset);
+  gi->SetEffects(o.Effects.c_str());
+  gi->GetGBufferPass()->SetOracle(o.Oracle);
+  gi->GetGBufferPass()->SetGuardBand(o.GuardBand);
+  if (o.Dz >= 0.0)
+  {
+    gi->GetGBufferPass()->SetMinimumSeparation(o.Dz);
+  }
+  if (o.RadiusFraction > 0.0)
+  {
+    gi->GetAmbientObscurancePass()->SetAutomaticRadiusFraction(o.RadiusFraction);
+    gi->GetRadiosityPass()->SetAutomaticRadiusFraction(o.RadiusFraction);
+  }
+}
+
+// The GI image, converged at the still camera; returns the frames rendered.
+int ConvergeGI(const Options& o, vtkRenderer* renderer, vtkDeepGIPass* gi)
+{
+  ProgressPrinter printer;
+  printer.Pass = gi;
+  printer.MaximumFrames = o.MaximumFrames;
+  printer.Last = std::chrono::steady_clock::now();
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetCallback(&ProgressPrinter::Print);
+  progress->SetClientData(&printer);
+  const unsigned long tag = gi->AddObserver(vtkCommand::ProgressEvent, progress);
+  renderer->SetPass(gi);
+  const int frames = gi->Converge(renderer, o.MaximumFrames, o.Tolerance / 255.0);
+  gi->RemoveObserver(tag);
+  return frames;
+}
+
+// compare.png: plain | GI over ambient visibility | indirect light.
+vtkSmartPointer<vtkImageData> CompareFigure(
+  vtkImageData* plain, vtkImageData* gi, vtkDeepGIPass* pass, vtkRenderer* renderer)
+{
+  int dims[3];
+  plain->GetDimensions(dims);
+  const int ran = pass->GetLastFrameEffects();
+  vtkSmartPointer<vtkImageData> visibility, indirect;
+  double scale = 1.0;
+  vtkNew<vtkImageData> capture;
+  if ((ran & vtkDeepGIPass::AMBIENT_OBSCURANCE) &&
+    pass->GetAmbientObscurancePass()->CaptureAmbientVisibility(capture, renderer))
+  {
+    visibility = Fig::Panel(capture, "AmbientVisibility", "Valid", Fig::Mapping::Grey);
+  }
+  if ((ran & vtkDeepGIPass::RADIOSITY) &&
+    pass->GetRadiosityPass()->CaptureIrradiance(capture, renderer))
+  {
+    indirect =
+      Fig::Panel(capture, "IndirectRadiance_0", "Valid_0", Fig::Mapping::Exposure, &scale);
+  }
+  auto plainPanel = vtkSmartPointer<vtkImageData>::New();
+  plainPanel->DeepCopy(plain);
+  auto giPanel = vtkSmartPointer<vtkImageData>::New();
+  giPanel->DeepCopy(gi);
+  Fig::Label(plainPanel, "plain VTK");
+  Fig::Label(giPanel, std::string("vtkDeepGIPass ") + vtkDeepGIPass::GetPresetAsString(pass->GetPreset()));
+  if (!visibility)
+  {
+    visibility = Fig::BlankPanel(dims[0], dims[1]);
+  }
+  Fig::Label(visibility, (ran & vtkDeepGIPass::AMBIENT_OBSCURANCE)
+      ? "ambient visibility (dark: occluded)"
+      : "ambient obscurance did not run");
+  std::ostringstream label;
+  label << std::setprecision(3) << "indirect light added (x" << scale << ")";
+  if (!indirect)
+  {
+    indirect = Fig::BlankPanel(dims[0], dims[1]);
+  }
+  Fig::Label(indirect, (ran & vtkDeepGIPass::RADIOSITY) ? label.str() : "radiosity did not run");
+  return Fig::Tile({ plainPanel, giPanel, visibility, indirect }, 2);
+}
+
+// gbuffer.png: one row per layer, the quantities at half resolution.
+vtkSmartPointer<vtkImageData> GBufferSheet(vtkDeepGBufferPass* pass, vtkRenderer* renderer)
+{
+  vtkNew<vtkImageData> layers;
+  if (!pass->CaptureLayers(layers, renderer))
+  {
+    return nullptr;
+  }
+  const struct
+  {
+    const char* Array;
+    const char* Label;
+    Fig::Mapping Mapping;
+  } quantities[] = { { "Radiance_", "radiance", Fig::Mapping::Colour },
+    { "Depth_", "depth", Fig::Mapping::Depth }, { "Normal_", "normal", Fig::Mapping::Normal },
+    { "Albedo_", "albedo", Fig::Mapping::Colour } };
+  std::vector<vtkSmartPointer<vtkImageData>> panels;
+  for (int j = 0; j < pass->GetEffectiveNumberOfLayers(); ++j)
+  {
+    const std::string valid = "Valid_" + std::to_string(j);
+    for (const auto& q : quantities)
+    {
+      const std::string name = q.Array + std::to_string(j);
+      auto panel = Fig::Panel(layers, name.c_str(), valid.c_str(), q.Mapping);
+      if (!panel)
+      {
+        return nullptr;
+      }
+      panel = Fig::Half(panel);
+      Fig::Label(panel, "layer " + std::to_string(j) + " " + q.Label);
+      panels.push_back(panel);
+    }
+  }
+  return panels.empty() ? nullptr : Fig::Tile(panels, 4);
+}
+
+bool Write(vtkImageData* image, const std::string& dir, const char* name, const char* what,
+  std::vector<std::string>& written)
+{
+  if (!image || !Fig::WritePNG(image, dir + "/" + name))
+  {
+    std::cerr << "deepgi-render: no " << what << " to write (" << name << ")\n";
+    return false;
+  }
+  written.push_back(std::string(name) + "  " + what);
+  return true;
+}
+
+std::string Levels(double levels)
+{
+  std::ostringstream text;
+  text << levels << "/255";
+  return text.str();
+}
+
+void PrintSummary(const Options& o, vtkDeepGIPass* gi, int frames,
+  const std::vector<std::string>& written)
+{
+  std::cout << std::defaultfloat << std::setprecision(4) << "deepgi-render: done\n";
+  if (gi)
+  {
+    std::cout << "  GI: preset " << vtkDeepGIPass::GetPresetAsString(gi->GetPreset())
+              << ", effects on: " << o.Effects << "; the last frame ran "
+              << vtkDeepGIPass::GetEffectsAsString(gi->GetLastFrameEffects()) << " with "
+              << gi->GetLastFrameNumberOfLayers() << " layer(s)\n"
+              << "  radius: obscurance " << gi->GetAmbientObscurancePass()->GetEffectiveRadius()
+              << ", radiosity " << gi->GetRadiosityPass()->GetEffectiveRadius()
+              << " (world units); exposure " << o.Exposure << "\n"
+              << "  converged: " << frames << " frame(s), ";
+    if (gi->GetLastConvergenceChange() >= 0.0)
+    {
+      std::cout << "last change " << 255.0 * gi->GetLastConvergenceChange() << "/255, ";
+    }
+    std::cout << (gi->GetLastConvergenceReached()
+                     ? "at most the tolerance " + Levels(o.Tolerance)
+                     : "stopped at --max-frames " + std::to_string(o.MaximumFrames))
+              << "\n";
+  }
+  std::cout << "  files in " << o.Output << "/:\n";
+  for (const std::string& w : written)
+  {
+    std::cout << "    " << w << "\n";
+  }
+}
+
+// --preset off: the G-buffer alone, for its contact sheet.
+bool RunGBufferOnly(const Options& o, vtkRenderWindow* window, vtkRenderer* renderer,
+  std::vector<std::string>& written)
+{
+  vtkNew<vtkDeepGBufferPass> pass;
+  pass->SetNumberOfLayers(o.Layers);
+  pass->SetOracle(o.Oracle);
+  if (o.Dz >= 0.0)
+  {
+    pass->SetMinimumSeparation(o.Dz);
+  }
+  renderer->SetPass(pass);
+  window->Render();
+  window->Render(); // the oracles have a previous frame
+  std::cout << "  G-buffer: " << pass->GetEffectiveNumberOfLayers() << " layer(s), dz "
+            << pass->GetEffectiveMinimumSeparation() << ", oracle "
+            << vtkDeepGBufferPass::GetOracleAsString(pass->GetEffectiveOracle()) << "\n";
+  const bool ok = Write(GBufferSheet(pass, renderer), o.Output, "gbuffer.png",
+    "the G-buffer's layers (rows) and quantities (columns)", written);
+  renderer->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(window);
+  return ok;
+}
+
+bool RunGI(const Options& o, vtkRenderWindow* window, vtkRenderer* renderer,
+  vtkImageData* plain, std::vector<std::string>& written)
+{
+  vtkNew<vtkDeepGIPass> gi;
+  ConfigureGI(o, gi);
+  const int frames = ConvergeGI(o, renderer, gi);
+  if (gi->GetGBufferPass()->GetEffectiveNumberOfLayers() < 1)
+  {
+    std::cerr << "deepgi-render: the deep G-buffer is not supported by this OpenGL (see the "
+                 "warning above); no GI image was made\n";
+    return false;
+  }
+  auto giImage = Fig::GrabWindow(window);
+  const bool ok = Write(giImage, o.Output, "gi.png", "the GI image (vtkDeepGIPass)", written) &&
+    Write(CompareFigure(plain, giImage, gi, renderer), o.Output, "compare.png",
+      "plain | GI, and below: ambient visibility | indirect light", written) &&
+    Write(GBufferSheet(gi->GetGBufferPass(), renderer), o.Output, "gbuffer.png",
+      "the G-buffer's layers (rows) and quantities (columns)", written);
+  PrintSummary(o, gi, frames, written);
+  renderer->SetPass(nullptr);
+  gi->ReleaseGraphicsResources(window);
+  return ok;
+}
+
+vtkSmartPointer<vtkRenderWindow> MakeWindow(const Options& o, vtkRenderer* renderer)
+{
+  const int backend = vtkDeepGIRenderWindowFactory::GetBackendFromString(o.Backend.c_str());
+  vtkSmartPointer<vtkRenderWindow> window =
+    vtkSmartPointer<vtkRenderWindow>::Take(vtkDeepGIRenderWindowFactory::NewRenderWindow(backend));
+  if (!window)
+  {
+    std::cerr << "deepgi-render: no render window for the '" << o.Backend
+              << "' backend (see the error above)\n";
+    return nullptr;
+  }
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(o.Width, o.Height);
+  window->AddRenderer(renderer);
+  return window;
 }
 } // anonymous namespace
 
@@ -434,184 +773,37 @@ int main(int argc, char* argv[])
 
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(0.0, 0.0, 0.0);
-  vtkCamera* camera = renderer->GetActiveCamera();
-
-  // The scene.
-  const bool loaded = !o.Meshes.empty() || !o.Volume.empty();
-  vtkNew<vtkDeepGBufferDemoScene> demo;
-  vtkNew<vtkDeepGBufferSceneLoader> loader;
-  vtkIdType triangles = 0;
-  if (loaded)
+  Scene scene;
+  if (!LoadScene(o, renderer, scene) || !PrepareOutput(o.Output))
   {
-    for (const std::string& mesh : o.Meshes)
-    {
-      if (!loader->LoadMesh(mesh.c_str()))
-      {
-        std::cerr << "deepgi-render: cannot load the mesh " << mesh << "\n";
-        return ExitFailure;
-      }
-    }
-    if (!o.Volume.empty())
-    {
-      if (!loader->LoadVolume(o.Volume.c_str(), o.Iso))
-      {
-        std::cerr << "deepgi-render: cannot load the volume " << o.Volume << "\n";
-        return ExitFailure;
-      }
-      if (o.Meshes.empty())
-      {
-        // CT data such as headsq: look at the face (from +y), head up (-z).
-        loader->SetViewDirection(0.0, -1.0, 0.0);
-        loader->SetViewUp(0.0, 0.0, -1.0);
-      }
-    }
-    loader->Populate(renderer);
-    loader->ResetCamera(renderer);
-    triangles = loader->GetNumberOfTriangles();
-  }
-  else
-  {
-    demo->SetTargetNumberOfTriangles(o.Triangles);
-    demo->SetScaleFactor(o.Scale);
-    demo->Populate(renderer);
-    if (!o.View.empty())
-    {
-      demo->SetCameraToNamedView(camera, o.View.c_str());
-    }
-    else
-    {
-      demo->SetCameraToPathFrame(camera, 0, PathFrames);
-    }
-    triangles = demo->GetNumberOfTriangles();
-  }
-
-  if (!vtksys::SystemTools::MakeDirectory(o.Output))
-  {
-    std::cerr << "deepgi-render: cannot create the output directory " << o.Output << "\n";
     return ExitFailure;
   }
-
-  // Render window for the backend (X11 offscreen or EGL), from the
-  // RenderingHeadless module; made after loading, so that bad data fails
-  // without needing a display.
-  const int backend = vtkDeepGIRenderWindowFactory::GetBackendFromString(o.Backend.c_str());
-  vtkSmartPointer<vtkRenderWindow> window =
-    vtkSmartPointer<vtkRenderWindow>::Take(vtkDeepGIRenderWindowFactory::NewRenderWindow(backend));
+  ApplyExposure(renderer, o.Exposure);
+  // Made after loading, so that bad data fails without needing a display.
+  vtkSmartPointer<vtkRenderWindow> window = MakeWindow(o, renderer);
   if (!window)
   {
-    std::cerr << "deepgi-render: no render window for the '" << o.Backend
-              << "' backend (see the error above)\n";
     return ExitFailure;
   }
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(o.Width, o.Height);
+  std::cout << "deepgi-render: " << scene.Description << ", " << scene.Triangles
+            << " triangles, " << o.Width << "x" << o.Height << ", backend " << o.Backend
+            << ", preset " << (o.Preset < 0 ? "off" : vtkDeepGIPass::GetPresetAsString(o.Preset))
+            << std::endl;
 
-  window->AddRenderer(renderer);
-
-  // The pass.
-  vtkNew<vtkDeepGBufferPass> pass;
-  pass->SetNumberOfLayers(o.Layers);
-  pass->SetOracle(o.Oracle);
-  if (o.Dz >= 0.0)
-  {
-    pass->SetMinimumSeparation(o.Dz);
-  }
-  renderer->SetPass(pass);
-
-  std::cout << "deepgi-render: "
-            << (loaded ? "loaded data" : "demo scene") << ", " << triangles << " triangles, "
-            << o.Width << "x" << o.Height << ", backend " << o.Backend << ", " << o.Layers
-            << " layers, oracle " << vtkDeepGBufferPass::GetOracleAsString(o.Oracle) << ", dz "
-            << (o.Dz >= 0.0 ? std::to_string(o.Dz) : std::string("automatic")) << "\n";
-
-  // Frames: the demo camera moves along its path so the oracles have motion
-  // and history; loaded data and named views keep a still camera.
-  double totalSeconds = 0.0;
-  for (int f = 0; f < o.Frames; ++f)
-  {
-    if (!loaded && o.View.empty())
-    {
-      demo->SetCameraToPathFrame(camera, f, PathFrames);
-    }
-    const auto start = std::chrono::steady_clock::now();
-    window->Render();
-    totalSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-  std::cout << std::fixed << std::setprecision(2) << "  " << o.Frames << " frame(s), "
-            << 1000.0 * totalSeconds / o.Frames << " ms per frame (includes first-frame setup)"
-            << std::defaultfloat << std::setprecision(6) << "\n";
-  std::cout << "  effective: " << pass->GetEffectiveNumberOfLayers() << " layers, dz "
-            << pass->GetEffectiveMinimumSeparation() << ", oracle "
-            << vtkDeepGBufferPass::GetOracleAsString(pass->GetEffectiveOracle()) << ", "
-            << pass->GetLastGeometryPassCount() << " geometry pass(es) in the last frame\n";
-
-  const std::string dir = o.Output + "/";
-  if (!WritePNG(window, dir + "lit.png"))
+  std::vector<std::string> written;
+  double plainMilliseconds = 0.0;
+  vtkSmartPointer<vtkImageData> plain = RenderPlain(window, plainMilliseconds);
+  if (!Write(plain, o.Output, "plain.png", "plain VTK", written))
   {
     return ExitFailure;
   }
-
-  // Each layer's quantities through the pass's debug display.
-  const int layers = pass->GetEffectiveNumberOfLayers() > 0
-    ? std::min(pass->GetEffectiveNumberOfLayers(), o.Layers)
-    : o.Layers;
-  const struct
+  const bool ok = o.Preset < 0 ? RunGBufferOnly(o, window, renderer, written)
+                               : RunGI(o, window, renderer, plain, written);
+  if (o.Preset < 0)
   {
-    int Quantity;
-    const char* Name;
-  } quantities[] = { { vtkDeepGBufferPass::RADIANCE, "radiance" },
-    { vtkDeepGBufferPass::DEPTH, "depth" }, { vtkDeepGBufferPass::NORMAL, "normal" },
-    { vtkDeepGBufferPass::ALBEDO, "albedo" } };
-  for (int layer = 0; layer < layers; ++layer)
-  {
-    for (const auto& q : quantities)
-    {
-      pass->SetDisplayLayer(layer);
-      pass->SetDisplayQuantity(q.Quantity);
-      window->Render();
-      if (!WritePNG(window, dir + "layer" + std::to_string(layer) + "_" + q.Name + ".png"))
-      {
-        return ExitFailure;
-      }
-    }
+    PrintSummary(o, nullptr, 0, written);
   }
-  pass->SetDisplayLayer(0);
-  pass->SetDisplayQuantity(vtkDeepGBufferPass::RADIANCE);
-
-  // The global illumination composite at the same, still camera.
-  if (o.GI >= 0)
-  {
-    pass->ReleaseGraphicsResources(window);
-    vtkNew<vtkDeepGIPass> gi;
-    gi->SetPreset(o.GI);
-    gi->SetAmbientObscurance(o.AmbientObscurance);
-    gi->SetRadiosity(o.Radiosity);
-    gi->SetReflections(o.Reflections);
-    gi->GetGBufferPass()->SetOracle(o.Oracle);
-    gi->GetGBufferPass()->SetGuardBand(o.GuardBand);
-    if (o.Dz >= 0.0)
-    {
-      gi->GetGBufferPass()->SetMinimumSeparation(o.Dz);
-    }
-    renderer->SetPass(gi);
-    const auto start = std::chrono::steady_clock::now();
-    gi->Converge(renderer, o.Converge);
-    const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cout << std::fixed << std::setprecision(2) << "  gi " << vtkDeepGIPass::GetPresetAsString(o.GI)
-              << ": " << o.Converge << " frame(s), " << 1000.0 * seconds / o.Converge
-              << " ms per frame (includes first-frame setup)" << std::defaultfloat
-              << std::setprecision(6) << "; last frame ran "
-              << vtkDeepGIPass::GetEffectsAsString(gi->GetLastFrameEffects()) << " with "
-              << gi->GetLastFrameNumberOfLayers() << " layer(s)\n";
-    if (!WritePNG(window, dir + "gi.png"))
-    {
-      return ExitFailure;
-    }
-  }
-
-  // The window releases the renderer's and the pass's OpenGL resources
-  // when it goes away, while its context still exists.
-  return 0;
+  // The window releases the renderer's OpenGL resources when it goes away,
+  // while its context still exists.
+  return ok ? 0 : ExitFailure;
 }

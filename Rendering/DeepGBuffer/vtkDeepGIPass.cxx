@@ -11,6 +11,7 @@
 #include "vtkDeepRadiosityPass.h"
 #include "vtkDeepReflectionPass.h"
 #include "vtkMapper.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLQuadHelper.h"
@@ -21,7 +22,9 @@
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
+#include "vtkRenderWindow.h"
 #include "vtkShaderProgram.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkWeakPointer.h"
 #include "vtk_glew.h"
 
@@ -297,6 +300,8 @@ void vtkDeepGIPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastFrameEffects: " << GetEffectsAsString(this->LastFrameEffects) << "\n";
   os << indent << "LastFrameNumberOfLayers: " << this->LastFrameNumberOfLayers << "\n";
   os << indent << "LastLayerCoverage: " << this->LastLayerCoverage << "\n";
+  os << indent << "LastConvergenceChange: " << this->LastConvergenceChange << "\n";
+  os << indent << "LastConvergenceReached: " << this->LastConvergenceReached << "\n";
   os << indent << "GBufferPass:\n";
   this->GBufferPass->PrintSelf(os, indent.GetNextIndent());
   os << indent << "AmbientObscurancePass:\n";
@@ -334,6 +339,69 @@ void vtkDeepGIPass::SetPreset(int preset)
   this->ReflectionPass->SetRefinementSteps(p.Refinements);
   this->Preset = preset;
   this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGIPass::SetPreset(const char* name)
+{
+  const int preset = GetPresetFromString(name);
+  if (preset < 0)
+  {
+    vtkWarningMacro("Unknown preset '" << (name ? name : "(null)")
+                                       << "' (high_performance, balanced or high_quality); "
+                                          "the settings are unchanged.");
+    return;
+  }
+  this->SetPreset(preset);
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGIPass::SetEffects(const char* names)
+{
+  std::string list;
+  for (const char* c = names ? names : ""; *c; ++c)
+  {
+    if (!std::isspace(static_cast<unsigned char>(*c)))
+    {
+      list += static_cast<char>(std::tolower(static_cast<unsigned char>(*c)));
+    }
+  }
+  bool ao = false, radiosity = false, reflections = false;
+  bool valid = !list.empty() && list.back() != ',';
+  if (list == "all")
+  {
+    ao = radiosity = reflections = true;
+  }
+  else if (list != "none")
+  {
+    size_t start = 0;
+    while (valid && start <= list.size())
+    {
+      const size_t end = std::min(list.find(',', start), list.size());
+      const std::string item = list.substr(start, end - start);
+      bool* flag = item == "ao" ? &ao
+        : item == "radiosity"   ? &radiosity
+        : item == "reflections" ? &reflections
+                                : nullptr;
+      valid = flag && !*flag;
+      if (valid)
+      {
+        *flag = true;
+      }
+      start = end + 1;
+    }
+  }
+  if (!valid)
+  {
+    vtkWarningMacro("SetEffects: '" << (names ? names : "(null)")
+                                    << "' is not a list of distinct ao, radiosity, reflections "
+                                       "(or all, none); the effects are unchanged.");
+    return false;
+  }
+  this->SetAmbientObscurance(ao);
+  this->SetRadiosity(radiosity);
+  this->SetReflections(reflections);
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -408,30 +476,100 @@ std::string vtkDeepGIPass::GetEffectsAsString(int effects)
 //------------------------------------------------------------------------------
 int vtkDeepGIPass::Converge(vtkRenderer* renderer, int frames)
 {
+  return this->Converge(renderer, frames, 0.0);
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// The renderer's viewport colour as the window holds it after Render()
+// (RGB, 8 bits per channel, read from the back buffer as
+// vtkWindowToImageFilter does with ReadFrontBufferOff).
+bool ReadViewportColour(vtkRenderer* renderer, vtkUnsignedCharArray* rgb)
+{
+  const int* size = renderer->GetSize();
+  const int* origin = renderer->GetOrigin();
+  if (size[0] < 1 || size[1] < 1)
+  {
+    return false;
+  }
+  return renderer->GetRenderWindow()->GetPixelData(origin[0], origin[1],
+           origin[0] + size[0] - 1, origin[1] + size[1] - 1, /*front=*/0, rgb) == 1 &&
+    rgb->GetNumberOfValues() == 3LL * size[0] * size[1];
+}
+
+// Mean absolute difference of two colour readbacks, in units of the full
+// scale (1/255 per level).
+double MeanAbsoluteChange(vtkUnsignedCharArray* a, vtkUnsignedCharArray* b)
+{
+  const vtkIdType n = a->GetNumberOfValues();
+  const unsigned char* pa = a->GetPointer(0);
+  const unsigned char* pb = b->GetPointer(0);
+  double sum = 0.0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    sum += std::abs(static_cast<int>(pa[i]) - static_cast<int>(pb[i]));
+  }
+  return n > 0 ? sum / (255.0 * static_cast<double>(n)) : 0.0;
+}
+} // anonymous namespace
+
+//------------------------------------------------------------------------------
+int vtkDeepGIPass::Converge(vtkRenderer* renderer, int maximumFrames, double tolerance)
+{
+  this->LastConvergenceChange = -1.0;
+  this->LastConvergenceReached = false;
   if (!renderer || !renderer->GetRenderWindow())
   {
     vtkWarningMacro("Converge: a renderer in a render window is needed; nothing rendered.");
     return 0;
   }
-  if (frames < 1)
+  if (maximumFrames < 1)
   {
-    vtkWarningMacro("Converge: " << frames << " frames requested; nothing rendered.");
+    vtkWarningMacro("Converge: " << maximumFrames << " frames requested; nothing rendered.");
     return 0;
+  }
+  if (!(tolerance >= 0.0))
+  {
+    vtkWarningMacro("Converge: tolerance " << tolerance << " is not >= 0; using 0 (all "
+                                            << maximumFrames << " frames).");
+    tolerance = 0.0;
   }
   if (renderer->GetPass() != this)
   {
     vtkWarningMacro("Converge: the renderer does not use this pass (call SetPass first); the "
                     "frames are rendered without converging anything.");
   }
+  const bool measure = tolerance > 0.0;
+  vtkNew<vtkUnsignedCharArray> previous;
+  vtkNew<vtkUnsignedCharArray> current;
+  bool havePrevious = false;
   this->Internals->Converging = true;
-  for (int k = 1; k <= frames; ++k)
+  int k = 1;
+  for (; k <= maximumFrames; ++k)
   {
     renderer->GetRenderWindow()->Render();
-    double progress = static_cast<double>(k) / frames;
+    bool done = false;
+    if (measure && ReadViewportColour(renderer, current))
+    {
+      if (havePrevious && current->GetNumberOfValues() == previous->GetNumberOfValues())
+      {
+        this->LastConvergenceChange = MeanAbsoluteChange(current, previous);
+        done = this->LastConvergenceChange <= tolerance;
+      }
+      previous->DeepCopy(current);
+      havePrevious = true;
+    }
+    double progress = done ? 1.0 : static_cast<double>(k) / maximumFrames;
     this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
+    if (done)
+    {
+      this->LastConvergenceReached = true;
+      break;
+    }
   }
   this->Internals->Converging = false;
-  return frames;
+  return std::min(k, maximumFrames);
 }
 
 //------------------------------------------------------------------------------

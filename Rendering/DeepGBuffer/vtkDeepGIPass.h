@@ -155,6 +155,14 @@ public:
   vtkBooleanMacro(Reflections, bool);
   ///@}
 
+  /**
+   * Sets the three effect switches by name: a comma-separated list of
+   * distinct "ao", "radiosity" and "reflections" (case-insensitive, spaces
+   * ignored), or "all" or "none". An effect not named is switched off.
+   * Returns false, with a warning and nothing changed, for anything else.
+   */
+  bool SetEffects(const char* names);
+
   ///@{
   /**
    * Sets the three effects' presets at once (see the table in the class
@@ -162,8 +170,11 @@ public:
    * ignored with a warning. Default BALANCED (the sub-passes' defaults).
    * GetPresetFromString parses "high_performance", "balanced",
    * "high_quality" (case-insensitive, '-' or '_'); -1 if unknown.
+   * SetPreset(name) sets a preset by that name (from Python:
+   * gi.SetPreset("balanced")).
    */
   void SetPreset(int preset);
+  void SetPreset(const char* name);
   vtkGetMacro(Preset, int);
   void SetPresetToHighPerformance() { this->SetPreset(HIGH_PERFORMANCE); }
   void SetPresetToBalanced() { this->SetPreset(BALANCED); }
@@ -214,6 +225,31 @@ public:
    */
   int Converge(vtkRenderer* renderer, int frames);
 
+  /**
+   * Converge until the image stops changing: renders at most
+   * `maximumFrames` frames like Converge(renderer, frames) and stops early
+   * after the first frame whose change from the previous one is at most
+   * `tolerance`. The change is the mean absolute difference of the
+   * renderer's viewport colour (RGB, 8 bits read back after each frame,
+   * in units of the full scale, so 1/255 is one level) between two
+   * consecutive frames. A tolerance of 0 renders all frames without
+   * reading anything back; a negative or NaN tolerance is treated as 0
+   * with a warning. ProgressEvent's progress is k / maximumFrames, and 1
+   * when it stops early. Returns the number of frames rendered;
+   * GetLastConvergenceChange() gives the last measured change (-1 when
+   * none was measured) and GetLastConvergenceReached() whether the
+   * tolerance was met.
+   *
+   * The change of an exponential temporal filter falls slowly: on the
+   * demo scene (640 x 480, BALANCED) it is 0.11/255 after frame 2 and
+   * reaches a floor of about 0.06/255 (the rotating taps) after 10 frames,
+   * so a tolerance of 0.07/255 stops after 9 frames, 0.22/255 on average
+   * from the image after 24 (deepgi-render's default; Documentation/gi.md).
+   */
+  int Converge(vtkRenderer* renderer, int maximumFrames, double tolerance);
+  vtkGetMacro(LastConvergenceChange, double);
+  vtkGetMacro(LastConvergenceReached, bool);
+
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
@@ -237,6 +273,8 @@ protected:
   int LastFrameEffects = 0;
   int LastFrameNumberOfLayers = 0;
   long long LastLayerCoverage = -1;
+  double LastConvergenceChange = -1.0;
+  bool LastConvergenceReached = false;
 
 private:
   vtkDeepGIPass(const vtkDeepGIPass&) = delete;
