@@ -15,8 +15,12 @@
 //    put in front of the plane. No effect at all: one layer, VTK's image.
 // 3. Converge(renderer, 12) fires 12 ProgressEvents (k / 12) and the
 //    per-frame image change falls (radiosity bounces settle).
+//    Converge(renderer, n, tolerance) stops at the first frame whose window
+//    change is at most the tolerance (2 x the measured floor), renders
+//    every frame for 0, stops at the cap for an unreachable tolerance.
 // 4. Bad input: Converge(nullptr), 0 frames, unknown presets and a probe
-//    interval of 0 warn and do not crash; presets set the sub-passes.
+//    interval of 0 warn and do not crash; presets set the sub-passes;
+//    presets and effects by name, and bad names refused.
 
 #include "DeepRadiosityTest.h"
 
@@ -24,6 +28,8 @@
 #include "vtkDeepGIPass.h"
 #include "vtkDeepReflectionPass.h"
 #include "vtkLightCollection.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -315,6 +321,76 @@ void CheckSkipLogic()
   Release(run);
 }
 
+// Converge(renderer, maximumFrames, tolerance) on a converged scene:
+// stops at the first frame whose change, measured from the window by an
+// observer of the progress events (without rendering again), is at most the
+// tolerance; tolerance 0 renders every frame and measures nothing; one
+// that cannot be met stops at the cap; NaN warns and renders every frame.
+void CheckConvergeTolerance(Run& run, double floor)
+{
+  vtkDeepGIPass* gi = run.Pass;
+  gi->RemoveObservers(vtkCommand::ProgressEvent);
+  struct Observer
+  {
+    std::vector<double> Progress;
+    std::vector<double> Change; // mean |frame k - frame k-1|, 0..255
+    std::vector<unsigned char> Previous;
+    vtkRenderWindow* Window = nullptr;
+  } observer;
+  observer.Window = run.Window;
+  vtkNew<vtkCallbackCommand> callback;
+  callback->SetClientData(&observer);
+  callback->SetCallback(
+    [](vtkObject*, unsigned long, void* clientData, void* callData)
+    {
+      auto* self = static_cast<Observer*>(clientData);
+      self->Progress.push_back(*static_cast<double*>(callData));
+      vtkNew<vtkWindowToImageFilter> grab;
+      grab->SetInput(self->Window);
+      grab->ReadFrontBufferOff();
+      grab->ShouldRerenderOff();
+      grab->SetInputBufferTypeToRGB();
+      grab->Update();
+      auto* rgb = vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+      std::vector<unsigned char> image(rgb->GetPointer(0), rgb->GetPointer(0) + rgb->GetNumberOfValues());
+      if (!self->Previous.empty())
+      {
+        double sum = 0.0;
+        for (size_t i = 0; i < image.size(); ++i)
+        {
+          sum += std::abs(static_cast<int>(image[i]) - static_cast<int>(self->Previous[i]));
+        }
+        self->Change.push_back(sum / static_cast<double>(image.size()));
+      }
+      self->Previous = image;
+    });
+  gi->AddObserver(vtkCommand::ProgressEvent, callback);
+
+  const double tolerance = 2.0 * floor / 255.0;
+  const int early = gi->Converge(run.Renderer, 40, tolerance);
+  std::printf("Converge(40, %.4f/255): %d frames, last change %.4f/255\n", 255.0 * tolerance,
+    early, 255.0 * gi->GetLastConvergenceChange());
+  Check(early >= 2 && early < 40 && gi->GetLastConvergenceReached() &&
+      gi->GetLastConvergenceChange() <= tolerance,
+    "with a tolerance of 2 x the floor it stops early, at a change within the tolerance");
+  Check(observer.Change.size() == static_cast<size_t>(early - 1) && !observer.Change.empty() &&
+      std::abs(255.0 * gi->GetLastConvergenceChange() - observer.Change.back()) < 1e-9,
+    "the change it stops at is the window's mean change between the last two frames");
+  Check(!observer.Progress.empty() && observer.Progress.back() == 1.0,
+    "progress is 1 when it stops early");
+
+  Check(gi->Converge(run.Renderer, 3, 0.0) == 3 && gi->GetLastConvergenceChange() == -1.0 &&
+      !gi->GetLastConvergenceReached(),
+    "tolerance 0: every frame, nothing measured");
+  Check(gi->Converge(run.Renderer, 3, 1e-12) == 3 && gi->GetLastConvergenceChange() > 0.0 &&
+      !gi->GetLastConvergenceReached(),
+    "a tolerance below the temporal filters' floor: stops at the cap, not reached");
+  EventCounter warnings(gi, vtkCommand::WarningEvent);
+  Check(gi->Converge(run.Renderer, 2, std::nan("")) == 2 && warnings.Count == 1 &&
+      gi->GetLastConvergenceChange() == -1.0,
+    "a NaN tolerance warns and renders every frame");
+}
+
 void CheckConverge()
 {
   Run run;
@@ -388,6 +464,7 @@ void CheckConverge()
       lastFive < observer.Change.front(),
     "the per-frame change does not grow: the mean of the last 5 below the first");
   Check(lastFive < 0.05, "the per-frame change settles below 0.05/255");
+  CheckConvergeTolerance(run, lastFive);
   Release(run);
 }
 
@@ -402,6 +479,30 @@ void CheckBadInput()
   gi->SetLayerProbeInterval(0);
   Check(gi->GetLayerProbeInterval() == 1, "probe interval clamped to 1");
   Check(warnings.Count == 4, "four warnings for four bad inputs");
+  gi->SetPreset("high_quality");
+  Check(gi->GetPreset() == vtkDeepGIPass::HIGH_QUALITY, "SetPreset by name");
+  gi->SetPreset("fast");
+  gi->SetPreset(static_cast<const char*>(nullptr));
+  Check(gi->GetPreset() == vtkDeepGIPass::HIGH_QUALITY && warnings.Count == 6,
+    "unknown preset names warn and change nothing");
+  Check(gi->SetEffects(" AO, reflections ") && gi->GetAmbientObscurance() &&
+      !gi->GetRadiosity() && gi->GetReflections(),
+    "SetEffects: named effects on, the others off, case and spaces ignored");
+  Check(gi->SetEffects("none") && !gi->GetAmbientObscurance() && !gi->GetRadiosity() &&
+      !gi->GetReflections() && gi->SetEffects("all") && gi->GetAmbientObscurance() &&
+      gi->GetRadiosity() && gi->GetReflections(),
+    "SetEffects none and all");
+  for (const char* bad : { "ao,ao", "ao,", ",ao", "", "shadows", "ao;radiosity", "all,ao" })
+  {
+    gi->SetEffects("radiosity");
+    const int before = warnings.Count;
+    Check(!gi->SetEffects(bad) && warnings.Count == before + 1 && !gi->GetAmbientObscurance() &&
+        gi->GetRadiosity() && !gi->GetReflections(),
+      std::string("SetEffects('") + bad + "') warns and changes nothing");
+  }
+  Check(!gi->SetEffects(nullptr), "SetEffects(nullptr) is refused");
+  gi->SetEffects("all");
+  Check(gi->Converge(nullptr, 3, 0.1) == 0, "Converge(nullptr, 3, tolerance) renders nothing");
   gi->SetPresetToHighQuality();
   Check(gi->GetRadiosityPass()->GetNumberOfSamples() == 30 &&
       gi->GetAmbientObscurancePass()->GetNumberOfSamples() == 32 &&
