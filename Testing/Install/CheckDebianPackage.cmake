@@ -3,17 +3,8 @@
 # it, runs deepgi-render and `import vtkdeepgi` with no environment, and
 # removes it again.
 #   cmake -DBUILD=<build> -DWORK=<dir> -DPYTHON=/usr/bin/python3 -P CheckDebianPackage.cmake
-function(fail message)
-  message(FATAL_ERROR "package check: ${message}")
-endfunction()
-
-function(run)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if (rc)
-    fail("'${ARGN}' failed (${rc}):\n${out}\n${err}")
-  endif ()
-  set(out "${out}" PARENT_SCOPE)
-endfunction()
+set(DEEPGI_CHECK_NAME "package check")
+include("${CMAKE_CURRENT_LIST_DIR}/CheckHelpers.cmake")
 
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")

@@ -4,17 +4,8 @@
 # versioned shared libraries (SONAME), and the benchmarks out of bin/.
 #   cmake -DBUILD=<build> -DPREFIX=<dir> -DPYTHON=/usr/bin/python3
 #         -DPYTHON_DIR=<python destination> -P CheckInstall.cmake
-function(fail message)
-  message(FATAL_ERROR "install check: ${message}")
-endfunction()
-
-function(run)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if (rc)
-    fail("'${ARGN}' failed (${rc}):\n${out}\n${err}")
-  endif ()
-  set(out "${out}" PARENT_SCOPE)
-endfunction()
+set(DEEPGI_CHECK_NAME "install check")
+include("${CMAKE_CURRENT_LIST_DIR}/CheckHelpers.cmake")
 
 file(REMOVE_RECURSE "${PREFIX}")
 run("${CMAKE_COMMAND}" --install "${BUILD}" --prefix "${PREFIX}")
