@@ -277,7 +277,10 @@ vtkSmartPointer<vtkImageData> Tile(
 //------------------------------------------------------------------------------
 bool WritePNG(vtkImageData* image, const std::string& fileName)
 {
+  // The rename replaces `fileName` itself, even when it is a symbolic link;
+  // a stale partial file (or a link of that name) is removed first.
   const std::string partial = fileName + ".partial";
+  vtksys::SystemTools::RemoveFile(partial);
   vtkNew<vtkPNGWriter> writer;
   writer->SetInputData(image);
   writer->SetFileName(partial.c_str());
