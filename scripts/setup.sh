@@ -5,8 +5,9 @@
 #   apt-get install --no-install-recommends run only when something is
 #   missing (as root, or through sudo).
 # - The build directory is build/ in the repository (override with
-#   DEEPGI_BUILD_DIR). It is configured once (Ninja, Release); later runs just
-#   call ninja, which re-runs CMake itself when a CMakeLists.txt changed.
+#   DEEPGI_BUILD_DIR). It is configured once (Ninja, Release, plus the options
+#   in DEEPGI_CMAKE_ARGS); later runs just call ninja, which re-runs CMake
+#   itself when a CMakeLists.txt changed.
 #
 # Everything this script prints goes to stderr, so that the stdout of
 # scripts/run.sh is the main job's alone.
@@ -72,6 +73,9 @@ fi
 # Configure once; ninja re-runs CMake when needed.
 if [[ ! -f "$build/build.ninja" ]]; then
   log "configuring $build"
-  cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
+  # DEEPGI_CMAKE_ARGS: extra configure options, e.g.
+  # "-DDEEPGI_ENABLE_REFERENCE=OFF -DDEEPGI_ENABLE_OPENEXR=OFF".
+  # shellcheck disable=SC2086
+  cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release ${DEEPGI_CMAKE_ARGS:-}
 fi
 ninja -C "$build"

@@ -132,6 +132,14 @@ bool ParseOptions(int argc, char* argv[], Options& o)
 
 struct Method
 {
+  Method(const std::string& name, int layers, int oracle = vtkDeepGBufferPass::DEPTH_PEEL,
+    double guardBand = 0.0)
+    : Name(name)
+    , Layers(layers)
+    , Oracle(oracle)
+    , GuardBand(guardBand)
+  {
+  }
   std::string Name;
   int Layers = 0; // 0: VTK without the pass
   int Oracle = vtkDeepGBufferPass::DEPTH_PEEL;
@@ -175,18 +183,18 @@ int main(int argc, char* argv[])
   const int pathFrames = 120;
 
   std::vector<Method> methods;
-  methods.push_back({ "VTK without the pass", 0 });
-  methods.push_back({ "G-buffer, 1 layer", 1 });
+  methods.emplace_back("VTK without the pass", 0);
+  methods.emplace_back("G-buffer, 1 layer", 1);
   for (int oracle = vtkDeepGBufferPass::DEPTH_PEEL; oracle <= vtkDeepGBufferPass::DELAY; ++oracle)
   {
-    methods.push_back(
-      { std::string("2 layers, ") + vtkDeepGBufferPass::GetOracleAsString(oracle), 2, oracle });
+    methods.emplace_back(
+      std::string("2 layers, ") + vtkDeepGBufferPass::GetOracleAsString(oracle), 2, oracle);
   }
   // The default oracle with the guard band of the radiosity and GI passes.
   const double guardBand = vtkDeepRadiosityPass::DEFAULT_GUARD_BAND;
   char guardName[64];
   std::snprintf(guardName, sizeof(guardName), "2 layers, REPROJECT, guard band %g", guardBand);
-  methods.push_back({ guardName, 2, vtkDeepGBufferPass::REPROJECT, guardBand });
+  methods.emplace_back(guardName, 2, vtkDeepGBufferPass::REPROJECT, guardBand);
   for (Method& m : methods)
   {
     if (m.Layers > 0)

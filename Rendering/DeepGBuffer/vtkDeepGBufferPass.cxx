@@ -1,5 +1,7 @@
 #include "vtkDeepGBufferPass.h"
 
+#include "vtkDeepGIKeys.h"
+
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkDoubleArray.h"
@@ -363,7 +365,11 @@ vtkCxxSetObjectMacro(vtkDeepGBufferPass, TranslucentPass, vtkRenderPass);
 vtkCxxSetObjectMacro(vtkDeepGBufferPass, VolumetricPass, vtkRenderPass);
 vtkCxxSetObjectMacro(vtkDeepGBufferPass, OverlayPass, vtkRenderPass);
 vtkCxxSetObjectMacro(vtkDeepGBufferPass, ShadowMapPass, vtkShadowMapPass);
-vtkInformationKeyMacro(vtkDeepGBufferPass, EMISSIVE, Integer);
+//------------------------------------------------------------------------------
+vtkInformationIntegerKey* vtkDeepGBufferPass::EMISSIVE()
+{
+  return vtkDeepGIKeys::EMISSIVE();
+}
 
 //------------------------------------------------------------------------------
 void vtkDeepGBufferPass::PrintSelf(ostream& os, vtkIndent indent)

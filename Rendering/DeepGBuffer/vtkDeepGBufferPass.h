@@ -355,7 +355,9 @@ public:
    * emission: vtkDeepRadiosityPass gathers it as the surface's B(Y), and
    * vtkDeepAmbientObscurancePass does not darken it. Without the key (or
    * 0) the ambient term is the environment's light, as VTK's lighting
-   * treats it. Read at every draw: no shader rebuild when it changes.
+   * treats it. Read at every draw: no shader rebuild when it changes. The
+   * key is vtkDeepGIKeys::EMISSIVE() (DeepGI::Core), so that scene content
+   * can set it without depending on rendering.
    */
   static vtkInformationIntegerKey* EMISSIVE();
 

@@ -32,7 +32,7 @@ foreach (expected IN ITEMS
     " ./usr/lib/python3/dist-packages/vtkdeepgi/vtkDeepGIRendering.so"
     " ./usr/lib/cmake/DeepGI/DeepGIConfig.cmake"
     " ./usr/include/DeepGI/vtkDeepGIPass.h"
-    " ./usr/libexec/deepgi/deepgi-benchmark-ao")
+    " ./usr/libexec/deepgi/deepgi-benchmark-gbuffer")
   if (NOT contents MATCHES "${expected}")
     fail("the package lacks '${expected}':\n${contents}")
   endif ()

@@ -18,7 +18,7 @@ file(GLOB benchmarks_in_bin "${PREFIX}/bin/deepgi-benchmark-*")
 if (benchmarks_in_bin)
   fail("benchmarks installed as user commands: ${benchmarks_in_bin}")
 endif ()
-if (NOT EXISTS "${PREFIX}/libexec/deepgi/deepgi-benchmark-ao")
+if (NOT EXISTS "${PREFIX}/libexec/deepgi/deepgi-benchmark-gbuffer")
   fail("the benchmarks are not in ${PREFIX}/libexec/deepgi")
 endif ()
 

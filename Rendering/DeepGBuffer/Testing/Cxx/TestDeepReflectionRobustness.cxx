@@ -279,7 +279,7 @@ int TestDeepReflectionRobustness(int, char*[])
     displayOk += ok ? 1 : 0;
   }
   std::printf("REFLECTIVITY display: %ld of %ld pixels as expected (%ld traced)\n", displayOk,
-    tracedMask->GetNumberOfTuples(), displayTraced);
+    static_cast<long>(tracedMask->GetNumberOfTuples()), displayTraced);
   Check(displayOk == tracedMask->GetNumberOfTuples(),
     "REFLECTIVITY display: 1 on the mirror, 0 elsewhere");
 

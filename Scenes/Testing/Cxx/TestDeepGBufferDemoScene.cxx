@@ -14,7 +14,7 @@
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDeepGBufferDemoScene.h"
-#include "vtkDeepGBufferPass.h"
+#include "vtkDeepGIKeys.h"
 #include "vtkDeepGBufferSceneLoader.h"
 #include "vtkFlyingEdges3D.h"
 #include "vtkInformation.h"
@@ -426,7 +426,7 @@ void TestLoader(const std::string& data, const std::string& temp)
   vtkProperty* lampProperty = lamp ? lamp->GetProperty() : nullptr;
   CHECK(lampProperty && lampProperty->GetAmbient() == 1.0 && lampProperty->GetDiffuse() == 0.0 &&
       std::abs(lampProperty->GetAmbientColor()[1] - 12.0 / 17.0) < 1e-12 &&
-      lamp->GetPropertyKeys() && lamp->GetPropertyKeys()->Get(vtkDeepGBufferPass::EMISSIVE()) == 1,
+      lamp->GetPropertyKeys() && lamp->GetPropertyKeys()->Get(vtkDeepGIKeys::EMISSIVE()) == 1,
     "the lamp is emissive: Ambient 1, AmbientColor Ke / max(Ke), Diffuse 0, EMISSIVE");
   vtkLight* light = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
   // The quad is 0.47 x 0.38 at y = 1.98, facing down.

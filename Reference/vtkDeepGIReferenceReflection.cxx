@@ -63,7 +63,7 @@ void vtkDeepGIReferenceReflection::EvaluateSample(
   const SurfacePoint& x, const double*, const HitRecord&, int, double* values) const
 {
   std::fill(values, values + 8, 0.0);
-  double v[3];
+  double v[3] = { 0.0, 0.0, 0.0 };
   if (this->Parallel)
   {
     std::copy(this->ViewDirection, this->ViewDirection + 3, v);

@@ -100,7 +100,7 @@
 #ifndef vtkDeepGIReferenceObscurance_h
 #define vtkDeepGIReferenceObscurance_h
 
-#include "vtkDeepGIFiltersModule.h" // for export macro
+#include "vtkDeepGIReferenceModule.h" // for export macro
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for ivars
 
@@ -109,7 +109,7 @@
 class vtkImageData;
 class vtkPolyData;
 
-class VTKDEEPGIFILTERS_EXPORT vtkDeepGIReferenceObscurance : public vtkObject
+class VTKDEEPGIREFERENCE_EXPORT vtkDeepGIReferenceObscurance : public vtkObject
 {
 public:
   static vtkDeepGIReferenceObscurance* New();

@@ -34,10 +34,10 @@
 #ifndef vtkDeepGIReferenceReflection_h
 #define vtkDeepGIReferenceReflection_h
 
-#include "vtkDeepGIFiltersModule.h" // for export macro
+#include "vtkDeepGIReferenceModule.h" // for export macro
 #include "vtkDeepGIReferenceObscurance.h"
 
-class VTKDEEPGIFILTERS_EXPORT vtkDeepGIReferenceReflection : public vtkDeepGIReferenceObscurance
+class VTKDEEPGIREFERENCE_EXPORT vtkDeepGIReferenceReflection : public vtkDeepGIReferenceObscurance
 {
 public:
   static vtkDeepGIReferenceReflection* New();

@@ -341,7 +341,7 @@ void Layout(std::vector<MeshBuilder>& m, double h, bool ceiling)
 {
   using S = vtkDeepGBufferDemoScene;
   const double W = 10.0, H = 4.0, D = 8.0;
-  const double x0 = -0.5 * W, x1 = 0.5 * W, z0 = -0.5 * D, z1 = 0.5 * D;
+  const double x0 = -0.5 * W, x1 = 0.5 * W, z0 = -0.5 * D;
 
   // Room shell, every face towards the inside.
   Quad(m[S::FLOOR], h, { x0, 0, z0 }, { 0, 0, D }, { W, 0, 0 });
@@ -380,7 +380,7 @@ void Layout(std::vector<MeshBuilder>& m, double h, bool ceiling)
     Cylinder(col, h, { cx, 0.2, columnZ }, Y, Z, X, 0.22, 3.5, false, false);
     Torus(col, h, { cx, 3.53, columnZ }, Y, Z, X, 0.23, 0.04);
     Torus(col, h, { cx, 3.64, columnZ }, Y, Z, X, 0.25, 0.06);
-    Box(col, h, { cx, 3.84, columnZ }, { 0.6, 0.28, 0.6 }, 0.0, ceiling ? Y_MAX : 0u);
+    Box(col, h, { cx, 3.84, columnZ }, { 0.6, 0.28, 0.6 }, 0.0, ceiling ? static_cast<unsigned>(Y_MAX) : 0u);
   }
 
   // Mouldings: baseboards and crown mouldings on the three walls, a chair

@@ -10,7 +10,7 @@
 #include "vtkCleanPolyData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
-#include "vtkDeepGBufferPass.h"
+#include "vtkDeepGIKeys.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkExecutive.h"
@@ -1683,7 +1683,7 @@ int vtkDeepGBufferSceneLoader::Populate(vtkRenderer* renderer)
       property->SetAmbient(1.0);
       property->SetDiffuse(0.0);
       vtkNew<vtkInformation> keys;
-      keys->Set(vtkDeepGBufferPass::EMISSIVE(), 1);
+      keys->Set(vtkDeepGIKeys::EMISSIVE(), 1);
       actor->SetPropertyKeys(keys);
       emitters = this->AddEmitterLight(renderer, index) || emitters;
     }

@@ -50,7 +50,7 @@
 #ifndef vtkDeepGBufferSceneLoader_h
 #define vtkDeepGBufferSceneLoader_h
 
-#include "vtkDeepGIFiltersModule.h" // for export macro
+#include "vtkDeepGIScenesModule.h" // for export macro
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for the protected helpers
 
@@ -60,7 +60,7 @@ class vtkImageData;
 class vtkPolyData;
 class vtkRenderer;
 
-class VTKDEEPGIFILTERS_EXPORT vtkDeepGBufferSceneLoader : public vtkObject
+class VTKDEEPGISCENES_EXPORT vtkDeepGBufferSceneLoader : public vtkObject
 {
 public:
   static vtkDeepGBufferSceneLoader* New();
@@ -198,7 +198,7 @@ public:
    * Emitters (parts whose MTL material has a Ke > 0, e.g. the lamp of the
    * Cornell box) are drawn self-lit: Ambient 1 with AmbientColor
    * Ke / max(Ke), Diffuse 0, Specular 0, and the actor's PropertyKeys carry
-   * vtkDeepGBufferPass::EMISSIVE() = 1, so their colour enters the deep
+   * vtkDeepGIKeys::EMISSIVE() = 1 (the key vtkDeepGBufferPass::EMISSIVE() reads), so their colour enters the deep
    * G-buffer's direct radiance (RADIANCE - AMBIENT) and with it the
    * radiosity's B(Y). Each emitter also gets a light (AddEmitterLight); a
    * scene with emitters is lit by them only (no default lights).

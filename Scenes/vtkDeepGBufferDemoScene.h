@@ -44,7 +44,7 @@
 #ifndef vtkDeepGBufferDemoScene_h
 #define vtkDeepGBufferDemoScene_h
 
-#include "vtkDeepGIFiltersModule.h" // for export macro
+#include "vtkDeepGIScenesModule.h" // for export macro
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for ivars
 #include "vtkTimeStamp.h"    // for ivars
@@ -55,7 +55,7 @@ class vtkCamera;
 class vtkPolyData;
 class vtkRenderer;
 
-class VTKDEEPGIFILTERS_EXPORT vtkDeepGBufferDemoScene : public vtkObject
+class VTKDEEPGISCENES_EXPORT vtkDeepGBufferDemoScene : public vtkObject
 {
 public:
   static vtkDeepGBufferDemoScene* New();

@@ -41,12 +41,12 @@
 #ifndef vtkDeepGIEXRReader_h
 #define vtkDeepGIEXRReader_h
 
-#include "vtkDeepGIFiltersModule.h" // for export macro
+#include "vtkDeepGIIOOpenEXRModule.h" // for export macro
 #include "vtkImageAlgorithm.h"
 
 #include <string> // for std::string
 
-class VTKDEEPGIFILTERS_EXPORT vtkDeepGIEXRReader : public vtkImageAlgorithm
+class VTKDEEPGIIOOPENEXR_EXPORT vtkDeepGIEXRReader : public vtkImageAlgorithm
 {
 public:
   static vtkDeepGIEXRReader* New();

@@ -153,7 +153,7 @@
 #ifndef vtkDeepGIReferenceIrradiance_h
 #define vtkDeepGIReferenceIrradiance_h
 
-#include "vtkDeepGIFiltersModule.h" // for export macro
+#include "vtkDeepGIReferenceModule.h" // for export macro
 #include "vtkDeepGIReferenceObscurance.h"
 
 #include <memory> // for std::unique_ptr
@@ -162,7 +162,7 @@ class vtkCamera;
 class vtkLight;
 class vtkRenderer;
 
-class VTKDEEPGIFILTERS_EXPORT vtkDeepGIReferenceIrradiance : public vtkDeepGIReferenceObscurance
+class VTKDEEPGIREFERENCE_EXPORT vtkDeepGIReferenceIrradiance : public vtkDeepGIReferenceObscurance
 {
 public:
   static vtkDeepGIReferenceIrradiance* New();

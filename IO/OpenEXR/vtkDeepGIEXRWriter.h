@@ -44,14 +44,14 @@
 #ifndef vtkDeepGIEXRWriter_h
 #define vtkDeepGIEXRWriter_h
 
-#include "vtkDeepGIFiltersModule.h" // for export macro
+#include "vtkDeepGIIOOpenEXRModule.h" // for export macro
 #include "vtkWriter.h"
 
 #include <string> // for std::string
 
 class vtkImageData;
 
-class VTKDEEPGIFILTERS_EXPORT vtkDeepGIEXRWriter : public vtkWriter
+class VTKDEEPGIIOOPENEXR_EXPORT vtkDeepGIEXRWriter : public vtkWriter
 {
 public:
   static vtkDeepGIEXRWriter* New();
