@@ -277,6 +277,17 @@ struct vtkDeepGBufferRendererState
 };
 
 //------------------------------------------------------------------------------
+// The warnings given once per pass.
+enum WarningSlot
+{
+  WARN_ORACLE_LAYERS,
+  WARN_GEOMETRY_SHADER_LAYERS,
+  WARN_SEPARATION_EXCEEDS_SCENE,
+  WARN_FRAMEBUFFER_INCOMPLETE,
+  WARN_GUARD_BAND_LIMITED,
+  NUMBER_OF_WARNINGS
+};
+
 class vtkDeepGBufferPass::vtkInternals
 {
 public:
@@ -317,14 +328,14 @@ public:
   bool Supported = false;
   int MaximumSlots = 1;
   int MaximumTextureSize = 0; // GL_MAX_TEXTURE_SIZE, which limits the guard band
-  bool Warned[8] = { false, false, false, false, false, false, false, false };
+  bool Warned[NUMBER_OF_WARNINGS] = {};
 
   vtkOpenGLQuadHelper* ResolveQuad = nullptr;
 
   vtkLightsPass* LightsPass = nullptr;
   vtkNew<vtkDeepGBufferDrawStep> DrawStep;
 
-  void WarnOnce(vtkDeepGBufferPass* self, int which, const std::string& message)
+  void WarnOnce(vtkDeepGBufferPass* self, WarningSlot which, const std::string& message)
   {
     if (!this->Warned[which])
     {
@@ -1042,17 +1053,74 @@ static bool UpdateReflectivityTarget(vtkDeepGBufferRendererState& state, vtkOpen
 //------------------------------------------------------------------------------
 namespace
 {
-// Binds a framebuffer of the G-buffer (its four draw buffers are set at allocation).
-void BindTarget(vtkOpenGLState* ostate, GLuint framebuffer)
-{
-  ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-}
-
 // Copies layer `from` of the distance texture into layer `to` of the history.
 void CopyDistanceLayer(vtkDeepGBufferRendererState& state, int from, int to)
 {
   glCopyImageSubData(state.Textures[vtkDeepGBufferPass::DEPTH], GL_TEXTURE_2D_ARRAY, 0, 0, 0, from,
     state.HistoryTexture, GL_TEXTURE_2D_ARRAY, 0, 0, 0, to, state.Width, state.Height, 1);
+}
+
+// Clears every layer of every quantity (distance 0 marks an empty pixel)
+// and the depth.
+void ClearLayers(vtkDeepGBufferRendererState& state, vtkOpenGLState* ostate)
+{
+  ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, state.LayeredFramebuffer);
+  const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+  for (int q = 0; q < vtkDeepGBufferPass::NUMBER_OF_QUANTITIES; ++q)
+  {
+    if (state.Textures[q])
+    {
+      glClearBufferfv(GL_COLOR, q, zero);
+    }
+  }
+  const float farDepth = 1.0f;
+  glClearBufferfv(GL_DEPTH, 0, &farDepth);
+}
+
+void DrawOpaque(const std::vector<vtkProp*>& props, vtkRenderer* renderer)
+{
+  for (vtkProp* prop : props)
+  {
+    prop->RenderOpaqueGeometry(renderer);
+  }
+}
+
+// The history the next frame's separation tests read (Listing 2 reads
+// Z_{t-1}): the oracle's own layer, or the displayed layers but the last.
+// Peeling copied each layer before drawing the next; a single pass did not.
+void StoreHistory(vtkDeepGBufferRendererState& state, int layers, int oracleSlots, bool peeled)
+{
+  if (oracleSlots)
+  {
+    CopyDistanceLayer(state, layers, 0);
+  }
+  else if (!peeled)
+  {
+    for (int j = 0; j + 1 < layers; ++j)
+    {
+      CopyDistanceLayer(state, j, j);
+    }
+  }
+  state.HistoryValid = true;
+  state.HistoryIsPredicted = oracleSlots == 1;
+  state.HistoryNumberOfLayers = layers;
+}
+
+// Forgets the motion history of props that no longer exist.
+void ForgetDeletedProps(vtkDeepGBufferRendererState& state)
+{
+  for (auto it = state.PropLiveness.begin(); it != state.PropLiveness.end();)
+  {
+    if (!it->second)
+    {
+      state.Props.erase(it->first);
+      it = state.PropLiveness.erase(it);
+    }
+    else
+    {
+      ++it;
+    }
+  }
 }
 }
 
@@ -1094,169 +1162,255 @@ static bool CheckSupport(vtkOpenGLRenderWindow* window, int& maximumSlots, std::
 }
 
 //------------------------------------------------------------------------------
+// What one RenderLayers call decides and carries from stage to stage.
+struct vtkDeepGBufferPass::vtkLayerFrame
+{
+  const vtkRenderState* State = nullptr;
+  vtkOpenGLRenderer* Renderer = nullptr;
+  vtkOpenGLRenderWindow* Window = nullptr;
+  vtkOpenGLState* GL = nullptr;
+  vtkDeepGBufferRendererState* RendererState = nullptr;
+  // The layers: the frame and the guard band around it (section 3.5).
+  int Guard = 0;
+  int Width = 0;
+  int Height = 0;
+  // Layout: the oracle, the layers shown, the extra oracle layer of
+  // PREDICT and DELAY, and whether one geometry pass fills every layer.
+  int Oracle = REPROJECT;
+  int Layers = 2;
+  int OracleSlots = 0;
+  int Slots = 2;
+  bool SinglePass = false;
+  double MinimumSeparation = 0.0;
+  bool HistoryUsable = false;
+  std::vector<vtkProp*> RoutedProps;
+  std::vector<vtkProp*> OtherProps;
+  // What the draw did.
+  int GeometryPasses = 0;
+  bool RoutedDone = false;
+};
+
+namespace
+{
+// The opaque props drawn the way VTK draws them, without layers.
+void RenderPlain(const vtkRenderState* s)
+{
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    s->GetPropArray()[i]->RenderOpaqueGeometry(s->GetRenderer());
+  }
+}
+}
+
+//------------------------------------------------------------------------------
 bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
 {
+  vtkLayerFrame frame;
+  if (!this->BeginLayerFrame(s, frame))
+  {
+    return false;
+  }
+  this->BakeShadowMaps(frame);
+  this->ChooseLayout(frame);
+  if (!this->PrepareRendererState(frame))
+  {
+    RenderPlain(s);
+    return false;
+  }
+  this->UpdateCameras(frame);
+  this->ClassifyProps(frame);
+  if (!this->DrawFrame(frame))
+  {
+    RenderPlain(s);
+    return false;
+  }
+  ForgetDeletedProps(*frame.RendererState);
+  this->RecordFrame(frame);
+  vtkOpenGLCheckErrorMacro("failed after building the deep G-buffer");
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGBufferPass::BeginLayerFrame(const vtkRenderState* s, vtkLayerFrame& frame)
+{
   vtkInternals& in = *this->Internals;
-  vtkOpenGLRenderer* renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
-  vtkOpenGLRenderWindow* window =
-    vtkOpenGLRenderWindow::SafeDownCast(renderer ? renderer->GetRenderWindow() : nullptr);
-  if (!window)
+  frame.State = s;
+  frame.Renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  frame.Window = vtkOpenGLRenderWindow::SafeDownCast(
+    frame.Renderer ? frame.Renderer->GetRenderWindow() : nullptr);
+  if (!frame.Window)
   {
     vtkErrorMacro("vtkDeepGBufferPass needs an OpenGL renderer and render window.");
     return false;
   }
-  vtkOpenGLState* ostate = window->GetState();
-
-  auto renderPlain = [&]() {
-    for (int i = 0; i < s->GetPropArrayCount(); ++i)
-    {
-      s->GetPropArray()[i]->RenderOpaqueGeometry(renderer);
-    }
-  };
-
-  if (in.CheckedWindow != window)
-  {
-    std::string why;
-    in.CheckedWindow = window;
-    GLint maximumTextureSize = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maximumTextureSize);
-    in.MaximumTextureSize = static_cast<int>(maximumTextureSize);
-    in.Supported = CheckSupport(window, in.MaximumSlots, why);
-    if (!in.Supported)
-    {
-      vtkWarningMacro("The deep G-buffer is not supported by this OpenGL ("
-        << why << "); rendering without it.");
-    }
-  }
+  frame.GL = frame.Window->GetState();
+  this->CheckContext(frame.Window);
   // Hardware picking draws ids into VTK's own buffers: leave it alone.
-  if (!in.Supported || renderer->GetSelector())
+  if (!in.Supported || frame.Renderer->GetSelector())
   {
-    renderPlain();
+    RenderPlain(s);
     return false;
   }
-
   int size[2] = { 0, 0 };
   s->GetWindowSize(size);
-  const int frameWidth = size[0], frameHeight = size[1];
-  if (frameWidth < 1 || frameHeight < 1)
+  if (size[0] < 1 || size[1] < 1)
   {
     return false;
   }
-  // The layers: the frame and the guard band around it (paper section 3.5).
   bool limited = false;
-  const int guard = ComputeGuardBandPixels(
-    this->GuardBand, frameWidth, frameHeight, in.MaximumTextureSize, &limited);
+  frame.Guard =
+    ComputeGuardBandPixels(this->GuardBand, size[0], size[1], in.MaximumTextureSize, &limited);
   if (limited)
   {
-    in.WarnOnce(this, 4,
+    in.WarnOnce(this, WARN_GUARD_BAND_LIMITED,
       "The guard band of " + std::to_string(this->GuardBand) +
         " of the height exceeds this GPU's texture size " + std::to_string(in.MaximumTextureSize) +
-        "; it is limited to " + std::to_string(guard) + " pixels.");
+        "; it is limited to " + std::to_string(frame.Guard) + " pixels.");
   }
-  const int width = frameWidth + 2 * guard, height = frameHeight + 2 * guard;
-  in.GuardBandScale = { static_cast<float>(static_cast<double>(frameWidth) / width),
-    static_cast<float>(static_cast<double>(frameHeight) / height) };
+  frame.Width = size[0] + 2 * frame.Guard;
+  frame.Height = size[1] + 2 * frame.Guard;
+  in.GuardBandScale = { static_cast<float>(static_cast<double>(size[0]) / frame.Width),
+    static_cast<float>(static_cast<double>(size[1]) / frame.Height) };
+  return true;
+}
 
-  // VTK's shadow maps for this frame's lights and props, baked before the
-  // layers read them. The baker renders from the light cameras into its own
-  // framebuffer and viewport; the renderer's are restored for the layers.
-  vtkShadowMapPass* shadows = this->ShadowMapPass && this->ShadowMapPass->GetShadowMapBakerPass()
-    ? this->ShadowMapPass
-    : nullptr;
-  if (shadows)
+//------------------------------------------------------------------------------
+void vtkDeepGBufferPass::CheckContext(vtkOpenGLRenderWindow* window)
+{
+  vtkInternals& in = *this->Internals;
+  if (in.CheckedWindow == window)
   {
-    // VTK 9.1's baker re-bakes only when lights or props changed, even after
-    // ReleaseGraphicsResources freed its maps, and the shadow pass then reads
-    // the missing maps: mark the lights changed while a shadowing light has
-    // no map.
-    vtkShadowMapBakerPass* baker = shadows->GetShadowMapBakerPass();
-    if (!baker->GetShadowMaps())
+    return;
+  }
+  std::string why;
+  in.CheckedWindow = window;
+  GLint maximumTextureSize = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maximumTextureSize);
+  in.MaximumTextureSize = static_cast<int>(maximumTextureSize);
+  in.Supported = CheckSupport(window, in.MaximumSlots, why);
+  if (!in.Supported)
+  {
+    vtkWarningMacro(
+      "The deep G-buffer is not supported by this OpenGL (" << why << "); rendering without it.");
+  }
+}
+
+//------------------------------------------------------------------------------
+// VTK's shadow maps for this frame's lights and props, baked before the
+// layers read them. The baker renders from the light cameras into its own
+// framebuffer and viewport; the renderer's are restored for the layers.
+void vtkDeepGBufferPass::BakeShadowMaps(vtkLayerFrame& frame)
+{
+  if (!this->ShadowMapPass || !this->ShadowMapPass->GetShadowMapBakerPass())
+  {
+    return;
+  }
+  // VTK 9.1's baker re-bakes only when lights or props changed, even after
+  // ReleaseGraphicsResources freed its maps, and the shadow pass then reads
+  // the missing maps: mark the lights changed while a shadowing light has
+  // no map.
+  vtkShadowMapBakerPass* baker = this->ShadowMapPass->GetShadowMapBakerPass();
+  if (!baker->GetShadowMaps())
+  {
+    vtkLightCollection* lights = frame.Renderer->GetLights();
+    vtkCollectionSimpleIterator it;
+    lights->InitTraversal(it);
+    while (vtkLight* light = lights->GetNextLight(it))
     {
-      vtkLightCollection* lights = renderer->GetLights();
-      vtkCollectionSimpleIterator it;
-      lights->InitTraversal(it);
-      while (vtkLight* light = lights->GetNextLight(it))
+      if (light->GetSwitch() && baker->LightCreatesShadow(light))
       {
-        if (light->GetSwitch() && baker->LightCreatesShadow(light))
-        {
-          lights->Modified();
-          break;
-        }
+        lights->Modified();
+        break;
       }
     }
-    vtkOpenGLState::ScopedglViewport bakerViewport(ostate);
-    vtkOpenGLState::ScopedglScissor bakerScissor(ostate);
-    vtkOpenGLState::ScopedglClearColor bakerClearColor(ostate);
-    baker->Render(s);
   }
+  vtkOpenGLState::ScopedglViewport bakerViewport(frame.GL);
+  vtkOpenGLState::ScopedglScissor bakerScissor(frame.GL);
+  vtkOpenGLState::ScopedglClearColor bakerClearColor(frame.GL);
+  baker->Render(frame.State);
+}
 
-  // Effective parameters of this frame.
-  int oracle = this->Oracle;
-  int layers = this->NumberOfLayers;
-  const bool predictsLayer = oracle == PREDICT || oracle == DELAY;
-  if (predictsLayer && layers > 2)
+//------------------------------------------------------------------------------
+// The effective oracle, layer count and minimum separation of this frame.
+void vtkDeepGBufferPass::ChooseLayout(vtkLayerFrame& frame)
+{
+  vtkInternals& in = *this->Internals;
+  frame.Oracle = this->Oracle;
+  frame.Layers = this->NumberOfLayers;
+  if ((frame.Oracle == PREDICT || frame.Oracle == DELAY) && frame.Layers > 2)
   {
-    in.WarnOnce(this, 0,
-      std::string(GetOracleAsString(oracle)) +
+    in.WarnOnce(this, WARN_ORACLE_LAYERS,
+      std::string(GetOracleAsString(frame.Oracle)) +
         " predicts one layer; with more than 2 layers REPROJECT is used.");
-    oracle = REPROJECT;
+    frame.Oracle = REPROJECT;
   }
-  int oracleSlots = (oracle == PREDICT || oracle == DELAY) ? 1 : 0;
-  if (layers + oracleSlots > in.MaximumSlots)
+  frame.OracleSlots = (frame.Oracle == PREDICT || frame.Oracle == DELAY) ? 1 : 0;
+  if (frame.Layers + frame.OracleSlots > in.MaximumSlots)
   {
-    in.WarnOnce(this, 1,
-      "This GPU's geometry shaders allow " + std::to_string(in.MaximumSlots - oracleSlots) +
+    in.WarnOnce(this, WARN_GEOMETRY_SHADER_LAYERS,
+      "This GPU's geometry shaders allow " + std::to_string(in.MaximumSlots - frame.OracleSlots) +
         " layers; NumberOfLayers is limited to that.");
-    layers = std::max(1, in.MaximumSlots - oracleSlots);
+    frame.Layers = std::max(1, in.MaximumSlots - frame.OracleSlots);
   }
-  const int slots = layers + oracleSlots;
-  const bool singlePass = layers > 1 && oracle != DEPTH_PEEL;
+  frame.Slots = frame.Layers + frame.OracleSlots;
+  frame.SinglePass = frame.Layers > 1 && frame.Oracle != DEPTH_PEEL;
 
-  double bounds[6];
-  renderer->ComputeVisiblePropBounds(bounds);
-  double diagonal = 0.0;
-  if (vtkMath::AreBoundsInitialized(bounds))
+  const double diagonal = vtkDeepScreenSpace::VisiblePropDiagonal(frame.Renderer);
+  frame.MinimumSeparation = this->AutomaticMinimumSeparation
+    ? this->AutomaticSeparationFraction * diagonal
+    : this->MinimumSeparation;
+  if (frame.Layers > 1 && diagonal > 0.0 && frame.MinimumSeparation > diagonal)
   {
-    const double extent[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
-    diagonal = vtkMath::Norm(extent);
+    in.WarnOnce(this, WARN_SEPARATION_EXCEEDS_SCENE,
+      "MinimumSeparation " + std::to_string(frame.MinimumSeparation) +
+        " exceeds the scene's size " + std::to_string(diagonal) +
+        ": layers beyond the first will be empty.");
   }
-  double dz = this->AutomaticMinimumSeparation ? this->AutomaticSeparationFraction * diagonal
-                                               : this->MinimumSeparation;
-  if (layers > 1 && diagonal > 0.0 && dz > diagonal)
-  {
-    in.WarnOnce(this, 2,
-      "MinimumSeparation " + std::to_string(dz) + " exceeds the scene's size " +
-        std::to_string(diagonal) + ": layers beyond the first will be empty.");
-  }
+}
 
-  // The renderer's state and targets.
-  auto& slot = in.States[renderer];
+//------------------------------------------------------------------------------
+// The renderer's state and its targets at this frame's size and layout.
+bool vtkDeepGBufferPass::PrepareRendererState(vtkLayerFrame& frame)
+{
+  vtkInternals& in = *this->Internals;
+  auto& slot = in.States[frame.Renderer];
   if (!slot)
   {
     slot.reset(new vtkDeepGBufferRendererState);
-    slot->Renderer = renderer;
+    slot->Renderer = frame.Renderer;
   }
   if (!in.FirstRenderer || !in.States.count(in.FirstRenderer))
   {
-    in.FirstRenderer = renderer;
+    in.FirstRenderer = frame.Renderer;
   }
   vtkDeepGBufferRendererState& state = *slot;
+  frame.RendererState = &state;
   vtkOpenGLClearErrorMacro();
-  if (!AllocateTargets(state, ostate, width, height, slots, std::max(1, layers - 1)) ||
-    !UpdateReflectivityTarget(state, ostate, this->WriteReflectivity))
+  if (!AllocateTargets(state, frame.GL, frame.Width, frame.Height, frame.Slots,
+        std::max(1, frame.Layers - 1)) ||
+    !UpdateReflectivityTarget(state, frame.GL, this->WriteReflectivity))
   {
-    in.WarnOnce(this, 3, "The deep G-buffer's framebuffer is incomplete; rendering without it.");
+    in.WarnOnce(this, WARN_FRAMEBUFFER_INCOMPLETE,
+      "The deep G-buffer's framebuffer is incomplete; rendering without it.");
     state.ReleaseTextures();
-    renderPlain();
     return false;
   }
   state.FrameIndex++;
+  return true;
+}
 
-  // Cameras of this frame and of the other frame the oracle needs.
-  vtkCamera* camera = renderer->GetActiveCamera();
+//------------------------------------------------------------------------------
+// Cameras of this frame and of the other frame the oracle needs (paper
+// section 3.4: REPROJECT and DELAY read the previous frame, PREDICT
+// extrapolates the next one).
+void vtkDeepGBufferPass::UpdateCameras(vtkLayerFrame& frame)
+{
+  vtkInternals& in = *this->Internals;
+  vtkDeepGBufferRendererState& state = *frame.RendererState;
+  vtkCamera* camera = frame.Renderer->GetActiveCamera();
   // The aspect VTK's camera matrices use, so that DELAY's previous-frame
   // matrices match what VTK computed for that frame bit for bit.
-  const double aspect = renderer->GetTiledAspectRatio();
+  const double aspect = frame.Renderer->GetTiledAspectRatio();
   state.PreviousView = state.View;
   state.PreviousProjection = state.Projection;
   state.PreviousFrameProjection = state.FrameProjection;
@@ -1269,8 +1423,9 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
   state.HasPreviousCamera = true;
   camera->GetClippingRange(state.ClippingRange);
 
-  in.OtherUsesPreviousFrame = (oracle == REPROJECT || oracle == DELAY) && hadPreviousCamera;
-  in.OtherIsPrediction = oracle == PREDICT && hadPreviousCamera;
+  in.OtherUsesPreviousFrame =
+    (frame.Oracle == REPROJECT || frame.Oracle == DELAY) && hadPreviousCamera;
+  in.OtherIsPrediction = frame.Oracle == PREDICT && hadPreviousCamera;
   in.OtherView = state.View;
   in.OtherProjection = state.Projection;
   if (in.OtherUsesPreviousFrame)
@@ -1286,212 +1441,201 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
   in.ProjectionZ = ProjectionDepthRows(state.Projection);
   in.OtherProjectionZ = ProjectionDepthRows(in.OtherProjection);
   in.InverseProjection = ToColumnMajor(Invert(state.Projection));
-  in.ViewportSize = { static_cast<float>(width), static_cast<float>(height) };
-  in.MinimumSeparation = static_cast<float>(dz);
+  in.ViewportSize = { static_cast<float>(frame.Width), static_cast<float>(frame.Height) };
+  in.MinimumSeparation = static_cast<float>(frame.MinimumSeparation);
 
   // The history is usable if it was written by the previous frame with the
   // same layout and the meaning this oracle expects.
-  const bool historyUsable = state.HistoryValid && hadPreviousCamera &&
-    state.HistoryNumberOfLayers == layers && state.HistoryIsPredicted == (oracleSlots == 1);
+  frame.HistoryUsable = state.HistoryValid && hadPreviousCamera &&
+    state.HistoryNumberOfLayers == frame.Layers &&
+    state.HistoryIsPredicted == (frame.OracleSlots == 1);
+}
 
-  // Classify props; a change of routing or layout rebuilds the shaders.
-  std::vector<vtkProp*> routedProps, otherProps;
+//------------------------------------------------------------------------------
+// Which props the geometry shader routes to every layer; a change of routing
+// or layout rebuilds the shaders.
+void vtkDeepGBufferPass::ClassifyProps(vtkLayerFrame& frame)
+{
+  vtkInternals& in = *this->Internals;
   // Props seen for the first time get fresh shaders anyway; only a prop
   // whose routing changed needs the rebuild (renderers sharing this pass
   // each classify their own props without invalidating the others').
   bool rebuild = false;
-  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  for (int i = 0; i < frame.State->GetPropArrayCount(); ++i)
   {
-    vtkProp* prop = s->GetPropArray()[i];
-    const bool routed = singlePass && IsRoutable(prop);
+    vtkProp* prop = frame.State->GetPropArray()[i];
+    const bool routed = frame.SinglePass && IsRoutable(prop);
     auto inserted = in.RoutedProps.insert({ prop, routed });
     if (!inserted.second && inserted.first->second != routed)
     {
       inserted.first->second = routed;
       rebuild = true;
     }
-    (routed ? routedProps : otherProps).push_back(prop);
+    (routed ? frame.RoutedProps : frame.OtherProps).push_back(prop);
   }
-  const int geometryShaderSlots = singlePass ? slots : 0;
+  const int geometryShaderSlots = frame.SinglePass ? frame.Slots : 0;
   if (rebuild || geometryShaderSlots != in.GeometryShaderSlots ||
-    layers != in.GeometryShaderLayers)
+    frame.Layers != in.GeometryShaderLayers)
   {
     in.GeometryShaderSlots = geometryShaderSlots;
-    in.GeometryShaderLayers = layers;
+    in.GeometryShaderLayers = frame.Layers;
     in.ShaderStageTime.Modified();
   }
+}
 
-  // Bind the history for the separation tests.
-  vtkTextureUnitManager* units = window->GetTextureUnitManager();
+//------------------------------------------------------------------------------
+// Binds the history the separation tests read, clears the layers and draws
+// them, directly or through VTK's shadow pass; restores the OpenGL state.
+bool vtkDeepGBufferPass::DrawFrame(vtkLayerFrame& frame)
+{
+  vtkInternals& in = *this->Internals;
+  vtkDeepGBufferRendererState& state = *frame.RendererState;
+  vtkOpenGLState* ostate = frame.GL;
+  vtkTextureUnitManager* units = frame.Window->GetTextureUnitManager();
   in.HistoryUnit = units->Allocate();
   if (in.HistoryUnit < 0)
   {
     vtkErrorMacro("No free texture unit for the deep G-buffer.");
-    renderPlain();
     return false;
   }
   ostate->vtkglActiveTexture(GL_TEXTURE0 + in.HistoryUnit);
   glBindTexture(GL_TEXTURE_2D_ARRAY, state.HistoryTexture);
-
   ostate->PushFramebufferBindings();
-  vtkOpenGLState::ScopedglViewport savedViewport(ostate);
-  vtkOpenGLState::ScopedglScissor savedScissor(ostate);
-  vtkOpenGLState::ScopedglClearColor savedClearColor(ostate);
-  vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
-  ostate->vtkglViewport(0, 0, width, height);
-  ostate->vtkglScissor(0, 0, width, height);
-  ostate->vtkglDepthMask(GL_TRUE);
-
-  // Clear every layer: distance 0 marks an empty pixel.
-  BindTarget(ostate, state.LayeredFramebuffer);
-  const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
-  for (int q = 0; q < NUMBER_OF_QUANTITIES; ++q)
   {
-    if (state.Textures[q])
-    {
-      glClearBufferfv(GL_COLOR, q, zero);
-    }
-  }
-  const float farDepth = 1.0f;
-  glClearBufferfv(GL_DEPTH, 0, &farDepth);
-
-  // Everything from here to PostRender draws the layers; with shadow maps it
-  // runs inside vtkShadowMapPass::Render (see SetShadowMapPass).
-  int geometryPasses = 0;
-  bool routedDone = false;
-  bool peeled = false;
-  auto drawLayers = [&](const vtkRenderState*) {
-    this->PreRender(s);
-    in.Current = &state;
-    in.OracleLayerIndex = oracleSlots ? layers : -1;
-    const int allOracleMask = oracleSlots ? (1 << layers) : 0;
-    // DELAY rasterises the displayed layers at the previous frame's
-    // positions; its oracle layer at the current ones (Listing 2, lines 3-6).
-    const int delayedLayersMask = (oracle == DELAY) ? ((1 << layers) - 1) : 0;
-    const int predictedLayerMask = (oracle == PREDICT) ? allOracleMask : 0;
-    in.OtherClipLayerMask = delayedLayersMask | predictedLayerMask;
-
-    auto draw = [&](const std::vector<vtkProp*>& props) {
-      for (vtkProp* prop : props)
-      {
-        prop->RenderOpaqueGeometry(renderer);
-      }
-    };
-
-    if (!routedProps.empty() && historyUsable)
-    {
-      // Paper Listing 2: one submission fills every layer.
-      BindTarget(ostate, state.LayeredFramebuffer);
-      in.EmitMask = (1 << slots) - 1;
-      in.TargetLayer = 0;
-      in.TestMode = oracle == REPROJECT ? TEST_REPROJECTED : TEST_SAME_PIXEL;
-      draw(routedProps);
-      routedDone = true;
-      geometryPasses = 1;
-    }
-
-    // Paper Listing 1: one submission per layer, each tested against the
-    // layer before it in this frame, for whatever the single pass did not draw.
-    const bool peelRouted = !routedDone && !routedProps.empty();
-    for (int j = 0; j < layers; ++j)
-    {
-      if (!peelRouted && otherProps.empty())
-      {
-        break;
-      }
-      peeled = true;
-      if (j > 0)
-      {
-        CopyDistanceLayer(state, j - 1, j - 1);
-      }
-      in.TestMode = j > 0 ? TEST_SAME_PIXEL : TEST_NONE;
-      if (peelRouted)
-      {
-        BindTarget(ostate, state.LayeredFramebuffer);
-        in.EmitMask = (1 << j) | (j == 0 ? allOracleMask : 0);
-        in.TargetLayer = 0;
-        draw(routedProps);
-      }
-      if (!otherProps.empty())
-      {
-        BindTarget(ostate, state.LayerFramebuffers[j]);
-        in.EmitMask = 1 << j;
-        in.TargetLayer = j;
-        draw(otherProps);
-      }
-      ++geometryPasses;
-    }
-
-    // History for the next frame (Listing 2 reads Z_{t-1}).
-    if (oracleSlots)
-    {
-      CopyDistanceLayer(state, layers, 0);
-    }
-    else if (!peeled)
-    {
-      // Peeling copied each layer before drawing the next; a single pass did not.
-      for (int j = 0; j + 1 < layers; ++j)
-      {
-        CopyDistanceLayer(state, j, j);
-      }
-    }
-    state.HistoryValid = true;
-    state.HistoryIsPredicted = oracleSlots == 1;
-    state.HistoryNumberOfLayers = layers;
-
-    in.Current = nullptr;
-    this->PostRender(s);
-  };
-  if (shadows)
-  {
-    // The user's opaque sequence of the shadow pass is put back after the draw.
-    vtkSmartPointer<vtkRenderPass> shadowSequence = shadows->GetOpaqueSequence();
-    in.DrawStep->Draw = drawLayers;
-    shadows->SetOpaqueSequence(in.DrawStep);
-    shadows->Render(s);
-    shadows->SetOpaqueSequence(shadowSequence);
-    in.DrawStep->Draw = nullptr;
-  }
-  else
-  {
-    drawLayers(s);
+    vtkOpenGLState::ScopedglViewport savedViewport(ostate);
+    vtkOpenGLState::ScopedglScissor savedScissor(ostate);
+    vtkOpenGLState::ScopedglClearColor savedClearColor(ostate);
+    vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
+    ostate->vtkglViewport(0, 0, frame.Width, frame.Height);
+    ostate->vtkglScissor(0, 0, frame.Width, frame.Height);
+    ostate->vtkglDepthMask(GL_TRUE);
+    ClearLayers(state, ostate);
+    this->DrawLayersWithShadows(frame);
   }
   ostate->PopFramebufferBindings();
   ostate->vtkglActiveTexture(GL_TEXTURE0 + in.HistoryUnit);
   glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
   units->Free(in.HistoryUnit);
   in.HistoryUnit = -1;
+  return true;
+}
 
-  // Forget props that no longer exist.
-  for (auto it = state.PropLiveness.begin(); it != state.PropLiveness.end();)
+//------------------------------------------------------------------------------
+// Everything from here to PostRender draws the layers; with shadow maps it
+// runs inside vtkShadowMapPass::Render (see SetShadowMapPass), whose opaque
+// sequence is the user's again afterwards.
+void vtkDeepGBufferPass::DrawLayersWithShadows(vtkLayerFrame& frame)
+{
+  vtkInternals& in = *this->Internals;
+  vtkShadowMapPass* shadows = this->ShadowMapPass && this->ShadowMapPass->GetShadowMapBakerPass()
+    ? this->ShadowMapPass
+    : nullptr;
+  if (!shadows)
   {
-    if (!it->second)
-    {
-      state.Props.erase(it->first);
-      it = state.PropLiveness.erase(it);
-    }
-    else
-    {
-      ++it;
-    }
+    this->DrawLayers(frame);
+    return;
   }
+  vtkSmartPointer<vtkRenderPass> shadowSequence = shadows->GetOpaqueSequence();
+  in.DrawStep->Draw = [this, &frame](const vtkRenderState*) { this->DrawLayers(frame); };
+  shadows->SetOpaqueSequence(in.DrawStep);
+  shadows->Render(frame.State);
+  shadows->SetOpaqueSequence(shadowSequence);
+  in.DrawStep->Draw = nullptr;
+}
 
-  state.RenderedLayers = layers;
-  state.LayerView = oracle == DELAY ? in.OtherView : state.View;
-  state.LayerProjection = oracle == DELAY ? in.OtherProjection : state.Projection;
-  state.LayerFrameProjection = oracle == DELAY && in.OtherUsesPreviousFrame
+//------------------------------------------------------------------------------
+// One submission fills every layer when the history allows it (paper
+// Listing 2); the layers the single pass did not draw are peeled one
+// submission per layer (Listing 1). Then the history of the next frame.
+void vtkDeepGBufferPass::DrawLayers(vtkLayerFrame& frame)
+{
+  vtkInternals& in = *this->Internals;
+  this->PreRender(frame.State);
+  in.Current = frame.RendererState;
+  in.OracleLayerIndex = frame.OracleSlots ? frame.Layers : -1;
+  // DELAY rasterises the displayed layers at the previous frame's
+  // positions; its oracle layer at the current ones (Listing 2, lines 3-6).
+  const int allOracleMask = frame.OracleSlots ? (1 << frame.Layers) : 0;
+  const int delayedLayersMask = (frame.Oracle == DELAY) ? ((1 << frame.Layers) - 1) : 0;
+  const int predictedLayerMask = (frame.Oracle == PREDICT) ? allOracleMask : 0;
+  in.OtherClipLayerMask = delayedLayersMask | predictedLayerMask;
+
+  if (!frame.RoutedProps.empty() && frame.HistoryUsable)
+  {
+    frame.GL->vtkglBindFramebuffer(GL_FRAMEBUFFER, frame.RendererState->LayeredFramebuffer);
+    in.EmitMask = (1 << frame.Slots) - 1;
+    in.TargetLayer = 0;
+    in.TestMode = frame.Oracle == REPROJECT ? TEST_REPROJECTED : TEST_SAME_PIXEL;
+    DrawOpaque(frame.RoutedProps, frame.Renderer);
+    frame.RoutedDone = true;
+    frame.GeometryPasses = 1;
+  }
+  const bool peeled = this->PeelLayers(frame, allOracleMask);
+  StoreHistory(*frame.RendererState, frame.Layers, frame.OracleSlots, peeled);
+  in.Current = nullptr;
+  this->PostRender(frame.State);
+}
+
+//------------------------------------------------------------------------------
+// Paper Listing 1: one submission per layer, each tested against the layer
+// before it in this frame, for whatever the single pass did not draw.
+// Returns whether anything was peeled.
+bool vtkDeepGBufferPass::PeelLayers(vtkLayerFrame& frame, int allOracleMask)
+{
+  vtkInternals& in = *this->Internals;
+  vtkDeepGBufferRendererState& state = *frame.RendererState;
+  const bool peelRouted = !frame.RoutedDone && !frame.RoutedProps.empty();
+  if (!peelRouted && frame.OtherProps.empty())
+  {
+    return false;
+  }
+  for (int j = 0; j < frame.Layers; ++j)
+  {
+    if (j > 0)
+    {
+      CopyDistanceLayer(state, j - 1, j - 1);
+    }
+    in.TestMode = j > 0 ? TEST_SAME_PIXEL : TEST_NONE;
+    if (peelRouted)
+    {
+      frame.GL->vtkglBindFramebuffer(GL_FRAMEBUFFER, state.LayeredFramebuffer);
+      in.EmitMask = (1 << j) | (j == 0 ? allOracleMask : 0);
+      in.TargetLayer = 0;
+      DrawOpaque(frame.RoutedProps, frame.Renderer);
+    }
+    if (!frame.OtherProps.empty())
+    {
+      frame.GL->vtkglBindFramebuffer(GL_FRAMEBUFFER, state.LayerFramebuffers[j]);
+      in.EmitMask = 1 << j;
+      in.TargetLayer = j;
+      DrawOpaque(frame.OtherProps, frame.Renderer);
+    }
+    ++frame.GeometryPasses;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// What later passes and captures read about this frame's layers.
+void vtkDeepGBufferPass::RecordFrame(const vtkLayerFrame& frame)
+{
+  const vtkInternals& in = *this->Internals;
+  vtkDeepGBufferRendererState& state = *frame.RendererState;
+  const bool delayed = frame.Oracle == DELAY;
+  state.RenderedLayers = frame.Layers;
+  state.LayerView = delayed ? in.OtherView : state.View;
+  state.LayerProjection = delayed ? in.OtherProjection : state.Projection;
+  state.LayerFrameProjection = delayed && in.OtherUsesPreviousFrame
     ? state.PreviousFrameProjection
     : state.FrameProjection;
-  state.GuardBand = guard;
-  this->EffectiveGuardBand = guard;
-  state.MinimumSeparation = dz;
-  state.Oracle = routedDone ? oracle : DEPTH_PEEL;
-  this->EffectiveMinimumSeparation = dz;
-  this->EffectiveNumberOfLayers = layers;
+  state.GuardBand = frame.Guard;
+  state.MinimumSeparation = frame.MinimumSeparation;
+  state.Oracle = frame.RoutedDone ? frame.Oracle : DEPTH_PEEL;
+  this->EffectiveGuardBand = frame.Guard;
+  this->EffectiveMinimumSeparation = frame.MinimumSeparation;
+  this->EffectiveNumberOfLayers = frame.Layers;
   this->EffectiveOracle = state.Oracle;
-  this->LastGeometryPassCount = geometryPasses;
-  vtkOpenGLCheckErrorMacro("failed after building the deep G-buffer");
-  return true;
+  this->LastGeometryPassCount = frame.GeometryPasses;
 }
 
 //------------------------------------------------------------------------------

@@ -447,6 +447,22 @@ private:
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
+
+  // The stages of RenderLayers, in order (vtkLayerFrame carries what one
+  // frame decided from stage to stage).
+  struct vtkLayerFrame;
+  bool BeginLayerFrame(const vtkRenderState* s, vtkLayerFrame& frame);
+  void CheckContext(vtkOpenGLRenderWindow* window);
+  void BakeShadowMaps(vtkLayerFrame& frame);
+  void ChooseLayout(vtkLayerFrame& frame);
+  bool PrepareRendererState(vtkLayerFrame& frame);
+  void UpdateCameras(vtkLayerFrame& frame);
+  void ClassifyProps(vtkLayerFrame& frame);
+  bool DrawFrame(vtkLayerFrame& frame);
+  void DrawLayersWithShadows(vtkLayerFrame& frame);
+  void DrawLayers(vtkLayerFrame& frame);
+  bool PeelLayers(vtkLayerFrame& frame, int allOracleMask);
+  void RecordFrame(const vtkLayerFrame& frame);
 };
 
 #endif
