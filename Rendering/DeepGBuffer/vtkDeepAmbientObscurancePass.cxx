@@ -92,6 +92,7 @@ struct vtkDeepAmbientObscuranceRendererState
   double PreviousProjection[16];
   vtkDeepScreenSpace::RenderCounter Renders;
   unsigned int FrameIndex = 0;
+  double RotationOffset = 0.0; // of the spiral taps in the current frame, radians
 
   void ResetHistory(vtkWindow* w)
   {
@@ -441,54 +442,78 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState* s)
 {
-  vtkInternals& in = *this->Internals;
-  vtkOpenGLRenderer* renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
-  vtkDeepGBufferPass* gbuffer = this->GBufferPass;
-  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  vtkOpenGLState* ostate = window->GetState();
   vtkOpenGLClearErrorMacro();
-
-  LayerFrame frame;
-  if (!this->GetLayerFrame(renderer, "UpdateAmbientVisibility", frame))
+  EffectFrame frame;
+  if (!this->BeginEffectFrame(s, "UpdateAmbientVisibility", this->GuardBandShadedFraction, frame))
   {
     return false;
   }
-  const double* view = frame.View;
-  const double* projection = frame.Projection;
-  const int layers = frame.Layers;
-  const int width = frame.Size[0], height = frame.Size[1];
-  const int guardBand = frame.GuardBand;
-  int region[4];
-  vtkDeepScreenSpace::ShadedRegion(frame.Size, guardBand, this->GuardBandShadedFraction, region);
-
-  // Effective radius.
-  double radius = this->Radius;
-  if (this->AutomaticRadius)
-  {
-    radius = this->AutomaticRadiusFraction * vtkDeepScreenSpace::VisiblePropDiagonal(renderer);
-  }
+  const double radius = this->AutomaticRadius
+    ? this->AutomaticRadiusFraction * vtkDeepScreenSpace::VisiblePropDiagonal(frame.Renderer)
+    : this->Radius;
   this->EffectiveRadius = radius;
-
-  vtkDeepAmbientObscuranceRendererState& state = in.States.Get(renderer);
+  vtkDeepAmbientObscuranceRendererState& state = this->Internals->States.Get(frame.Renderer);
   state.HasFrame = false;
-  // Temporal history: reset when off, on a resize or a new shaded region,
-  // and when this renderer was rendered without this pass since the
-  // history's frame.
+  const bool temporal = this->TemporalAlpha > 0.0 && frame.Layers > 0;
+  if (!this->PrepareTargets(frame, state, temporal))
+  {
+    return false;
+  }
+
+  vtkDeepGBufferPass* gbuffer = this->GBufferPass;
+  const int distanceUnit = gbuffer->ActivateTexture(frame.Renderer, vtkDeepGBufferPass::DEPTH);
+  const int normalUnit = gbuffer->ActivateTexture(frame.Renderer, vtkDeepGBufferPass::NORMAL);
+  {
+    vtkOpenGLState* ostate = frame.GL;
+    vtkOpenGLState::ScopedglViewport savedViewport(ostate);
+    vtkOpenGLState::ScopedglEnableDisable savedScissorTest(ostate, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglScissor savedScissor(ostate);
+    vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
+    ostate->vtkglDisable(GL_SCISSOR_TEST);
+    ostate->vtkglDisable(GL_BLEND);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    ostate->PushFramebufferBindings();
+    this->ComputeRawVisibility(frame, state, radius, distanceUnit, normalUnit);
+    this->FilterVisibility(frame, state, distanceUnit, normalUnit);
+    if (temporal)
+    {
+      this->AccumulateVisibility(frame, state, distanceUnit);
+    }
+    this->Internals->Framebuffer->RemoveColorAttachment(0);
+    ostate->PopFramebufferBindings();
+  }
+  gbuffer->DeactivateTexture(frame.Renderer, vtkDeepGBufferPass::NORMAL);
+  gbuffer->DeactivateTexture(frame.Renderer, vtkDeepGBufferPass::DEPTH);
+  state.HasFrame = true;
+  state.Radius = radius;
+  state.NumberOfSamples = this->NumberOfSamples;
+  vtkOpenGLCheckErrorMacro("failed after the ambient obscurance");
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// The renderer's history (reset when the temporal filter is off, on a
+// resize or a new shaded region, and when this renderer was rendered
+// without this pass since the history's frame), this frame's rotation, the
+// targets and the programs.
+bool vtkDeepAmbientObscurancePass::PrepareTargets(
+  const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state, bool temporal)
+{
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLRenderWindow* window = frame.Window;
+  const int width = frame.Size[0], height = frame.Size[1];
   const bool consecutive = state.Renders.Consecutive();
-  const bool temporal = this->TemporalAlpha > 0.0 && layers > 0;
   if (!temporal || !consecutive || state.Width != width || state.Height != height ||
-    !std::equal(region, region + 4, state.ShadedRegion))
+    !std::equal(frame.Region, frame.Region + 4, state.ShadedRegion))
   {
     state.ResetHistory(window);
   }
   state.Temporal = false;
-  double rotationOffset = 0.0;
+  state.RotationOffset = 0.0;
   if (temporal)
   {
-    // Golden-ratio sequence of rotations: frame k adds 2 pi fract(k / golden ratio).
-    ++state.FrameIndex;
-    const double f = 0.6180339887498949 * static_cast<double>(state.FrameIndex % 1000003u);
-    rotationOffset = 2.0 * vtkMath::Pi() * (f - std::floor(f));
+    state.RotationOffset = RotationOffset(++state.FrameIndex);
   }
   for (auto& t : state.Targets)
   {
@@ -500,14 +525,13 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
   }
   state.Width = width;
   state.Height = height;
-  state.GuardBand = guardBand;
-  std::copy(region, region + 4, state.ShadedRegion);
+  state.GuardBand = frame.GuardBand;
+  std::copy(frame.Region, frame.Region + 4, state.ShadedRegion);
   if (!in.Framebuffer)
   {
     in.Framebuffer = vtkOpenGLFramebufferObject::New();
     in.Framebuffer->SetContext(window);
   }
-
   const bool aoReady = ReadyQuad(in.AOQuad, window, vtkDeepAmbientObscuranceFS);
   const bool blurReady = ReadyQuad(in.BlurQuad, window, vtkDeepAmbientObscuranceBlurFS);
   const bool minifyReady = ReadyQuad(in.MinifyQuad, window, vtkDeepAmbientObscuranceMinifyFS);
@@ -518,146 +542,126 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
     vtkErrorMacro("The ambient obscurance shaders failed to compile.");
     return false;
   }
-
-  // Projection terms of deepPositionFromDistance (row-major P).
-  float projXY[4], projT[4];
-  vtkDeepScreenSpace::ProjectionUniforms(projection, projXY, projT);
-
-  const int distanceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
-  const int normalUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::NORMAL);
-
-  {
-    vtkOpenGLState::ScopedglViewport savedViewport(ostate);
-    vtkOpenGLState::ScopedglEnableDisable savedScissorTest(ostate, GL_SCISSOR_TEST);
-    vtkOpenGLState::ScopedglScissor savedScissor(ostate);
-    vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
-    ostate->vtkglDisable(GL_SCISSOR_TEST);
-    ostate->vtkglDisable(GL_BLEND);
-    ostate->vtkglDisable(GL_DEPTH_TEST);
-    ostate->PushFramebufferBindings();
-    const int mipUnit = this->BuildDistancePyramid(state, window, distanceUnit, std::max(1, layers));
-    in.Framebuffer->Bind();
-    ostate->vtkglViewport(0, 0, width, height);
-    // AV is computed for the frame and GuardBandShadedFraction of the guard
-    // band; its taps read the whole layers.
-    ostate->vtkglEnable(GL_SCISSOR_TEST);
-    ostate->vtkglScissor(region[0], region[1], region[2] - region[0], region[3] - region[1]);
-
-    // Equations 1-2 into RAW.
-    in.Framebuffer->AddColorAttachment(0, state.Targets[RAW]);
-    in.Framebuffer->ActivateDrawBuffers(1);
-    vtkShaderProgram* program = in.AOQuad->Program;
-    window->GetShaderCache()->ReadyShaderProgram(program);
-    program->SetUniformi("deepDistance", distanceUnit);
-    program->SetUniformi("deepNormal", normalUnit);
-    program->SetUniform4f("deepProjXY", projXY);
-    program->SetUniform4f("deepProjT", projT);
-    program->SetUniformi("deepLayers", this->UseSecondLayer ? std::max(1, layers) : 1);
-    program->SetUniformi("deepSamples", this->NumberOfSamples);
-    program->SetUniformf("deepTurns", static_cast<float>(GetSpiralTurns(this->NumberOfSamples)));
-    program->SetUniformf("deepRadius", static_cast<float>(radius));
-    program->SetUniformf("deepBias", static_cast<float>(this->Bias * radius));
-    program->SetUniformf("deepEpsilon",
-      static_cast<float>(std::max(this->Epsilon * radius * radius, 1e-30)));
-    program->SetUniformf("deepIntensity", static_cast<float>(this->Intensity));
-    program->SetUniformi("deepDistanceMip", mipUnit >= 0 ? mipUnit : distanceUnit);
-    program->SetUniformi("deepMaxMip", mipUnit >= 0 ? state.MipLevels - 1 : 0);
-    program->SetUniformf("deepMipThreshold", static_cast<float>(this->MipThreshold));
-    program->SetUniformf("deepRotationOffset", static_cast<float>(rotationOffset));
-    in.AOQuad->Render();
-    if (mipUnit >= 0)
-    {
-      ostate->vtkglActiveTexture(GL_TEXTURE0 + mipUnit);
-      glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-      window->GetTextureUnitManager()->Free(mipUnit);
-    }
-
-    // Separable bilateral reconstruction: RAW -> BLUR_TEMP -> FILTERED.
-    const int passes[2][3] = { { RAW, BLUR_TEMP, 0 }, { BLUR_TEMP, FILTERED, 1 } };
-    program = in.BlurQuad->Program;
-    for (const auto& pass : passes)
-    {
-      in.Framebuffer->AddColorAttachment(0, state.Targets[pass[1]]);
-      in.Framebuffer->ActivateDrawBuffers(1);
-      window->GetShaderCache()->ReadyShaderProgram(program);
-      vtkDeepScreenSpace::SetShadedRegionUniforms(program, region);
-      vtkTextureObject* input = state.Targets[pass[0]];
-      input->Activate();
-      program->SetUniformi("deepInput", input->GetTextureUnit());
-      program->SetUniformi("deepDistance", distanceUnit);
-      program->SetUniformi("deepNormal", normalUnit);
-      program->SetUniform4f("deepProjXY", projXY);
-      program->SetUniform4f("deepProjT", projT);
-      const int axis[2] = { pass[2] == 0 ? 1 : 0, pass[2] == 0 ? 0 : 1 };
-      program->SetUniform2i("deepAxis", axis);
-      program->SetUniformi("deepBlurRadius", this->BlurRadius);
-      program->SetUniformf("deepPlaneTolerance", static_cast<float>(this->BlurPlaneTolerance));
-      program->SetUniformf("deepNormalPower", static_cast<float>(this->BlurNormalPower));
-      in.BlurQuad->Render();
-      input->Deactivate();
-    }
-
-    // Temporal accumulation: FILTERED + History[current] -> History[other].
-    if (temporal)
-    {
-      bool allocated = true;
-      for (auto& t : state.History)
-      {
-        allocated = allocated && AllocateTarget(t, window, width, height, 2);
-      }
-      if (allocated)
-      {
-        const int next = 1 - state.HistoryCurrent;
-        in.Framebuffer->AddColorAttachment(0, state.History[next]);
-        in.Framebuffer->ActivateDrawBuffers(1);
-        program = in.TemporalQuad->Program;
-        window->GetShaderCache()->ReadyShaderProgram(program);
-        vtkDeepScreenSpace::SetShadedRegionUniforms(program, region);
-        vtkTextureObject* input = state.Targets[FILTERED];
-        vtkTextureObject* history = state.History[state.HistoryCurrent];
-        input->Activate();
-        history->Activate();
-        float toPreviousGL[16], previousProjectionGL[16];
-        vtkDeepScreenSpace::ReprojectionUniforms(view, projection, state.HistoryValid,
-          state.PreviousView, state.PreviousProjection, toPreviousGL, previousProjectionGL);
-        program->SetUniformi("deepInput", input->GetTextureUnit());
-        program->SetUniformi("deepHistory", history->GetTextureUnit());
-        program->SetUniformi("deepDistance", distanceUnit);
-        program->SetUniform4f("deepProjXY", projXY);
-        program->SetUniform4f("deepProjT", projT);
-        program->SetUniformMatrix4x4("deepToPrevious", toPreviousGL);
-        program->SetUniformMatrix4x4("deepPrevProjection", previousProjectionGL);
-        program->SetUniformf("deepAlpha", static_cast<float>(this->TemporalAlpha));
-        program->SetUniformi("deepHasHistory", state.HistoryValid ? 1 : 0);
-        program->SetUniformf("deepTolerance", static_cast<float>(TEMPORAL_DISTANCE_TOLERANCE));
-        in.TemporalQuad->Render();
-        history->Deactivate();
-        input->Deactivate();
-        state.HistoryCurrent = next;
-        state.HistoryValid = true;
-        state.Temporal = true;
-        std::copy(view, view + 16, state.PreviousView);
-        std::copy(projection, projection + 16, state.PreviousProjection);
-      }
-      else
-      {
-        vtkErrorMacro("Could not allocate the temporal history; AV is not accumulated.");
-        state.ResetHistory(window);
-      }
-    }
-    in.Framebuffer->RemoveColorAttachment(0);
-    ostate->PopFramebufferBindings();
-  }
-
-
-  gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::NORMAL);
-  gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
-  state.HasFrame = true;
-  state.Radius = radius;
-  state.NumberOfSamples = this->NumberOfSamples;
-  vtkOpenGLCheckErrorMacro("failed after the ambient obscurance");
   return true;
+}
+
+//------------------------------------------------------------------------------
+// Equations 1-2 into RAW, for the frame and GuardBandShadedFraction of the
+// guard band (the scissor); the taps read the whole layers, far ones from
+// the distance pyramid (section 3.4).
+void vtkDeepAmbientObscurancePass::ComputeRawVisibility(const EffectFrame& frame,
+  vtkDeepAmbientObscuranceRendererState& state, double radius, int distanceUnit, int normalUnit)
+{
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLState* ostate = frame.GL;
+  const int mipUnit =
+    this->BuildDistancePyramid(state, frame.Window, distanceUnit, std::max(1, frame.Layers));
+  in.Framebuffer->Bind();
+  ostate->vtkglViewport(0, 0, frame.Size[0], frame.Size[1]);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
+  const int* region = frame.Region;
+  ostate->vtkglScissor(region[0], region[1], region[2] - region[0], region[3] - region[1]);
+  in.Framebuffer->AddColorAttachment(0, state.Targets[RAW]);
+  in.Framebuffer->ActivateDrawBuffers(1);
+  vtkShaderProgram* program = in.AOQuad->Program;
+  frame.Window->GetShaderCache()->ReadyShaderProgram(program);
+  SetLayerUniforms(program, frame, distanceUnit, normalUnit);
+  program->SetUniformi("deepLayers", this->UseSecondLayer ? std::max(1, frame.Layers) : 1);
+  program->SetUniformi("deepSamples", this->NumberOfSamples);
+  program->SetUniformf("deepTurns", static_cast<float>(GetSpiralTurns(this->NumberOfSamples)));
+  program->SetUniformf("deepRadius", static_cast<float>(radius));
+  program->SetUniformf("deepBias", static_cast<float>(this->Bias * radius));
+  program->SetUniformf(
+    "deepEpsilon", static_cast<float>(std::max(this->Epsilon * radius * radius, 1e-30)));
+  program->SetUniformf("deepIntensity", static_cast<float>(this->Intensity));
+  program->SetUniformi("deepDistanceMip", mipUnit >= 0 ? mipUnit : distanceUnit);
+  program->SetUniformi("deepMaxMip", mipUnit >= 0 ? state.MipLevels - 1 : 0);
+  program->SetUniformf("deepMipThreshold", static_cast<float>(this->MipThreshold));
+  program->SetUniformf("deepRotationOffset", static_cast<float>(state.RotationOffset));
+  in.AOQuad->Render();
+  if (mipUnit >= 0)
+  {
+    ostate->vtkglActiveTexture(GL_TEXTURE0 + mipUnit);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    frame.Window->GetTextureUnitManager()->Free(mipUnit);
+  }
+}
+
+//------------------------------------------------------------------------------
+// Separable bilateral reconstruction (section 3.4): RAW -> BLUR_TEMP -> FILTERED.
+void vtkDeepAmbientObscurancePass::FilterVisibility(const EffectFrame& frame,
+  vtkDeepAmbientObscuranceRendererState& state, int distanceUnit, int normalUnit)
+{
+  vtkInternals& in = *this->Internals;
+  const int passes[2][3] = { { RAW, BLUR_TEMP, 0 }, { BLUR_TEMP, FILTERED, 1 } };
+  vtkShaderProgram* program = in.BlurQuad->Program;
+  for (const auto& pass : passes)
+  {
+    in.Framebuffer->AddColorAttachment(0, state.Targets[pass[1]]);
+    in.Framebuffer->ActivateDrawBuffers(1);
+    frame.Window->GetShaderCache()->ReadyShaderProgram(program);
+    vtkDeepScreenSpace::SetShadedRegionUniforms(program, frame.Region);
+    vtkTextureObject* input = state.Targets[pass[0]];
+    input->Activate();
+    program->SetUniformi("deepInput", input->GetTextureUnit());
+    SetLayerUniforms(program, frame, distanceUnit, normalUnit);
+    const int axis[2] = { pass[2] == 0 ? 1 : 0, pass[2] == 0 ? 0 : 1 };
+    program->SetUniform2i("deepAxis", axis);
+    program->SetUniformi("deepBlurRadius", this->BlurRadius);
+    program->SetUniformf("deepPlaneTolerance", static_cast<float>(this->BlurPlaneTolerance));
+    program->SetUniformf("deepNormalPower", static_cast<float>(this->BlurNormalPower));
+    in.BlurQuad->Render();
+    input->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+// Temporal accumulation: FILTERED + History[current] -> History[other], the
+// history reprojected with the previous frame's camera.
+void vtkDeepAmbientObscurancePass::AccumulateVisibility(
+  const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state, int distanceUnit)
+{
+  vtkInternals& in = *this->Internals;
+  bool allocated = true;
+  for (auto& t : state.History)
+  {
+    allocated = allocated && AllocateTarget(t, frame.Window, frame.Size[0], frame.Size[1], 2);
+  }
+  if (!allocated)
+  {
+    vtkErrorMacro("Could not allocate the temporal history; AV is not accumulated.");
+    state.ResetHistory(frame.Window);
+    return;
+  }
+  const int next = 1 - state.HistoryCurrent;
+  in.Framebuffer->AddColorAttachment(0, state.History[next]);
+  in.Framebuffer->ActivateDrawBuffers(1);
+  vtkShaderProgram* program = in.TemporalQuad->Program;
+  frame.Window->GetShaderCache()->ReadyShaderProgram(program);
+  vtkDeepScreenSpace::SetShadedRegionUniforms(program, frame.Region);
+  vtkTextureObject* input = state.Targets[FILTERED];
+  vtkTextureObject* history = state.History[state.HistoryCurrent];
+  input->Activate();
+  history->Activate();
+  float toPreviousGL[16], previousProjectionGL[16];
+  vtkDeepScreenSpace::ReprojectionUniforms(frame.View, frame.Projection, state.HistoryValid,
+    state.PreviousView, state.PreviousProjection, toPreviousGL, previousProjectionGL);
+  program->SetUniformi("deepInput", input->GetTextureUnit());
+  program->SetUniformi("deepHistory", history->GetTextureUnit());
+  SetLayerUniforms(program, frame, distanceUnit, -1);
+  program->SetUniformMatrix4x4("deepToPrevious", toPreviousGL);
+  program->SetUniformMatrix4x4("deepPrevProjection", previousProjectionGL);
+  program->SetUniformf("deepAlpha", static_cast<float>(this->TemporalAlpha));
+  program->SetUniformi("deepHasHistory", state.HistoryValid ? 1 : 0);
+  program->SetUniformf("deepTolerance", static_cast<float>(TEMPORAL_DISTANCE_TOLERANCE));
+  in.TemporalQuad->Render();
+  history->Deactivate();
+  input->Deactivate();
+  state.HistoryCurrent = next;
+  state.HistoryValid = true;
+  state.Temporal = true;
+  std::copy(frame.View, frame.View + 16, state.PreviousView);
+  std::copy(frame.Projection, frame.Projection + 16, state.PreviousProjection);
 }
 
 //------------------------------------------------------------------------------

@@ -408,6 +408,18 @@ protected:
   int BuildDistancePyramid(vtkDeepAmbientObscuranceRendererState& state,
     vtkOpenGLRenderWindow* window, int distanceUnit, int layers);
 
+  ///@{
+  /// The stages of UpdateAmbientVisibility, in order.
+  bool PrepareTargets(
+    const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state, bool temporal);
+  void ComputeRawVisibility(const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state,
+    double radius, int distanceUnit, int normalUnit);
+  void FilterVisibility(const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state,
+    int distanceUnit, int normalUnit);
+  void AccumulateVisibility(
+    const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state, int distanceUnit);
+  ///@}
+
   double Radius = 1.0;
   bool AutomaticRadius = true;
   double AutomaticRadiusFraction = 0.05;

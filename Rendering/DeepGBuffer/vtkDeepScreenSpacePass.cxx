@@ -1,7 +1,13 @@
 #include "vtkDeepScreenSpacePass.h"
 
 #include "vtkDeepGBufferPass.h"
+#include "vtkDeepScreenSpaceHelpers.h"
+#include "vtkMath.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkRenderState.h"
+#include "vtkShaderProgram.h"
 
 #include <algorithm>
 #include <cmath>
@@ -98,6 +104,50 @@ bool vtkDeepScreenSpacePass::GetLayerFrame(
     return false;
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepScreenSpacePass::BeginEffectFrame(
+  const vtkRenderState* s, const char* caller, double shadedFraction, EffectFrame& frame)
+{
+  frame.State = s;
+  frame.Renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  frame.Window = vtkOpenGLRenderWindow::SafeDownCast(
+    frame.Renderer ? frame.Renderer->GetRenderWindow() : nullptr);
+  if (!frame.Window)
+  {
+    vtkErrorMacro(<< caller << ": an OpenGL renderer and render window are needed.");
+    return false;
+  }
+  frame.GL = frame.Window->GetState();
+  if (!this->GetLayerFrame(frame.Renderer, caller, frame))
+  {
+    return false;
+  }
+  vtkDeepScreenSpace::ShadedRegion(frame.Size, frame.GuardBand, shadedFraction, frame.Region);
+  vtkDeepScreenSpace::ProjectionUniforms(frame.Projection, frame.ProjXY, frame.ProjT);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+double vtkDeepScreenSpacePass::RotationOffset(unsigned long long frameIndex)
+{
+  const double goldenRatioConjugate = 0.6180339887498949;
+  const double f = goldenRatioConjugate * static_cast<double>(frameIndex % 1000003u);
+  return 2.0 * vtkMath::Pi() * (f - std::floor(f));
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepScreenSpacePass::SetLayerUniforms(
+  vtkShaderProgram* program, const EffectFrame& frame, int distanceUnit, int normalUnit)
+{
+  program->SetUniformi("deepDistance", distanceUnit);
+  if (normalUnit >= 0)
+  {
+    program->SetUniformi("deepNormal", normalUnit);
+  }
+  program->SetUniform4f("deepProjXY", frame.ProjXY);
+  program->SetUniform4f("deepProjT", frame.ProjT);
 }
 
 //------------------------------------------------------------------------------

@@ -25,7 +25,11 @@
 #include "vtkRenderPass.h"
 
 class vtkDeepGBufferPass;
+class vtkOpenGLRenderWindow;
+class vtkOpenGLRenderer;
+class vtkOpenGLState;
 class vtkRenderer;
+class vtkShaderProgram;
 
 class VTKDEEPGIRENDERING_EXPORT vtkDeepScreenSpacePass : public vtkRenderPass
 {
@@ -78,6 +82,42 @@ protected:
   /// with an error naming `caller`, when it has no layers for `renderer`
   /// (its RenderLayers was not called).
   bool GetLayerFrame(vtkRenderer* renderer, const char* caller, LayerFrame& frame);
+
+  /// What every effect's frame starts from: the renderer, its OpenGL window
+  /// and state, the G-buffer's layers, the texels of them the effect shades
+  /// and the projection terms of deepPositionFromDistance.
+  struct EffectFrame : LayerFrame
+  {
+    const vtkRenderState* State = nullptr;
+    vtkOpenGLRenderer* Renderer = nullptr;
+    vtkOpenGLRenderWindow* Window = nullptr;
+    vtkOpenGLState* GL = nullptr;
+    int Region[4] = { 0, 0, 0, 0 }; ///< shaded texels [x0, x1) x [y0, y1) of the layers
+    float ProjXY[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+    float ProjT[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+  };
+
+  /// Fills `frame` for `s`'s renderer (see GetLayerFrame), shading the frame
+  /// and `shadedFraction` of the guard band; false, with an error naming
+  /// `caller`, when the G-buffer has no layers for it.
+  bool BeginEffectFrame(
+    const vtkRenderState* s, const char* caller, double shadedFraction, EffectFrame& frame);
+
+  /**
+   * The rotation of the spiral taps in frame `frameIndex`, in radians:
+   * 2 pi fract(k / golden ratio), a low-discrepancy sequence, so that the
+   * temporal filters average well-spread rotations (the paper's per-pixel
+   * rotation of section 3.4, varied over frames). k is taken modulo the
+   * prime 1000003 so that k times the golden ratio keeps its fraction
+   * exact in double precision however long the pass runs.
+   */
+  static double RotationOffset(unsigned long long frameIndex);
+
+  /// Sets the uniforms of a stage that reconstructs positions (and normals
+  /// when `normalUnit` >= 0) from the layers: deepDistance, deepNormal,
+  /// deepProjXY, deepProjT.
+  static void SetLayerUniforms(
+    vtkShaderProgram* program, const EffectFrame& frame, int distanceUnit, int normalUnit);
 
   /// Sets a fraction in [0, 1]: NaN keeps `value` with a warning; values
   /// outside are clamped with a warning; Modified() when it changes.
