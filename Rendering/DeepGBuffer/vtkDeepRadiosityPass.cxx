@@ -449,46 +449,162 @@ void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
+// What one UpdateRadiosity call decides and carries from stage to stage.
+struct vtkDeepRadiosityPass::vtkGatherFrame : vtkDeepScreenSpacePass::EffectFrame
+{
+  int UsedLayers = 0; // at most NUMBER_OF_LAYERS of the G-buffer's
+  double Radius = 0.0;
+  double Tolerance = 0.0; // reprojection tolerance, world units
+  bool HasLights = false;
+  double RotationOffset = 0.0;
+  int Units[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES]; // of the G-buffer's textures
+  int MinimumMip = 0;
+  int MaximumMip = 0;
+  int Previous = 0; // History[Previous] is the last frame's, History[Next] this one's
+  int Next = 1;
+  float ToPrevious[16];
+  float PreviousProjection[16];
+
+  int DistanceUnit() const { return this->Units[vtkDeepGBufferPass::DEPTH]; }
+  int NormalUnit() const { return this->Units[vtkDeepGBufferPass::NORMAL]; }
+};
+
+namespace
+{
+using LayerTextures = vtkSmartPointer<vtkTextureObject>[Layers];
+
+// Binds one texture per layer and sets the sampler uniforms name0, name1.
+void BindLayerTextures(vtkShaderProgram* program, const char* name, LayerTextures& textures)
+{
+  for (int j = 0; j < Layers; ++j)
+  {
+    textures[j]->Activate();
+    program->SetUniformi((name + std::to_string(j)).c_str(), textures[j]->GetTextureUnit());
+  }
+}
+
+void UnbindLayerTextures(LayerTextures& textures)
+{
+  for (auto& t : textures)
+  {
+    t->Deactivate();
+  }
+}
+
+// Draws into the per-layer textures `a`, then `b` (if any), as consecutive
+// colour attachments.
+void AttachLayerTextures(
+  vtkOpenGLFramebufferObject* framebuffer, LayerTextures& a, LayerTextures* b = nullptr)
+{
+  int n = 0;
+  for (auto& t : a)
+  {
+    framebuffer->AddColorAttachment(n++, t);
+  }
+  if (b)
+  {
+    for (auto& t : *b)
+    {
+      framebuffer->AddColorAttachment(n++, t);
+    }
+  }
+  framebuffer->ActivateDrawBuffers(n);
+}
+
+// floor(log2(max(width, height))): the index of the coarsest MIP level.
+int CoarsestMipLevel(int width, int height)
+{
+  int level = 0;
+  while ((std::max(width, height) >> (level + 1)) > 0)
+  {
+    ++level;
+  }
+  return level;
+}
+}
+
+//------------------------------------------------------------------------------
 bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
 {
-  vtkInternals& in = *this->Internals;
-  vtkOpenGLRenderer* renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
-  vtkDeepGBufferPass* gbuffer = this->GBufferPass;
-  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  vtkOpenGLState* ostate = window->GetState();
   vtkOpenGLClearErrorMacro();
-
-  LayerFrame frame;
-  if (!this->GetLayerFrame(renderer, "UpdateRadiosity", frame))
+  vtkGatherFrame frame;
+  if (!this->BeginEffectFrame(s, "UpdateRadiosity", this->GuardBandShadedFraction, frame))
   {
     return false;
   }
-  const double* view = frame.View;
-  const double* projection = frame.Projection;
-  const int layers = std::min(frame.Layers, Layers);
-  const int width = frame.Size[0], height = frame.Size[1];
-  const int guardBand = frame.GuardBand;
-  int region[4];
-  vtkDeepScreenSpace::ShadedRegion(frame.Size, guardBand, this->GuardBandShadedFraction, region);
-
-  vtkDeepRadiosityRendererState& state = in.States.Get(renderer);
+  frame.UsedLayers = std::min(frame.Layers, Layers);
+  vtkDeepRadiosityRendererState& state = this->Internals->States.Get(frame.Renderer);
   state.HasFrame = false;
+  this->ComputeSceneParameters(frame, state);
+  if (!this->PrepareTargets(frame, state))
+  {
+    return false;
+  }
+  vtkDeepGBufferPass* gbuffer = this->GBufferPass;
+  for (int q : GBufferQuantities)
+  {
+    frame.Units[q] = gbuffer->ActivateTexture(frame.Renderer, q);
+  }
+  {
+    vtkOpenGLState* ostate = frame.GL;
+    vtkOpenGLState::ScopedglViewport savedViewport(ostate);
+    vtkOpenGLState::ScopedglEnableDisable savedScissorTest(ostate, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglScissor savedScissor(ostate);
+    vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
+    ostate->vtkglDisable(GL_SCISSOR_TEST);
+    ostate->vtkglDisable(GL_BLEND);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    ostate->PushFramebufferBindings();
+    this->Internals->Framebuffer->Bind();
+    ostate->vtkglViewport(0, 0, frame.Size[0], frame.Size[1]);
+    this->ComputeBounceInput(frame, state);
+    // The other stages shade the frame and GuardBandShadedFraction of the
+    // guard band (Table 2's last column).
+    ostate->vtkglEnable(GL_SCISSOR_TEST);
+    const int* region = frame.Region;
+    ostate->vtkglScissor(region[0], region[1], region[2] - region[0], region[3] - region[1]);
+    this->Gather(frame, state);
+    this->FilterIrradiance(frame, state);
+    this->AccumulateIrradiance(frame, state);
+    for (int a = 0; a < 2 * Layers; ++a)
+    {
+      this->Internals->Framebuffer->RemoveColorAttachment(a);
+    }
+    ostate->PopFramebufferBindings();
+  }
+  for (int q : GBufferQuantities)
+  {
+    if (frame.Units[q] >= 0)
+    {
+      gbuffer->DeactivateTexture(frame.Renderer, q);
+    }
+  }
+  this->RecordFrame(frame, state);
+  vtkOpenGLCheckErrorMacro("failed after vtkDeepRadiosityPass");
+  return true;
+}
 
-  // Scene-relative parameters.
+//------------------------------------------------------------------------------
+// The scene-relative parameters of this frame: radius, reprojection
+// tolerance, environment irradiance, and whether a light is on.
+void vtkDeepRadiosityPass::ComputeSceneParameters(
+  vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
+{
+  vtkRenderer* renderer = frame.Renderer;
   const double diagonal = vtkDeepScreenSpace::VisiblePropDiagonal(renderer);
-  const double radius =
-    this->AutomaticRadius ? this->AutomaticRadiusFraction * diagonal : this->Radius;
-  this->EffectiveRadius = radius;
+  frame.Radius = this->AutomaticRadius ? this->AutomaticRadiusFraction * diagonal : this->Radius;
+  this->EffectiveRadius = frame.Radius;
   if (this->AutomaticRadius && !(diagonal > 0.0) && !state.WarnedEmpty)
   {
     state.WarnedEmpty = true;
     vtkWarningMacro("The scene has no visible extent: the automatic radius is 0 and there is no "
                     "indirect light.");
   }
-  const double tolerance = this->AutomaticReprojectionTolerance
+  frame.Tolerance = this->AutomaticReprojectionTolerance
     ? this->AutomaticReprojectionFraction * diagonal
     : this->ReprojectionTolerance;
-  this->EffectiveReprojectionTolerance = tolerance;
+  this->EffectiveReprojectionTolerance = frame.Tolerance;
   if (this->AutomaticEnvironmentIrradiance)
   {
     const double* ambient = renderer->GetAmbient();
@@ -503,32 +619,34 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
     std::copy(this->EnvironmentIrradiance, this->EnvironmentIrradiance + 3,
       this->EffectiveEnvironmentIrradiance);
   }
-  const bool hasLights = RendererHasLightOn(renderer);
-  if (!hasLights && !state.WarnedNoLights)
+  frame.HasLights = RendererHasLightOn(renderer);
+  if (!frame.HasLights && !state.WarnedNoLights)
   {
     state.WarnedNoLights = true;
     vtkWarningMacro("The renderer has no light switched on: VTK draws the props unlit and there "
                     "is no direct light to bounce.");
   }
+}
 
-  // History: reset on a resize, a new layer count or shaded region, and
-  // when this renderer was rendered without this pass since the history's
-  // frame.
-  const bool consecutive = state.Renders.Consecutive();
-  if (!consecutive || state.Width != width || state.Height != height ||
-    state.LayerCount != layers || !std::equal(region, region + 4, state.ShadedRegion))
+//------------------------------------------------------------------------------
+// The renderer's history (reset on a resize, a new layer count or shaded
+// region, and when this renderer was rendered without this pass since the
+// history's frame), this frame's rotation and MIP range, the targets, the
+// reprojection and the programs.
+bool vtkDeepRadiosityPass::PrepareTargets(
+  vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
+{
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLRenderWindow* window = frame.Window;
+  const int width = frame.Size[0], height = frame.Size[1];
+  if (!state.Renders.Consecutive() || state.Width != width || state.Height != height ||
+    state.LayerCount != frame.UsedLayers ||
+    !std::equal(frame.Region, frame.Region + 4, state.ShadedRegion))
   {
     state.ResetHistory();
   }
   ++state.FrameIndex;
-  double rotationOffset = 0.0;
-  if (this->TemporalAlpha > 0.0)
-  {
-    // Golden-ratio sequence of rotations: frame k adds 2 pi fract(k / golden ratio).
-    const double f = 0.6180339887498949 * static_cast<double>(state.FrameIndex % 1000003u);
-    rotationOffset = 2.0 * vtkMath::Pi() * (f - std::floor(f));
-  }
-
+  frame.RotationOffset = this->TemporalAlpha > 0.0 ? RotationOffset(state.FrameIndex) : 0.0;
   bool allocated = true;
   for (auto& perLayer : state.Targets)
   {
@@ -551,9 +669,9 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
   }
   state.Width = width;
   state.Height = height;
-  state.GuardBand = guardBand;
-  std::copy(region, region + 4, state.ShadedRegion);
-  state.LayerCount = layers;
+  state.GuardBand = frame.GuardBand;
+  std::copy(frame.Region, frame.Region + 4, state.ShadedRegion);
+  state.LayerCount = frame.UsedLayers;
   if (!in.Framebuffer)
   {
     in.Framebuffer = vtkOpenGLFramebufferObject::New();
@@ -569,209 +687,146 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
     vtkErrorMacro("The radiosity shaders failed to compile.");
     return false;
   }
+  vtkDeepScreenSpace::ReprojectionUniforms(frame.View, frame.Projection, state.HistoryValid,
+    state.PreviousView, state.PreviousProjection, frame.ToPrevious, frame.PreviousProjection);
+  frame.MaximumMip = std::min(
+    std::max(this->MaximumMipLevel, this->MinimumMipLevel), CoarsestMipLevel(width, height));
+  frame.MinimumMip = std::min(this->MinimumMipLevel, frame.MaximumMip);
+  frame.Previous = state.HistoryCurrent;
+  frame.Next = 1 - state.HistoryCurrent;
+  return true;
+}
 
-  float projXY[4], projT[4];
-  vtkDeepScreenSpace::ProjectionUniforms(projection, projXY, projT);
-  float toPrevious[16], previousProjection[16];
-  vtkDeepScreenSpace::ReprojectionUniforms(view, projection, state.HistoryValid, state.PreviousView,
-    state.PreviousProjection, toPrevious, previousProjection);
-  int units[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES];
-  for (int q : GBufferQuantities)
+//------------------------------------------------------------------------------
+// Step 1, bounce input B = direct + delta L_ind,t-1 (section 3.3), over the
+// whole layers: the guard band's surfaces are sources for the gather.
+void vtkDeepRadiosityPass::ComputeBounceInput(
+  vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
+{
+  vtkInternals& in = *this->Internals;
+  AttachLayerTextures(in.Framebuffer, state.Targets[BOUNCE]);
+  vtkShaderProgram* program = in.BounceQuad->Program;
+  frame.Window->GetShaderCache()->ReadyShaderProgram(program);
+  vtkDeepScreenSpace::SetShadedRegionUniforms(program, frame.Region);
+  SetLayerUniforms(program, frame, frame.DistanceUnit(), frame.NormalUnit());
+  program->SetUniformi("deepRadiance", frame.Units[vtkDeepGBufferPass::RADIANCE]);
+  program->SetUniformi("deepAmbient", frame.Units[vtkDeepGBufferPass::AMBIENT]);
+  program->SetUniformi("deepAlbedo", frame.Units[vtkDeepGBufferPass::ALBEDO]);
+  BindLayerTextures(program, "deepHistory", state.History[frame.Previous]);
+  program->SetUniformi("deepLayers", frame.UsedLayers);
+  program->SetUniformi("deepHasHistory", state.HistoryValid ? 1 : 0);
+  program->SetUniformMatrix4x4("deepToPrevious", frame.ToPrevious);
+  program->SetUniformMatrix4x4(
+    "deepPrevProjection", frame.PreviousProjection);
+  program->SetUniformf("deepTolerance", static_cast<float>(frame.Tolerance));
+  program->SetUniformf("deepDamping", static_cast<float>(this->Damping));
+  program->SetUniformi("deepBoost", this->UseColorBoost ? 1 : 0);
+  program->SetUniformi("deepHasLights", frame.HasLights ? 1 : 0);
+  in.BounceQuad->Render();
+  UnbindLayerTextures(state.History[frame.Previous]);
+}
+
+//------------------------------------------------------------------------------
+// Step 2, the gather: eq. 4-5 into RAW (E, M / N).
+void vtkDeepRadiosityPass::Gather(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
+{
+  vtkInternals& in = *this->Internals;
+  AttachLayerTextures(in.Framebuffer, state.Targets[RAW]);
+  vtkShaderProgram* program = in.GatherQuad->Program;
+  frame.Window->GetShaderCache()->ReadyShaderProgram(program);
+  SetLayerUniforms(program, frame, frame.DistanceUnit(), frame.NormalUnit());
+  BindLayerTextures(program, "deepBounce", state.Targets[BOUNCE]);
+  program->SetUniformi("deepLayers", frame.UsedLayers);
+  program->SetUniformi("deepSamples", this->NumberOfSamples);
+  program->SetUniformf(
+    "deepTurns", static_cast<float>(vtkDeepScreenSpace::SpiralTurns(this->NumberOfSamples)));
+  program->SetUniformf("deepRadius", static_cast<float>(frame.Radius));
+  program->SetUniformf("deepMipThreshold", static_cast<float>(this->MipThreshold));
+  program->SetUniformi("deepMinMip", frame.MinimumMip);
+  program->SetUniformi("deepMaxMip", frame.MaximumMip);
+  program->SetUniformi("deepNormalTest", this->UseNormalTest ? 1 : 0);
+  program->SetUniformi("deepEstimator", this->Estimator);
+  program->SetUniformf("deepCosineEpsilon", static_cast<float>(COSINE_EPSILON));
+  program->SetUniformf("deepRotationOffset", static_cast<float>(frame.RotationOffset));
+  in.GatherQuad->Render();
+  UnbindLayerTextures(state.Targets[BOUNCE]);
+}
+
+//------------------------------------------------------------------------------
+// Step 3, separable bilateral reconstruction: RAW -> BLUR_TEMP -> FILTERED.
+void vtkDeepRadiosityPass::FilterIrradiance(
+  vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
+{
+  vtkInternals& in = *this->Internals;
+  const int passes[2][3] = { { RAW, BLUR_TEMP, 0 }, { BLUR_TEMP, FILTERED, 1 } };
+  vtkShaderProgram* program = in.BlurQuad->Program;
+  for (const auto& pass : passes)
   {
-    units[q] = gbuffer->ActivateTexture(renderer, q);
+    AttachLayerTextures(in.Framebuffer, state.Targets[pass[1]]);
+    frame.Window->GetShaderCache()->ReadyShaderProgram(program);
+    vtkDeepScreenSpace::SetShadedRegionUniforms(program, frame.Region);
+    BindLayerTextures(program, "deepInput", state.Targets[pass[0]]);
+    SetLayerUniforms(program, frame, frame.DistanceUnit(), frame.NormalUnit());
+    program->SetUniformi("deepLayers", frame.UsedLayers);
+    const int axis[2] = { pass[2] == 0 ? 1 : 0, pass[2] == 0 ? 0 : 1 };
+    program->SetUniform2i("deepAxis", axis);
+    program->SetUniformi("deepBlurRadius", (this->FilterTaps - 1) / 2);
+    program->SetUniformf("deepPlaneTolerance", static_cast<float>(this->BlurPlaneTolerance));
+    program->SetUniformf("deepNormalPower", static_cast<float>(this->BlurNormalPower));
+    in.BlurQuad->Render();
+    UnbindLayerTextures(state.Targets[pass[0]]);
   }
-  const int distanceUnit = units[vtkDeepGBufferPass::DEPTH];
-  const int normalUnit = units[vtkDeepGBufferPass::NORMAL];
-  int finest = 0;
-  while ((std::max(width, height) >> (finest + 1)) > 0)
-  {
-    ++finest; // floor(log2(max(width, height)))
-  }
-  const int maxMip = std::min(std::max(this->MaximumMipLevel, this->MinimumMipLevel), finest);
-  const int minMip = std::min(this->MinimumMipLevel, maxMip);
-  const int previous = state.HistoryCurrent, next = 1 - state.HistoryCurrent;
+}
 
-  // Binds `textures` (per layer) of this frame to units and sets the
-  // sampler uniforms name0, name1.
-  auto bindPair = [](vtkShaderProgram* program, const char* name,
-                    vtkSmartPointer<vtkTextureObject>(&textures)[Layers])
-  {
-    for (int j = 0; j < Layers; ++j)
-    {
-      textures[j]->Activate();
-      program->SetUniformi((name + std::to_string(j)).c_str(), textures[j]->GetTextureUnit());
-    }
-  };
-  auto unbindPair = [](vtkSmartPointer<vtkTextureObject>(&textures)[Layers])
-  {
-    for (auto& t : textures)
-    {
-      t->Deactivate();
-    }
-  };
-  auto attach = [&](vtkSmartPointer<vtkTextureObject>(&a)[Layers],
-                  vtkSmartPointer<vtkTextureObject>(*b)[Layers])
-  {
-    int n = 0;
-    for (auto& t : a)
-    {
-      in.Framebuffer->AddColorAttachment(n++, t);
-    }
-    if (b)
-    {
-      for (auto& t : *b)
-      {
-        in.Framebuffer->AddColorAttachment(n++, t);
-      }
-    }
-    in.Framebuffer->ActivateDrawBuffers(n);
-  };
+//------------------------------------------------------------------------------
+// Step 4, the temporal filter and eq. 6 (with the confidence fallback):
+// FILTERED + History[Previous] -> History[Next], INDIRECT.
+void vtkDeepRadiosityPass::AccumulateIrradiance(
+  vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
+{
+  vtkInternals& in = *this->Internals;
+  AttachLayerTextures(in.Framebuffer, state.History[frame.Next], &state.Targets[INDIRECT]);
+  vtkShaderProgram* program = in.TemporalQuad->Program;
+  frame.Window->GetShaderCache()->ReadyShaderProgram(program);
+  vtkDeepScreenSpace::SetShadedRegionUniforms(program, frame.Region);
+  BindLayerTextures(program, "deepInput", state.Targets[FILTERED]);
+  BindLayerTextures(program, "deepHistory", state.History[frame.Previous]);
+  SetLayerUniforms(program, frame, frame.DistanceUnit(), frame.NormalUnit());
+  program->SetUniformi("deepAlbedo", frame.Units[vtkDeepGBufferPass::ALBEDO]);
+  program->SetUniformi("deepLayers", frame.UsedLayers);
+  program->SetUniformi("deepHasHistory", state.HistoryValid ? 1 : 0);
+  program->SetUniformMatrix4x4("deepToPrevious", frame.ToPrevious);
+  program->SetUniformMatrix4x4(
+    "deepPrevProjection", frame.PreviousProjection);
+  program->SetUniformf("deepTolerance", static_cast<float>(frame.Tolerance));
+  program->SetUniformf("deepAlpha", static_cast<float>(this->TemporalAlpha));
+  program->SetUniformi("deepBoost", this->UseColorBoost ? 1 : 0);
+  program->SetUniformi("deepFallback", this->ConfidenceFallback ? 1 : 0);
+  const float environment[3] = { static_cast<float>(this->EffectiveEnvironmentIrradiance[0]),
+    static_cast<float>(this->EffectiveEnvironmentIrradiance[1]),
+    static_cast<float>(this->EffectiveEnvironmentIrradiance[2]) };
+  program->SetUniform3f("deepEnvironment", environment);
+  program->SetUniformf("deepIrradianceLimit", static_cast<float>(IRRADIANCE_LIMIT));
+  in.TemporalQuad->Render();
+  UnbindLayerTextures(state.History[frame.Previous]);
+  UnbindLayerTextures(state.Targets[FILTERED]);
+}
 
-  {
-    vtkOpenGLState::ScopedglViewport savedViewport(ostate);
-    vtkOpenGLState::ScopedglEnableDisable savedScissorTest(ostate, GL_SCISSOR_TEST);
-    vtkOpenGLState::ScopedglScissor savedScissor(ostate);
-    vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
-    ostate->vtkglDisable(GL_SCISSOR_TEST);
-    ostate->vtkglDisable(GL_BLEND);
-    ostate->vtkglDisable(GL_DEPTH_TEST);
-    ostate->PushFramebufferBindings();
-    in.Framebuffer->Bind();
-    ostate->vtkglViewport(0, 0, width, height);
-
-    // 1. Bounce input B = direct + delta L_ind,t-1 (section 3.3), over the
-    // whole layers: the guard band's surfaces are sources for the gather.
-    attach(state.Targets[BOUNCE], nullptr);
-    vtkShaderProgram* program = in.BounceQuad->Program;
-    window->GetShaderCache()->ReadyShaderProgram(program);
-    vtkDeepScreenSpace::SetShadedRegionUniforms(program, region);
-    program->SetUniformi("deepDistance", distanceUnit);
-    program->SetUniformi("deepRadiance", units[vtkDeepGBufferPass::RADIANCE]);
-    program->SetUniformi("deepAmbient", units[vtkDeepGBufferPass::AMBIENT]);
-    program->SetUniformi("deepAlbedo", units[vtkDeepGBufferPass::ALBEDO]);
-    program->SetUniformi("deepNormal", normalUnit);
-    program->SetUniform4f("deepProjXY", projXY);
-    program->SetUniform4f("deepProjT", projT);
-    bindPair(program, "deepHistory", state.History[previous]);
-    program->SetUniformi("deepLayers", layers);
-    program->SetUniformi("deepHasHistory", state.HistoryValid ? 1 : 0);
-    program->SetUniformMatrix4x4("deepToPrevious", toPrevious);
-    program->SetUniformMatrix4x4("deepPrevProjection", previousProjection);
-    program->SetUniformf("deepTolerance", static_cast<float>(tolerance));
-    program->SetUniformf("deepDamping", static_cast<float>(this->Damping));
-    program->SetUniformi("deepBoost", this->UseColorBoost ? 1 : 0);
-    program->SetUniformi("deepHasLights", hasLights ? 1 : 0);
-    in.BounceQuad->Render();
-    unbindPair(state.History[previous]);
-
-    // Steps 2-4 shade the frame and GuardBandShadedFraction of the guard
-    // band (Table 2's last column).
-    ostate->vtkglEnable(GL_SCISSOR_TEST);
-    ostate->vtkglScissor(region[0], region[1], region[2] - region[0], region[3] - region[1]);
-
-    // 2. Gather: eq. 4-5 into RAW (E, M / N).
-    attach(state.Targets[RAW], nullptr);
-    program = in.GatherQuad->Program;
-    window->GetShaderCache()->ReadyShaderProgram(program);
-    program->SetUniformi("deepDistance", distanceUnit);
-    program->SetUniformi("deepNormal", normalUnit);
-    program->SetUniform4f("deepProjXY", projXY);
-    program->SetUniform4f("deepProjT", projT);
-    bindPair(program, "deepBounce", state.Targets[BOUNCE]);
-    program->SetUniformi("deepLayers", layers);
-    program->SetUniformi("deepSamples", this->NumberOfSamples);
-    program->SetUniformf(
-      "deepTurns", static_cast<float>(vtkDeepScreenSpace::SpiralTurns(this->NumberOfSamples)));
-    program->SetUniformf("deepRadius", static_cast<float>(radius));
-    program->SetUniformf("deepMipThreshold", static_cast<float>(this->MipThreshold));
-    program->SetUniformi("deepMinMip", minMip);
-    program->SetUniformi("deepMaxMip", maxMip);
-    program->SetUniformi("deepNormalTest", this->UseNormalTest ? 1 : 0);
-    program->SetUniformi("deepEstimator", this->Estimator);
-    program->SetUniformf("deepCosineEpsilon", static_cast<float>(COSINE_EPSILON));
-    program->SetUniformf("deepRotationOffset", static_cast<float>(rotationOffset));
-    in.GatherQuad->Render();
-    unbindPair(state.Targets[BOUNCE]);
-
-    // 3. Separable bilateral reconstruction: RAW -> BLUR_TEMP -> FILTERED.
-    const int passes[2][3] = { { RAW, BLUR_TEMP, 0 }, { BLUR_TEMP, FILTERED, 1 } };
-    program = in.BlurQuad->Program;
-    for (const auto& pass : passes)
-    {
-      attach(state.Targets[pass[1]], nullptr);
-      window->GetShaderCache()->ReadyShaderProgram(program);
-      vtkDeepScreenSpace::SetShadedRegionUniforms(program, region);
-      bindPair(program, "deepInput", state.Targets[pass[0]]);
-      program->SetUniformi("deepDistance", distanceUnit);
-      program->SetUniformi("deepNormal", normalUnit);
-      program->SetUniform4f("deepProjXY", projXY);
-      program->SetUniform4f("deepProjT", projT);
-      program->SetUniformi("deepLayers", layers);
-      const int axis[2] = { pass[2] == 0 ? 1 : 0, pass[2] == 0 ? 0 : 1 };
-      program->SetUniform2i("deepAxis", axis);
-      program->SetUniformi("deepBlurRadius", (this->FilterTaps - 1) / 2);
-      program->SetUniformf("deepPlaneTolerance", static_cast<float>(this->BlurPlaneTolerance));
-      program->SetUniformf("deepNormalPower", static_cast<float>(this->BlurNormalPower));
-      in.BlurQuad->Render();
-      unbindPair(state.Targets[pass[0]]);
-    }
-
-    // 4. Temporal filter and eq. 6 (+ fallback): FILTERED + History[previous]
-    // -> History[next], INDIRECT.
-    attach(state.History[next], &state.Targets[INDIRECT]);
-    program = in.TemporalQuad->Program;
-    window->GetShaderCache()->ReadyShaderProgram(program);
-    vtkDeepScreenSpace::SetShadedRegionUniforms(program, region);
-    bindPair(program, "deepInput", state.Targets[FILTERED]);
-    bindPair(program, "deepHistory", state.History[previous]);
-    program->SetUniformi("deepDistance", distanceUnit);
-    program->SetUniformi("deepNormal", normalUnit);
-    program->SetUniformi("deepAlbedo", units[vtkDeepGBufferPass::ALBEDO]);
-    program->SetUniform4f("deepProjXY", projXY);
-    program->SetUniform4f("deepProjT", projT);
-    program->SetUniformi("deepLayers", layers);
-    program->SetUniformi("deepHasHistory", state.HistoryValid ? 1 : 0);
-    program->SetUniformMatrix4x4("deepToPrevious", toPrevious);
-    program->SetUniformMatrix4x4("deepPrevProjection", previousProjection);
-    program->SetUniformf("deepTolerance", static_cast<float>(tolerance));
-    program->SetUniformf("deepAlpha", static_cast<float>(this->TemporalAlpha));
-    program->SetUniformi("deepBoost", this->UseColorBoost ? 1 : 0);
-    program->SetUniformi("deepFallback", this->ConfidenceFallback ? 1 : 0);
-    const float environment[3] = { static_cast<float>(this->EffectiveEnvironmentIrradiance[0]),
-      static_cast<float>(this->EffectiveEnvironmentIrradiance[1]),
-      static_cast<float>(this->EffectiveEnvironmentIrradiance[2]) };
-    program->SetUniform3f("deepEnvironment", environment);
-    program->SetUniformf("deepIrradianceLimit", static_cast<float>(IRRADIANCE_LIMIT));
-    in.TemporalQuad->Render();
-    unbindPair(state.History[previous]);
-    unbindPair(state.Targets[FILTERED]);
-    for (int a = 0; a < 2 * Layers; ++a)
-    {
-      in.Framebuffer->RemoveColorAttachment(a);
-    }
-    ostate->PopFramebufferBindings();
-  }
-  state.HistoryCurrent = next;
+//------------------------------------------------------------------------------
+// This frame's history becomes the last frame's; what captures report.
+void vtkDeepRadiosityPass::RecordFrame(
+  vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
+{
+  state.HistoryCurrent = frame.Next;
   state.HistoryValid = true;
-  std::copy(view, view + 16, state.PreviousView);
-  std::copy(projection, projection + 16, state.PreviousProjection);
-
-  for (int q : GBufferQuantities)
-  {
-    if (units[q] >= 0)
-    {
-      gbuffer->DeactivateTexture(renderer, q);
-    }
-  }
+  std::copy(frame.View, frame.View + 16, state.PreviousView);
+  std::copy(frame.Projection, frame.Projection + 16, state.PreviousProjection);
   state.HasFrame = true;
-  state.Radius = radius;
+  state.Radius = frame.Radius;
   state.NumberOfSamples = this->NumberOfSamples;
-  state.Tolerance = tolerance;
+  state.Tolerance = frame.Tolerance;
   std::copy(this->EffectiveEnvironmentIrradiance, this->EffectiveEnvironmentIrradiance + 3,
     state.Environment);
-  vtkOpenGLCheckErrorMacro("failed after vtkDeepRadiosityPass");
-  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -118,6 +118,7 @@
 #include <memory> // for std::unique_ptr
 
 class vtkImageData;
+struct vtkDeepRadiosityRendererState;
 class vtkRenderer;
 
 class VTKDEEPGIRENDERING_EXPORT vtkDeepRadiosityPass : public vtkDeepScreenSpacePass
@@ -494,6 +495,17 @@ private:
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
+
+  // The stages of UpdateRadiosity, in order (vtkGatherFrame carries what one
+  // frame decided from stage to stage).
+  struct vtkGatherFrame;
+  void ComputeSceneParameters(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
+  bool PrepareTargets(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
+  void ComputeBounceInput(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
+  void Gather(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
+  void FilterIrradiance(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
+  void AccumulateIrradiance(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
+  void RecordFrame(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
 };
 
 #endif
