@@ -66,18 +66,6 @@ enum Environment
   NUMBER_OF_ENVIRONMENTS = 3
 };
 
-double SceneDiagonal(vtkRenderer* renderer)
-{
-  double bounds[6];
-  renderer->ComputeVisiblePropBounds(bounds);
-  if (!vtkMath::AreBoundsInitialized(bounds))
-  {
-    return 0.0;
-  }
-  const double extent[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
-  return vtkMath::Norm(extent);
-}
-
 // Whether an actor's material can give a non-zero REFLECTIVITY (the mapping
 // of vtkDeepGBufferPass::SetWriteReflectivity). Only opaque geometry is in
 // the G-buffer.
@@ -373,6 +361,35 @@ void ToColumnMajor3(const double m[3][3], float out[9])
     }
   }
 }
+
+// Camera space -> the renderer's environment frame (GLSL mat3): rows right,
+// up, front of the environment frame times the inverse view rotation.
+void ViewToEnvironment(vtkRenderer* renderer, const double view[16], float out[9])
+{
+  vtkNew<vtkMatrix4x4> inverseView;
+  inverseView->DeepCopy(view);
+  inverseView->Invert();
+  double up[3], right[3], front[3];
+  renderer->GetEnvironmentUp(up);
+  renderer->GetEnvironmentRight(right);
+  vtkMath::Normalize(up);
+  vtkMath::Normalize(right);
+  vtkMath::Cross(right, up, front);
+  const double* environmentFrame[3] = { right, up, front };
+  double toEnvironment[3][3];
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      toEnvironment[r][c] = 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        toEnvironment[r][c] += environmentFrame[r][k] * inverseView->GetElement(k, c);
+      }
+    }
+  }
+  ToColumnMajor3(toEnvironment, out);
+}
 }
 
 //------------------------------------------------------------------------------
@@ -447,262 +464,275 @@ void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
+// What one UpdateReflections call decides and carries from stage to stage.
+struct vtkDeepReflectionPass::vtkTraceFrame : vtkDeepScreenSpacePass::EffectFrame
+{
+  double MaximumDistance = 0.0;
+  double Thickness = 0.0;
+  // VTK's environment texture, bound while the rays are traced, or none
+  // (the background is the environment).
+  vtkOpenGLTexture* Environment = nullptr;
+  vtkTextureObject* EnvironmentObject = nullptr;
+  int EnvironmentKind = ENVIRONMENT_BACKGROUND;
+  int DistanceUnit = -1;
+  int NormalUnit = -1;
+  int RadianceUnit = -1;
+  int ReflectivityUnit = -1;
+};
+
+//------------------------------------------------------------------------------
 bool vtkDeepReflectionPass::UpdateReflections(const vtkRenderState* s)
 {
-  vtkInternals& in = *this->Internals;
-  vtkOpenGLRenderer* renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
-  vtkDeepGBufferPass* gbuffer = this->GBufferPass;
-  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  vtkOpenGLState* ostate = window->GetState();
   vtkOpenGLClearErrorMacro();
-
-  LayerFrame frame;
-  if (!this->GetLayerFrame(renderer, "UpdateReflections", frame))
+  // Rays are traced for the frame's pixels (no guard band shaded); they
+  // march through the whole layers, so leaving the guard band ends them
+  // (section 3.6).
+  vtkTraceFrame frame;
+  if (!this->BeginEffectFrame(s, "UpdateReflections", 0.0, frame))
   {
     return false;
   }
-  const double* view = frame.View;
-  const double* projection = frame.Projection;
-  const int layers = frame.Layers;
-  const int* size = frame.Size;
-  const int width = size[0], height = size[1];
-  const int guardBand = frame.GuardBand;
-  // Rays are traced for the frame's pixels; they march through the whole
-  // layers, so leaving the guard band ends them (section 3.6).
-  int frameRegion[4];
-  vtkDeepScreenSpace::ShadedRegion(size, guardBand, 0.0, frameRegion);
-
-  // Effective parameters of the frame.
-  const double diagonal = SceneDiagonal(renderer);
-  const double maximumDistance = this->AutomaticMaximumDistance
-    ? this->AutomaticDistanceFraction * diagonal
-    : this->MaximumDistance;
-  double thickness = this->Thickness;
-  if (this->AutomaticThickness)
-  {
-    thickness = gbuffer->GetEffectiveMinimumSeparation();
-    if (!(thickness > 0.0))
-    {
-      thickness = 0.005 * diagonal;
-    }
-  }
-  this->EffectiveMaximumDistance = maximumDistance;
-  this->EffectiveThickness = thickness;
-
-  vtkDeepReflectionRendererState& state = in.States.Get(renderer);
+  this->ComputeRayLimits(frame);
+  vtkDeepReflectionRendererState& state = this->Internals->States.Get(frame.Renderer);
   state.HasFrame = false;
   state.Traced = false;
-  std::copy(view, view + 16, state.View);
-  vtkDeepScreenSpace::FrameProjection(projection, size, guardBand, state.FrameProjection);
-  state.MaximumDistance = maximumDistance;
-  state.Thickness = thickness;
+  std::copy(frame.View, frame.View + 16, state.View);
+  vtkDeepScreenSpace::FrameProjection(
+    frame.Projection, frame.Size, frame.GuardBand, state.FrameProjection);
+  state.MaximumDistance = frame.MaximumDistance;
+  state.Thickness = frame.Thickness;
 
   // Compute only what the scene requires: rays only where the G-buffer
   // holds reflectivity for this frame and some visible prop can reflect.
-  if (!gbuffer->GetWriteReflectivity() || !SceneReflects(s))
+  if (!this->GBufferPass->GetWriteReflectivity() || !SceneReflects(s))
   {
-    // Nothing reflects: no targets kept.
-    state.Release(window);
+    state.Release(frame.Window); // nothing reflects: no targets kept
     state.HasFrame = true;
     return true;
   }
-
-  // The environment: VTK's environment texture if any, else the background.
-  vtkOpenGLTexture* environment = vtkOpenGLTexture::SafeDownCast(renderer->GetEnvironmentTexture());
-  int environmentKind = ENVIRONMENT_BACKGROUND;
-  vtkTextureObject* environmentObject = nullptr;
-  if (environment)
+  this->BindEnvironment(frame);
+  bool traced = false;
+  if (!this->PrepareTargets(frame, state))
   {
-    // VTK uploads float or 16-bit texels as they are only in direct-scalars
-    // mode; otherwise an HDR environment is mapped to 8-bit colours.
-    vtkImageData* input = environment->GetInput();
-    vtkDataArray* texels = input ? input->GetPointData()->GetScalars() : nullptr;
-    if (texels && texels->GetDataType() != VTK_UNSIGNED_CHAR &&
-      environment->GetColorMode() != VTK_COLOR_MODE_DIRECT_SCALARS && !in.WarnedMappedEnvironment)
+    vtkErrorMacro("The reflection targets or shaders are unavailable; rendering without "
+                  "reflections.");
+  }
+  else if (!this->ActivateLayers(frame))
+  {
+    vtkErrorMacro("No free texture units for the reflections; rendering without them.");
+    this->DeactivateLayers(frame);
+    state.HasFrame = true;
+  }
+  else
+  {
+    this->TraceRays(frame, state);
+    this->DeactivateLayers(frame);
+    state.HasFrame = true;
+    state.Traced = traced = true;
+  }
+  if (frame.Environment)
+  {
+    frame.Environment->PostRender(frame.Renderer);
+  }
+  vtkOpenGLCheckErrorMacro("failed after the reflection rays");
+  return traced;
+}
+
+//------------------------------------------------------------------------------
+// How far rays march and how thick a layer's surface is taken to be.
+void vtkDeepReflectionPass::ComputeRayLimits(vtkTraceFrame& frame)
+{
+  const double diagonal = vtkDeepScreenSpace::VisiblePropDiagonal(frame.Renderer);
+  frame.MaximumDistance = this->AutomaticMaximumDistance
+    ? this->AutomaticDistanceFraction * diagonal
+    : this->MaximumDistance;
+  frame.Thickness = this->Thickness;
+  if (this->AutomaticThickness)
+  {
+    // The minimum separation is the thickness the layers guarantee; without
+    // one, a small fraction of the scene.
+    frame.Thickness = this->GBufferPass->GetEffectiveMinimumSeparation();
+    if (!(frame.Thickness > 0.0))
     {
-      in.WarnedMappedEnvironment = true;
-      vtkWarningMacro("The environment texture's texels are not 8-bit and its ColorMode is not "
-                      "direct scalars: VTK maps them through a lookup table. Call "
-                      "SetColorModeToDirectScalars() on it to reflect the HDR values.");
-    }
-    environment->Render(renderer); // loads (if needed) and binds it
-    environmentObject = environment->GetTextureObject();
-    if (environmentObject && environmentObject->GetHandle())
-    {
-      environmentKind = environmentObject->GetTarget() == GL_TEXTURE_CUBE_MAP
-        ? ENVIRONMENT_CUBE_MAP
-        : ENVIRONMENT_EQUIRECTANGULAR;
-    }
-    else
-    {
-      environment->PostRender(renderer);
-      environment = nullptr;
-      environmentObject = nullptr;
+      frame.Thickness = 0.005 * diagonal;
     }
   }
+  this->EffectiveMaximumDistance = frame.MaximumDistance;
+  this->EffectiveThickness = frame.Thickness;
+}
 
+//------------------------------------------------------------------------------
+// The environment: VTK's environment texture if any, else the background.
+void vtkDeepReflectionPass::BindEnvironment(vtkTraceFrame& frame)
+{
+  vtkOpenGLTexture* environment =
+    vtkOpenGLTexture::SafeDownCast(frame.Renderer->GetEnvironmentTexture());
+  if (!environment)
+  {
+    return;
+  }
+  // VTK uploads float or 16-bit texels as they are only in direct-scalars
+  // mode; otherwise an HDR environment is mapped to 8-bit colours.
+  vtkImageData* input = environment->GetInput();
+  vtkDataArray* texels = input ? input->GetPointData()->GetScalars() : nullptr;
+  if (texels && texels->GetDataType() != VTK_UNSIGNED_CHAR &&
+    environment->GetColorMode() != VTK_COLOR_MODE_DIRECT_SCALARS &&
+    !this->Internals->WarnedMappedEnvironment)
+  {
+    this->Internals->WarnedMappedEnvironment = true;
+    vtkWarningMacro("The environment texture's texels are not 8-bit and its ColorMode is not "
+                    "direct scalars: VTK maps them through a lookup table. Call "
+                    "SetColorModeToDirectScalars() on it to reflect the HDR values.");
+  }
+  environment->Render(frame.Renderer); // loads (if needed) and binds it
+  vtkTextureObject* object = environment->GetTextureObject();
+  if (!object || !object->GetHandle())
+  {
+    environment->PostRender(frame.Renderer);
+    return;
+  }
+  frame.Environment = environment;
+  frame.EnvironmentObject = object;
+  frame.EnvironmentKind = object->GetTarget() == GL_TEXTURE_CUBE_MAP
+    ? ENVIRONMENT_CUBE_MAP
+    : ENVIRONMENT_EQUIRECTANGULAR;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepReflectionPass::PrepareTargets(
+  const vtkTraceFrame& frame, vtkDeepReflectionRendererState& state)
+{
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLRenderWindow* window = frame.Window;
   bool allocated = true;
   for (int t = 0; t < NUMBER_OF_TARGETS; ++t)
   {
-    allocated = allocated && AllocateTarget(state.Targets[t], window, width, height, t);
+    allocated =
+      allocated && AllocateTarget(state.Targets[t], window, frame.Size[0], frame.Size[1], t);
   }
   if (!in.Framebuffer)
   {
     in.Framebuffer = vtkOpenGLFramebufferObject::New();
     in.Framebuffer->SetContext(window);
   }
-  const bool traceReady =
-    ReadyQuad(in.TraceQuads[environmentKind], window, vtkDeepReflectionFS, environmentKind);
+  const bool traceReady = ReadyQuad(
+    in.TraceQuads[frame.EnvironmentKind], window, vtkDeepReflectionFS, frame.EnvironmentKind);
   const bool compositeReady = ReadyQuad(in.CompositeQuad, window, vtkDeepReflectionCompositeFS);
   if (!allocated || !traceReady || !compositeReady)
   {
-    vtkErrorMacro("The reflection targets or shaders are unavailable; rendering without "
-                  "reflections.");
-    if (environment)
-    {
-      environment->PostRender(renderer);
-    }
     return false;
   }
-  state.Width = width;
-  state.Height = height;
-  state.GuardBand = guardBand;
+  state.Width = frame.Size[0];
+  state.Height = frame.Size[1];
+  state.GuardBand = frame.GuardBand;
+  return true;
+}
 
-  // Projection terms of deepPositionFromDistance (row-major P) and the
-  // full projection for projecting ray points (column-major for GLSL).
-  const float projXY[4] = { static_cast<float>(projection[0]), static_cast<float>(projection[5]),
-    static_cast<float>(projection[2]), static_cast<float>(projection[6]) };
-  const float projT[4] = { static_cast<float>(projection[3]), static_cast<float>(projection[7]),
-    static_cast<float>(projection[14]), static_cast<float>(projection[15]) };
+//------------------------------------------------------------------------------
+// The G-buffer textures the rays read; false when a texture unit is missing.
+bool vtkDeepReflectionPass::ActivateLayers(vtkTraceFrame& frame)
+{
+  vtkDeepGBufferPass* gbuffer = this->GBufferPass;
+  frame.DistanceUnit = gbuffer->ActivateTexture(frame.Renderer, vtkDeepGBufferPass::DEPTH);
+  frame.NormalUnit = gbuffer->ActivateTexture(frame.Renderer, vtkDeepGBufferPass::NORMAL);
+  frame.RadianceUnit = gbuffer->ActivateTexture(frame.Renderer, vtkDeepGBufferPass::RADIANCE);
+  frame.ReflectivityUnit =
+    gbuffer->ActivateTexture(frame.Renderer, vtkDeepGBufferPass::REFLECTIVITY);
+  return frame.DistanceUnit >= 0 && frame.NormalUnit >= 0 && frame.RadianceUnit >= 0 &&
+    frame.ReflectivityUnit >= 0;
+}
+
+void vtkDeepReflectionPass::DeactivateLayers(const vtkTraceFrame& frame)
+{
+  for (int quantity : { vtkDeepGBufferPass::REFLECTIVITY, vtkDeepGBufferPass::RADIANCE,
+         vtkDeepGBufferPass::NORMAL, vtkDeepGBufferPass::DEPTH })
+  {
+    this->GBufferPass->DeactivateTexture(frame.Renderer, quantity);
+  }
+}
+
+//------------------------------------------------------------------------------
+// Marches a ray per frame pixel through the layers (section 3.6) into
+// REFLECTED (radiance) and HIT (layer, distance); untraced pixels keep no
+// radiance and hit layer -1.
+void vtkDeepReflectionPass::TraceRays(
+  const vtkTraceFrame& frame, vtkDeepReflectionRendererState& state)
+{
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLState* ostate = frame.GL;
+  vtkOpenGLState::ScopedglViewport savedViewport(ostate);
+  vtkOpenGLState::ScopedglEnableDisable savedScissorTest(ostate, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglScissor savedScissor(ostate);
+  vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->PushFramebufferBindings();
+  in.Framebuffer->Bind();
+  in.Framebuffer->AddColorAttachment(REFLECTED, state.Targets[REFLECTED]);
+  in.Framebuffer->AddColorAttachment(HIT, state.Targets[HIT]);
+  in.Framebuffer->ActivateDrawBuffers(NUMBER_OF_TARGETS);
+  ostate->vtkglViewport(0, 0, frame.Size[0], frame.Size[1]);
+  const float clearReflected[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+  const float clearHit[4] = { -1.0f, 0.0f, 0.0f, 0.0f };
+  glClearBufferfv(GL_COLOR, REFLECTED, clearReflected);
+  glClearBufferfv(GL_COLOR, HIT, clearHit);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
+  const int* region = frame.Region;
+  ostate->vtkglScissor(region[0], region[1], region[2] - region[0], region[3] - region[1]);
+
+  vtkShaderProgram* program = in.TraceQuads[frame.EnvironmentKind]->Program;
+  frame.Window->GetShaderCache()->ReadyShaderProgram(program);
+  this->SetTraceUniforms(program, frame);
+  in.TraceQuads[frame.EnvironmentKind]->Render();
+  in.Framebuffer->RemoveColorAttachment(HIT);
+  in.Framebuffer->RemoveColorAttachment(REFLECTED);
+  ostate->PopFramebufferBindings();
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepReflectionPass::SetTraceUniforms(vtkShaderProgram* program, const vtkTraceFrame& frame)
+{
+  SetLayerUniforms(program, frame, frame.DistanceUnit, frame.NormalUnit);
+  program->SetUniformi("deepRadiance", frame.RadianceUnit);
+  program->SetUniformi("deepReflectivity", frame.ReflectivityUnit);
+  program->SetUniformi("deepLayers", std::max(1, frame.Layers));
+  // The full projection for projecting ray points (column-major for GLSL).
   float projectionGL[16];
   for (int r = 0; r < 4; ++r)
   {
     for (int c = 0; c < 4; ++c)
     {
-      projectionGL[c * 4 + r] = static_cast<float>(projection[r * 4 + c]);
+      projectionGL[c * 4 + r] = static_cast<float>(frame.Projection[r * 4 + c]);
     }
   }
-  // Camera space -> environment frame: rows right, up, front of the
-  // renderer's environment frame times the inverse view rotation.
-  vtkNew<vtkMatrix4x4> inverseView;
-  inverseView->DeepCopy(view);
-  inverseView->Invert();
-  double up[3], right[3], front[3];
-  renderer->GetEnvironmentUp(up);
-  renderer->GetEnvironmentRight(right);
-  vtkMath::Normalize(up);
-  vtkMath::Normalize(right);
-  vtkMath::Cross(right, up, front);
-  const double* environmentFrame[3] = { right, up, front };
-  double toEnvironment[3][3];
-  for (int r = 0; r < 3; ++r)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      toEnvironment[r][c] = 0.0;
-      for (int k = 0; k < 3; ++k)
-      {
-        toEnvironment[r][c] += environmentFrame[r][k] * inverseView->GetElement(k, c);
-      }
-    }
-  }
+  program->SetUniformMatrix4x4("deepProjection", projectionGL);
+  // +infinity is a valid t_max (cut at the view frustum in the shader).
+  program->SetUniformf("deepMaxDistance",
+    static_cast<float>(
+      std::min(frame.MaximumDistance, static_cast<double>(std::numeric_limits<float>::max()))));
+  program->SetUniformf("deepThickness", static_cast<float>(frame.Thickness));
+  program->SetUniformi("deepMaxSteps", this->NumberOfSteps);
+  program->SetUniformf("deepPixelStride", static_cast<float>(this->PixelStride));
+  program->SetUniformi("deepRefinements", this->RefinementSteps);
   float toEnvironmentGL[9];
-  ToColumnMajor3(toEnvironment, toEnvironmentGL);
+  ViewToEnvironment(frame.Renderer, frame.View, toEnvironmentGL);
+  program->SetUniformMatrix3x3("deepViewToEnvironment", toEnvironmentGL);
   double background[3], background2[3];
-  renderer->GetBackground(background);
-  renderer->GetBackground2(background2);
+  frame.Renderer->GetBackground(background);
+  frame.Renderer->GetBackground2(background2);
   const float backgroundGL[3] = { static_cast<float>(background[0]),
     static_cast<float>(background[1]), static_cast<float>(background[2]) };
   const float background2GL[3] = { static_cast<float>(background2[0]),
     static_cast<float>(background2[1]), static_cast<float>(background2[2]) };
-
-  const int distanceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
-  const int normalUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::NORMAL);
-  const int radianceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::RADIANCE);
-  const int reflectivityUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::REFLECTIVITY);
-  auto deactivate = [&]()
+  program->SetUniform3f("deepBackground", backgroundGL);
+  program->SetUniform3f("deepBackground2", background2GL);
+  program->SetUniformi("deepGradient", frame.Renderer->GetGradientBackground() ? 1 : 0);
+  if (frame.EnvironmentObject)
   {
-    for (int quantity : { vtkDeepGBufferPass::REFLECTIVITY, vtkDeepGBufferPass::RADIANCE,
-           vtkDeepGBufferPass::NORMAL, vtkDeepGBufferPass::DEPTH })
-    {
-      gbuffer->DeactivateTexture(renderer, quantity);
-    }
-  };
-  if (distanceUnit < 0 || normalUnit < 0 || radianceUnit < 0 || reflectivityUnit < 0)
-  {
-    vtkErrorMacro("No free texture units for the reflections; rendering without them.");
-    deactivate();
-    if (environment)
-    {
-      environment->PostRender(renderer);
-    }
-    state.HasFrame = true;
-    return false;
+    program->SetUniformi("deepEnvironment", frame.EnvironmentObject->GetTextureUnit());
   }
-  {
-    vtkOpenGLState::ScopedglViewport savedViewport(ostate);
-    vtkOpenGLState::ScopedglEnableDisable savedScissorTest(ostate, GL_SCISSOR_TEST);
-    vtkOpenGLState::ScopedglScissor savedScissor(ostate);
-    vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
-    ostate->vtkglDisable(GL_SCISSOR_TEST);
-    ostate->vtkglDisable(GL_BLEND);
-    ostate->vtkglDisable(GL_DEPTH_TEST);
-    ostate->PushFramebufferBindings();
-    in.Framebuffer->Bind();
-    in.Framebuffer->AddColorAttachment(REFLECTED, state.Targets[REFLECTED]);
-    in.Framebuffer->AddColorAttachment(HIT, state.Targets[HIT]);
-    in.Framebuffer->ActivateDrawBuffers(NUMBER_OF_TARGETS);
-    ostate->vtkglViewport(0, 0, width, height);
-    // Untraced pixels: no radiance, hit layer -1.
-    const float clearReflected[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
-    const float clearHit[4] = { -1.0f, 0.0f, 0.0f, 0.0f };
-    glClearBufferfv(GL_COLOR, REFLECTED, clearReflected);
-    glClearBufferfv(GL_COLOR, HIT, clearHit);
-    ostate->vtkglEnable(GL_SCISSOR_TEST);
-    ostate->vtkglScissor(frameRegion[0], frameRegion[1], frameRegion[2] - frameRegion[0],
-      frameRegion[3] - frameRegion[1]);
-
-    vtkShaderProgram* program = in.TraceQuads[environmentKind]->Program;
-    window->GetShaderCache()->ReadyShaderProgram(program);
-    program->SetUniformi("deepDistance", distanceUnit);
-    program->SetUniformi("deepNormal", normalUnit);
-    program->SetUniformi("deepRadiance", radianceUnit);
-    program->SetUniformi("deepReflectivity", reflectivityUnit);
-    program->SetUniformi("deepLayers", std::max(1, layers));
-    program->SetUniform4f("deepProjXY", projXY);
-    program->SetUniform4f("deepProjT", projT);
-    program->SetUniformMatrix4x4("deepProjection", projectionGL);
-    // +infinity is a valid t_max (cut at the view frustum in the shader).
-    program->SetUniformf("deepMaxDistance",
-      static_cast<float>(
-        std::min(maximumDistance, static_cast<double>(std::numeric_limits<float>::max()))));
-    program->SetUniformf("deepThickness", static_cast<float>(thickness));
-    program->SetUniformi("deepMaxSteps", this->NumberOfSteps);
-    program->SetUniformf("deepPixelStride", static_cast<float>(this->PixelStride));
-    program->SetUniformi("deepRefinements", this->RefinementSteps);
-    program->SetUniformMatrix3x3("deepViewToEnvironment", toEnvironmentGL);
-    program->SetUniform3f("deepBackground", backgroundGL);
-    program->SetUniform3f("deepBackground2", background2GL);
-    program->SetUniformi("deepGradient", renderer->GetGradientBackground() ? 1 : 0);
-    if (environmentObject)
-    {
-      program->SetUniformi("deepEnvironment", environmentObject->GetTextureUnit());
-    }
-    in.TraceQuads[environmentKind]->Render();
-    in.Framebuffer->RemoveColorAttachment(HIT);
-    in.Framebuffer->RemoveColorAttachment(REFLECTED);
-    ostate->PopFramebufferBindings();
-  }
-  if (environment)
-  {
-    environment->PostRender(renderer);
-  }
-  deactivate();
-  state.HasFrame = true;
-  state.Traced = true;
-  vtkOpenGLCheckErrorMacro("failed after the reflection rays");
-  return true;
 }
 
 //------------------------------------------------------------------------------

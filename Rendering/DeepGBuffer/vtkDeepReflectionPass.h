@@ -96,6 +96,7 @@
 #include <memory> // for std::unique_ptr
 
 class vtkImageData;
+struct vtkDeepReflectionRendererState;
 class vtkRenderer;
 
 class VTKDEEPGIRENDERING_EXPORT vtkDeepReflectionPass : public vtkDeepScreenSpacePass
@@ -264,6 +265,17 @@ private:
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
+
+  // The stages of UpdateReflections, in order (vtkTraceFrame carries what
+  // one frame decided from stage to stage).
+  struct vtkTraceFrame;
+  void ComputeRayLimits(vtkTraceFrame& frame);
+  void BindEnvironment(vtkTraceFrame& frame);
+  bool PrepareTargets(const vtkTraceFrame& frame, vtkDeepReflectionRendererState& state);
+  bool ActivateLayers(vtkTraceFrame& frame);
+  void TraceRays(const vtkTraceFrame& frame, vtkDeepReflectionRendererState& state);
+  void SetTraceUniforms(vtkShaderProgram* program, const vtkTraceFrame& frame);
+  void DeactivateLayers(const vtkTraceFrame& frame);
 };
 
 #endif
