@@ -319,28 +319,14 @@ using vtkDeepScreenSpace::ReadyQuad;
 // when the G-buffer's AMBIENT quantity can be non-zero somewhere.
 bool vtkDeepAmbientObscurancePass::RendererHasAmbientTerm(vtkRenderer* renderer)
 {
-  if (!renderer)
-  {
-    return false;
-  }
-  vtkCollectionSimpleIterator it;
-  vtkPropCollection* props = renderer->GetViewProps();
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
-  {
-    vtkActor* actor = vtkActor::SafeDownCast(prop);
-    if (!actor || !actor->GetVisibility() || !actor->HasOpaqueGeometry())
+  return vtkDeepScreenSpace::AnyActor(renderer,
+    [](vtkActor* actor)
     {
-      continue;
-    }
-    vtkProperty* property = actor->GetProperty();
-    const double* color = property->GetAmbientColor();
-    if (property->GetAmbient() > 0.0 && std::max({ color[0], color[1], color[2] }) > 0.0)
-    {
-      return true;
-    }
-  }
-  return false;
+      vtkProperty* property = actor->GetProperty();
+      const double* color = property->GetAmbientColor();
+      return actor->HasOpaqueGeometry() && property->GetAmbient() > 0.0 &&
+        std::max({ color[0], color[1], color[2] }) > 0.0;
+    });
 }
 
 //------------------------------------------------------------------------------

@@ -80,27 +80,8 @@ constexpr int EffectMask =
 template <typename Visitor>
 bool AnyOpaqueActor(vtkRenderer* renderer, Visitor visit)
 {
-  vtkCollectionSimpleIterator it;
-  vtkPropCollection* props = renderer->GetViewProps();
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
-  {
-    if (!prop->GetVisibility())
-    {
-      continue;
-    }
-    prop->InitPathTraversal();
-    while (vtkAssemblyPath* path = prop->GetNextPath())
-    {
-      vtkActor* actor = vtkActor::SafeDownCast(path->GetLastNode()->GetViewProp());
-      if (actor && actor->GetVisibility() && actor->GetMapper() && actor->HasOpaqueGeometry() &&
-        visit(actor))
-      {
-        return true;
-      }
-    }
-  }
-  return false;
+  return vtkDeepScreenSpace::AnyActor(renderer, [&visit](vtkActor* actor)
+    { return actor->GetMapper() && actor->HasOpaqueGeometry() && visit(actor); });
 }
 
 // Whether some visible opaque actor has a non-black diffuse albedo

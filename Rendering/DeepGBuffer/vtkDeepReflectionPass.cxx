@@ -90,19 +90,7 @@ bool ActorReflects(vtkActor* actor)
 // Whether a prop (an actor, or the actors of an assembly) reflects.
 bool PropReflects(vtkProp* prop)
 {
-  if (!prop || !prop->GetVisibility())
-  {
-    return false;
-  }
-  prop->InitPathTraversal();
-  while (vtkAssemblyPath* path = prop->GetNextPath())
-  {
-    if (ActorReflects(vtkActor::SafeDownCast(path->GetLastNode()->GetViewProp())))
-    {
-      return true;
-    }
-  }
-  return false;
+  return vtkDeepScreenSpace::AnyActorOf(prop, ActorReflects);
 }
 
 // Whether any prop of the frame reflects.
@@ -292,21 +280,7 @@ void vtkDeepReflectionPass::SetPixelStride(double pixels)
 //------------------------------------------------------------------------------
 bool vtkDeepReflectionPass::RendererReflects(vtkRenderer* renderer)
 {
-  if (!renderer)
-  {
-    return false;
-  }
-  vtkCollectionSimpleIterator it;
-  vtkPropCollection* props = renderer->GetViewProps();
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
-  {
-    if (PropReflects(prop))
-    {
-      return true;
-    }
-  }
-  return false;
+  return vtkDeepScreenSpace::AnyActor(renderer, ActorReflects);
 }
 
 //------------------------------------------------------------------------------

@@ -10,7 +10,12 @@
 #ifndef vtkDeepScreenSpaceHelpers_h
 #define vtkDeepScreenSpaceHelpers_h
 
+#include "vtkActor.h"
+#include "vtkAssemblyNode.h"
+#include "vtkAssemblyPath.h"
 #include "vtkCallbackCommand.h"
+#include "vtkPropCollection.h"
+#include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtkWeakPointer.h"
@@ -23,7 +28,6 @@ class vtkOpenGLQuadHelper;
 class vtkOpenGLState;
 class vtkShaderProgram;
 class vtkOpenGLRenderWindow;
-class vtkRenderer;
 class vtkWindow;
 
 namespace vtkDeepScreenSpace
@@ -47,6 +51,51 @@ bool AllocateTarget(vtkSmartPointer<vtkTextureObject>& texture, vtkOpenGLRenderW
 
 /// Releases a texture and clears the pointer (null is fine).
 void ReleaseTarget(vtkSmartPointer<vtkTextureObject>& texture, vtkWindow* window);
+
+/**
+ * The one walk behind every "does the scene need effect X" question: calls
+ * `visit(actor)` on each visible actor that `prop` draws (the prop itself,
+ * or every actor on an assembly's paths) until it returns true, and returns
+ * whether one did. AnyActor does the same over the renderer's visible props.
+ */
+template <typename Visitor>
+bool AnyActorOf(vtkProp* prop, Visitor visit)
+{
+  if (!prop || !prop->GetVisibility())
+  {
+    return false;
+  }
+  prop->InitPathTraversal();
+  while (vtkAssemblyPath* path = prop->GetNextPath())
+  {
+    vtkActor* actor = vtkActor::SafeDownCast(path->GetLastNode()->GetViewProp());
+    if (actor && actor->GetVisibility() && visit(actor))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+template <typename Visitor>
+bool AnyActor(vtkRenderer* renderer, Visitor visit)
+{
+  if (!renderer)
+  {
+    return false;
+  }
+  vtkCollectionSimpleIterator it;
+  vtkPropCollection* props = renderer->GetViewProps();
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (AnyActorOf(prop, visit))
+    {
+      return true;
+    }
+  }
+  return false;
+}
 
 /// Diagonal of the bounds of the renderer's visible props, 0 when empty or
 /// not finite: the scene size the automatic radii are fractions of.

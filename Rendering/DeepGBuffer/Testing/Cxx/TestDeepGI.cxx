@@ -13,6 +13,7 @@
 //    drops to one layer, probes again after LayerProbeInterval frames, and
 //    goes back to two layers (coverage > 0) in the frame after a box is
 //    put in front of the plane. No effect at all: one layer, VTK's image.
+//    Actors inside a vtkAssembly count for every effect.
 // 3. Converge(renderer, 12) fires 12 ProgressEvents (k / 12) and the
 //    per-frame image change falls (radiosity bounces settle).
 //    Converge(renderer, n, tolerance) stops at the first frame whose window
@@ -27,6 +28,7 @@
 #include "vtkDeepAmbientObscurancePass.h"
 #include "vtkDeepGIPass.h"
 #include "vtkDeepReflectionPass.h"
+#include "vtkAssembly.h"
 #include "vtkLightCollection.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
@@ -195,6 +197,41 @@ void CheckSkipped(const char* what, const std::function<void(vtkRenderer*)>& sce
   }
   Release(on);
   Release(off);
+}
+
+// Every effect sees the actors of a vtkAssembly: the scene that needs every
+// effect, its actors moved into one assembly, still runs all three.
+void CheckAssembly()
+{
+  Run run;
+  Render(
+    run,
+    [](vtkRenderer* r)
+    {
+      AllEffectsScene(r);
+      vtkNew<vtkAssembly> assembly;
+      vtkActorCollection* actors = r->GetActors();
+      std::vector<vtkSmartPointer<vtkActor>> moved;
+      vtkCollectionSimpleIterator it;
+      actors->InitTraversal(it);
+      while (vtkActor* actor = actors->GetNextActor(it))
+      {
+        moved.emplace_back(actor);
+      }
+      for (vtkActor* actor : moved)
+      {
+        r->RemoveActor(actor);
+        assembly->AddPart(actor);
+      }
+      r->AddActor(assembly);
+    },
+    [](vtkDeepGIPass*) {}, 2);
+  const int all =
+    vtkDeepGIPass::AMBIENT_OBSCURANCE | vtkDeepGIPass::RADIOSITY | vtkDeepGIPass::REFLECTIONS;
+  Check((run.Pass->GetLastFrameEffects() & all) == all,
+    "actors inside a vtkAssembly: every effect runs (" +
+      vtkDeepGIPass::GetEffectsAsString(run.Pass->GetLastFrameEffects()) + ")");
+  Release(run);
 }
 
 void CheckSkipLogic()
@@ -507,6 +544,7 @@ int TestDeepGI(int, char*[])
   CheckBadInput();
   CheckComposite();
   CheckSkipLogic();
+  CheckAssembly();
   CheckConverge();
   std::printf("%d failure(s)\n", CheckFailures());
   return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
