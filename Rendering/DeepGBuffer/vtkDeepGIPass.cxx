@@ -568,8 +568,27 @@ void vtkDeepGIPass::Render(const vtkRenderState* s)
     slot->Renderer = renderer;
   }
   vtkDeepGIRendererState& state = *slot;
+  const int wanted = this->WantedEffects(renderer);
+  state.Reflects = (wanted & REFLECTIONS) != 0;
+  this->UpdateLayerCount(renderer, state);
+  // Only layer 0 is read unless an effect looks behind it.
+  const bool deepEffect = (wanted & (RADIOSITY | REFLECTIONS)) ||
+    ((wanted & AMBIENT_OBSCURANCE) && this->AmbientObscurancePass->GetUseSecondLayer());
+  const int layers = !deepEffect ? 1 : (this->AdaptiveLayers ? state.Layers : 2);
+  this->GBufferPass->SetNumberOfLayers(layers);
+  this->GBufferPass->SetWriteReflectivity(in.AnyReflects());
 
-  // What the scene requires (see the class description).
+  in.Wanted = wanted;
+  in.Current = &state;
+  this->GBufferPass->RenderFrame(s, in.OpaqueStep);
+  in.Current = nullptr;
+  this->NumberOfRenderedProps = this->GBufferPass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+// What the scene requires (see the class description).
+int vtkDeepGIPass::WantedEffects(vtkRenderer* renderer) const
+{
   int wanted = 0;
   if (this->AmbientObscurance && vtkDeepAmbientObscurancePass::RendererHasAmbientTerm(renderer))
   {
@@ -584,9 +603,15 @@ void vtkDeepGIPass::Render(const vtkRenderState* s)
   {
     wanted |= REFLECTIONS;
   }
-  state.Reflects = (wanted & REFLECTIONS) != 0;
+  return wanted;
+}
 
-  // Layer-1 coverage: collect a finished query without waiting for it.
+//------------------------------------------------------------------------------
+// The adaptive layer count: the newest layer-1 coverage collected without
+// waiting, two layers at once when the camera or props changed, and a probe
+// with two layers after LayerProbeInterval frames at one.
+void vtkDeepGIPass::UpdateLayerCount(vtkRenderer* renderer, vtkDeepGIRendererState& state)
+{
   if (state.QueryPending)
   {
     GLuint available = 0;
@@ -607,32 +632,18 @@ void vtkDeepGIPass::Render(const vtkRenderState* s)
   const SceneKey scene = SceneSignature(renderer);
   if (!SameScene(scene, state.Scene))
   {
-
-    // New camera or props: probe with two layers at once.
     state.Scene = scene;
     state.Layers = 2;
     state.FramesAtOneLayer = 0;
     state.QueryStale = state.QueryPending;
     state.Settling = true;
   }
-  else if (state.Layers == 1 && !in.Converging &&
+  else if (state.Layers == 1 && !this->Internals->Converging &&
     ++state.FramesAtOneLayer >= this->LayerProbeInterval)
   {
     state.Layers = 2;
     state.FramesAtOneLayer = 0;
   }
-  // Only layer 0 is read unless an effect looks behind it.
-  const bool deepEffect = (wanted & (RADIOSITY | REFLECTIONS)) ||
-    ((wanted & AMBIENT_OBSCURANCE) && this->AmbientObscurancePass->GetUseSecondLayer());
-  const int layers = !deepEffect ? 1 : (this->AdaptiveLayers ? state.Layers : 2);
-  this->GBufferPass->SetNumberOfLayers(layers);
-  this->GBufferPass->SetWriteReflectivity(in.AnyReflects());
-
-  in.Wanted = wanted;
-  in.Current = &state;
-  this->GBufferPass->RenderFrame(s, in.OpaqueStep);
-  in.Current = nullptr;
-  this->NumberOfRenderedProps = this->GBufferPass->GetNumberOfRenderedProps();
 }
 
 //------------------------------------------------------------------------------
@@ -654,172 +665,231 @@ void vtkDeepGIPass::RenderOpaque(const vtkRenderState* s)
     return;
   }
   const int layers = gbuffer->GetEffectiveNumberOfLayers();
+  const int secondLayer = layers >= 2 ? SECOND_LAYER : 0;
   this->LastFrameNumberOfLayers = layers;
   vtkOpenGLClearErrorMacro();
+  const int effects = this->UpdateEffects(s);
+  gbuffer->ResolveToFramebuffer(s);
+  this->QueryLayerCoverage(renderer, layers);
+  this->LastFrameEffects = effects | secondLayer;
+  if (effects && gbuffer->GetDisplayQuantity() == vtkDeepGBufferPass::RADIANCE)
+  {
+    // Otherwise nothing to add: exactly the G-buffer's (VTK's) image, or
+    // its debug display.
+    this->LastFrameEffects = this->Composite(renderer, effects) | secondLayer;
+  }
+  vtkOpenGLCheckErrorMacro("failed after vtkDeepGIPass");
+}
 
+//------------------------------------------------------------------------------
+// Runs the wanted effects over the layers; returns those that produced a
+// result.
+int vtkDeepGIPass::UpdateEffects(const vtkRenderState* s)
+{
+  const int wanted = this->Internals->Wanted;
   int effects = 0;
-  if ((in.Wanted & AMBIENT_OBSCURANCE) && this->AmbientObscurancePass->UpdateAmbientVisibility(s))
+  if ((wanted & AMBIENT_OBSCURANCE) && this->AmbientObscurancePass->UpdateAmbientVisibility(s))
   {
     effects |= AMBIENT_OBSCURANCE;
   }
-  if ((in.Wanted & RADIOSITY) && this->RadiosityPass->UpdateRadiosity(s))
+  if ((wanted & RADIOSITY) && this->RadiosityPass->UpdateRadiosity(s))
   {
     effects |= RADIOSITY;
   }
-  if ((in.Wanted & REFLECTIONS) && this->ReflectionPass->UpdateReflections(s) &&
-    this->ReflectionPass->GetReflectionTextureHandle(renderer) != 0)
+  if ((wanted & REFLECTIONS) && this->ReflectionPass->UpdateReflections(s) &&
+    this->ReflectionPass->GetReflectionTextureHandle(s->GetRenderer()) != 0)
   {
     effects |= REFLECTIONS;
   }
+  return effects;
+}
 
-  gbuffer->ResolveToFramebuffer(s);
-  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  vtkOpenGLState* ostate = window->GetState();
-  int layerSize[2] = { 0, 0 };
-  int guardBand = 0;
-  gbuffer->GetLayerExtent(renderer, layerSize, guardBand);
-
-  // Layer-1 coverage query (read in a later frame by Render).
+//------------------------------------------------------------------------------
+// Counts the layer-1 pixels with an occlusion query (a full-screen quad that
+// discards where layer 1 is empty), read by a later frame's Render. The
+// first frame after a change is not measured (see Settling).
+void vtkDeepGIPass::QueryLayerCoverage(vtkOpenGLRenderer* renderer, int layers)
+{
+  vtkInternals& in = *this->Internals;
   vtkDeepGIRendererState* state = in.Current;
-  const bool settling = state && state->Settling;
-  if (state)
+  if (!state)
   {
-    state->Settling = false;
-  }
-  if (state && !settling && layers >= 2 && this->AdaptiveLayers && !state->QueryPending &&
-    vtkDeepScreenSpace::ReadyQuad(in.CoverageQuad, window, vtkDeepGICoverageFS))
-  {
-    if (!state->Query)
-    {
-      glGenQueries(1, &state->Query);
-    }
-    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
-    vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
-    vtkOpenGLState::ScopedglColorMask savedColorMask(ostate);
-    ostate->vtkglDisable(GL_DEPTH_TEST);
-    ostate->vtkglDisable(GL_BLEND);
-    ostate->vtkglDepthMask(GL_FALSE);
-    ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    const int distanceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
-    in.CoverageQuad->Program->SetUniformi("deepDistance", distanceUnit);
-    in.CoverageQuad->Program->SetUniformi("deepGuardBand", guardBand);
-    glBeginQuery(GL_SAMPLES_PASSED, state->Query);
-    in.CoverageQuad->Render();
-    glEndQuery(GL_SAMPLES_PASSED);
-    gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
-    state->QueryPending = true;
-    state->QueryStale = false;
-  }
-
-  this->LastFrameEffects = effects | (layers >= 2 ? SECOND_LAYER : 0);
-  if (!effects || gbuffer->GetDisplayQuantity() != vtkDeepGBufferPass::RADIANCE)
-  {
-    // Nothing to add: exactly the G-buffer's (VTK's) image, or its debug display.
-    vtkOpenGLCheckErrorMacro("failed after vtkDeepGIPass");
     return;
   }
+  const bool settling = state->Settling;
+  state->Settling = false;
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  if (settling || layers < 2 || !this->AdaptiveLayers || state->QueryPending ||
+    !vtkDeepScreenSpace::ReadyQuad(in.CoverageQuad, window, vtkDeepGICoverageFS))
+  {
+    return;
+  }
+  if (!state->Query)
+  {
+    glGenQueries(1, &state->Query);
+  }
+  vtkOpenGLState* ostate = window->GetState();
+  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
+  vtkOpenGLState::ScopedglColorMask savedColorMask(ostate);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDepthMask(GL_FALSE);
+  ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  int layerSize[2] = { 0, 0 };
+  int guardBand = 0;
+  this->GBufferPass->GetLayerExtent(renderer, layerSize, guardBand);
+  const int distanceUnit = this->GBufferPass->ActivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
+  in.CoverageQuad->Program->SetUniformi("deepDistance", distanceUnit);
+  in.CoverageQuad->Program->SetUniformi("deepGuardBand", guardBand);
+  glBeginQuery(GL_SAMPLES_PASSED, state->Query);
+  in.CoverageQuad->Render();
+  glEndQuery(GL_SAMPLES_PASSED);
+  this->GBufferPass->DeactivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
+  state->QueryPending = true;
+  state->QueryStale = false;
+}
 
-  // Units of the composite's inputs; an effect whose texture cannot be
-  // bound is left out of the composite (and of LastFrameEffects).
-  const int distanceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
-  const int radianceUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::RADIANCE);
-  int ambientUnit = -1, visibilityUnit = -1, indirectUnit = -1, reflectedUnit = -1,
-      reflectivityUnit = -1;
+//------------------------------------------------------------------------------
+// The texture units of the composite's inputs (-1: not bound).
+struct vtkDeepGIPass::vtkCompositeInputs
+{
+  int Distance = -1;
+  int Radiance = -1;
+  int Ambient = -1;
+  int Visibility = -1;
+  int Indirect = -1;
+  int Reflected = -1;
+  int Reflectivity = -1;
+};
+
+//------------------------------------------------------------------------------
+// Composes layer 0 (class description): binds the inputs of `effects`,
+// leaves out an effect whose texture cannot be bound, draws, and returns
+// the effects composited.
+int vtkDeepGIPass::Composite(vtkOpenGLRenderer* renderer, int effects)
+{
+  vtkCompositeInputs inputs;
+  int composited = this->ActivateCompositeInputs(renderer, effects, inputs);
+  if (!this->DrawComposite(renderer, composited, inputs))
+  {
+    vtkErrorMacro("The GI composite is unavailable; showing the direct image.");
+    composited = 0;
+  }
+  this->DeactivateCompositeInputs(renderer, inputs);
+  return composited;
+}
+
+//------------------------------------------------------------------------------
+int vtkDeepGIPass::ActivateCompositeInputs(
+  vtkOpenGLRenderer* renderer, int effects, vtkCompositeInputs& inputs)
+{
+  vtkDeepGBufferPass* gbuffer = this->GBufferPass;
+  inputs.Distance = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
+  inputs.Radiance = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::RADIANCE);
+  int composited = effects;
   if (effects & AMBIENT_OBSCURANCE)
   {
-    ambientUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::AMBIENT);
-    visibilityUnit = this->AmbientObscurancePass->ActivateVisibilityTexture(renderer);
+    inputs.Ambient = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::AMBIENT);
+    inputs.Visibility = this->AmbientObscurancePass->ActivateVisibilityTexture(renderer);
+    composited &= (inputs.Ambient < 0 || inputs.Visibility < 0) ? ~AMBIENT_OBSCURANCE : ~0;
   }
   if (effects & RADIOSITY)
   {
-    indirectUnit =
+    inputs.Indirect =
       this->RadiosityPass->ActivateTexture(renderer, vtkDeepRadiosityPass::INDIRECT_RADIANCE, 0);
+    composited &= inputs.Indirect < 0 ? ~RADIOSITY : ~0;
   }
   if (effects & REFLECTIONS)
   {
-    reflectedUnit = this->ReflectionPass->ActivateReflectionTexture(renderer);
-    reflectivityUnit = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::REFLECTIVITY);
+    inputs.Reflected = this->ReflectionPass->ActivateReflectionTexture(renderer);
+    inputs.Reflectivity = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::REFLECTIVITY);
+    composited &= (inputs.Reflected < 0 || inputs.Reflectivity < 0) ? ~REFLECTIONS : ~0;
   }
-  int composited = effects;
-  if (ambientUnit < 0 || visibilityUnit < 0)
-  {
-    composited &= ~AMBIENT_OBSCURANCE;
-  }
-  if (indirectUnit < 0)
-  {
-    composited &= ~RADIOSITY;
-  }
-  if (reflectedUnit < 0 || reflectivityUnit < 0)
-  {
-    composited &= ~REFLECTIONS;
-  }
-  vtkOpenGLQuadHelper*& quad = in.CompositeQuads[composited];
+  return composited;
+}
+
+//------------------------------------------------------------------------------
+// One program per combination of effects (the composite shader's
+// DEEP_GI_* switches); false when it is unavailable.
+bool vtkDeepGIPass::DrawComposite(
+  vtkOpenGLRenderer* renderer, int composited, const vtkCompositeInputs& inputs)
+{
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  vtkOpenGLQuadHelper*& quad = this->Internals->CompositeQuads[composited];
   std::string fs = vtkDeepGICompositeFS;
   vtkShaderProgram::Substitute(fs, "//VTK::DeepGI::Effects",
     std::string("#define DEEP_GI_AO ") + ((composited & AMBIENT_OBSCURANCE) ? "1" : "0") +
       "\n#define DEEP_GI_RADIOSITY " + ((composited & RADIOSITY) ? "1" : "0") +
       "\n#define DEEP_GI_REFLECTIONS " + ((composited & REFLECTIONS) ? "1" : "0") + "\n");
-  if (distanceUnit >= 0 && radianceUnit >= 0 &&
-    vtkDeepScreenSpace::ReadyQuad(quad, window, fs.c_str()))
+  if (inputs.Distance < 0 || inputs.Radiance < 0 ||
+    !vtkDeepScreenSpace::ReadyQuad(quad, window, fs.c_str()))
   {
-    vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
-    vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(ostate);
-    ostate->vtkglEnable(GL_BLEND);
-    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ZERO, GL_ZERO, GL_ONE);
-    ostate->vtkglDisable(GL_DEPTH_TEST);
-    ostate->vtkglDepthMask(GL_FALSE);
-    vtkShaderProgram* program = quad->Program;
-    program->SetUniformi("deepDistance", distanceUnit);
-    program->SetUniformi("deepRadiance", radianceUnit);
-    program->SetUniformi("deepGuardBand", guardBand);
-    if (composited & AMBIENT_OBSCURANCE)
-    {
-      program->SetUniformi("deepAmbient", ambientUnit);
-      program->SetUniformi("deepVisibility", visibilityUnit);
-    }
-    if (composited & RADIOSITY)
-    {
-      program->SetUniformi("deepIndirect", indirectUnit);
-    }
-    if (composited & REFLECTIONS)
-    {
-      program->SetUniformi("deepReflected", reflectedUnit);
-      program->SetUniformi("deepReflectivity", reflectivityUnit);
-    }
-    quad->Render();
+    return false;
   }
-  else
+  vtkOpenGLState* ostate = window->GetState();
+  vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
+  vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(ostate);
+  // The colour is replaced, the framebuffer's alpha kept.
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ZERO, GL_ZERO, GL_ONE);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDepthMask(GL_FALSE);
+  int layerSize[2] = { 0, 0 };
+  int guardBand = 0;
+  this->GBufferPass->GetLayerExtent(renderer, layerSize, guardBand);
+  vtkShaderProgram* program = quad->Program;
+  program->SetUniformi("deepDistance", inputs.Distance);
+  program->SetUniformi("deepRadiance", inputs.Radiance);
+  program->SetUniformi("deepGuardBand", guardBand);
+  if (composited & AMBIENT_OBSCURANCE)
   {
-    vtkErrorMacro("The GI composite is unavailable; showing the direct image.");
-    composited = 0;
+    program->SetUniformi("deepAmbient", inputs.Ambient);
+    program->SetUniformi("deepVisibility", inputs.Visibility);
   }
-  if (reflectivityUnit >= 0)
+  if (composited & RADIOSITY)
+  {
+    program->SetUniformi("deepIndirect", inputs.Indirect);
+  }
+  if (composited & REFLECTIONS)
+  {
+    program->SetUniformi("deepReflected", inputs.Reflected);
+    program->SetUniformi("deepReflectivity", inputs.Reflectivity);
+  }
+  quad->Render();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGIPass::DeactivateCompositeInputs(
+  vtkOpenGLRenderer* renderer, const vtkCompositeInputs& inputs)
+{
+  vtkDeepGBufferPass* gbuffer = this->GBufferPass;
+  if (inputs.Reflectivity >= 0)
   {
     gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::REFLECTIVITY);
   }
-  if (reflectedUnit >= 0)
+  if (inputs.Reflected >= 0)
   {
     this->ReflectionPass->DeactivateReflectionTexture(renderer);
   }
-  if (indirectUnit >= 0)
+  if (inputs.Indirect >= 0)
   {
     this->RadiosityPass->DeactivateTexture(renderer, vtkDeepRadiosityPass::INDIRECT_RADIANCE, 0);
   }
-  if (visibilityUnit >= 0)
+  if (inputs.Visibility >= 0)
   {
     this->AmbientObscurancePass->DeactivateVisibilityTexture(renderer);
   }
-  if (ambientUnit >= 0)
+  if (inputs.Ambient >= 0)
   {
     gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::AMBIENT);
   }
   gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::RADIANCE);
   gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
-  this->LastFrameEffects = composited | (layers >= 2 ? SECOND_LAYER : 0);
-  vtkOpenGLCheckErrorMacro("failed after vtkDeepGIPass");
 }
 
 //------------------------------------------------------------------------------

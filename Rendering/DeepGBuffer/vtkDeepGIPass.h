@@ -104,7 +104,9 @@ class vtkDeepAmbientObscurancePass;
 class vtkDeepGBufferPass;
 class vtkDeepRadiosityPass;
 class vtkDeepReflectionPass;
+class vtkOpenGLRenderer;
 class vtkRenderer;
+struct vtkDeepGIRendererState;
 
 class VTKDEEPGIRENDERING_EXPORT vtkDeepGIPass : public vtkRenderPass
 {
@@ -279,6 +281,17 @@ protected:
 private:
   vtkDeepGIPass(const vtkDeepGIPass&) = delete;
   void operator=(const vtkDeepGIPass&) = delete;
+
+  // The stages of Render and RenderOpaque, in order.
+  struct vtkCompositeInputs;
+  int WantedEffects(vtkRenderer* renderer) const;
+  void UpdateLayerCount(vtkRenderer* renderer, vtkDeepGIRendererState& state);
+  int UpdateEffects(const vtkRenderState* s);
+  void QueryLayerCoverage(vtkOpenGLRenderer* renderer, int layers);
+  int Composite(vtkOpenGLRenderer* renderer, int effects);
+  int ActivateCompositeInputs(vtkOpenGLRenderer* renderer, int effects, vtkCompositeInputs& inputs);
+  bool DrawComposite(vtkOpenGLRenderer* renderer, int composited, const vtkCompositeInputs& inputs);
+  void DeactivateCompositeInputs(vtkOpenGLRenderer* renderer, const vtkCompositeInputs& inputs);
 
   friend class vtkDeepGIOpaqueStep;
   class vtkInternals;
