@@ -1931,6 +1931,143 @@ void vtkDeepGBufferPass::DeactivateTexture(vtkRenderer* renderer, int quantity)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// The G-buffer's textures read back whole (every slot) in their stored
+// formats.
+struct LayerDownload
+{
+  std::vector<float> Radiance, Distance, Ambient;
+  std::vector<unsigned char> Albedo, Normal, Reflectivity;
+};
+
+void DownloadLayers(
+  const vtkDeepGBufferRendererState& state, vtkOpenGLState* ostate, LayerDownload& d)
+{
+  const size_t slotPixels = static_cast<size_t>(state.Width) * state.Height * state.Slots;
+  d.Radiance.resize(slotPixels * 4);
+  d.Distance.resize(slotPixels);
+  d.Ambient.resize(slotPixels * 3);
+  d.Albedo.resize(slotPixels * 4);
+  d.Normal.resize(slotPixels * 2);
+  ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+  vtkOpenGLState::ScopedglActiveTexture savedUnit(ostate);
+  GLint previous = 0;
+  glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &previous);
+  auto download = [&](int quantity, GLenum format, GLenum type, void* data) {
+    glBindTexture(GL_TEXTURE_2D_ARRAY, state.Textures[quantity]);
+    glGetTexImage(GL_TEXTURE_2D_ARRAY, 0, format, type, data);
+  };
+  download(vtkDeepGBufferPass::RADIANCE, GL_RGBA, GL_FLOAT, d.Radiance.data());
+  download(vtkDeepGBufferPass::ALBEDO, GL_RGBA, GL_UNSIGNED_BYTE, d.Albedo.data());
+  download(vtkDeepGBufferPass::NORMAL, GL_RG, GL_UNSIGNED_BYTE, d.Normal.data());
+  download(vtkDeepGBufferPass::DEPTH, GL_RED, GL_FLOAT, d.Distance.data());
+  download(vtkDeepGBufferPass::AMBIENT, GL_RGB, GL_FLOAT, d.Ambient.data());
+  if (state.Textures[vtkDeepGBufferPass::REFLECTIVITY])
+  {
+    d.Reflectivity.resize(slotPixels * 4);
+    download(
+      vtkDeepGBufferPass::REFLECTIVITY, GL_RGBA, GL_UNSIGNED_BYTE, d.Reflectivity.data());
+  }
+  glBindTexture(GL_TEXTURE_2D_ARRAY, previous);
+  ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
+}
+
+vtkSmartPointer<vtkFloatArray> NewLayerArray(
+  const char* quantity, int layer, int components, size_t pixels)
+{
+  auto array = vtkSmartPointer<vtkFloatArray>::New();
+  array->SetName((quantity + std::string("_") + std::to_string(layer)).c_str());
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(pixels));
+  return array;
+}
+
+// The point-data arrays of layer j (CaptureLayers); 0 where it is empty.
+void AddLayerArrays(vtkPointData* pd, const LayerDownload& d, int j, size_t pixels)
+{
+  auto radiance = NewLayerArray("Radiance", j, 4, pixels);
+  auto albedo = NewLayerArray("Albedo", j, 3, pixels);
+  auto normal = NewLayerArray("Normal", j, 3, pixels);
+  auto ambient = NewLayerArray("Ambient", j, 3, pixels);
+  auto depth = NewLayerArray("Depth", j, 1, pixels);
+  auto reflectivity = d.Reflectivity.empty() ? nullptr : NewLayerArray("Reflectivity", j, 3, pixels);
+  vtkNew<vtkUnsignedCharArray> valid;
+  valid->SetName(("Valid_" + std::to_string(j)).c_str());
+  valid->SetNumberOfTuples(static_cast<vtkIdType>(pixels));
+  for (size_t p = 0; p < pixels; ++p)
+  {
+    const size_t q = pixels * j + p;
+    const bool isValid = d.Distance[q] > 0.0f;
+    valid->SetValue(p, isValid ? 1 : 0);
+    depth->SetValue(p, isValid ? d.Distance[q] : 0.0f);
+    for (int c = 0; c < 4; ++c)
+    {
+      radiance->SetTypedComponent(p, c, isValid ? d.Radiance[4 * q + c] : 0.0f);
+    }
+    double n[3] = { 0.0, 0.0, 0.0 };
+    if (isValid)
+    {
+      vtkDeepGBufferPass::DecodeOct16(&d.Normal[2 * q], n);
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      albedo->SetTypedComponent(p, c, isValid ? d.Albedo[4 * q + c] / 255.0f : 0.0f);
+      ambient->SetTypedComponent(p, c, isValid ? d.Ambient[3 * q + c] : 0.0f);
+      normal->SetTypedComponent(p, c, static_cast<float>(n[c]));
+      if (reflectivity)
+      {
+        reflectivity->SetTypedComponent(
+          p, c, isValid ? d.Reflectivity[4 * q + c] / 255.0f : 0.0f);
+      }
+    }
+  }
+  for (vtkDataArray* array :
+    { static_cast<vtkDataArray*>(radiance), static_cast<vtkDataArray*>(albedo),
+      static_cast<vtkDataArray*>(normal), static_cast<vtkDataArray*>(depth),
+      static_cast<vtkDataArray*>(ambient), static_cast<vtkDataArray*>(valid) })
+  {
+    pd->AddArray(array);
+  }
+  if (reflectivity)
+  {
+    pd->AddArray(reflectivity);
+  }
+}
+
+// The frame's description in the capture's field data.
+void AddFrameFieldData(vtkImageData* output, const vtkDeepGBufferRendererState& state)
+{
+  vtkNew<vtkDoubleArray> separation;
+  separation->SetName("MinimumSeparation");
+  separation->InsertNextValue(state.MinimumSeparation);
+  vtkNew<vtkIntArray> layerCount;
+  layerCount->SetName("NumberOfLayers");
+  layerCount->InsertNextValue(state.RenderedLayers);
+  vtkNew<vtkStringArray> oracleName;
+  oracleName->SetName("Oracle");
+  oracleName->InsertNextValue(vtkDeepGBufferPass::GetOracleAsString(state.Oracle));
+  output->GetFieldData()->AddArray(separation);
+  output->GetFieldData()->AddArray(layerCount);
+  output->GetFieldData()->AddArray(oracleName);
+  // The camera of the frame, so that positions can be reconstructed in world
+  // space: view (world to camera) and projection (camera to clip, z in
+  // [-1, 1]) matrices, row-major as vtkMatrix4x4 stores them. Pixel (i, j)
+  // of the frame has its centre at NDC ((i + 0.5) / width * 2 - 1,
+  // (j + 0.5) / height * 2 - 1) of the frame's own projection.
+  for (auto matrix : { std::make_pair("ViewMatrix", &state.LayerView),
+         std::make_pair("ProjectionMatrix", &state.LayerFrameProjection) })
+  {
+    vtkNew<vtkDoubleArray> values;
+    values->SetName(matrix.first);
+    values->SetNumberOfComponents(16);
+    values->InsertNextTuple(matrix.second->data());
+    output->GetFieldData()->AddArray(values);
+  }
+}
+}
+
+//------------------------------------------------------------------------------
 bool vtkDeepGBufferPass::CaptureLayers(vtkImageData* output, vtkRenderer* renderer)
 {
   vtkDeepGBufferRendererState* state =
@@ -1943,137 +2080,20 @@ bool vtkDeepGBufferPass::CaptureLayers(vtkImageData* output, vtkRenderer* render
   vtkOpenGLRenderWindow* window =
     vtkOpenGLRenderWindow::SafeDownCast(state->Renderer->GetRenderWindow());
   window->MakeCurrent();
-  vtkOpenGLState* ostate = window->GetState();
   vtkOpenGLClearErrorMacro();
-
-  const int w = state->Width, h = state->Height, layers = state->RenderedLayers;
-  const size_t pixels = static_cast<size_t>(w) * h;
-  const size_t slotPixels = pixels * state->Slots;
-  std::vector<float> radiance(slotPixels * 4), distance(slotPixels), ambient(slotPixels * 3);
-  std::vector<unsigned char> albedo(slotPixels * 4), normal(slotPixels * 2);
-
-  ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
-  vtkOpenGLState::ScopedglActiveTexture savedUnit(ostate);
-  GLint previous = 0;
-  glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &previous);
-  auto download = [&](GLuint texture, GLenum format, GLenum type, void* data) {
-    glBindTexture(GL_TEXTURE_2D_ARRAY, texture);
-    glGetTexImage(GL_TEXTURE_2D_ARRAY, 0, format, type, data);
-  };
-  download(state->Textures[RADIANCE], GL_RGBA, GL_FLOAT, radiance.data());
-  download(state->Textures[ALBEDO], GL_RGBA, GL_UNSIGNED_BYTE, albedo.data());
-  download(state->Textures[NORMAL], GL_RG, GL_UNSIGNED_BYTE, normal.data());
-  download(state->Textures[DEPTH], GL_RED, GL_FLOAT, distance.data());
-  download(state->Textures[AMBIENT], GL_RGB, GL_FLOAT, ambient.data());
-  std::vector<unsigned char> reflectivity;
-  if (state->Textures[REFLECTIVITY])
-  {
-    reflectivity.resize(slotPixels * 4);
-    download(state->Textures[REFLECTIVITY], GL_RGBA, GL_UNSIGNED_BYTE, reflectivity.data());
-  }
-  glBindTexture(GL_TEXTURE_2D_ARRAY, previous);
-  ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
-
+  LayerDownload download;
+  DownloadLayers(*state, window->GetState(), download);
   output->Initialize();
-  output->SetDimensions(w, h, 1);
+  output->SetDimensions(state->Width, state->Height, 1);
   output->SetSpacing(1.0, 1.0, 1.0);
   output->SetOrigin(0.0, 0.0, 0.0);
-  vtkPointData* pd = output->GetPointData();
-  for (int j = 0; j < layers; ++j)
+  const size_t pixels = static_cast<size_t>(state->Width) * state->Height;
+  for (int j = 0; j < state->RenderedLayers; ++j)
   {
-    const std::string suffix = "_" + std::to_string(j);
-    vtkNew<vtkFloatArray> rad, alb, nrm, dist, amb;
-    vtkNew<vtkUnsignedCharArray> valid;
-    rad->SetName(("Radiance" + suffix).c_str());
-    rad->SetNumberOfComponents(4);
-    rad->SetNumberOfTuples(pixels);
-    alb->SetName(("Albedo" + suffix).c_str());
-    alb->SetNumberOfComponents(3);
-    alb->SetNumberOfTuples(pixels);
-    nrm->SetName(("Normal" + suffix).c_str());
-    nrm->SetNumberOfComponents(3);
-    nrm->SetNumberOfTuples(pixels);
-    amb->SetName(("Ambient" + suffix).c_str());
-    amb->SetNumberOfComponents(3);
-    amb->SetNumberOfTuples(pixels);
-    dist->SetName(("Depth" + suffix).c_str());
-    dist->SetNumberOfTuples(pixels);
-    valid->SetName(("Valid" + suffix).c_str());
-    valid->SetNumberOfTuples(pixels);
-    const size_t base = pixels * j;
-    for (size_t p = 0; p < pixels; ++p)
-    {
-      const size_t q = base + p;
-      const bool isValid = distance[q] > 0.0f;
-      valid->SetValue(p, isValid ? 1 : 0);
-      dist->SetValue(p, isValid ? distance[q] : 0.0f);
-      for (int c = 0; c < 4; ++c)
-      {
-        rad->SetTypedComponent(p, c, isValid ? radiance[4 * q + c] : 0.0f);
-      }
-      double n[3] = { 0.0, 0.0, 0.0 };
-      if (isValid)
-      {
-        DecodeOct16(&normal[2 * q], n);
-      }
-      for (int c = 0; c < 3; ++c)
-      {
-        alb->SetTypedComponent(p, c, isValid ? albedo[4 * q + c] / 255.0f : 0.0f);
-        amb->SetTypedComponent(p, c, isValid ? ambient[3 * q + c] : 0.0f);
-        nrm->SetTypedComponent(p, c, static_cast<float>(n[c]));
-      }
-    }
-    pd->AddArray(rad);
-    pd->AddArray(alb);
-    pd->AddArray(nrm);
-    pd->AddArray(dist);
-    pd->AddArray(amb);
-    pd->AddArray(valid);
-    if (!reflectivity.empty())
-    {
-      vtkNew<vtkFloatArray> refl;
-      refl->SetName(("Reflectivity" + suffix).c_str());
-      refl->SetNumberOfComponents(3);
-      refl->SetNumberOfTuples(pixels);
-      for (size_t p = 0; p < pixels; ++p)
-      {
-        const size_t q = base + p;
-        for (int c = 0; c < 3; ++c)
-        {
-          refl->SetTypedComponent(
-            p, c, distance[q] > 0.0f ? reflectivity[4 * q + c] / 255.0f : 0.0f);
-        }
-      }
-      pd->AddArray(refl);
-    }
+    AddLayerArrays(output->GetPointData(), download, j, pixels);
   }
   vtkDeepScreenSpace::CropGuardBand(output, state->GuardBand);
-  vtkNew<vtkDoubleArray> separation;
-  separation->SetName("MinimumSeparation");
-  separation->InsertNextValue(state->MinimumSeparation);
-  vtkNew<vtkIntArray> layerCount;
-  layerCount->SetName("NumberOfLayers");
-  layerCount->InsertNextValue(layers);
-  vtkNew<vtkStringArray> oracleName;
-  oracleName->SetName("Oracle");
-  oracleName->InsertNextValue(GetOracleAsString(state->Oracle));
-  output->GetFieldData()->AddArray(separation);
-  output->GetFieldData()->AddArray(layerCount);
-  output->GetFieldData()->AddArray(oracleName);
-  // The camera of the frame, so that positions can be reconstructed in world
-  // space: view (world to camera) and projection (camera to clip, z in
-  // [-1, 1]) matrices, row-major as vtkMatrix4x4 stores them. Pixel (i, j)
-  // of the frame has its centre at NDC ((i + 0.5) / width * 2 - 1,
-  // (j + 0.5) / height * 2 - 1) of the frame's own projection.
-  for (auto matrix : { std::make_pair("ViewMatrix", &state->LayerView),
-         std::make_pair("ProjectionMatrix", &state->LayerFrameProjection) })
-  {
-    vtkNew<vtkDoubleArray> values;
-    values->SetName(matrix.first);
-    values->SetNumberOfComponents(16);
-    values->InsertNextTuple(matrix.second->data());
-    output->GetFieldData()->AddArray(values);
-  }
+  AddFrameFieldData(output, *state);
   vtkOpenGLCheckErrorMacro("failed after capturing the deep G-buffer");
   return true;
 }
