@@ -2051,19 +2051,11 @@ void AddFrameFieldData(vtkImageData* output, const vtkDeepGBufferRendererState& 
   output->GetFieldData()->AddArray(layerCount);
   output->GetFieldData()->AddArray(oracleName);
   // The camera of the frame, so that positions can be reconstructed in world
-  // space: view (world to camera) and projection (camera to clip, z in
-  // [-1, 1]) matrices, row-major as vtkMatrix4x4 stores them. Pixel (i, j)
-  // of the frame has its centre at NDC ((i + 0.5) / width * 2 - 1,
-  // (j + 0.5) / height * 2 - 1) of the frame's own projection.
-  for (auto matrix : { std::make_pair("ViewMatrix", &state.LayerView),
-         std::make_pair("ProjectionMatrix", &state.LayerFrameProjection) })
-  {
-    vtkNew<vtkDoubleArray> values;
-    values->SetName(matrix.first);
-    values->SetNumberOfComponents(16);
-    values->InsertNextTuple(matrix.second->data());
-    output->GetFieldData()->AddArray(values);
-  }
+  // space: pixel (i, j) of the frame has its centre at NDC
+  // ((i + 0.5) / width * 2 - 1, (j + 0.5) / height * 2 - 1) of the frame's
+  // own projection.
+  vtkDeepScreenSpace::AddCameraFieldData(
+    output->GetFieldData(), state.LayerView.data(), state.LayerFrameProjection.data());
 }
 }
 

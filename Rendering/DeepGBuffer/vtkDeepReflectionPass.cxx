@@ -737,69 +737,52 @@ void vtkDeepReflectionPass::DeactivateReflectionTexture(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
-bool vtkDeepReflectionPass::CaptureReflections(vtkImageData* output, vtkRenderer* renderer)
+namespace
 {
-  vtkDeepReflectionRendererState* state = this->Internals->States.Find(renderer);
-  if (!output || !state || !state->Renderer)
-  {
-    vtkErrorMacro("CaptureReflections: no reflections have been rendered for this renderer.");
-    return false;
-  }
-  vtkRenderer* ren = state->Renderer;
-  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  window->MakeCurrent();
-  vtkOpenGLState* ostate = window->GetState();
-  vtkOpenGLClearErrorMacro();
+// What CaptureReflections reads back: the traced radiance and hits, and
+// layer 0 of the G-buffer's reflectivity; zeros where nothing was traced.
+struct ReflectionDownload
+{
+  std::vector<float> Reflected, Hit;
+  std::vector<unsigned char> Reflectivity;
+};
 
-  int w = state->Width, h = state->Height;
-  if (!state->Traced)
+void DownloadReflections(vtkDeepReflectionRendererState& state, GLuint reflectivityHandle,
+  vtkOpenGLState* ostate, size_t pixels, ReflectionDownload& d)
+{
+  d.Reflected.assign(pixels * 4, 0.0f);
+  d.Hit.assign(pixels * 2, 0.0f);
+  d.Reflectivity.assign(pixels * 4, 0);
+  if (!state.Traced)
   {
-    // Nothing traced: the image of the G-buffer's size, all invalid.
-    double view[16], projection[16];
-    if (!this->GBufferPass->GetLayerCamera(ren, view, projection))
-    {
-      vtkErrorMacro("CaptureReflections: no G-buffer for this renderer.");
-      return false;
-    }
-    const int* size = ren->GetSize();
-    w = size[0];
-    h = size[1];
+    return;
   }
-  const size_t pixels = static_cast<size_t>(w) * h;
-  std::vector<float> reflected(pixels * 4, 0.0f), hit(pixels * 2, 0.0f);
-  std::vector<unsigned char> reflectivity(pixels * 4, 0);
-  if (state->Traced)
+  ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+  vtkOpenGLState::ScopedglActiveTexture savedUnit(ostate);
+  GLint previous2D = 0, previousArray = 0;
+  glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous2D);
+  glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &previousArray);
+  glBindTexture(GL_TEXTURE_2D, state.Targets[REFLECTED]->GetHandle());
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, d.Reflected.data());
+  glBindTexture(GL_TEXTURE_2D, state.Targets[HIT]->GetHandle());
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RG, GL_FLOAT, d.Hit.data());
+  glBindTexture(GL_TEXTURE_2D, previous2D);
+  // Layer 0 of the G-buffer's reflectivity array is its first w x h texels.
+  if (reflectivityHandle)
   {
-    ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
-    vtkOpenGLState::ScopedglActiveTexture savedUnit(ostate);
-    GLint previous2D = 0, previousArray = 0;
-    glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous2D);
-    glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &previousArray);
-    glBindTexture(GL_TEXTURE_2D, state->Targets[REFLECTED]->GetHandle());
-    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, reflected.data());
-    glBindTexture(GL_TEXTURE_2D, state->Targets[HIT]->GetHandle());
-    glGetTexImage(GL_TEXTURE_2D, 0, GL_RG, GL_FLOAT, hit.data());
-    glBindTexture(GL_TEXTURE_2D, previous2D);
-    // Layer 0 of the G-buffer's reflectivity array is its first w x h texels.
-    const GLuint handle =
-      this->GBufferPass->GetTextureHandle(ren, vtkDeepGBufferPass::REFLECTIVITY);
-    if (handle)
-    {
-      GLint depth = 0;
-      glBindTexture(GL_TEXTURE_2D_ARRAY, handle);
-      glGetTexLevelParameteriv(GL_TEXTURE_2D_ARRAY, 0, GL_TEXTURE_DEPTH, &depth);
-      std::vector<unsigned char> all(pixels * 4 * std::max(1, static_cast<int>(depth)));
-      glGetTexImage(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA, GL_UNSIGNED_BYTE, all.data());
-      std::copy(all.begin(), all.begin() + pixels * 4, reflectivity.begin());
-    }
-    glBindTexture(GL_TEXTURE_2D_ARRAY, previousArray);
-    ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
+    GLint depth = 0;
+    glBindTexture(GL_TEXTURE_2D_ARRAY, reflectivityHandle);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D_ARRAY, 0, GL_TEXTURE_DEPTH, &depth);
+    std::vector<unsigned char> all(pixels * 4 * std::max(1, static_cast<int>(depth)));
+    glGetTexImage(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA, GL_UNSIGNED_BYTE, all.data());
+    std::copy(all.begin(), all.begin() + pixels * 4, d.Reflectivity.begin());
   }
+  glBindTexture(GL_TEXTURE_2D_ARRAY, previousArray);
+  ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
+}
 
-  output->Initialize();
-  output->SetDimensions(w, h, 1);
-  output->SetSpacing(1.0, 1.0, 1.0);
-  output->SetOrigin(0.0, 0.0, 0.0);
+void AddReflectionArrays(vtkPointData* pd, const ReflectionDownload& d, size_t pixels)
+{
   vtkNew<vtkFloatArray> radiance, layer, distance, reflectance;
   vtkNew<vtkUnsignedCharArray> valid;
   radiance->SetName("ReflectedRadiance");
@@ -816,30 +799,27 @@ bool vtkDeepReflectionPass::CaptureReflections(vtkImageData* output, vtkRenderer
   valid->SetNumberOfTuples(pixels);
   for (size_t p = 0; p < pixels; ++p)
   {
-    const bool traced = reflected[4 * p + 3] > 0.0f;
+    const bool traced = d.Reflected[4 * p + 3] > 0.0f;
     valid->SetValue(p, traced ? 1 : 0);
-    layer->SetValue(p, traced ? hit[2 * p] : -1.0f);
-    distance->SetValue(p, traced && hit[2 * p] >= 0.0f ? hit[2 * p + 1] : 0.0f);
+    layer->SetValue(p, traced ? d.Hit[2 * p] : -1.0f);
+    distance->SetValue(p, traced && d.Hit[2 * p] >= 0.0f ? d.Hit[2 * p + 1] : 0.0f);
     for (int c = 0; c < 3; ++c)
     {
-      radiance->SetTypedComponent(p, c, traced ? reflected[4 * p + c] : 0.0f);
-      reflectance->SetTypedComponent(p, c, reflectivity[4 * p + c] / 255.0f);
+      radiance->SetTypedComponent(p, c, traced ? d.Reflected[4 * p + c] : 0.0f);
+      reflectance->SetTypedComponent(p, c, d.Reflectivity[4 * p + c] / 255.0f);
     }
   }
-  vtkPointData* pd = output->GetPointData();
   pd->AddArray(radiance);
   pd->AddArray(layer);
   pd->AddArray(distance);
   pd->AddArray(reflectance);
   pd->AddArray(valid);
-  if (state->Traced)
-  {
-    vtkDeepScreenSpace::CropGuardBand(output, state->GuardBand);
-  }
+}
 
-  vtkFieldData* fd = output->GetFieldData();
-  for (auto value : { std::make_pair("MaximumDistance", state->MaximumDistance),
-         std::make_pair("Thickness", state->Thickness) })
+void AddReflectionFieldData(vtkFieldData* fd, const vtkDeepReflectionRendererState& state)
+{
+  for (auto value : { std::make_pair("MaximumDistance", state.MaximumDistance),
+         std::make_pair("Thickness", state.Thickness) })
   {
     vtkNew<vtkDoubleArray> array;
     array->SetName(value.first);
@@ -848,17 +828,54 @@ bool vtkDeepReflectionPass::CaptureReflections(vtkImageData* output, vtkRenderer
   }
   vtkNew<vtkIntArray> traced;
   traced->SetName("Traced");
-  traced->InsertNextValue(state->Traced ? 1 : 0);
+  traced->InsertNextValue(state.Traced ? 1 : 0);
   fd->AddArray(traced);
-  for (auto matrix : { std::make_pair("ViewMatrix", state->View),
-         std::make_pair("ProjectionMatrix", state->FrameProjection) })
+  vtkDeepScreenSpace::AddCameraFieldData(fd, state.View, state.FrameProjection);
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepReflectionPass::CaptureReflections(vtkImageData* output, vtkRenderer* renderer)
+{
+  vtkDeepReflectionRendererState* state = this->Internals->States.Find(renderer);
+  if (!output || !state || !state->Renderer)
   {
-    vtkNew<vtkDoubleArray> values;
-    values->SetName(matrix.first);
-    values->SetNumberOfComponents(16);
-    values->InsertNextTuple(matrix.second);
-    fd->AddArray(values);
+    vtkErrorMacro("CaptureReflections: no reflections have been rendered for this renderer.");
+    return false;
   }
+  vtkRenderer* ren = state->Renderer;
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  window->MakeCurrent();
+  vtkOpenGLClearErrorMacro();
+  int w = state->Width, h = state->Height;
+  if (!state->Traced)
+  {
+    // Nothing traced: the image of the G-buffer's size, all invalid.
+    double view[16], projection[16];
+    if (!this->GBufferPass->GetLayerCamera(ren, view, projection))
+    {
+      vtkErrorMacro("CaptureReflections: no G-buffer for this renderer.");
+      return false;
+    }
+    const int* size = ren->GetSize();
+    w = size[0];
+    h = size[1];
+  }
+  const size_t pixels = static_cast<size_t>(w) * h;
+  ReflectionDownload download;
+  DownloadReflections(*state,
+    this->GBufferPass->GetTextureHandle(ren, vtkDeepGBufferPass::REFLECTIVITY),
+    window->GetState(), pixels, download);
+  output->Initialize();
+  output->SetDimensions(w, h, 1);
+  output->SetSpacing(1.0, 1.0, 1.0);
+  output->SetOrigin(0.0, 0.0, 0.0);
+  AddReflectionArrays(output->GetPointData(), download, pixels);
+  if (state->Traced)
+  {
+    vtkDeepScreenSpace::CropGuardBand(output, state->GuardBand);
+  }
+  AddReflectionFieldData(output->GetFieldData(), *state);
   vtkOpenGLCheckErrorMacro("failed after capturing the reflections");
   return true;
 }

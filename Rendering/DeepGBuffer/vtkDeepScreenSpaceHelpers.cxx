@@ -2,6 +2,8 @@
 
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -110,6 +112,20 @@ void ReleaseTarget(vtkSmartPointer<vtkTextureObject>& texture, vtkWindow* window
   {
     texture->ReleaseGraphicsResources(window);
     texture = nullptr;
+  }
+}
+
+//------------------------------------------------------------------------------
+void AddCameraFieldData(vtkFieldData* fd, const double view[16], const double projection[16])
+{
+  for (auto matrix :
+    { std::make_pair("ViewMatrix", view), std::make_pair("ProjectionMatrix", projection) })
+  {
+    vtkNew<vtkDoubleArray> values;
+    values->SetName(matrix.first);
+    values->SetNumberOfComponents(16);
+    values->InsertNextTuple(matrix.second);
+    fd->AddArray(values);
   }
 }
 

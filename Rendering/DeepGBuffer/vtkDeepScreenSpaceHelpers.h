@@ -23,6 +23,7 @@
 #include <map>    // for RendererStates
 #include <memory> // for RendererStates
 
+class vtkFieldData;
 class vtkImageData;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLState;
@@ -96,6 +97,11 @@ bool AnyActor(vtkRenderer* renderer, Visitor visit)
   }
   return false;
 }
+
+/// Adds the frame's camera to a capture's field data: "ViewMatrix" (world
+/// to camera) and "ProjectionMatrix" (camera to clip, z in [-1, 1]), 16
+/// components each, row-major as vtkMatrix4x4 stores them.
+void AddCameraFieldData(vtkFieldData* fd, const double view[16], const double projection[16]);
 
 /// Diagonal of the bounds of the renderer's visible props, 0 when empty or
 /// not finite: the scene size the automatic radii are fractions of.
