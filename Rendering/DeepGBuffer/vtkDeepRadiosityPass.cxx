@@ -881,6 +881,105 @@ void vtkDeepRadiosityPass::ReleaseGraphicsResources(vtkWindow* w)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+std::vector<float> DownloadRGBA(vtkTextureObject* texture, size_t pixels)
+{
+  std::vector<float> values(pixels * 4);
+  glBindTexture(GL_TEXTURE_2D, texture->GetHandle());
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, values.data());
+  return values;
+}
+
+// The G-buffer's distance array (every slot); `slots` receives its depth.
+std::vector<float> DownloadDistance(GLuint handle, size_t pixels, int& slots)
+{
+  glBindTexture(GL_TEXTURE_2D_ARRAY, handle);
+  GLint depth = 1;
+  glGetTexLevelParameteriv(GL_TEXTURE_2D_ARRAY, 0, GL_TEXTURE_DEPTH, &depth);
+  slots = std::max(1, static_cast<int>(depth));
+  std::vector<float> distance(pixels * slots);
+  glGetTexImage(GL_TEXTURE_2D_ARRAY, 0, GL_RED, GL_FLOAT, distance.data());
+  return distance;
+}
+
+vtkFloatArray* AddFloatArray(vtkPointData* pd, const std::string& name, int components, size_t pixels)
+{
+  vtkNew<vtkFloatArray> array;
+  array->SetName(name.c_str());
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(pixels));
+  pd->AddArray(array);
+  return array.GetPointer();
+}
+
+void AddIrradianceFieldData(vtkFieldData* fd, const vtkDeepRadiosityRendererState& state)
+{
+  auto addDoubles = [fd](const char* name, std::initializer_list<double> values)
+  {
+    vtkNew<vtkDoubleArray> array;
+    array->SetName(name);
+    for (double v : values)
+    {
+      array->InsertNextValue(v);
+    }
+    fd->AddArray(array);
+  };
+  addDoubles("Radius", { state.Radius });
+  addDoubles("ReprojectionTolerance", { state.Tolerance });
+  addDoubles("EnvironmentIrradiance",
+    { state.Environment[0], state.Environment[1], state.Environment[2] });
+  for (auto value : { std::make_pair("NumberOfSamples", state.NumberOfSamples),
+         std::make_pair("NumberOfLayers", state.LayerCount),
+         std::make_pair("Frames", static_cast<int>(state.FrameIndex)) })
+  {
+    vtkNew<vtkIntArray> array;
+    array->SetName(value.first);
+    array->InsertNextValue(value.second);
+    fd->AddArray(array);
+  }
+}
+
+// The arrays of layer j (CaptureIrradiance); 0 where the layer is empty.
+void AddIrradianceArrays(vtkImageData* output, vtkDeepRadiosityRendererState& state,
+  const std::vector<float>& distance, int slots, int j)
+{
+  const size_t pixels = static_cast<size_t>(state.Width) * state.Height;
+  const std::vector<float> irradiance =
+    DownloadRGBA(state.History[state.HistoryCurrent][j], pixels);
+  const std::vector<float> indirect = DownloadRGBA(state.Targets[INDIRECT][j], pixels);
+  const std::vector<float> filtered = DownloadRGBA(state.Targets[FILTERED][j], pixels);
+  const std::vector<float> raw = DownloadRGBA(state.Targets[RAW][j], pixels);
+  vtkPointData* pd = output->GetPointData();
+  const std::string suffix = "_" + std::to_string(j);
+  vtkFloatArray* e = AddFloatArray(pd, "Irradiance" + suffix, 3, pixels);
+  vtkFloatArray* l = AddFloatArray(pd, "IndirectRadiance" + suffix, 3, pixels);
+  vtkFloatArray* c = AddFloatArray(pd, "Confidence" + suffix, 1, pixels);
+  vtkFloatArray* fe = AddFloatArray(pd, "FilteredIrradiance" + suffix, 3, pixels);
+  vtkFloatArray* re = AddFloatArray(pd, "RawIrradiance" + suffix, 3, pixels);
+  vtkFloatArray* rc = AddFloatArray(pd, "RawConfidence" + suffix, 1, pixels);
+  vtkNew<vtkUnsignedCharArray> valid;
+  valid->SetName(("Valid" + suffix).c_str());
+  valid->SetNumberOfTuples(pixels);
+  pd->AddArray(valid);
+  for (size_t p = 0; p < pixels; ++p)
+  {
+    const bool isValid = j < state.LayerCount && j < slots && distance[j * pixels + p] > 0.0f;
+    valid->SetValue(p, isValid ? 1 : 0);
+    for (int k = 0; k < 3; ++k)
+    {
+      e->SetTypedComponent(p, k, isValid ? irradiance[4 * p + k] : 0.0f);
+      l->SetTypedComponent(p, k, isValid ? indirect[4 * p + k] : 0.0f);
+      re->SetTypedComponent(p, k, isValid ? raw[4 * p + k] : 0.0f);
+      fe->SetTypedComponent(p, k, isValid ? filtered[4 * p + k] : 0.0f);
+    }
+    c->SetValue(p, isValid ? filtered[4 * p + 3] : 0.0f);
+    rc->SetValue(p, isValid ? raw[4 * p + 3] : 0.0f);
+  }
+}
+}
+
+//------------------------------------------------------------------------------
 bool vtkDeepRadiosityPass::CaptureIrradiance(vtkImageData* output, vtkRenderer* renderer)
 {
   vtkDeepRadiosityRendererState* state = this->Internals->States.Find(renderer);
@@ -900,102 +999,27 @@ bool vtkDeepRadiosityPass::CaptureIrradiance(vtkImageData* output, vtkRenderer* 
   window->MakeCurrent();
   vtkOpenGLState* ostate = window->GetState();
   vtkOpenGLClearErrorMacro();
-
-  const int w = state->Width, h = state->Height;
-  const size_t pixels = static_cast<size_t>(w) * h;
   ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
   vtkOpenGLState::ScopedglActiveTexture savedUnit(ostate);
   GLint previous2D = 0, previousArray = 0;
   glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous2D);
   glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &previousArray);
-  auto download = [&](vtkTextureObject* texture)
-  {
-    std::vector<float> values(pixels * 4);
-    glBindTexture(GL_TEXTURE_2D, texture->GetHandle());
-    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, values.data());
-    return values;
-  };
-  glBindTexture(GL_TEXTURE_2D_ARRAY, distanceHandle);
-  GLint arrayDepth = 1;
-  glGetTexLevelParameteriv(GL_TEXTURE_2D_ARRAY, 0, GL_TEXTURE_DEPTH, &arrayDepth);
-  std::vector<float> distance(pixels * std::max(1, arrayDepth));
-  glGetTexImage(GL_TEXTURE_2D_ARRAY, 0, GL_RED, GL_FLOAT, distance.data());
-
+  const size_t pixels = static_cast<size_t>(state->Width) * state->Height;
+  int slots = 1;
+  const std::vector<float> distance = DownloadDistance(distanceHandle, pixels, slots);
   output->Initialize();
-  output->SetDimensions(w, h, 1);
+  output->SetDimensions(state->Width, state->Height, 1);
   output->SetSpacing(1.0, 1.0, 1.0);
   output->SetOrigin(0.0, 0.0, 0.0);
   for (int j = 0; j < Layers; ++j)
   {
-    const std::vector<float> irradiance = download(state->History[state->HistoryCurrent][j]);
-    const std::vector<float> indirect = download(state->Targets[INDIRECT][j]);
-    const std::vector<float> filtered = download(state->Targets[FILTERED][j]);
-    const std::vector<float> raw = download(state->Targets[RAW][j]);
-    const std::string suffix = "_" + std::to_string(j);
-    auto makeArray = [&](const char* name, int components)
-    {
-      vtkNew<vtkFloatArray> array;
-      array->SetName((name + suffix).c_str());
-      array->SetNumberOfComponents(components);
-      array->SetNumberOfTuples(pixels);
-      output->GetPointData()->AddArray(array);
-      return array.GetPointer();
-    };
-    vtkFloatArray* e = makeArray("Irradiance", 3);
-    vtkFloatArray* l = makeArray("IndirectRadiance", 3);
-    vtkFloatArray* c = makeArray("Confidence", 1);
-    vtkFloatArray* fe = makeArray("FilteredIrradiance", 3);
-    vtkFloatArray* re = makeArray("RawIrradiance", 3);
-    vtkFloatArray* rc = makeArray("RawConfidence", 1);
-    vtkNew<vtkUnsignedCharArray> valid;
-    valid->SetName(("Valid" + suffix).c_str());
-    valid->SetNumberOfTuples(pixels);
-    output->GetPointData()->AddArray(valid);
-    for (size_t p = 0; p < pixels; ++p)
-    {
-      const bool isValid =
-        j < state->LayerCount && j < arrayDepth && distance[j * pixels + p] > 0.0f;
-      valid->SetValue(p, isValid ? 1 : 0);
-      for (int k = 0; k < 3; ++k)
-      {
-        e->SetTypedComponent(p, k, isValid ? irradiance[4 * p + k] : 0.0f);
-        l->SetTypedComponent(p, k, isValid ? indirect[4 * p + k] : 0.0f);
-        re->SetTypedComponent(p, k, isValid ? raw[4 * p + k] : 0.0f);
-        fe->SetTypedComponent(p, k, isValid ? filtered[4 * p + k] : 0.0f);
-      }
-      c->SetValue(p, isValid ? filtered[4 * p + 3] : 0.0f);
-      rc->SetValue(p, isValid ? raw[4 * p + 3] : 0.0f);
-    }
+    AddIrradianceArrays(output, *state, distance, slots, j);
   }
   glBindTexture(GL_TEXTURE_2D, previous2D);
   glBindTexture(GL_TEXTURE_2D_ARRAY, previousArray);
   ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
   vtkDeepScreenSpace::CropGuardBand(output, state->GuardBand);
-
-  auto addField = [&](const char* name, std::initializer_list<double> values)
-  {
-    vtkNew<vtkDoubleArray> array;
-    array->SetName(name);
-    for (double v : values)
-    {
-      array->InsertNextValue(v);
-    }
-    output->GetFieldData()->AddArray(array);
-  };
-  addField("Radius", { state->Radius });
-  addField("ReprojectionTolerance", { state->Tolerance });
-  addField("EnvironmentIrradiance",
-    { state->Environment[0], state->Environment[1], state->Environment[2] });
-  vtkNew<vtkIntArray> samples, layerCount, frames;
-  samples->SetName("NumberOfSamples");
-  samples->InsertNextValue(state->NumberOfSamples);
-  layerCount->SetName("NumberOfLayers");
-  layerCount->InsertNextValue(state->LayerCount);
-  frames->SetName("Frames");
-  frames->InsertNextValue(static_cast<int>(state->FrameIndex));
-  output->GetFieldData()->AddArray(samples);
-  output->GetFieldData()->AddArray(layerCount);
-  output->GetFieldData()->AddArray(frames);
+  AddIrradianceFieldData(output->GetFieldData(), *state);
   vtkOpenGLCheckErrorMacro("failed after capturing the radiosity");
   return true;
 }
