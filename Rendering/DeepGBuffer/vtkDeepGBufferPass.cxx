@@ -50,6 +50,15 @@
 
 #include "vtkDeepGBufferCommon.h"
 #include "vtkDeepGBufferGS.h"
+#include "vtkDeepGBufferGuardBandDecGS.h"
+#include "vtkDeepGBufferGuardBandGS.h"
+#include "vtkDeepGBufferLayerDecFS.h"
+#include "vtkDeepGBufferLayerDecVS.h"
+#include "vtkDeepGBufferLayerImplVS.h"
+#include "vtkDeepGBufferLayerTestFS.h"
+#include "vtkDeepGBufferOutputsFS.h"
+#include "vtkDeepGBufferShaderTokens.h"
+#include "vtkDeepGBufferUnlitNormalFS.h"
 #include "vtkDeepGBufferResolveFS.h"
 #include "vtkDeepScreenSpaceHelpers.h"
 
@@ -578,6 +587,64 @@ bool IsRoutable(vtkProp* prop)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+namespace Tokens = vtkDeepGBufferShaderTokens;
+
+bool Contains(const std::string& shader, const char* token)
+{
+  return shader.find(token) != std::string::npos;
+}
+
+// The defines the layer test branches on, from this file's TestMode enum.
+std::string TestModeDefines()
+{
+  return "#define DEEP_TEST_NONE " + std::to_string(TEST_NONE) +
+    "\n#define DEEP_TEST_SAME_PIXEL " + std::to_string(TEST_SAME_PIXEL) +
+    "\n#define DEEP_TEST_REPROJECTED " + std::to_string(TEST_REPROJECTED) + "\n";
+}
+
+// The DEEP_GBUFFER_* expressions of vtkDeepGBufferOutputsFS for this
+// mapper's final fragment shader (what VTK's shading declared).
+std::string OutputExpressions(const std::string& fs, bool writeReflectivity)
+{
+  const bool pbr = Contains(fs, Tokens::PBRAlbedoDeclaration);
+  const bool textured = Contains(fs, Tokens::TextureColorDeclaration) && !pbr;
+  // VTK's colour is ambientColor + diffuse + specular (times the texture):
+  // its ambient part is what ambient obscurance darkens. PBR lighting has no
+  // separate ambient term here (its image-based light is left whole).
+  std::string defines = std::string("#define DEEP_GBUFFER_ALBEDO ") +
+    (pbr ? "albedo" : textured ? "(diffuseColor * tcolor.rgb)" : "diffuseColor") +
+    "\n#define DEEP_GBUFFER_AMBIENT " +
+    (pbr ? "vec3(0.0)" : textured ? "(ambientColor * tcolor.rgb)" : "ambientColor") +
+    "\n#define DEEP_GBUFFER_NORMAL " +
+    (Contains(fs, Tokens::ShadingNormalDeclaration) ? "normalize(normalVCVSOutput)"
+                                                    : "deepGeometricNormal") +
+    "\n";
+  if (writeReflectivity)
+  {
+    // Mirror reflectance from VTK's material (see SetWriteReflectivity). PBR:
+    // Fresnel at normal incidence, F0 as VTK's PBR lighting computes it
+    // (its F0 where lit; the base-layer default 0.04 where unlit), fading
+    // to 0 as the surface gets rough. Phong/Gouraud: VTK's specularColor,
+    // i.e. Specular x SpecularColor; props without lighting have none.
+    const std::string f0 =
+      Contains(fs, Tokens::PBRFresnelDeclaration) ? "F0" : "mix(vec3(0.04), albedo, metallic)";
+    defines += std::string("#define DEEP_GBUFFER_REFLECTIVITY ") +
+      (pbr ? "(" + f0 + " * ((1.0 - roughness) * (1.0 - roughness)))"
+           : Contains(fs, Tokens::SpecularColorDeclaration) ? std::string("specularColor")
+                                                            : std::string("vec3(0.0)")) +
+      "\n";
+  }
+  return defines;
+}
+}
+
+//------------------------------------------------------------------------------
+// Vertex stage: the other frame's clip position and the guard band (paper
+// sections 3.2 and 3.5); geometry stage: the layer routing of Listing 2
+// when one pass fills every layer; fragment stage: the minimum-separation
+// test before VTK's colouring and lighting.
 bool vtkDeepGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
   std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper* mapper,
   vtkProp* prop)
@@ -589,36 +656,23 @@ bool vtkDeepGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
   vtkInternals& in = *this->Internals;
   const bool routed =
     in.GeometryShaderSlots > 1 && geometryShader.empty() && in.IsRouted(prop);
-
-  // Vertex shader: the position of this vertex in the other frame's clip
-  // space (previous frame for REPROJECT/DELAY, predicted next frame for PREDICT).
-  // The guard band (SetGuardBand) widens the frustum: clip x and y are
-  // scaled by deepGuardBandScale where clip positions are made, in the vertex
-  // shader, or, for mappers whose geometry shader projects view-space
-  // positions itself (VCDCMatrix, e.g. vtkPointGaussianMapper's splats), at
-  // each vertex that geometry shader emits.
-  const bool geometryShaderProjects = geometryShader.find("VCDCMatrix") != std::string::npos;
-  vtkShaderProgram::Substitute(vertexShader, "//VTK::Camera::Dec",
-    "//VTK::Camera::Dec\n"
-    "uniform mat4 deepOtherMCDC;\n"
-    "uniform int deepVertexUsesOtherClip;\n"
-    "uniform vec2 deepGuardBandScale;\n"
-    "out vec4 deepOtherClipVSOutput;\n",
-    false);
-  vtkShaderProgram::Substitute(vertexShader, "//VTK::PositionVC::Impl",
-    std::string("//VTK::PositionVC::Impl\n") +
-      (geometryShaderProjects ? "" : "  gl_Position.xy *= deepGuardBandScale;\n") +
-      "  deepOtherClipVSOutput = deepOtherMCDC * vertexMC;\n"
-      "  if (deepVertexUsesOtherClip != 0) { gl_Position = deepOtherClipVSOutput; }\n",
+  // Mappers whose geometry shader projects view-space positions itself get
+  // the guard band's scale at each vertex it emits, not in the vertex shader.
+  const bool geometryShaderProjects = Contains(geometryShader, Tokens::GeometryProjects);
+  vtkShaderProgram::Substitute(vertexShader, Tokens::CameraDeclarations,
+    std::string(Tokens::CameraDeclarations) + "\n" + vtkDeepGBufferLayerDecVS, false);
+  vtkShaderProgram::Substitute(vertexShader, Tokens::PositionImplementation,
+    std::string(Tokens::PositionImplementation) + "\n" +
+      (geometryShaderProjects ? "#define DEEP_GBUFFER_GS_PROJECTS\n" : "") +
+      vtkDeepGBufferLayerImplVS,
     false);
   if (geometryShaderProjects)
   {
-    vtkShaderProgram::Substitute(
-      geometryShader, "void main()", "uniform vec2 deepGuardBandScale;\nvoid main()", false);
-    vtkShaderProgram::Substitute(geometryShader, "EmitVertex();",
-      "gl_Position.xy *= deepGuardBandScale;\n  EmitVertex();", true);
+    vtkShaderProgram::Substitute(geometryShader, Tokens::GeometryMain,
+      std::string(vtkDeepGBufferGuardBandDecGS) + Tokens::GeometryMain, false);
+    vtkShaderProgram::Substitute(geometryShader, Tokens::GeometryEmitVertex,
+      std::string(vtkDeepGBufferGuardBandGS) + Tokens::GeometryEmitVertex, true);
   }
-
   if (routed)
   {
     std::string gs = vtkDeepGBufferGS;
@@ -630,80 +684,22 @@ bool vtkDeepGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
       gs, "DEEP_GBUFFER_DISPLAYED_LAYERS", std::to_string(in.GeometryShaderLayers));
     geometryShader = gs;
   }
-
-  // Fragment shader: the minimum-separation test of Listing 1 line 13 and
-  // Listing 2 line 22, placed before VTK's colouring and lighting.
-  std::string declarations = "//VTK::DepthPeeling::Dec\n"
-                             "uniform int deepTestMode;\n"
-                             "uniform int deepTargetLayer;\n"
-                             "uniform int deepOracleLayerIndex;\n"
-                             "uniform int deepOtherClipLayerMask;\n"
-                             "uniform int deepCullBackFaces;\n"
-                             "uniform int deepEmissive;\n"
-                             "uniform float deepMinimumSeparation;\n"
-                             "uniform vec4 deepProjectionZ;\n"
-                             "uniform vec4 deepOtherProjectionZ;\n"
-                             "uniform mat4 deepInverseProjection;\n"
-                             "uniform vec2 deepViewportSize;\n"
-                             "uniform sampler2DArray deepHistoryDistance;\n"
-                             "in vec4 deepOtherClipVSOutput;\n";
-  if (routed)
-  {
-    declarations += "flat in int deepLayerVSOutput;\n";
-  }
-  declarations += vtkDeepGBufferCommon;
-  vtkShaderProgram::Substitute(fragmentShader, "//VTK::DepthPeeling::Dec", declarations, false);
-
-  std::string test = "//VTK::DepthPeeling::PreColor\n";
-  test += routed ? "  int deepLayer = deepLayerVSOutput;\n" : "  int deepLayer = deepTargetLayer;\n";
-  test +=
-    "  bool deepLayerUsesOtherClip = (deepOtherClipLayerMask & (1 << deepLayer)) != 0;\n"
-    "  float deepDistance = deepDistanceFromFragCoord(gl_FragCoord,\n"
-    "    deepLayerUsesOtherClip ? deepOtherProjectionZ : deepProjectionZ);\n"
-    "  if (deepLayer == deepOracleLayerIndex)\n"
-    "  {\n"
-    "    gl_FragData[1] = vec4(0.0);\n"
-    "    gl_FragData[2] = vec4(0.0);\n"
-    "    gl_FragData[3] = vec4(deepDistance, 0.0, 0.0, 1.0);\n"
-    "    gl_FragData[4] = vec4(0.0);\n"
-    "    //VTK::DeepGBuffer::OracleReflectivity\n"
-    "    return;\n"
-    "  }\n"
-    "  if (deepLayer > 0 && deepCullBackFaces != 0 && gl_FrontFacing == false) { discard; }\n"
-    "  if (deepLayer > 0 && deepTestMode != 0)\n"
-    "  {\n"
-    "    vec2 deepTestPixel = gl_FragCoord.xy;\n"
-    "    float deepTestDistance = deepDistance;\n"
-    "    if (deepTestMode == 2)\n"
-    "    {\n"
-    "      vec4 previousClip = deepOtherClipVSOutput;\n"
-    "      if (previousClip.w <= 0.0) { discard; }\n"
-    "      deepTestPixel = (previousClip.xy / previousClip.w * 0.5 + 0.5) * deepViewportSize;\n"
-    "      deepTestDistance = deepDistanceFromClip(previousClip, deepOtherProjectionZ);\n"
-    "    }\n"
-    "    ivec2 deepTexel = ivec2(floor(deepTestPixel));\n"
-    "    if (any(lessThan(deepTexel, ivec2(0))) ||\n"
-    "      any(greaterThanEqual(deepTexel, ivec2(deepViewportSize)))) { discard; }\n"
-    "    float deepOracle =\n"
-    "      texelFetch(deepHistoryDistance, ivec3(deepTexel, deepLayer - 1), 0).r;\n"
-    "    if (deepOracle <= 0.0 || !(deepTestDistance > deepOracle + deepMinimumSeparation))\n"
-    "    {\n"
-    "      discard;\n"
-    "    }\n"
-    "  }\n";
-  vtkShaderProgram::Substitute(fragmentShader, "//VTK::DepthPeeling::PreColor", test, false);
-  vtkShaderProgram::Substitute(fragmentShader, "//VTK::DeepGBuffer::OracleReflectivity",
-    this->WriteReflectivity ? "gl_FragData[5] = vec4(0.0);" : "", false);
-
-  // The G-buffer outputs go after texturing, where VTK's albedo is final.
-  vtkShaderProgram::Substitute(fragmentShader, "//VTK::TCoord::Impl",
-    "//VTK::TCoord::Impl\n"
-    "  //VTK::DeepGBuffer::Impl\n",
+  vtkShaderProgram::Substitute(fragmentShader, Tokens::DepthPeelingDeclarations,
+    std::string(Tokens::DepthPeelingDeclarations) + "\n" + TestModeDefines() +
+      (routed ? "#define DEEP_GBUFFER_ROUTED\n" : "") +
+      "//VTK::DeepGBuffer::OutputExpressions\n" + vtkDeepGBufferLayerDecFS +
+      vtkDeepGBufferCommon,
     false);
+  vtkShaderProgram::Substitute(fragmentShader, Tokens::DepthPeelingPreColor,
+    std::string(Tokens::DepthPeelingPreColor) + "\n" + vtkDeepGBufferLayerTestFS, false);
+  // The outputs go after texturing, where VTK's albedo is final (Post).
+  vtkShaderProgram::Substitute(fragmentShader, Tokens::TextureCoordinates,
+    std::string(Tokens::TextureCoordinates) + "\n  //VTK::DeepGBuffer::Impl\n", false);
   return true;
 }
 
 //------------------------------------------------------------------------------
+// The G-buffer outputs, once VTK's shading has declared what they read.
 bool vtkDeepGBufferPass::PostReplaceShaderValues(std::string& vtkNotUsed(vertexShader),
   std::string& vtkNotUsed(geometryShader), std::string& fragmentShader,
   vtkAbstractMapper* mapper, vtkProp* vtkNotUsed(prop))
@@ -712,76 +708,15 @@ bool vtkDeepGBufferPass::PostReplaceShaderValues(std::string& vtkNotUsed(vertexS
   {
     return true;
   }
-  const bool pbr = fragmentShader.find("vec3 albedo") != std::string::npos;
-  const bool textured = fragmentShader.find("vec4 tcolor ") != std::string::npos;
-  const bool shadingNormal =
-    fragmentShader.find("vec3 normalVCVSOutput") != std::string::npos;
-
-  std::string albedo = pbr ? "albedo" : "diffuseColor";
-  if (textured && !pbr)
+  if (!Contains(fragmentShader, Tokens::ShadingNormalDeclaration))
   {
-    albedo += " * tcolor.rgb";
+    vtkShaderProgram::Substitute(fragmentShader, Tokens::UniformFlow,
+      std::string(Tokens::UniformFlow) + "\n" + vtkDeepGBufferUnlitNormalFS, false);
   }
-  // VTK's colour is ambientColor + diffuse + specular (times the texture):
-  // its ambient part is what ambient obscurance darkens. PBR lighting has no
-  // separate ambient term here (its image-based light is left whole).
-  std::string ambient = pbr ? "vec3(0.0)" : "ambientColor";
-  if (textured && !pbr)
-  {
-    ambient += " * tcolor.rgb";
-  }
-  std::string normal = "normalize(normalVCVSOutput)";
-  if (!shadingNormal)
-  {
-    // Unlit props have no shading normal: use the geometric normal of the
-    // position reconstructed from the depth, facing the camera.
-    vtkShaderProgram::Substitute(fragmentShader, "//VTK::UniformFlow::Impl",
-      "//VTK::UniformFlow::Impl\n"
-      "  vec4 deepNdc = vec4(gl_FragCoord.xy / deepViewportSize * 2.0 - 1.0,\n"
-      "    2.0 * gl_FragCoord.z - 1.0, 1.0);\n"
-      "  vec4 deepPositionVC = deepInverseProjection * deepNdc;\n"
-      "  deepPositionVC /= deepPositionVC.w;\n"
-      "  vec3 deepGeometricNormal = normalize(cross(dFdx(deepPositionVC.xyz),\n"
-      "    dFdy(deepPositionVC.xyz)));\n"
-      "  vec3 deepViewRay = deepProjectionZ.z != 0.0 ? deepPositionVC.xyz : vec3(0.0, 0.0, -1.0);\n"
-      "  if (dot(deepGeometricNormal, deepViewRay) > 0.0)\n"
-      "  { deepGeometricNormal = -deepGeometricNormal; }\n",
-      false);
-    normal = "deepGeometricNormal";
-  }
-  vtkShaderProgram::Substitute(fragmentShader, "//VTK::DeepGBuffer::Impl",
-    "gl_FragData[1] = vec4(clamp(" + albedo +
-      ", 0.0, 1.0), 1.0);\n"
-      "  gl_FragData[2] = vec4(deepEncodeOct16(" +
-      normal +
-      "), 0.0, 1.0);\n"
-      "  gl_FragData[3] = vec4(deepDistance, 0.0, 0.0, 1.0);\n"
-      "  gl_FragData[4] = vec4(deepEmissive != 0 ? vec3(0.0) : max(" +
-      ambient + ", vec3(0.0)), 1.0);\n"
-      "  //VTK::DeepGBuffer::Reflectivity\n",
-    false);
-  if (this->WriteReflectivity)
-  {
-    // Mirror reflectance from VTK's material (see SetWriteReflectivity). PBR:
-    // Fresnel at normal incidence, F0 as VTK's PBR lighting computes it
-    // (its F0 where lit; the base-layer default 0.04 where unlit), fading
-    // to 0 as the surface gets rough. Phong/Gouraud: VTK's specularColor,
-    // i.e. Specular x SpecularColor; props without lighting have none.
-    std::string reflectivity = "vec3(0.0)";
-    if (pbr)
-    {
-      const std::string f0 = fragmentShader.find("vec3 F0 =") != std::string::npos
-        ? "F0"
-        : "mix(vec3(0.04), albedo, metallic)";
-      reflectivity = f0 + " * ((1.0 - roughness) * (1.0 - roughness))";
-    }
-    else if (fragmentShader.find("vec3 specularColor =") != std::string::npos)
-    {
-      reflectivity = "specularColor";
-    }
-    vtkShaderProgram::Substitute(fragmentShader, "//VTK::DeepGBuffer::Reflectivity",
-      "gl_FragData[5] = vec4(clamp(" + reflectivity + ", 0.0, 1.0), 1.0);", false);
-  }
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::DeepGBuffer::OutputExpressions",
+    OutputExpressions(fragmentShader, this->WriteReflectivity), false);
+  vtkShaderProgram::Substitute(
+    fragmentShader, "//VTK::DeepGBuffer::Impl", vtkDeepGBufferOutputsFS, false);
   return true;
 }
 

@@ -1,0 +1,1 @@
+gl_Position.xy *= deepGuardBandScale;
