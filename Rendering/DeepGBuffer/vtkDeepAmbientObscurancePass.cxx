@@ -406,7 +406,7 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
     program->SetUniformi("deepDistance", distanceUnit);
     const bool useAmbient = radianceUnit >= 0 && ambientUnit >= 0;
     this->EffectiveComposition = useAmbient ? COMPOSITE_AMBIENT : COMPOSITE_MULTIPLY;
-    program->SetUniformi("deepMode", useAmbient ? 1 : 0);
+    program->SetUniformi("deepMode", useAmbient ? COMPOSITE_AMBIENT : COMPOSITE_MULTIPLY);
     program->SetUniformi("deepRadiance", useAmbient ? radianceUnit : distanceUnit);
     program->SetUniformi("deepAmbient", useAmbient ? ambientUnit : distanceUnit);
     program->SetUniformi("deepGuardBand", state.GuardBand);

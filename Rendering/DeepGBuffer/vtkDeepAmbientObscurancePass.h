@@ -105,6 +105,7 @@
 #define vtkDeepAmbientObscurancePass_h
 
 #include "vtkDeepGIRenderingModule.h" // for export macro
+#include "vtkDeepGIShaderConstants.h" // for the enum values shared with GLSL
 #include "vtkDeepScreenSpacePass.h"
 
 #include <memory> // for std::unique_ptr
@@ -124,9 +125,12 @@ public:
   /// How AV is applied to the image.
   enum CompositionMode
   {
-    COMPOSITE_MULTIPLY = 0, ///< layer-0 radiance (the whole colour) times AV, like vtkSSAOPass
-    COMPOSITE_AMBIENT = 1,  ///< only the ambient part: radiance - (1 - AV) ambient
-    COMPOSITE_AUTOMATIC = 2 ///< AMBIENT when the scene has an ambient term, else MULTIPLY
+    /// layer-0 radiance (the whole colour) times AV, like vtkSSAOPass
+    COMPOSITE_MULTIPLY = DEEP_COMPOSITE_MULTIPLY,
+    /// only the ambient part: radiance - (1 - AV) ambient
+    COMPOSITE_AMBIENT = DEEP_COMPOSITE_AMBIENT,
+    /// AMBIENT when the scene has an ambient term, else MULTIPLY
+    COMPOSITE_AUTOMATIC = DEEP_COMPOSITE_AUTOMATIC
   };
 
   /// Relative distance tolerance of the temporal reprojection test.

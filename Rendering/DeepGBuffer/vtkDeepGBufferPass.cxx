@@ -58,6 +58,7 @@
 #include "vtkDeepGBufferLayerTestFS.h"
 #include "vtkDeepGBufferOutputsFS.h"
 #include "vtkDeepGBufferShaderTokens.h"
+#include "vtkDeepGIShaderConstantsGLSL.h"
 #include "vtkDeepGBufferUnlitNormalFS.h"
 #include "vtkDeepGBufferResolveFS.h"
 #include "vtkDeepScreenSpaceHelpers.h"
@@ -173,9 +174,9 @@ std::array<float, 4> ProjectionDepthRows(const Matrix& projection)
 // Which separation test the fragment shader applies to layers j > 0.
 enum TestMode
 {
-  TEST_NONE = 0,       // layer 0, or the oracle layer
-  TEST_SAME_PIXEL = 1, // DEPTH_PEEL, PREVIOUS, PREDICT, DELAY
-  TEST_REPROJECTED = 2 // REPROJECT: the test is done in the previous frame
+  TEST_NONE = DEEP_TEST_NONE,             // layer 0, or the oracle layer
+  TEST_SAME_PIXEL = DEEP_TEST_SAME_PIXEL, // DEPTH_PEEL, PREVIOUS, PREDICT, DELAY
+  TEST_REPROJECTED = DEEP_TEST_REPROJECTED // REPROJECT: tested in the previous frame
 };
 
 const char* const OracleNames[] = { "DEPTH_PEEL", "PREVIOUS", "REPROJECT", "PREDICT", "DELAY" };
@@ -596,14 +597,6 @@ bool Contains(const std::string& shader, const char* token)
   return shader.find(token) != std::string::npos;
 }
 
-// The defines the layer test branches on, from this file's TestMode enum.
-std::string TestModeDefines()
-{
-  return "#define DEEP_TEST_NONE " + std::to_string(TEST_NONE) +
-    "\n#define DEEP_TEST_SAME_PIXEL " + std::to_string(TEST_SAME_PIXEL) +
-    "\n#define DEEP_TEST_REPROJECTED " + std::to_string(TEST_REPROJECTED) + "\n";
-}
-
 // The DEEP_GBUFFER_* expressions of vtkDeepGBufferOutputsFS for this
 // mapper's final fragment shader (what VTK's shading declared).
 std::string OutputExpressions(const std::string& fs, bool writeReflectivity)
@@ -685,7 +678,7 @@ bool vtkDeepGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
     geometryShader = gs;
   }
   vtkShaderProgram::Substitute(fragmentShader, Tokens::DepthPeelingDeclarations,
-    std::string(Tokens::DepthPeelingDeclarations) + "\n" + TestModeDefines() +
+    std::string(Tokens::DepthPeelingDeclarations) + "\n" + vtkDeepGIShaderConstantsGLSL +
       (routed ? "#define DEEP_GBUFFER_ROUTED\n" : "") +
       "//VTK::DeepGBuffer::OutputExpressions\n" + vtkDeepGBufferLayerDecFS +
       vtkDeepGBufferCommon,
@@ -1590,7 +1583,8 @@ void vtkDeepGBufferPass::ResolveToFramebuffer(const vtkRenderState* s)
   if (!in.ResolveQuad)
   {
     std::string fs = vtkDeepGBufferResolveFS;
-    vtkShaderProgram::Substitute(fs, "//VTK::DeepGBuffer::Common", vtkDeepGBufferCommon);
+    vtkShaderProgram::Substitute(fs, "//VTK::DeepGBuffer::Common",
+      std::string(vtkDeepGIShaderConstantsGLSL) + vtkDeepGBufferCommon);
     in.ResolveQuad = new vtkOpenGLQuadHelper(
       window, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), "");
   }

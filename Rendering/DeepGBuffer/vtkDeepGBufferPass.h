@@ -58,6 +58,7 @@
 #define vtkDeepGBufferPass_h
 
 #include "vtkDeepGIRenderingModule.h" // for export macro
+#include "vtkDeepGIShaderConstants.h" // for the enum values shared with GLSL
 #include "vtkOpenGLRenderPass.h"
 
 #include <memory> // for std::unique_ptr
@@ -89,13 +90,14 @@ public:
   /// The per-layer quantities of the G-buffer.
   enum Quantity
   {
-    RADIANCE = 0,
-    ALBEDO = 1,
-    NORMAL = 2,
-    DEPTH = 3,
-    AMBIENT = 4,
-    REFLECTIVITY = 5, ///< optional: allocated and written only with WriteReflectivity on
-    NUMBER_OF_QUANTITIES = 6
+    RADIANCE = DEEP_QUANTITY_RADIANCE,
+    ALBEDO = DEEP_QUANTITY_ALBEDO,
+    NORMAL = DEEP_QUANTITY_NORMAL,
+    DEPTH = DEEP_QUANTITY_DEPTH,
+    AMBIENT = DEEP_QUANTITY_AMBIENT,
+    /// optional: allocated and written only with WriteReflectivity on
+    REFLECTIVITY = DEEP_QUANTITY_REFLECTIVITY,
+    NUMBER_OF_QUANTITIES = DEEP_NUMBER_OF_QUANTITIES
   };
 
   /// The largest layer count this class supports (the GPU may allow fewer).

@@ -113,6 +113,7 @@
 #define vtkDeepRadiosityPass_h
 
 #include "vtkDeepGIRenderingModule.h" // for export macro
+#include "vtkDeepGIShaderConstants.h" // for the enum values shared with GLSL
 #include "vtkDeepScreenSpacePass.h"
 
 #include <memory> // for std::unique_ptr
@@ -154,9 +155,9 @@ public:
   /// How the gathered taps are summed into E (see SetEstimator).
   enum Estimator
   {
-    ACCEPTED_TAPS = 0, ///< eq. 4 as printed: 2 pi / M sum B (w.n_X)
-    ALL_TAPS = 1,      ///< 2 pi / N sum B (w.n_X): rejected taps count as 0
-    SOLID_ANGLE = 2    ///< sum B (w.n_X) dOmega_i, the solid angle of each tap's patch
+    ACCEPTED_TAPS = DEEP_ESTIMATOR_ACCEPTED_TAPS, ///< eq. 4 as printed: 2 pi / M sum B (w.n_X)
+    ALL_TAPS = DEEP_ESTIMATOR_ALL_TAPS, ///< 2 pi / N sum B (w.n_X): rejected taps count as 0
+    SOLID_ANGLE = DEEP_ESTIMATOR_SOLID_ANGLE ///< sum B (w.n_X) dOmega_i, each tap's solid angle
   };
 
   /// Table 2's parameter sets.

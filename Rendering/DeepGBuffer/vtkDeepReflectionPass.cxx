@@ -5,6 +5,7 @@
 #include "vtkAssemblyPath.h"
 #include "vtkDataArray.h"
 #include "vtkDeepGBufferPass.h"
+#include "vtkDeepGIShaderConstantsGLSL.h"
 #include "vtkDeepScreenSpaceHelpers.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -60,9 +61,9 @@ enum Target
 // Kinds of environment the trace shader is compiled for (DEEP_ENVIRONMENT).
 enum Environment
 {
-  ENVIRONMENT_BACKGROUND = 0,
-  ENVIRONMENT_EQUIRECTANGULAR = 1,
-  ENVIRONMENT_CUBE_MAP = 2,
+  ENVIRONMENT_BACKGROUND = DEEP_ENVIRONMENT_BACKGROUND,
+  ENVIRONMENT_EQUIRECTANGULAR = DEEP_ENVIRONMENT_EQUIRECTANGULAR,
+  ENVIRONMENT_CUBE_MAP = DEEP_ENVIRONMENT_CUBE_MAP,
   NUMBER_OF_ENVIRONMENTS = 3
 };
 
@@ -111,7 +112,8 @@ bool ReadyQuad(vtkOpenGLQuadHelper*& quad, vtkOpenGLRenderWindow* window, const 
 {
   std::string fs = source;
   vtkShaderProgram::Substitute(fs, "//VTK::DeepReflection::Environment",
-    "#define DEEP_ENVIRONMENT " + std::to_string(environment));
+    std::string(vtkDeepGIShaderConstantsGLSL) + "#define DEEP_ENVIRONMENT " +
+      std::to_string(environment));
   return vtkDeepScreenSpace::ReadyQuad(quad, window, fs.c_str());
 }
 }

@@ -18,6 +18,7 @@
 #include "vtk_glew.h"
 
 #include "vtkDeepGBufferCommon.h"
+#include "vtkDeepGIShaderConstantsGLSL.h"
 #include "vtkDeepScreenSpaceCommon.h"
 
 #include <algorithm>
@@ -54,7 +55,8 @@ bool ReadyQuad(vtkOpenGLQuadHelper*& quad, vtkOpenGLRenderWindow* window, const 
   if (!quad)
   {
     std::string fs = source;
-    vtkShaderProgram::Substitute(fs, "//VTK::DeepGBuffer::Common", vtkDeepGBufferCommon);
+    vtkShaderProgram::Substitute(fs, "//VTK::DeepGBuffer::Common",
+      std::string(vtkDeepGIShaderConstantsGLSL) + vtkDeepGBufferCommon);
     vtkShaderProgram::Substitute(fs, "//VTK::DeepScreenSpace::Common", vtkDeepScreenSpaceCommon);
     quad = new vtkOpenGLQuadHelper(
       window, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), "");

@@ -1,8 +1,8 @@
 //VTK::System::Dec
 
 //=========================================================================
-// COMPOSITE_AMBIENT (deepMode 1): outputs radiance - (1 - AV) ambient of
-// layer 0. COMPOSITE_MULTIPLY (deepMode 0): outputs the filtered ambient visibility where layer 0
+// COMPOSITE_AMBIENT: outputs radiance - (1 - AV) ambient of
+// layer 0. COMPOSITE_MULTIPLY: outputs the filtered ambient visibility where layer 0
 // has a surface; the pass blends it multiplicatively (dst.rgb *= AV) over
 // the resolved layer-0 image. Empty pixels are discarded and keep the
 // background.
@@ -12,9 +12,9 @@ in vec2 texCoord;
 
 uniform sampler2D deepVisibility;
 uniform sampler2DArray deepDistance;
-uniform sampler2DArray deepRadiance; // deepMode 1 only
-uniform sampler2DArray deepAmbient;  // deepMode 1 only
-uniform int deepMode;                // 0: multiply, 1: ambient only
+uniform sampler2DArray deepRadiance; // DEEP_COMPOSITE_AMBIENT only
+uniform sampler2DArray deepAmbient;  // DEEP_COMPOSITE_AMBIENT only
+uniform int deepMode;                // DEEP_COMPOSITE_MULTIPLY or DEEP_COMPOSITE_AMBIENT
 
 uniform int deepGuardBand; // layer pixels around the frame
 
@@ -30,7 +30,7 @@ void main()
     discard;
   }
   float av = clamp(texelFetch(deepVisibility, pixel, 0).r, 0.0, 1.0);
-  if (deepMode == 1)
+  if (deepMode == DEEP_COMPOSITE_AMBIENT)
   {
     // COMPOSITE_AMBIENT: written with blend (ONE, ZERO) on colour, alpha kept.
     vec3 radiance = texelFetch(deepRadiance, ivec3(pixel, 0), 0).rgb;

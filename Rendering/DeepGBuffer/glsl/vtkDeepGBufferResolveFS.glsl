@@ -32,15 +32,15 @@ void main()
   }
   vec4 value = texelFetch(deepQuantityTexture, texel, 0);
   vec4 color;
-  if (deepQuantity == 0) // RADIANCE
+  if (deepQuantity == DEEP_QUANTITY_RADIANCE)
   {
     color = value;
   }
-  else if (deepQuantity == 2) // NORMAL
+  else if (deepQuantity == DEEP_QUANTITY_NORMAL)
   {
     color = vec4(deepDecodeOct16(value.rg) * 0.5 + 0.5, 1.0);
   }
-  else if (deepQuantity == 3) // DEPTH
+  else if (deepQuantity == DEEP_QUANTITY_DEPTH)
   {
     float t = (distance - deepDistanceRange.x) / max(deepDistanceRange.y - deepDistanceRange.x, 1e-30);
     color = vec4(vec3(clamp(t, 0.0, 1.0)), 1.0);

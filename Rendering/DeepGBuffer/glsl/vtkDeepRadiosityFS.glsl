@@ -106,7 +106,7 @@ void main()
       float dy = k < deepLayers ? texelFetch(deepDistance, ivec3(source, k), 0).r : 0.0;
       present[k] = dy > 0.0;
       Y[k] = deepPositionFromDistance(sourceCenter, size, max(dy, 0.0));
-      nY[k] = deepNormalTest != 0 || deepEstimator == 2
+      nY[k] = deepNormalTest != 0 || deepEstimator == DEEP_ESTIMATOR_SOLID_ANGLE
         ? deepDecodeOct16(texelFetch(deepNormal, ivec3(source, k), 0).rg)
         : vec3(0.0);
       B[k] = k == 0 ? texelFetch(deepBounce0, source, 0).rgb : texelFetch(deepBounce1, source, 0).rgb;
@@ -147,7 +147,7 @@ void main()
         {
           bestScore = score;
           best = c;
-          if (deepEstimator == 2)
+          if (deepEstimator == DEEP_ESTIMATOR_SOLID_ANGLE)
           {
             // World size of a pixel at Y's distance, and Y's tilt to the view.
             float pixelSize = 1.0 / deepScreenRadius(1.0, -Y[k].z, size);
@@ -169,10 +169,11 @@ void main()
   for (int j = 0; j < 2; ++j)
   {
     // Equation 4 (or the chosen estimator) and the confidence M / N.
-    float norm = deepEstimator == 0 ? used[j] : float(deepSamples);
+    float norm = deepEstimator == DEEP_ESTIMATOR_ACCEPTED_TAPS ? used[j] : float(deepSamples);
     float solidAngleScale = omegaSum[j] > 2.0 * deepPi ? 2.0 * deepPi / omegaSum[j] : 1.0;
     vec3 E = used[j] > 0.0
-      ? (deepEstimator == 2 ? solidAngleScale * sum[j] : (2.0 * deepPi / norm) * sum[j])
+      ? (deepEstimator == DEEP_ESTIMATOR_SOLID_ANGLE ? solidAngleScale * sum[j]
+                                                     : (2.0 * deepPi / norm) * sum[j])
       : vec3(0.0);
     vec4 result = valid[j] ? vec4(E, used[j] / float(deepSamples)) : vec4(0.0);
     if (j == 0)

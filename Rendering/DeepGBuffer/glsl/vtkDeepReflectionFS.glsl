@@ -31,9 +31,9 @@ uniform mat3 deepViewToEnvironment; // camera space -> environment frame e
 uniform vec3 deepBackground;
 uniform vec3 deepBackground2;
 uniform int deepGradient;
-#if DEEP_ENVIRONMENT == 1
+#if DEEP_ENVIRONMENT == DEEP_ENVIRONMENT_EQUIRECTANGULAR
 uniform sampler2D deepEnvironment;
-#elif DEEP_ENVIRONMENT == 2
+#elif DEEP_ENVIRONMENT == DEEP_ENVIRONMENT_CUBE_MAP
 uniform samplerCube deepEnvironment;
 #endif
 
@@ -44,12 +44,12 @@ uniform samplerCube deepEnvironment;
 
 vec3 deepEnvironmentRadiance(vec3 r)
 {
-#if DEEP_ENVIRONMENT == 1
+#if DEEP_ENVIRONMENT == DEEP_ENVIRONMENT_EQUIRECTANGULAR
   vec3 e = normalize(deepViewToEnvironment * r);
   vec2 uv = vec2(atan(e.z, e.x) * (0.5 / 3.14159265358979) + 0.5,
     asin(clamp(e.y, -1.0, 1.0)) * (1.0 / 3.14159265358979) + 0.5);
   return texture(deepEnvironment, uv).rgb;
-#elif DEEP_ENVIRONMENT == 2
+#elif DEEP_ENVIRONMENT == DEEP_ENVIRONMENT_CUBE_MAP
   return texture(deepEnvironment, normalize(deepViewToEnvironment * r)).rgb;
 #else
   return deepGradient != 0 ? mix(deepBackground, deepBackground2, 0.5 + 0.5 * r.y)
