@@ -400,6 +400,69 @@ const char* GLEWErrorName(GLenum code)
       return reinterpret_cast<const char*>(glewGetErrorString(code));
   }
 }
+// A pbuffer-capable RGBA8 config for desktop OpenGL (the pbuffer only backs
+// the default framebuffer; VTK renders into its own FBOs), or, with
+// EGL_KHR_surfaceless_context, any 8-bit RGB one without a pbuffer. False
+// with `why` set when there is none.
+bool ChooseConfig(EGLDisplay display, bool surfacelessContext, EGLConfig& config,
+  bool& usePbuffer, std::string& why)
+{
+  EGLint numConfigs = 0;
+  usePbuffer = true;
+  const EGLint attribs[] = { EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8,
+    EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE };
+  if (eglChooseConfig(display, attribs, &config, 1, &numConfigs) && numConfigs >= 1)
+  {
+    return true;
+  }
+  eglGetError();
+  usePbuffer = false;
+  const EGLint anySurface[] = { EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8,
+    EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE };
+  if (surfacelessContext && eglChooseConfig(display, anySurface, &config, 1, &numConfigs) &&
+    numConfigs >= 1)
+  {
+    return true;
+  }
+  why = "no EGL config supports desktop OpenGL with 8-bit RGBA" +
+    std::string(surfacelessContext ? "" : " and a pbuffer");
+  return false;
+}
+
+// A desktop OpenGL core-profile context: 4.5 first, then older versions
+// down to the 3.2 that VTK requires. The attribute names are EGL 1.5's;
+// they have the same values as EGL_KHR_create_context's. Without either,
+// the default context. `log` lists what failed.
+EGLContext CreateCoreContext(
+  EGLDisplay display, EGLConfig config, const char* displayExtensions, std::ostringstream& log)
+{
+  EGLint eglMajor = 0, eglMinor = 0;
+  eglInitialize(display, &eglMajor, &eglMinor); // already initialised: returns version
+  const bool canRequestVersion = (eglMajor > 1 || (eglMajor == 1 && eglMinor >= 5)) ||
+    HasExtension(displayExtensions, "EGL_KHR_create_context");
+  if (!canRequestVersion)
+  {
+    EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, nullptr);
+    if (context == EGL_NO_CONTEXT)
+    {
+      log << " default context: " << EGLErrorString() << ";";
+    }
+    return context;
+  }
+  const int versions[][2] = { { 4, 5 }, { 4, 3 }, { 4, 1 }, { 3, 3 }, { 3, 2 } };
+  for (const auto& v : versions)
+  {
+    const EGLint attributes[] = { EGL_CONTEXT_MAJOR_VERSION, v[0], EGL_CONTEXT_MINOR_VERSION, v[1],
+      EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE };
+    EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, attributes);
+    if (context != EGL_NO_CONTEXT)
+    {
+      return context;
+    }
+    log << " " << v[0] << "." << v[1] << " core: " << EGLErrorString() << ";";
+  }
+  return EGL_NO_CONTEXT;
+}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -498,10 +561,61 @@ bool vtkDeepGIEGLRenderWindow::InitializeEGL()
     // Already reported in detail; do not retry on every render.
     return false;
   }
+  std::string description;
+  if (!this->OpenDisplay(description))
+  {
+    return false;
+  }
+  if (!eglBindAPI(EGL_OPENGL_API))
+  {
+    return this->FailContext(description, "eglBindAPI(EGL_OPENGL_API) failed: " + EGLErrorString());
+  }
+  const char* displayExtensions = eglQueryString(impl->Display, EGL_EXTENSIONS);
+  const bool surfacelessContext = HasExtension(displayExtensions, "EGL_KHR_surfaceless_context");
+  EGLConfig config = nullptr;
+  bool usePbuffer = true;
+  std::string why;
+  if (!ChooseConfig(impl->Display, surfacelessContext, config, usePbuffer, why))
+  {
+    return this->FailContext(description, why);
+  }
+  std::ostringstream contextLog;
+  impl->Context = CreateCoreContext(impl->Display, config, displayExtensions, contextLog);
+  if (impl->Context == EGL_NO_CONTEXT)
+  {
+    return this->FailContext(
+      description, "eglCreateContext failed for every OpenGL version tried:" + contextLog.str());
+  }
+  if (usePbuffer)
+  {
+    const EGLint pbAttribs[] = { EGL_WIDTH, 16, EGL_HEIGHT, 16, EGL_NONE };
+    impl->Surface = eglCreatePbufferSurface(impl->Display, config, pbAttribs);
+    if (impl->Surface == EGL_NO_SURFACE)
+    {
+      why = EGLErrorString();
+      if (!surfacelessContext)
+      {
+        return this->FailContext(description, "eglCreatePbufferSurface failed: " + why);
+      }
+      vtkDebugMacro("eglCreatePbufferSurface failed (" << why << "); using a surfaceless context");
+    }
+  }
+  const EGLint madeCurrent = MakeCurrentEGL(impl->Display, impl->Surface, impl->Context);
+  if (madeCurrent != EGL_SUCCESS)
+  {
+    return this->FailContext(description, "eglMakeCurrent failed: " + EGLErrorString(madeCurrent));
+  }
+  return this->InitializeContext(description);
+}
 
+//------------------------------------------------------------------------------
+// The EGL display of the chosen platform and device; false, with the log of
+// what was tried, when none opens.
+bool vtkDeepGIEGLRenderWindow::OpenDisplay(std::string& description)
+{
+  vtkInternals* impl = this->Internals;
   const EGLClientExtensions& ext = EGLClientExtensions::Get();
   std::ostringstream log;
-  std::string description;
   if (!ext.GetPlatformDisplay)
   {
     log << "  EGL_EXT_platform_base is not available in this libEGL\n";
@@ -519,115 +633,13 @@ bool vtkDeepGIEGLRenderWindow::InitializeEGL()
       << "Install Mesa's EGL (libegl-mesa0, libgl1-mesa-dri) or a GPU driver with EGL.");
     return false;
   }
+  return true;
+}
 
-  auto fail = [&](const std::string& what) {
-    vtkErrorMacro("EGL context creation failed on " << description << ": " << what);
-    if (impl->Surface != EGL_NO_SURFACE)
-    {
-      eglDestroySurface(impl->Display, impl->Surface);
-      impl->Surface = EGL_NO_SURFACE;
-    }
-    if (impl->Context != EGL_NO_CONTEXT)
-    {
-      eglMakeCurrent(impl->Display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-      eglDestroyContext(impl->Display, impl->Context);
-      impl->Context = EGL_NO_CONTEXT;
-    }
-    DisplayRegistry::Release(impl->Display);
-    impl->Display = EGL_NO_DISPLAY;
-    impl->InitFailed = true;
-    return false;
-  };
-
-  if (!eglBindAPI(EGL_OPENGL_API))
-  {
-    return fail("eglBindAPI(EGL_OPENGL_API) failed: " + EGLErrorString());
-  }
-
-  const char* dpyExt = eglQueryString(impl->Display, EGL_EXTENSIONS);
-  const bool surfacelessContext = HasExtension(dpyExt, "EGL_KHR_surfaceless_context");
-
-  // A pbuffer-capable RGBA8 config; the pbuffer only backs the default
-  // framebuffer, VTK renders into its own FBOs.
-  EGLConfig config = nullptr;
-  EGLint numConfigs = 0;
-  bool usePbuffer = true;
-  {
-    const EGLint attribs[] = { EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RED_SIZE, 8, EGL_GREEN_SIZE,
-      8, EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE };
-    if (!eglChooseConfig(impl->Display, attribs, &config, 1, &numConfigs) || numConfigs < 1)
-    {
-      eglGetError();
-      usePbuffer = false;
-      const EGLint anySurface[] = { EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8,
-        EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE };
-      if (!surfacelessContext ||
-        !eglChooseConfig(impl->Display, anySurface, &config, 1, &numConfigs) || numConfigs < 1)
-      {
-        return fail("no EGL config supports desktop OpenGL with 8-bit RGBA" +
-          std::string(surfacelessContext ? "" : " and a pbuffer"));
-      }
-    }
-  }
-
-  // Desktop OpenGL core profile: 4.5 first, then older versions down to the
-  // 3.2 that VTK requires. The attribute names are EGL 1.5's; they have the
-  // same values as EGL_KHR_create_context's.
-  EGLint eglMajor = 0, eglMinor = 0;
-  eglInitialize(impl->Display, &eglMajor, &eglMinor); // already initialised: returns version
-  const bool canRequestVersion = (eglMajor > 1 || (eglMajor == 1 && eglMinor >= 5)) ||
-    HasExtension(dpyExt, "EGL_KHR_create_context");
-  std::ostringstream contextLog;
-  if (canRequestVersion)
-  {
-    const int versions[][2] = { { 4, 5 }, { 4, 3 }, { 4, 1 }, { 3, 3 }, { 3, 2 } };
-    for (const auto& v : versions)
-    {
-      const EGLint ctxAttribs[] = { EGL_CONTEXT_MAJOR_VERSION, v[0], EGL_CONTEXT_MINOR_VERSION,
-        v[1], EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE };
-      impl->Context = eglCreateContext(impl->Display, config, EGL_NO_CONTEXT, ctxAttribs);
-      if (impl->Context != EGL_NO_CONTEXT)
-      {
-        break;
-      }
-      contextLog << " " << v[0] << "." << v[1] << " core: " << EGLErrorString() << ";";
-    }
-  }
-  else
-  {
-    impl->Context = eglCreateContext(impl->Display, config, EGL_NO_CONTEXT, nullptr);
-    if (impl->Context == EGL_NO_CONTEXT)
-    {
-      contextLog << " default context: " << EGLErrorString() << ";";
-    }
-  }
-  if (impl->Context == EGL_NO_CONTEXT)
-  {
-    return fail("eglCreateContext failed for every OpenGL version tried:" + contextLog.str());
-  }
-
-  if (usePbuffer)
-  {
-    const EGLint pbAttribs[] = { EGL_WIDTH, 16, EGL_HEIGHT, 16, EGL_NONE };
-    impl->Surface = eglCreatePbufferSurface(impl->Display, config, pbAttribs);
-    if (impl->Surface == EGL_NO_SURFACE)
-    {
-      std::string why = EGLErrorString();
-      if (!surfacelessContext)
-      {
-        return fail("eglCreatePbufferSurface failed: " + why);
-      }
-      vtkDebugMacro("eglCreatePbufferSurface failed (" << why
-                                                       << "); using a surfaceless context");
-    }
-  }
-
-  const EGLint madeCurrent = MakeCurrentEGL(impl->Display, impl->Surface, impl->Context);
-  if (madeCurrent != EGL_SUCCESS)
-  {
-    return fail("eglMakeCurrent failed: " + EGLErrorString(madeCurrent));
-  }
-
+//------------------------------------------------------------------------------
+// VTK's OpenGL state on the new, current context.
+bool vtkDeepGIEGLRenderWindow::InitializeContext(const std::string& description)
+{
   GLint glMajor = 0, glMinor = 0;
   glGetIntegerv(GL_MAJOR_VERSION, &glMajor);
   glGetIntegerv(GL_MINOR_VERSION, &glMinor);
@@ -635,7 +647,6 @@ bool vtkDeepGIEGLRenderWindow::InitializeEGL()
   this->ContextMinorVersion = glMinor;
   this->PlatformDescription = description;
   this->Mapped = 0;
-
   // A fresh context: VTK's cached GL state must be re-read from it.
   this->Initialized = false;
   this->OpenGLInit();
@@ -644,11 +655,36 @@ bool vtkDeepGIEGLRenderWindow::InitializeEGL()
     // OpenGLInitContext() has reported the reason.
     this->PlatformDescription.clear();
     this->ContextMajorVersion = this->ContextMinorVersion = 0;
-    return fail("VTK could not initialise OpenGL on the new context (see the error above)");
+    return this->FailContext(
+      description, "VTK could not initialise OpenGL on the new context (see the error above)");
   }
   vtkDebugMacro("EGL context " << glMajor << "." << glMinor << " on " << description << ": "
                                << reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
   return true;
+}
+
+//------------------------------------------------------------------------------
+// Reports why the context could not be made, releases what was made, and
+// stops later renders from retrying. Returns false.
+bool vtkDeepGIEGLRenderWindow::FailContext(const std::string& description, const std::string& what)
+{
+  vtkInternals* impl = this->Internals;
+  vtkErrorMacro("EGL context creation failed on " << description << ": " << what);
+  if (impl->Surface != EGL_NO_SURFACE)
+  {
+    eglDestroySurface(impl->Display, impl->Surface);
+    impl->Surface = EGL_NO_SURFACE;
+  }
+  if (impl->Context != EGL_NO_CONTEXT)
+  {
+    eglMakeCurrent(impl->Display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    eglDestroyContext(impl->Display, impl->Context);
+    impl->Context = EGL_NO_CONTEXT;
+  }
+  DisplayRegistry::Release(impl->Display);
+  impl->Display = EGL_NO_DISPLAY;
+  impl->InitFailed = true;
+  return false;
 }
 
 //------------------------------------------------------------------------------

@@ -179,6 +179,11 @@ private:
 
   struct vtkInternals;
   vtkInternals* Internals;
+
+  // The stages of InitializeEGL.
+  bool OpenDisplay(std::string& description);
+  bool InitializeContext(const std::string& description);
+  bool FailContext(const std::string& description, const std::string& what);
 };
 
 #endif
