@@ -345,6 +345,9 @@ public:
   vtkLightsPass* LightsPass = nullptr;
   vtkNew<vtkDeepGBufferDrawStep> DrawStep;
 
+  // The prop's model matrix in the other frame (SetShaderParameters).
+  Matrix OtherModelMatrix(vtkProp* prop);
+
   void WarnOnce(vtkDeepGBufferPass* self, WarningSlot which, const std::string& message)
   {
     if (!this->Warned[which])
@@ -720,6 +723,78 @@ vtkMTimeType vtkDeepGBufferPass::GetShaderStageMTime()
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// The model-to-stored-coordinates matrix of a mapper's vertex buffer: the
+// same association as vtkOpenGLPolyDataMapper, (P V) (M S^-1), where stored
+// coordinates are (x - shift) * scale.
+Matrix ModelToStored(const Matrix& model, vtkAbstractMapper* mapper)
+{
+  vtkOpenGLVertexBufferObject* positions =
+    static_cast<vtkOpenGLPolyDataMapper*>(mapper)->GetVBOs()->GetVBO("vertexMC");
+  if (!positions || !positions->GetCoordShiftAndScaleEnabled())
+  {
+    return model;
+  }
+  const std::vector<double>& shift = positions->GetShift();
+  const std::vector<double>& scale = positions->GetScale();
+  Matrix unshift = Identity();
+  for (int i = 0; i < 3 && i < static_cast<int>(shift.size()); ++i)
+  {
+    unshift[i * 4 + i] = 1.0 / scale[i];
+    unshift[i * 4 + 3] = shift[i];
+  }
+  return Multiply(model, unshift);
+}
+
+// Uniform setters that skip what the compiler removed (e.g. the routing
+// uniforms without a geometry shader).
+void SetIfUsed(vtkShaderProgram* program, const char* name, int value)
+{
+  if (program->IsUniformUsed(name))
+  {
+    program->SetUniformi(name, value);
+  }
+}
+
+void SetIfUsed(vtkShaderProgram* program, const char* name, float value)
+{
+  if (program->IsUniformUsed(name))
+  {
+    program->SetUniformf(name, value);
+  }
+}
+
+template <size_t N>
+void SetIfUsed(vtkShaderProgram* program, const char* name, const std::array<float, N>& value)
+{
+  static_assert(N == 2 || N == 4 || N == 16, "vec2, vec4 or mat4");
+  if (!program->IsUniformUsed(name))
+  {
+    return;
+  }
+  std::array<float, N> copy = value; // VTK's setters take non-const pointers
+  if (N == 2)
+  {
+    program->SetUniform2f(name, copy.data());
+  }
+  else if (N == 4)
+  {
+    program->SetUniform4f(name, copy.data());
+  }
+  else
+  {
+    program->SetUniformMatrix4x4(name, copy.data());
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+// Per draw: the prop's position in the other frame (vertex stage), and the
+// layer test's and outputs' uniforms. Every program gets the uniforms it
+// uses, also those whose vertex shader has no position hook (and so no
+// deepOtherMCDC), such as point Gaussian splats: their fragment shaders
+// still write the layers.
 bool vtkDeepGBufferPass::SetShaderParameters(vtkShaderProgram* program,
   vtkAbstractMapper* mapper, vtkProp* prop, vtkOpenGLVertexArrayObject* vtkNotUsed(VAO))
 {
@@ -728,110 +803,75 @@ bool vtkDeepGBufferPass::SetShaderParameters(vtkShaderProgram* program,
   {
     return true;
   }
-  if (program->IsUniformUsed("deepGuardBandScale"))
-  {
-    program->SetUniform2f("deepGuardBandScale", in.GuardBandScale.data());
-  }
-  vtkDeepGBufferRendererState& state = *in.Current;
-  // Every program gets the uniforms it uses, also those whose vertex shader
-  // has no position hook (and so no deepOtherMCDC), such as point Gaussian
-  // splats: their fragment shaders still write the layers.
+  SetIfUsed(program, "deepGuardBandScale", in.GuardBandScale);
   if (program->IsUniformUsed("deepOtherMCDC"))
   {
-    // The other frame's clip position of this prop's vertices, computed like
-    // VTK's own MCDCMatrix (P V M, then the vertex buffer's coordinate shift
-    // and scale) so that DELAY rasterises exactly what the previous frame did.
-    auto& history = state.Props[prop];
-    if (history.Frame != state.FrameIndex)
-    {
-      vtkProp3D* prop3D = vtkProp3D::SafeDownCast(prop);
-      Matrix model = prop3D ? ToArray(prop3D->GetMatrix()) : Identity();
-      history.PreviousModel = history.Model;
-      history.PreviousFrame = history.Frame;
-      history.Model = model;
-      history.Frame = state.FrameIndex;
-      state.PropLiveness[prop] = prop;
-
-      Matrix otherModel = model;
-      if (history.PreviousFrame + 1 == state.FrameIndex && history.PreviousFrame != 0)
-      {
-        if (in.OtherUsesPreviousFrame)
-        {
-          otherModel = history.PreviousModel;
-        }
-        else if (in.OtherIsPrediction)
-        {
-          otherModel = Extrapolate(history.PreviousModel, model);
-        }
-      }
-      history.OtherModel = otherModel;
-    }
-    // Same association as vtkOpenGLPolyDataMapper: (P V) (M S^-1).
-    Matrix modelToStored = history.OtherModel;
-    vtkOpenGLVertexBufferObject* positions =
-      static_cast<vtkOpenGLPolyDataMapper*>(mapper)->GetVBOs()->GetVBO("vertexMC");
-    if (positions && positions->GetCoordShiftAndScaleEnabled())
-    {
-      // Stored coordinates are (x - shift) * scale.
-      const std::vector<double>& shift = positions->GetShift();
-      const std::vector<double>& scale = positions->GetScale();
-      Matrix unshift = Identity();
-      for (int i = 0; i < 3 && i < static_cast<int>(shift.size()); ++i)
-      {
-        unshift[i * 4 + i] = 1.0 / scale[i];
-        unshift[i * 4 + 3] = shift[i];
-      }
-      modelToStored = Multiply(modelToStored, unshift);
-    }
-    std::array<float, 16> otherMCDC = ToColumnMajor(Multiply(in.OtherWorldToClip, modelToStored));
+    // Computed like VTK's own MCDCMatrix, so that DELAY rasterises exactly
+    // what the previous frame did.
+    const Matrix otherModel = in.OtherModelMatrix(prop);
+    std::array<float, 16> otherMCDC =
+      ToColumnMajor(Multiply(in.OtherWorldToClip, ModelToStored(otherModel, mapper)));
     program->SetUniformMatrix4x4("deepOtherMCDC", otherMCDC.data());
   }
-
-  // Uniforms the compiler removed (e.g. the routing ones without a geometry
-  // shader) are skipped.
-  auto setInt = [program](const char* name, int value) {
-    if (program->IsUniformUsed(name))
-    {
-      program->SetUniformi(name, value);
-    }
-  };
-  auto setVec = [program](const char* name, const float* value, int size) {
-    if (program->IsUniformUsed(name))
-    {
-      size == 2 ? program->SetUniform2f(name, value) : program->SetUniform4f(name, value);
-    }
-  };
-  auto setMatrix = [program](const char* name, const float* value) {
-    if (program->IsUniformUsed(name))
-    {
-      program->SetUniformMatrix4x4(name, const_cast<float*>(value));
-    }
-  };
   // Shaders with the routing geometry shader choose positions per layer
   // there; the others swap in the vertex shader for the layer they draw.
   const bool routedProgram = program->IsUniformUsed("deepEmitMask");
-  setInt("deepVertexUsesOtherClip",
+  SetIfUsed(program, "deepVertexUsesOtherClip",
     routedProgram ? 0 : (in.OtherClipLayerMask >> in.TargetLayer) & 1);
-  setInt("deepEmitMask", in.EmitMask);
-  setInt("deepOtherClipLayerMask", in.OtherClipLayerMask);
-  setInt("deepTestMode", in.TestMode);
-  setInt("deepTargetLayer", in.TargetLayer);
-  setInt("deepOracleLayerIndex", in.OracleLayerIndex);
-  setInt("deepCullBackFaces", this->DeepLayerBackfaceCulling ? 1 : 0);
-  if (program->IsUniformUsed("deepMinimumSeparation"))
-  {
-    program->SetUniformf("deepMinimumSeparation", in.MinimumSeparation);
-  }
-  setVec("deepProjectionZ", in.ProjectionZ.data(), 4);
-  setVec("deepOtherProjectionZ", in.OtherProjectionZ.data(), 4);
-  setMatrix("deepInverseProjection", in.InverseProjection.data());
-  setVec("deepViewportSize", in.ViewportSize.data(), 2);
-  setInt("deepHistoryDistance", in.HistoryUnit);
+  SetIfUsed(program, "deepEmitMask", in.EmitMask);
+  SetIfUsed(program, "deepOtherClipLayerMask", in.OtherClipLayerMask);
+  SetIfUsed(program, "deepTestMode", in.TestMode);
+  SetIfUsed(program, "deepTargetLayer", in.TargetLayer);
+  SetIfUsed(program, "deepOracleLayerIndex", in.OracleLayerIndex);
+  SetIfUsed(program, "deepCullBackFaces", this->DeepLayerBackfaceCulling ? 1 : 0);
+  SetIfUsed(program, "deepMinimumSeparation", in.MinimumSeparation);
+  SetIfUsed(program, "deepProjectionZ", in.ProjectionZ);
+  SetIfUsed(program, "deepOtherProjectionZ", in.OtherProjectionZ);
+  SetIfUsed(program, "deepInverseProjection", in.InverseProjection);
+  SetIfUsed(program, "deepViewportSize", in.ViewportSize);
+  SetIfUsed(program, "deepHistoryDistance", in.HistoryUnit);
   // An emissive prop's ambient term is its emission, not the environment's
   // light: it stays in RADIANCE and out of AMBIENT (see EMISSIVE()).
   vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
-  setInt("deepEmissive", keys && keys->Has(EMISSIVE()) && keys->Get(EMISSIVE()) != 0 ? 1 : 0);
+  SetIfUsed(program, "deepEmissive",
+    keys && keys->Has(EMISSIVE()) && keys->Get(EMISSIVE()) != 0 ? 1 : 0);
   return true;
+}
+
+//------------------------------------------------------------------------------
+// The prop's model matrix in the other frame the oracle needs: its previous
+// one (REPROJECT, DELAY) or the one extrapolated from its last two
+// (PREDICT), when the prop was drawn in the previous frame; otherwise this
+// frame's. The history is updated once per frame.
+Matrix vtkDeepGBufferPass::vtkInternals::OtherModelMatrix(vtkProp* prop)
+{
+  vtkDeepGBufferRendererState& state = *this->Current;
+  auto& history = state.Props[prop];
+  if (history.Frame == state.FrameIndex)
+  {
+    return history.OtherModel;
+  }
+  vtkProp3D* prop3D = vtkProp3D::SafeDownCast(prop);
+  const Matrix model = prop3D ? ToArray(prop3D->GetMatrix()) : Identity();
+  history.PreviousModel = history.Model;
+  history.PreviousFrame = history.Frame;
+  history.Model = model;
+  history.Frame = state.FrameIndex;
+  state.PropLiveness[prop] = prop;
+  Matrix otherModel = model;
+  if (history.PreviousFrame + 1 == state.FrameIndex && history.PreviousFrame != 0)
+  {
+    if (this->OtherUsesPreviousFrame)
+    {
+      otherModel = history.PreviousModel;
+    }
+    else if (this->OtherIsPrediction)
+    {
+      otherModel = Extrapolate(history.PreviousModel, model);
+    }
+  }
+  history.OtherModel = otherModel;
+  return otherModel;
 }
 
 //------------------------------------------------------------------------------
