@@ -451,15 +451,7 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
   const int normalUnit = gbuffer->ActivateTexture(frame.Renderer, vtkDeepGBufferPass::NORMAL);
   {
     vtkOpenGLState* ostate = frame.GL;
-    vtkOpenGLState::ScopedglViewport savedViewport(ostate);
-    vtkOpenGLState::ScopedglEnableDisable savedScissorTest(ostate, GL_SCISSOR_TEST);
-    vtkOpenGLState::ScopedglScissor savedScissor(ostate);
-    vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
-    ostate->vtkglDisable(GL_SCISSOR_TEST);
-    ostate->vtkglDisable(GL_BLEND);
-    ostate->vtkglDisable(GL_DEPTH_TEST);
-    ostate->PushFramebufferBindings();
+    vtkDeepScreenSpace::ScopedStageState stageState(ostate);
     this->ComputeRawVisibility(frame, state, radius, distanceUnit, normalUnit);
     this->FilterVisibility(frame, state, distanceUnit, normalUnit);
     if (temporal)
@@ -467,7 +459,6 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
       this->AccumulateVisibility(frame, state, distanceUnit);
     }
     this->Internals->Framebuffer->RemoveColorAttachment(0);
-    ostate->PopFramebufferBindings();
   }
   gbuffer->DeactivateTexture(frame.Renderer, vtkDeepGBufferPass::NORMAL);
   gbuffer->DeactivateTexture(frame.Renderer, vtkDeepGBufferPass::DEPTH);

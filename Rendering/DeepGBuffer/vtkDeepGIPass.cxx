@@ -829,15 +829,8 @@ bool vtkDeepGIPass::DrawComposite(
     return false;
   }
   vtkOpenGLState* ostate = window->GetState();
-  vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
-  vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(ostate);
   // The colour is replaced, the framebuffer's alpha kept.
-  ostate->vtkglEnable(GL_BLEND);
-  ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ZERO, GL_ZERO, GL_ONE);
-  ostate->vtkglDisable(GL_DEPTH_TEST);
-  ostate->vtkglDepthMask(GL_FALSE);
+  vtkDeepScreenSpace::ScopedCompositeState compositeState(ostate, GL_ONE, GL_ZERO);
   int layerSize[2] = { 0, 0 };
   int guardBand = 0;
   this->GBufferPass->GetLayerExtent(renderer, layerSize, guardBand);

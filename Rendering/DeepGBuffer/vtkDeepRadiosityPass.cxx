@@ -423,14 +423,8 @@ void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   vtkOpenGLState* ostate = window->GetState();
   vtkDeepRadiosityRendererState& state = *in.States.Existing(renderer);
-  vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
-  vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(ostate);
-  ostate->vtkglEnable(GL_BLEND);
-  ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ZERO, GL_ZERO, GL_ONE);
-  ostate->vtkglDisable(GL_DEPTH_TEST);
-  ostate->vtkglDepthMask(GL_FALSE);
+  // The colour is replaced, the framebuffer's alpha kept.
+  vtkDeepScreenSpace::ScopedCompositeState compositeState(ostate, GL_ONE, GL_ZERO);
   vtkShaderProgram* program = in.CompositeQuad->Program;
   window->GetShaderCache()->ReadyShaderProgram(program);
   vtkTextureObject* indirect = state.Targets[INDIRECT][0];
@@ -547,15 +541,7 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
   }
   {
     vtkOpenGLState* ostate = frame.GL;
-    vtkOpenGLState::ScopedglViewport savedViewport(ostate);
-    vtkOpenGLState::ScopedglEnableDisable savedScissorTest(ostate, GL_SCISSOR_TEST);
-    vtkOpenGLState::ScopedglScissor savedScissor(ostate);
-    vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
-    ostate->vtkglDisable(GL_SCISSOR_TEST);
-    ostate->vtkglDisable(GL_BLEND);
-    ostate->vtkglDisable(GL_DEPTH_TEST);
-    ostate->PushFramebufferBindings();
+    vtkDeepScreenSpace::ScopedStageState stageState(ostate);
     this->Internals->Framebuffer->Bind();
     ostate->vtkglViewport(0, 0, frame.Size[0], frame.Size[1]);
     this->ComputeBounceInput(frame, state);
@@ -571,7 +557,6 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
     {
       this->Internals->Framebuffer->RemoveColorAttachment(a);
     }
-    ostate->PopFramebufferBindings();
   }
   for (int q : GBufferQuantities)
   {

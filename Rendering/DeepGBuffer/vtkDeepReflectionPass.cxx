@@ -417,14 +417,7 @@ void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
   if (gbuffer->GetDisplayQuantity() == vtkDeepGBufferPass::RADIANCE && radianceUnit >= 0 &&
     reflectivityUnit >= 0)
   {
-    vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
-    vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(ostate);
-    ostate->vtkglEnable(GL_BLEND);
-    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ZERO, GL_ZERO, GL_ONE);
-    ostate->vtkglDisable(GL_DEPTH_TEST);
-    ostate->vtkglDepthMask(GL_FALSE);
+    vtkDeepScreenSpace::ScopedCompositeState compositeState(ostate, GL_ONE, GL_ZERO);
     vtkShaderProgram* program = in.CompositeQuad->Program;
     window->GetShaderCache()->ReadyShaderProgram(program);
     state.Targets[REFLECTED]->Activate();
@@ -636,15 +629,7 @@ void vtkDeepReflectionPass::TraceRays(
 {
   vtkInternals& in = *this->Internals;
   vtkOpenGLState* ostate = frame.GL;
-  vtkOpenGLState::ScopedglViewport savedViewport(ostate);
-  vtkOpenGLState::ScopedglEnableDisable savedScissorTest(ostate, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglScissor savedScissor(ostate);
-  vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
-  ostate->vtkglDisable(GL_SCISSOR_TEST);
-  ostate->vtkglDisable(GL_BLEND);
-  ostate->vtkglDisable(GL_DEPTH_TEST);
-  ostate->PushFramebufferBindings();
+  vtkDeepScreenSpace::ScopedStageState stageState(ostate);
   in.Framebuffer->Bind();
   in.Framebuffer->AddColorAttachment(REFLECTED, state.Targets[REFLECTED]);
   in.Framebuffer->AddColorAttachment(HIT, state.Targets[HIT]);
@@ -664,7 +649,6 @@ void vtkDeepReflectionPass::TraceRays(
   in.TraceQuads[frame.EnvironmentKind]->Render();
   in.Framebuffer->RemoveColorAttachment(HIT);
   in.Framebuffer->RemoveColorAttachment(REFLECTED);
-  ostate->PopFramebufferBindings();
 }
 
 //------------------------------------------------------------------------------

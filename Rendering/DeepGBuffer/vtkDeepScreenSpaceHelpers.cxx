@@ -118,6 +118,40 @@ void ReleaseTarget(vtkSmartPointer<vtkTextureObject>& texture, vtkWindow* window
 }
 
 //------------------------------------------------------------------------------
+ScopedStageState::ScopedStageState(vtkOpenGLState* state)
+  : State(state)
+  , Viewport(state)
+  , ScissorTest(state, GL_SCISSOR_TEST)
+  , Scissor(state)
+  , Blend(state, GL_BLEND)
+  , DepthTest(state, GL_DEPTH_TEST)
+{
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->PushFramebufferBindings();
+}
+
+ScopedStageState::~ScopedStageState()
+{
+  this->State->PopFramebufferBindings();
+}
+
+//------------------------------------------------------------------------------
+ScopedCompositeState::ScopedCompositeState(
+  vtkOpenGLState* state, unsigned int sourceFactor, unsigned int destinationFactor)
+  : Blend(state, GL_BLEND)
+  , DepthTest(state, GL_DEPTH_TEST)
+  , DepthMask(state)
+  , BlendFunc(state)
+{
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(sourceFactor, destinationFactor, GL_ZERO, GL_ONE);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_FALSE);
+}
+
+//------------------------------------------------------------------------------
 void AddCameraFieldData(vtkFieldData* fd, const double view[16], const double projection[16])
 {
   for (auto matrix :

@@ -14,6 +14,7 @@
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
 #include "vtkCallbackCommand.h"
+#include "vtkOpenGLState.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
@@ -26,7 +27,6 @@
 class vtkFieldData;
 class vtkImageData;
 class vtkOpenGLQuadHelper;
-class vtkOpenGLState;
 class vtkShaderProgram;
 class vtkOpenGLRenderWindow;
 class vtkWindow;
@@ -102,6 +102,50 @@ bool AnyActor(vtkRenderer* renderer, Visitor visit)
 /// to camera) and "ProjectionMatrix" (camera to clip, z in [-1, 1]), 16
 /// components each, row-major as vtkMatrix4x4 stores them.
 void AddCameraFieldData(vtkFieldData* fd, const double view[16], const double projection[16]);
+
+/**
+ * The OpenGL state of an effect's offscreen stages (full-screen passes into
+ * its own targets): viewport, scissor, blending and depth test saved, the
+ * scissor test, blending and depth test off, the framebuffer bindings
+ * pushed; all restored when it goes out of scope.
+ */
+class ScopedStageState
+{
+public:
+  explicit ScopedStageState(vtkOpenGLState* state);
+  ~ScopedStageState();
+  ScopedStageState(const ScopedStageState&) = delete;
+  void operator=(const ScopedStageState&) = delete;
+
+private:
+  vtkOpenGLState* State;
+  vtkOpenGLState::ScopedglViewport Viewport;
+  vtkOpenGLState::ScopedglEnableDisable ScissorTest;
+  vtkOpenGLState::ScopedglScissor Scissor;
+  vtkOpenGLState::ScopedglEnableDisable Blend;
+  vtkOpenGLState::ScopedglEnableDisable DepthTest;
+};
+
+/**
+ * The OpenGL state of a composite into the renderer's framebuffer: blending
+ * on, the colour combined as (sourceFactor, destinationFactor) and the
+ * framebuffer's alpha kept, depth test and depth writes off; all restored
+ * when it goes out of scope. (GL_ONE, GL_ZERO) replaces the colour.
+ */
+class ScopedCompositeState
+{
+public:
+  ScopedCompositeState(vtkOpenGLState* state, unsigned int sourceFactor,
+    unsigned int destinationFactor);
+  ScopedCompositeState(const ScopedCompositeState&) = delete;
+  void operator=(const ScopedCompositeState&) = delete;
+
+private:
+  vtkOpenGLState::ScopedglEnableDisable Blend;
+  vtkOpenGLState::ScopedglEnableDisable DepthTest;
+  vtkOpenGLState::ScopedglDepthMask DepthMask;
+  vtkOpenGLState::ScopedglBlendFuncSeparate BlendFunc;
+};
 
 /// Diagonal of the bounds of the renderer's visible props, 0 when empty or
 /// not finite: the scene size the automatic radii are fractions of.
