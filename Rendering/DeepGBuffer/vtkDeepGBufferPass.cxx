@@ -14,6 +14,7 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkLightsPass.h"
+#include "vtkRenderStepsPass.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -343,6 +344,8 @@ public:
   vtkOpenGLQuadHelper* ResolveQuad = nullptr;
 
   vtkLightsPass* LightsPass = nullptr;
+  vtkNew<vtkRenderStepsPass> Steps;
+  vtkNew<vtkDeepGBufferDrawStep> OpaqueStep;
   vtkNew<vtkDeepGBufferDrawStep> DrawStep;
 
   // The prop's model matrix in the other frame (SetShaderParameters).
@@ -1690,66 +1693,36 @@ void vtkDeepGBufferPass::Render(const vtkRenderState* s)
 void vtkDeepGBufferPass::RenderFrame(const vtkRenderState* s, vtkRenderPass* opaqueStep)
 {
   vtkOpenGLClearErrorMacro();
+  vtkInternals& in = *this->Internals;
   this->NumberOfRenderedProps = 0;
-  vtkRenderer* renderer = s->GetRenderer();
-
-  // Camera and clear, as vtkCameraPass does, then the steps of
-  // vtkRenderStepsPass with the opaque step replaced by the G-buffer.
-  vtkOpenGLRenderer* oren = vtkOpenGLRenderer::SafeDownCast(renderer);
-  if (!oren)
+  if (!vtkOpenGLRenderer::SafeDownCast(s->GetRenderer()))
   {
     vtkErrorMacro("vtkDeepGBufferPass needs a vtkOpenGLRenderer.");
     return;
   }
-  if (!renderer->IsActiveCameraCreated())
+  // VTK's own frame (vtkRenderStepsPass: camera and clear, lights, opaque,
+  // translucent, volumetric, overlay) with the opaque step replaced by the
+  // layers and what consumes them.
+  in.OpaqueStep->Draw = [this, opaqueStep](const vtkRenderState* state)
   {
-    renderer->GetActiveCamera();
-    renderer->ResetCamera();
-  }
-  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  window->MakeCurrent();
-  vtkOpenGLState* ostate = window->GetState();
-  int origin[2] = { 0, 0 };
-  int size[2];
-  if (vtkOpenGLFramebufferObject* fbo =
-        vtkOpenGLFramebufferObject::SafeDownCast(s->GetFrameBuffer()))
-  {
-    fbo->GetLastSize(size);
-  }
-  else
-  {
-    oren->GetTiledSizeAndOrigin(size, size + 1, origin, origin + 1);
-  }
-  vtkOpenGLState::ScopedglViewport savedViewport(ostate);
-  vtkOpenGLState::ScopedglScissor savedScissor(ostate);
-  vtkOpenGLState::ScopedglEnableDisable savedScissorTest(ostate, GL_SCISSOR_TEST);
-  ostate->vtkglViewport(origin[0], origin[1], size[0], size[1]);
-  ostate->vtkglEnable(GL_SCISSOR_TEST);
-  ostate->vtkglScissor(origin[0], origin[1], size[0], size[1]);
-  if (window->GetErase() && renderer->GetErase())
-  {
-    renderer->Clear();
-  }
-  this->Internals->LightsPass->Render(s);
-
-  if (opaqueStep)
-  {
-    opaqueStep->Render(s);
-  }
-  else if (this->RenderLayers(s))
-  {
-    this->ResolveToFramebuffer(s);
-  }
-  this->NumberOfRenderedProps += s->GetPropArrayCount();
-
-  for (vtkRenderPass* step : { this->TranslucentPass, this->VolumetricPass, this->OverlayPass })
-  {
-    if (step)
+    if (opaqueStep)
     {
-      step->Render(s);
-      this->NumberOfRenderedProps += step->GetNumberOfRenderedProps();
+      opaqueStep->Render(state);
     }
-  }
+    else if (this->RenderLayers(state))
+    {
+      this->ResolveToFramebuffer(state);
+    }
+  };
+  in.Steps->SetLightsPass(in.LightsPass);
+  in.Steps->SetOpaquePass(in.OpaqueStep);
+  in.Steps->SetTranslucentPass(this->TranslucentPass);
+  in.Steps->SetVolumetricPass(this->VolumetricPass);
+  in.Steps->SetOverlayPass(this->OverlayPass);
+  in.Steps->SetPostProcessPass(nullptr);
+  in.Steps->Render(s);
+  in.OpaqueStep->Draw = nullptr;
+  this->NumberOfRenderedProps = in.Steps->GetNumberOfRenderedProps();
   vtkOpenGLCheckErrorMacro("failed after vtkDeepGBufferPass::Render");
 }
 
@@ -1771,6 +1744,7 @@ void vtkDeepGBufferPass::ReleaseGraphicsResources(vtkWindow* w)
   }
   in.CheckedWindow = nullptr;
   in.LightsPass->ReleaseGraphicsResources(w);
+  in.Steps->ReleaseGraphicsResources(w);
   for (vtkRenderPass* step :
     { this->TranslucentPass, this->VolumetricPass, this->OverlayPass,
       static_cast<vtkRenderPass*>(this->ShadowMapPass) })

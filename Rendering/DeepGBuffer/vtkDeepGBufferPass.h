@@ -319,9 +319,10 @@ public:
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
   /**
-   * Renders a whole frame the way Render() does (camera and clear in the
-   * renderer's viewport, lights, the opaque step, then the translucent,
-   * volumetric and overlay steps), with the opaque step delegated to
+   * Renders a whole frame the way Render() does, through VTK's
+   * vtkRenderStepsPass (camera and clear in the renderer's viewport, lights,
+   * the opaque step, then the translucent, volumetric and overlay steps
+   * set on this pass), with the opaque step delegated to
    * `opaqueStep` when it is not null. Passes that consume the G-buffer
    * (vtkDeepAmbientObscurancePass) call RenderLayers from their opaque step
    * and draw their own result. With null, the opaque step is RenderLayers
