@@ -283,8 +283,8 @@ void vtkDeepGIReferenceIrradiance::SetNumberOfBounces(int bounces)
   const int clamped = std::min(16, std::max(1, bounces));
   if (clamped != bounces)
   {
-    vtkWarningMacro("NumberOfBounces " << bounces << " is outside [1, 16]; using " << clamped
-                                       << ".");
+    vtkWarningMacro(
+      "NumberOfBounces " << bounces << " is outside [1, 16]; using " << clamped << ".");
   }
   if (clamped != this->NumberOfBounces)
   {
@@ -478,8 +478,8 @@ void vtkDeepGIReferenceIrradiance::PrepareEmission()
   if (emission->GetNumberOfTuples() != cells || (components != 1 && components != 3))
   {
     vtkWarningMacro("The scene's \"" << this->EmissionArrayName << "\" cell array has "
-                                     << emission->GetNumberOfTuples() << " tuples of "
-                                     << components << " components for " << cells
+                                     << emission->GetNumberOfTuples() << " tuples of " << components
+                                     << " components for " << cells
                                      << " cells (expected RGB or grey per cell); ignored.");
     return;
   }
@@ -735,8 +735,8 @@ void vtkDeepGIReferenceIrradiance::DirectRadiance(
   }
 }
 
-void vtkDeepGIReferenceIrradiance::EvaluateSample(const SurfacePoint& x,
-  const double direction[3], const HitRecord& hit, int sample, double* values) const
+void vtkDeepGIReferenceIrradiance::EvaluateSample(const SurfacePoint& x, const double direction[3],
+  const HitRecord& hit, int sample, double* values) const
 {
   values[0] = values[1] = values[2] = 0.0;
   if (this->Quantity == DIRECT_RADIANCE)
@@ -866,8 +866,9 @@ void vtkDeepGIReferenceIrradiance::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TwoSidedLighting: " << (this->TwoSidedLighting ? "On" : "Off") << "\n";
   os << indent << "MaximumDistance: " << this->MaximumDistance << "\n";
   os << indent << "DiffuseCoefficient: " << this->DiffuseCoefficient << "\n";
-  os << indent << "EmissionArrayName: "
-     << (this->EmissionArrayName ? this->EmissionArrayName : "(none)") << "\n";
+  os << indent
+     << "EmissionArrayName: " << (this->EmissionArrayName ? this->EmissionArrayName : "(none)")
+     << "\n";
   os << indent << "NumberOfBounces: " << this->NumberOfBounces << "\n";
   os << indent << "BounceDamping: " << this->BounceDamping << "\n";
   os << indent << "NumberOfLights: " << this->GetNumberOfLights() << "\n";

@@ -12,8 +12,8 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSmartPointer.h"
 #include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <embree3/rtcore.h>
@@ -168,15 +168,14 @@ bool vtkDeepGIReferenceObscurance::BuildScene()
   {
     in.Centre[c] = 0.5 * (bounds[2 * c] + bounds[2 * c + 1]);
   }
-  in.Diagonal = std::sqrt(vtkMath::Distance2BetweenPoints(
-    std::array<double, 3>{ bounds[0], bounds[2], bounds[4] }.data(),
-    std::array<double, 3>{ bounds[1], bounds[3], bounds[5] }.data()));
+  in.Diagonal = std::sqrt(
+    vtkMath::Distance2BetweenPoints(std::array<double, 3>{ bounds[0], bounds[2], bounds[4] }.data(),
+      std::array<double, 3>{ bounds[1], bounds[3], bounds[5] }.data()));
 
   // Fan-triangulate the polygons; cell ids follow the polydata's cell order
   // (verts and lines come first there).
   std::vector<unsigned int>& indices = in.Indices;
-  const vtkIdType cellOffset =
-    this->Scene->GetNumberOfVerts() + this->Scene->GetNumberOfLines();
+  const vtkIdType cellOffset = this->Scene->GetNumberOfVerts() + this->Scene->GetNumberOfLines();
   auto iter = vtk::TakeSmartPointer(polys->NewIterator());
   vtkIdType cell = 0;
   for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell(), ++cell)
@@ -201,8 +200,8 @@ bool vtkDeepGIReferenceObscurance::BuildScene()
   in.Scene = rtcNewScene(in.Device);
   rtcSetSceneBuildQuality(in.Scene, RTC_BUILD_QUALITY_HIGH);
   RTCGeometry geometry = rtcNewGeometry(in.Device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  float* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry,
-    RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), npoints));
+  float* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+    geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), npoints));
   unsigned int* triangles = static_cast<unsigned int*>(rtcSetNewGeometryBuffer(geometry,
     RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned int), indices.size() / 3));
   if (!vertices || !triangles)
@@ -347,8 +346,9 @@ double vtkDeepGIReferenceObscurance::Random(vtkIdType pixel, int sample, int dim
 {
   std::uint64_t h = Mix64(static_cast<std::uint64_t>(this->Seed) ^ 0x5851f42d4c957f2dULL);
   h = Mix64(h ^ static_cast<std::uint64_t>(pixel));
-  h = Mix64(h ^ ((static_cast<std::uint64_t>(static_cast<std::uint32_t>(sample)) << 8) |
-                  static_cast<std::uint64_t>(dimension & 0xff)));
+  h = Mix64(h ^
+    ((static_cast<std::uint64_t>(static_cast<std::uint32_t>(sample)) << 8) |
+      static_cast<std::uint64_t>(dimension & 0xff)));
   return static_cast<double>(h >> 11) * (1.0 / 9007199254740992.0);
 }
 
@@ -370,8 +370,8 @@ void vtkDeepGIReferenceObscurance::CosineDirection(
 }
 
 //------------------------------------------------------------------------------
-void vtkDeepGIReferenceObscurance::EvaluateSample(const SurfacePoint& x,
-  const double direction[3], const HitRecord& hit, int, double* values) const
+void vtkDeepGIReferenceObscurance::EvaluateSample(
+  const SurfacePoint& x, const double direction[3], const HitRecord& hit, int, double* values) const
 {
   values[0] = 0.0;
   if (!hit.Hit || hit.Distance >= this->Radius)
@@ -473,9 +473,8 @@ bool vtkDeepGIReferenceObscurance::Compute(vtkImageData* capture)
     depth->GetNumberOfTuples() != pixels || normal->GetNumberOfTuples() != pixels ||
     (valid && valid->GetNumberOfTuples() != pixels))
   {
-    vtkErrorMacro("The capture has no 2D layer " << this->Layer
-                                                 << " (arrays Depth" << suffix << ", Normal"
-                                                 << suffix << ").");
+    vtkErrorMacro("The capture has no 2D layer " << this->Layer << " (arrays Depth" << suffix
+                                                 << ", Normal" << suffix << ").");
     return false;
   }
   if (!view || !projection || view->GetNumberOfValues() < 16 ||
@@ -514,84 +513,86 @@ bool vtkDeepGIReferenceObscurance::Compute(vtkImageData* capture)
   const int components = this->GetNumberOfSampleComponents();
   const double tmax = this->GetMaximumRayDistance();
 
-  vtkSMPTools::For(0, height, [&](vtkIdType rowBegin, vtkIdType rowEnd) {
-    std::vector<double> sum(components), sum2(components), values(components),
-      mean(components), error(components);
-    for (vtkIdType row = rowBegin; row < rowEnd; ++row)
+  vtkSMPTools::For(0, height,
+    [&](vtkIdType rowBegin, vtkIdType rowEnd)
     {
-      for (int col = 0; col < width; ++col)
+      std::vector<double> sum(components), sum2(components), values(components), mean(components),
+        error(components);
+      for (vtkIdType row = rowBegin; row < rowEnd; ++row)
       {
-        const vtkIdType pixel = row * width + col;
-        const double distance = depth->GetComponent(pixel, 0);
-        double n[3] = { normal->GetComponent(pixel, 0), normal->GetComponent(pixel, 1),
-          normal->GetComponent(pixel, 2) };
-        const bool isValid = (!valid || valid->GetComponent(pixel, 0) != 0) &&
-          std::isfinite(distance) && distance > 0.0 && std::isfinite(n[0]) &&
-          std::isfinite(n[1]) && std::isfinite(n[2]) && vtkMath::Norm(n) > 0.5;
-        validOut->SetValue(pixel, isValid ? 1 : 0);
-        if (!isValid)
+        for (int col = 0; col < width; ++col)
         {
-          this->FinishPixel(this->Output, pixel, nullptr, nullptr);
-          continue;
-        }
-        // The pixel's viewing ray in camera space: unproject the NDC points
-        // at the near and far planes, then pick the point with z = -depth.
-        const double ndcX = (col + 0.5) / width * 2.0 - 1.0;
-        const double ndcY = (row + 0.5) / height * 2.0 - 1.0;
-        double a[4] = { ndcX, ndcY, -1.0, 1.0 }, b[4] = { ndcX, ndcY, 1.0, 1.0 };
-        ndcToCamera->MultiplyPoint(a, a);
-        ndcToCamera->MultiplyPoint(b, b);
-        for (int c = 0; c < 3; ++c)
-        {
-          a[c] /= a[3];
-          b[c] /= b[3];
-        }
-        const double s = (-distance - a[2]) / (b[2] - a[2]);
-        double camera[4] = { a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1]), -distance, 1.0 };
-        double world[4];
-        cameraToWorld->MultiplyPoint(camera, world);
-        SurfacePoint x;
-        x.Pixel = pixel;
-        for (int c = 0; c < 3; ++c)
-        {
-          x.Position[c] = world[c] / world[3];
-          // Normals go from camera to world with the transpose of the view
-          // matrix's 3x3 (inverse transpose of camera-to-world).
-          x.Normal[c] = viewMatrix->GetElement(0, c) * n[0] +
-            viewMatrix->GetElement(1, c) * n[1] + viewMatrix->GetElement(2, c) * n[2];
-        }
-        vtkMath::Normalize(x.Normal);
-        const double offset = this->GetRayOffset(x.Position);
-        for (int c = 0; c < 3; ++c)
-        {
-          x.Origin[c] = x.Position[c] + offset * x.Normal[c];
-        }
-        std::fill(sum.begin(), sum.end(), 0.0);
-        std::fill(sum2.begin(), sum2.end(), 0.0);
-        for (int i = 0; i < spp; ++i)
-        {
-          double w[3];
-          CosineDirection(x.Normal, this->Random(pixel, i, 0), this->Random(pixel, i, 1), w);
-          HitRecord hit;
-          this->TraceRay(x.Origin, w, tmax, hit);
-          this->EvaluateSample(x, w, hit, i, values.data());
+          const vtkIdType pixel = row * width + col;
+          const double distance = depth->GetComponent(pixel, 0);
+          double n[3] = { normal->GetComponent(pixel, 0), normal->GetComponent(pixel, 1),
+            normal->GetComponent(pixel, 2) };
+          const bool isValid = (!valid || valid->GetComponent(pixel, 0) != 0) &&
+            std::isfinite(distance) && distance > 0.0 && std::isfinite(n[0]) &&
+            std::isfinite(n[1]) && std::isfinite(n[2]) && vtkMath::Norm(n) > 0.5;
+          validOut->SetValue(pixel, isValid ? 1 : 0);
+          if (!isValid)
+          {
+            this->FinishPixel(this->Output, pixel, nullptr, nullptr);
+            continue;
+          }
+          // The pixel's viewing ray in camera space: unproject the NDC points
+          // at the near and far planes, then pick the point with z = -depth.
+          const double ndcX = (col + 0.5) / width * 2.0 - 1.0;
+          const double ndcY = (row + 0.5) / height * 2.0 - 1.0;
+          double a[4] = { ndcX, ndcY, -1.0, 1.0 }, b[4] = { ndcX, ndcY, 1.0, 1.0 };
+          ndcToCamera->MultiplyPoint(a, a);
+          ndcToCamera->MultiplyPoint(b, b);
+          for (int c = 0; c < 3; ++c)
+          {
+            a[c] /= a[3];
+            b[c] /= b[3];
+          }
+          const double s = (-distance - a[2]) / (b[2] - a[2]);
+          double camera[4] = { a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1]), -distance, 1.0 };
+          double world[4];
+          cameraToWorld->MultiplyPoint(camera, world);
+          SurfacePoint x;
+          x.Pixel = pixel;
+          for (int c = 0; c < 3; ++c)
+          {
+            x.Position[c] = world[c] / world[3];
+            // Normals go from camera to world with the transpose of the view
+            // matrix's 3x3 (inverse transpose of camera-to-world).
+            x.Normal[c] = viewMatrix->GetElement(0, c) * n[0] +
+              viewMatrix->GetElement(1, c) * n[1] + viewMatrix->GetElement(2, c) * n[2];
+          }
+          vtkMath::Normalize(x.Normal);
+          const double offset = this->GetRayOffset(x.Position);
+          for (int c = 0; c < 3; ++c)
+          {
+            x.Origin[c] = x.Position[c] + offset * x.Normal[c];
+          }
+          std::fill(sum.begin(), sum.end(), 0.0);
+          std::fill(sum2.begin(), sum2.end(), 0.0);
+          for (int i = 0; i < spp; ++i)
+          {
+            double w[3];
+            CosineDirection(x.Normal, this->Random(pixel, i, 0), this->Random(pixel, i, 1), w);
+            HitRecord hit;
+            this->TraceRay(x.Origin, w, tmax, hit);
+            this->EvaluateSample(x, w, hit, i, values.data());
+            for (int c = 0; c < components; ++c)
+            {
+              sum[c] += values[c];
+              sum2[c] += values[c] * values[c];
+            }
+          }
           for (int c = 0; c < components; ++c)
           {
-            sum[c] += values[c];
-            sum2[c] += values[c] * values[c];
+            mean[c] = sum[c] / spp;
+            const double variance =
+              spp > 1 ? std::max(0.0, (sum2[c] - sum[c] * mean[c]) / (spp - 1)) : 0.0;
+            error[c] = std::sqrt(variance / spp);
           }
+          this->FinishPixel(this->Output, pixel, mean.data(), error.data());
         }
-        for (int c = 0; c < components; ++c)
-        {
-          mean[c] = sum[c] / spp;
-          const double variance =
-            spp > 1 ? std::max(0.0, (sum2[c] - sum[c] * mean[c]) / (spp - 1)) : 0.0;
-          error[c] = std::sqrt(variance / spp);
-        }
-        this->FinishPixel(this->Output, pixel, mean.data(), error.data());
       }
-    }
-  });
+    });
 
   // Statistics, serially (deterministic order).
   vtkDataArray* se = this->Output->GetPointData()->GetArray(this->GetStandardErrorArrayName());

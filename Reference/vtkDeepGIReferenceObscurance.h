@@ -257,8 +257,8 @@ protected:
 
   /// Closest hit along origin + t * direction (unit), 0 < t < tmax.
   /// Thread-safe; valid during Compute() only.
-  bool TraceRay(const double origin[3], const double direction[3], double tmax,
-    HitRecord& hit) const;
+  bool TraceRay(
+    const double origin[3], const double direction[3], double tmax, HitRecord& hit) const;
 
   /// Whether any triangle lies along origin + t * direction (unit),
   /// 0 < t < tmax (a shadow ray: any hit, not the closest). Thread-safe;

@@ -136,8 +136,8 @@ public:
    * surfaces; collapseV0/collapseV1 make the row v = 0 / v = 1 a single
    * point (poles, disc centres), where the degenerate triangles are skipped.
    */
-  void Grid(int nu, int nv, bool wrapU, bool wrapV, bool collapseV0, bool collapseV1,
-    const Surface& f)
+  void Grid(
+    int nu, int nv, bool wrapU, bool wrapV, bool collapseV0, bool collapseV1, const Surface& f)
   {
     if (wrapV)
     {
@@ -152,8 +152,8 @@ public:
     {
       points += collapsed(j) ? 1 : cols;
     }
-    const vtkIdType triangles = 2 * static_cast<vtkIdType>(nu) * nv -
-      (collapseV0 ? nu : 0) - (collapseV1 ? nu : 0);
+    const vtkIdType triangles =
+      2 * static_cast<vtkIdType>(nu) * nv - (collapseV0 ? nu : 0) - (collapseV1 ? nu : 0);
     this->NumberOfPoints += points;
     this->NumberOfTriangles += triangles;
     if (this->CountOnly)
@@ -170,11 +170,11 @@ public:
       for (int i = 0; i < n; ++i)
       {
         const Vec3 p = f(static_cast<double>(i) / nu, v);
-        this->Points->InsertNextPoint(
-          this->Scale * p[0], this->Scale * p[1], this->Scale * p[2]);
+        this->Points->InsertNextPoint(this->Scale * p[0], this->Scale * p[1], this->Scale * p[2]);
       }
     }
-    auto id = [&](int i, int j) -> vtkIdType {
+    auto id = [&](int i, int j) -> vtkIdType
+    {
       const int jj = wrapV ? j % rows : j;
       if (collapsed(jj))
       {
@@ -228,8 +228,8 @@ int Segments(double length, double h, int minimum)
 const Vec3 X{ 1, 0, 0 }, Y{ 0, 1, 0 }, Z{ 0, 0, 1 };
 
 // Planar parallelogram o + u a + v c, facing a x c.
-void Quad(MeshBuilder& b, double h, const Vec3& o, const Vec3& a, const Vec3& c, int minU = 1,
-  int minV = 1)
+void Quad(
+  MeshBuilder& b, double h, const Vec3& o, const Vec3& a, const Vec3& c, int minU = 1, int minV = 1)
 {
   b.Grid(Segments(Norm(a), h, minU), Segments(Norm(c), h, minV), false, false, false, false,
     [=](double u, double v) { return o + u * a + v * c; });
@@ -280,14 +280,15 @@ void Box(MeshBuilder& b, double h, const Vec3& center, const Vec3& size, double 
 }
 
 // Disc of radius r around c, facing e1 x e2, with nu segments around.
-void Disc(MeshBuilder& b, double h, const Vec3& c, const Vec3& e1, const Vec3& e2, double r,
-  int nu)
+void Disc(MeshBuilder& b, double h, const Vec3& c, const Vec3& e1, const Vec3& e2, double r, int nu)
 {
-  b.Grid(nu, Segments(r, h, 1), true, false, false, true, [=](double u, double v) {
-    const double t = 2.0 * vtkMath::Pi() * u;
-    const double rho = r * (1.0 - v);
-    return c + (rho * std::cos(t)) * e1 + (rho * std::sin(t)) * e2;
-  });
+  b.Grid(nu, Segments(r, h, 1), true, false, false, true,
+    [=](double u, double v)
+    {
+      const double t = 2.0 * vtkMath::Pi() * u;
+      const double rho = r * (1.0 - v);
+      return c + (rho * std::cos(t)) * e1 + (rho * std::sin(t)) * e2;
+    });
 }
 
 // Cylinder of radius r from `base` along axis (= e1 x e2) for `length`,
@@ -296,10 +297,12 @@ void Cylinder(MeshBuilder& b, double h, const Vec3& base, const Vec3& axis, cons
   const Vec3& e2, double r, double length, bool capStart, bool capEnd)
 {
   const int nu = Segments(2.0 * vtkMath::Pi() * r, h, 20);
-  b.Grid(nu, Segments(length, h, 1), true, false, false, false, [=](double u, double v) {
-    const double t = 2.0 * vtkMath::Pi() * u;
-    return base + (r * std::cos(t)) * e1 + (r * std::sin(t)) * e2 + (v * length) * axis;
-  });
+  b.Grid(nu, Segments(length, h, 1), true, false, false, false,
+    [=](double u, double v)
+    {
+      const double t = 2.0 * vtkMath::Pi() * u;
+      return base + (r * std::cos(t)) * e1 + (r * std::sin(t)) * e2 + (v * length) * axis;
+    });
   if (capEnd)
   {
     Disc(b, h, base + length * axis, e1, e2, r, nu);
@@ -315,7 +318,9 @@ void Torus(MeshBuilder& b, double h, const Vec3& c, const Vec3& axis, const Vec3
   const Vec3& e2, double R, double r)
 {
   b.Grid(Segments(2.0 * vtkMath::Pi() * (R + r), h, 24), Segments(2.0 * vtkMath::Pi() * r, h, 8),
-    true, true, false, false, [=](double u, double v) {
+    true, true, false, false,
+    [=](double u, double v)
+    {
       const double t = 2.0 * vtkMath::Pi() * u;
       const double p = 2.0 * vtkMath::Pi() * v;
       const Vec3 radial = std::cos(t) * e1 + std::sin(t) * e2;
@@ -327,8 +332,10 @@ void Torus(MeshBuilder& b, double h, const Vec3& c, const Vec3& axis, const Vec3
 void Sphere(MeshBuilder& b, double h, const Vec3& c, const Vec3& axis, const Vec3& e1,
   const Vec3& e2, double r)
 {
-  b.Grid(Segments(2.0 * vtkMath::Pi() * r, h, 24), Segments(vtkMath::Pi() * r, h, 12), true,
-    false, true, true, [=](double u, double v) {
+  b.Grid(Segments(2.0 * vtkMath::Pi() * r, h, 24), Segments(vtkMath::Pi() * r, h, 12), true, false,
+    true, true,
+    [=](double u, double v)
+    {
       const double t = 2.0 * vtkMath::Pi() * u;
       const double psi = vtkMath::Pi() * v; // 0 at the -axis pole
       const Vec3 radial = std::cos(t) * e1 + std::sin(t) * e2;
@@ -363,7 +370,9 @@ void Layout(std::vector<MeshBuilder>& m, double h, bool ceiling)
     const double left = columnX[i] - 0.5 * bannerWidth;
     MeshBuilder& banner = m[i % 2 ? S::BANNERS_PURPLE : S::BANNERS_GOLD];
     banner.Grid(Segments(bannerWidth, h, 24), Segments(bannerTop - bannerBottom, h, 1), false,
-      false, false, false, [=](double u, double v) -> Vec3 {
+      false, false, false,
+      [=](double u, double v) -> Vec3
+      {
         return { left + u * bannerWidth, bannerBottom + v * (bannerTop - bannerBottom),
           bannerZ + 0.03 * std::sin(2.0 * vtkMath::Pi() * 3.0 * u) };
       });
@@ -380,7 +389,8 @@ void Layout(std::vector<MeshBuilder>& m, double h, bool ceiling)
     Cylinder(col, h, { cx, 0.2, columnZ }, Y, Z, X, 0.22, 3.5, false, false);
     Torus(col, h, { cx, 3.53, columnZ }, Y, Z, X, 0.23, 0.04);
     Torus(col, h, { cx, 3.64, columnZ }, Y, Z, X, 0.25, 0.06);
-    Box(col, h, { cx, 3.84, columnZ }, { 0.6, 0.28, 0.6 }, 0.0, ceiling ? static_cast<unsigned>(Y_MAX) : 0u);
+    Box(col, h, { cx, 3.84, columnZ }, { 0.6, 0.28, 0.6 }, 0.0,
+      ceiling ? static_cast<unsigned>(Y_MAX) : 0u);
   }
 
   // Mouldings: baseboards and crown mouldings on the three walls, a chair

@@ -237,8 +237,8 @@ protected:
   std::vector<vtkSmartPointer<vtkPolyData>> MaterialPolyData;
   vtkSmartPointer<vtkPolyData> ScenePolyData;
 
-  void SetCamera(vtkCamera* camera, const double position[3], const double focalPoint[3],
-    double viewAngle);
+  void SetCamera(
+    vtkCamera* camera, const double position[3], const double focalPoint[3], double viewAngle);
 
 private:
   vtkDeepGBufferDemoScene(const vtkDeepGBufferDemoScene&) = delete;

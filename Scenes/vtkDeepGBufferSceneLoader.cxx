@@ -12,10 +12,10 @@
 #include "vtkDataArray.h"
 #include "vtkDeepGIKeys.h"
 #include "vtkDoubleArray.h"
-#include "vtkFieldData.h"
 #include "vtkExecutive.h"
-#include "vtkFlyingEdges3D.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
+#include "vtkFlyingEdges3D.h"
 #include "vtkImageData.h"
 #include "vtkImageReader2.h"
 #include "vtkInformation.h"
@@ -167,8 +167,8 @@ bool FormatPattern(const std::string& pattern, long number, std::string& result)
       ++j;
     }
     int width = 0;
-    while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) &&
-      width < 100)
+    while (
+      j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) && width < 100)
     {
       width = 10 * width + (pattern[j] - '0');
       ++j;
@@ -522,14 +522,13 @@ bool vtkDeepGBufferSceneLoader::LoadMesh(const char* fileName)
   }
   else if (IsVolumeExtension(ext))
   {
-    vtkErrorMacro(
-      "" << path << " is a volume; load it with LoadVolume (or Load) and an iso-value");
+    vtkErrorMacro("" << path << " is a volume; load it with LoadVolume (or Load) and an iso-value");
     return false;
   }
   else
   {
-    vtkErrorMacro("Unknown mesh file extension \""
-      << ext << "\" of " << path << " (known: .ply .obj .vtp .vtk .stl)");
+    vtkErrorMacro("Unknown mesh file extension \"" << ext << "\" of " << path
+                                                   << " (known: .ply .obj .vtp .vtk .stl)");
     return false;
   }
 
@@ -540,9 +539,8 @@ bool vtkDeepGBufferSceneLoader::LoadMesh(const char* fileName)
   vtkPolyData* output = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
   if (!errors->Messages.empty() || !output)
   {
-    vtkErrorMacro("Cannot read mesh " << path << ": "
-                                      << (errors->Messages.empty() ? std::string("no output")
-                                                                   : errors->Messages));
+    vtkErrorMacro("Cannot read mesh "
+      << path << ": " << (errors->Messages.empty() ? std::string("no output") : errors->Messages));
     return false;
   }
   vtkSmartPointer<vtkPolyData> mesh = this->PrepareMesh(output, fileName);
@@ -566,9 +564,8 @@ bool vtkDeepGBufferSceneLoader::LoadOBJ(const char* fileName)
   const std::string path = fileName;
   const std::string dir = vtksys::SystemTools::GetFilenamePath(path);
   const std::string base = vtksys::SystemTools::GetFilenameName(path);
-  auto inDir = [&](const std::string& name) {
-    return (dir.empty() || vtksys::SystemTools::FileIsFullPath(name)) ? name : dir + "/" + name;
-  };
+  auto inDir = [&](const std::string& name)
+  { return (dir.empty() || vtksys::SystemTools::FileIsFullPath(name)) ? name : dir + "/" + name; };
 
   vtksys::ifstream in(path.c_str());
   if (!in)
@@ -584,7 +581,8 @@ bool vtkDeepGBufferSceneLoader::LoadOBJ(const char* fileName)
   std::vector<ObjGroup> groups;
   std::map<std::string, size_t> groupOfMaterial;
   size_t current = 0;
-  auto useMaterial = [&](const std::string& material) {
+  auto useMaterial = [&](const std::string& material)
+  {
     auto it = groupOfMaterial.find(material);
     if (it == groupOfMaterial.end())
     {
@@ -615,11 +613,11 @@ bool vtkDeepGBufferSceneLoader::LoadOBJ(const char* fileName)
       {
         // "v x y z [w | r g b]", "vn x y z".
         double xyz[3];
-        if (words.size() < 4 || !ParseDouble(words[1], xyz[0]) ||
-          !ParseDouble(words[2], xyz[1]) || !ParseDouble(words[3], xyz[2]))
+        if (words.size() < 4 || !ParseDouble(words[1], xyz[0]) || !ParseDouble(words[2], xyz[1]) ||
+          !ParseDouble(words[3], xyz[2]))
         {
-          vtkErrorMacro("Cannot read OBJ " << path << ": malformed '" << command << "' at line "
-                                           << lineNumber);
+          vtkErrorMacro(
+            "Cannot read OBJ " << path << ": malformed '" << command << "' at line " << lineNumber);
           return false;
         }
         std::vector<float>& target = command == "v" ? vertices : normals;
@@ -820,9 +818,8 @@ bool vtkDeepGBufferSceneLoader::LoadOBJ(const char* fileName)
     for (long long n : group.Normals)
     {
       const float* normal = n >= 0 ? &normals[3 * n] : nullptr;
-      withNormals = withNormals && normal && std::isfinite(normal[0]) &&
-        std::isfinite(normal[1]) && std::isfinite(normal[2]) &&
-        (normal[0] != 0.0f || normal[1] != 0.0f || normal[2] != 0.0f);
+      withNormals = withNormals && normal && std::isfinite(normal[0]) && std::isfinite(normal[1]) &&
+        std::isfinite(normal[2]) && (normal[0] != 0.0f || normal[1] != 0.0f || normal[2] != 0.0f);
       if (!withNormals)
       {
         break;
@@ -934,12 +931,14 @@ vtkSmartPointer<vtkPolyData> vtkDeepGBufferSceneLoader::PrepareMesh(
   vtkPoints* inputPoints = input->GetPoints();
   const vtkIdType numberOfPoints = inputPoints ? inputPoints->GetNumberOfPoints() : 0;
   vtkIdType dropped = 0;
-  auto checkedCells = [&](vtkCellArray* cells) -> vtkSmartPointer<vtkCellArray> {
+  auto checkedCells = [&](vtkCellArray* cells) -> vtkSmartPointer<vtkCellArray>
+  {
     if (!cells || cells->GetNumberOfCells() == 0)
     {
       return nullptr;
     }
-    auto valid = [numberOfPoints](vtkIdType n, const vtkIdType* ids) {
+    auto valid = [numberOfPoints](vtkIdType n, const vtkIdType* ids)
+    {
       return std::all_of(
         ids, ids + n, [numberOfPoints](vtkIdType id) { return id >= 0 && id < numberOfPoints; });
     };
@@ -972,15 +971,14 @@ vtkSmartPointer<vtkPolyData> vtkDeepGBufferSceneLoader::PrepareMesh(
   vtkSmartPointer<vtkCellArray> strips = checkedCells(input->GetStrips());
   if (!polys && !strips)
   {
-    vtkErrorMacro("" << what << " has no polygons whose point ids are within its "
-                     << numberOfPoints << " points");
+    vtkErrorMacro("" << what << " has no polygons whose point ids are within its " << numberOfPoints
+                     << " points");
     return nullptr;
   }
   if (dropped)
   {
     vtkWarningMacro("" << what << ": skipped " << dropped
-                       << " polygon(s) with point ids outside its " << numberOfPoints
-                       << " points");
+                       << " polygon(s) with point ids outside its " << numberOfPoints << " points");
   }
   vtkNew<vtkPolyData> checked;
   checked->SetPoints(inputPoints);
@@ -1153,8 +1151,8 @@ bool vtkDeepGBufferSceneLoader::ReadVolume(const char* path, vtkImageData* outpu
     }
     if (!IsRegularFile(p + ".1"))
     {
-      vtkErrorMacro("Volume not found: " << p << " (no such file, directory, or slice series "
-                                         << p << ".1, " << p << ".2, ...)");
+      vtkErrorMacro("Volume not found: " << p << " (no such file, directory, or slice series " << p
+                                         << ".1, " << p << ".2, ...)");
       return false;
     }
     int slices = 1;
@@ -1241,9 +1239,8 @@ bool vtkDeepGBufferSceneLoader::ReadVolume(const char* path, vtkImageData* outpu
   vtkImageData* image = vtkImageData::SafeDownCast(reader->GetOutputDataObject(0));
   if (!errors->Messages.empty() || !image || image->GetNumberOfPoints() == 0)
   {
-    vtkErrorMacro("Cannot read volume " << p << ": "
-                                        << (errors->Messages.empty() ? std::string("no data")
-                                                                     : errors->Messages));
+    vtkErrorMacro("Cannot read volume "
+      << p << ": " << (errors->Messages.empty() ? std::string("no data") : errors->Messages));
     return false;
   }
   output->ShallowCopy(image);
@@ -1258,9 +1255,8 @@ bool vtkDeepGBufferSceneLoader::ReadDetachedNrrd(
   handled = false;
   const std::string path = fileName;
   const std::string dir = vtksys::SystemTools::GetFilenamePath(path);
-  auto inDir = [&](const std::string& name) {
-    return (dir.empty() || vtksys::SystemTools::FileIsFullPath(name)) ? name : dir + "/" + name;
-  };
+  auto inDir = [&](const std::string& name)
+  { return (dir.empty() || vtksys::SystemTools::FileIsFullPath(name)) ? name : dir + "/" + name; };
   vtksys::ifstream in(path.c_str(), std::ios::in | std::ios::binary);
   std::string line;
   if (!in || !std::getline(in, line) || line.compare(0, 4, "NRRD") != 0)
@@ -1349,8 +1345,7 @@ bool vtkDeepGBufferSceneLoader::ReadDetachedNrrd(
     }
     else if (field == "space")
     {
-      leftHanded = value == "3D-left-handed" || value == "left-anterior-superior" ||
-        value == "LAS";
+      leftHanded = value == "3D-left-handed" || value == "left-anterior-superior" || value == "LAS";
     }
     else if (field == "encoding")
     {
@@ -1409,8 +1404,8 @@ bool vtkDeepGBufferSceneLoader::ReadDetachedNrrd(
 
   // Only what this parser fully understands; the rest goes to vtkNrrdReader.
   if (dimension != 3 || scalarType < 0 || encoding != "raw" || sizes[0] < 1 || sizes[1] < 1 ||
-    sizes[2] < 1 || (!attached && dataFiles.size() != 1 &&
-                      dataFiles.size() != static_cast<size_t>(sizes[2])) ||
+    sizes[2] < 1 ||
+    (!attached && dataFiles.size() != 1 && dataFiles.size() != static_cast<size_t>(sizes[2])) ||
     (attached && headerBytes <= 0))
   {
     return false;
@@ -1607,8 +1602,7 @@ vtkPolyData* vtkDeepGBufferSceneLoader::GetScenePolyData()
         // (vtkDeepGIReferenceIrradiance): an emitter's colour Ke / max(Ke)
         // (Ambient 1, EMISSIVE) and its Diffuse 0, the other parts'
         // emission 0 and Diffuse MaterialDiffuse.
-        const double brightest =
-          std::max({ part.Emission[0], part.Emission[1], part.Emission[2] });
+        const double brightest = std::max({ part.Emission[0], part.Emission[1], part.Emission[2] });
         float emitted[3] = { 0.0f, 0.0f, 0.0f };
         for (int c = 0; c < 3 && brightest > 0.0; ++c)
         {
@@ -1879,8 +1873,7 @@ void vtkDeepGBufferSceneLoader::ResetCamera(vtkRenderer* renderer)
     renderer->ResetCamera();
     return;
   }
-  double direction[3] = { this->ViewDirection[0], this->ViewDirection[1],
-    this->ViewDirection[2] };
+  double direction[3] = { this->ViewDirection[0], this->ViewDirection[1], this->ViewDirection[2] };
   if (vtkMath::Normalize(direction) == 0.0)
   {
     direction[2] = -1.0;
@@ -1889,8 +1882,7 @@ void vtkDeepGBufferSceneLoader::ResetCamera(vtkRenderer* renderer)
     0.5 * (bounds[4] + bounds[5]) };
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetFocalPoint(center);
-  camera->SetPosition(
-    center[0] - direction[0], center[1] - direction[1], center[2] - direction[2]);
+  camera->SetPosition(center[0] - direction[0], center[1] - direction[1], center[2] - direction[2]);
   camera->SetViewUp(this->ViewUp);
   camera->OrthogonalizeViewUp();
   renderer->ResetCamera(bounds);
@@ -1908,8 +1900,7 @@ void vtkDeepGBufferSceneLoader::PrintSelf(ostream& os, vtkIndent indent)
      << ", " << this->DefaultColor[2] << ")\n";
   os << indent << "RawSliceSpacing: (" << this->RawSliceSpacing[0] << ", "
      << this->RawSliceSpacing[1] << ", " << this->RawSliceSpacing[2] << ")\n";
-  os << indent << "RawSliceLittleEndian: " << (this->RawSliceLittleEndian ? "On" : "Off")
-     << "\n";
+  os << indent << "RawSliceLittleEndian: " << (this->RawSliceLittleEndian ? "On" : "Off") << "\n";
   os << indent << "DefaultLight: " << (this->DefaultLight ? "On" : "Off") << "\n";
   os << indent << "ViewDirection: (" << this->ViewDirection[0] << ", " << this->ViewDirection[1]
      << ", " << this->ViewDirection[2] << ")\n";
@@ -1919,8 +1910,8 @@ void vtkDeepGBufferSceneLoader::PrintSelf(ostream& os, vtkIndent indent)
   for (const Part& part : this->Internals->Parts)
   {
     os << indent.GetNextIndent() << part.Name << ": " << part.PolyData->GetNumberOfPolys()
-       << " triangles, colour (" << part.Color[0] << ", " << part.Color[1] << ", "
-       << part.Color[2] << "), emission (" << part.Emission[0] << ", " << part.Emission[1]
-       << ", " << part.Emission[2] << ")\n";
+       << " triangles, colour (" << part.Color[0] << ", " << part.Color[1] << ", " << part.Color[2]
+       << "), emission (" << part.Emission[0] << ", " << part.Emission[1] << ", "
+       << part.Emission[2] << ")\n";
   }
 }

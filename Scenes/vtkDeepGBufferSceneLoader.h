@@ -198,10 +198,10 @@ public:
    * Emitters (parts whose MTL material has a Ke > 0, e.g. the lamp of the
    * Cornell box) are drawn self-lit: Ambient 1 with AmbientColor
    * Ke / max(Ke), Diffuse 0, Specular 0, and the actor's PropertyKeys carry
-   * vtkDeepGIKeys::EMISSIVE() = 1 (the key vtkDeepGBufferPass::EMISSIVE() reads), so their colour enters the deep
-   * G-buffer's direct radiance (RADIANCE - AMBIENT) and with it the
-   * radiosity's B(Y). Each emitter also gets a light (AddEmitterLight); a
-   * scene with emitters is lit by them only (no default lights).
+   * vtkDeepGIKeys::EMISSIVE() = 1 (the key vtkDeepGBufferPass::EMISSIVE() reads), so their colour
+   * enters the deep G-buffer's direct radiance (RADIANCE - AMBIENT) and with it the radiosity's
+   * B(Y). Each emitter also gets a light (AddEmitterLight); a scene with emitters is lit by them
+   * only (no default lights).
    */
   int Populate(vtkRenderer* renderer);
 

@@ -22,6 +22,7 @@ build="${DEEPGI_BUILD_DIR:-$repo/build}"
 # listed here.
 packages=(
   build-essential cmake ninja-build   # toolchain
+  clang-format                        # the style check (test deepgi-format)
   libvtk9-dev vtk9 python3-vtk9       # VTK 9.1: headers/CMake package, wrapping tools, Python
   python3-numpy                       # numeric checks in the Python tests
   libglm-dev libopenexr-dev libembree-dev

@@ -37,8 +37,8 @@ unsigned char ToByte(double v)
 }
 
 // Value of component c of tuple i, mapped to [0, 1] (before clamping).
-double Mapped(vtkDataArray* a, vtkIdType i, int c, Mapping mapping, double lo, double hi,
-  double scale)
+double Mapped(
+  vtkDataArray* a, vtkIdType i, int c, Mapping mapping, double lo, double hi, double scale)
 {
   const int components = a->GetNumberOfComponents();
   switch (mapping)
@@ -121,8 +121,7 @@ vtkSmartPointer<vtkImageData> Panel(vtkImageData* capture, const char* arrayName
   {
     return nullptr;
   }
-  auto* valid =
-    vtkUnsignedCharArray::SafeDownCast(capture->GetPointData()->GetArray(validName));
+  auto* valid = vtkUnsignedCharArray::SafeDownCast(capture->GetPointData()->GetArray(validName));
   double lo = 0.0, hi = 0.0, factor = 1.0;
   if (mapping == Mapping::Depth)
   {
@@ -224,7 +223,8 @@ vtkSmartPointer<vtkImageData> Half(vtkImageData* panel)
         {
           for (int dx = 0; dx < 2; ++dx)
           {
-            const int sx = std::min(2 * x + dx, dims[0] - 1), sy = std::min(2 * y + dy, dims[1] - 1);
+            const int sx = std::min(2 * x + dx, dims[0] - 1),
+                      sy = std::min(2 * y + dy, dims[1] - 1);
             sum += static_cast<unsigned char*>(panel->GetScalarPointer(sx, sy, 0))[c];
             ++count;
           }

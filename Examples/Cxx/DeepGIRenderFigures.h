@@ -21,11 +21,11 @@ vtkSmartPointer<vtkImageData> GrabWindow(vtkRenderWindow* window);
 /// How a float array of a capture becomes a panel.
 enum class Mapping
 {
-  Colour,   ///< RGB(A) clamped to [0, 1]
-  Grey,     ///< one component in [0, 1]
-  Depth,    ///< near light, far dark, normalised over the valid pixels
-  Normal,   ///< n * 0.5 + 0.5
-  Exposure  ///< RGB scaled so that the 99th percentile of the valid pixels is 1
+  Colour,  ///< RGB(A) clamped to [0, 1]
+  Grey,    ///< one component in [0, 1]
+  Depth,   ///< near light, far dark, normalised over the valid pixels
+  Normal,  ///< n * 0.5 + 0.5
+  Exposure ///< RGB scaled so that the 99th percentile of the valid pixels is 1
 };
 
 /**

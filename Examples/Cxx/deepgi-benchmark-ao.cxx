@@ -90,8 +90,7 @@ struct Options
   int Backend = vtkDeepGIRenderWindowFactory::BACKEND_AUTO;
   std::string Output = "output";
   std::string Data = DEEPGI_DATA_DIR;
-  std::vector<std::string> Scenes = { "demo", "demo-columns", "cornell-lucy", "dragon",
-    "headsq" };
+  std::vector<std::string> Scenes = { "demo", "demo-columns", "cornell-lucy", "dragon", "headsq" };
   std::vector<std::string> Methods;
   bool ErrorMaps = true;
 };
@@ -180,7 +179,8 @@ bool ParseMethod(const std::string& spec, Method& m)
     (p[0] == "ours1" || p[0] == "ours2" || p[0] == "ours2nc" || p[0] == "ours2gb"))
   {
     int n = 0, b = 4;
-    if (!ParseInt(p[1], n) || n < 1 || n > 98 || (p.size() == 3 && (!ParseInt(p[2], b) || b < 0 || b > 16)))
+    if (!ParseInt(p[1], n) || n < 1 || n > 98 ||
+      (p.size() == 3 && (!ParseInt(p[2], b) || b < 0 || b > 16)))
     {
       return false;
     }
@@ -205,7 +205,8 @@ bool ParseMethod(const std::string& spec, Method& m)
 bool ParseOptions(int argc, char* argv[], Options& o)
 {
   std::string methods = DefaultMethods;
-  auto bad = [](const std::string& what) {
+  auto bad = [](const std::string& what)
+  {
     std::fprintf(stderr, "%s: %s\n", Program, what.c_str());
     return false;
   };
@@ -251,8 +252,7 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     {
       return bad("--rounds needs an integer 1..100, got '" + value + "'");
     }
-    if (arg == "--samples" &&
-      (!ParseInt(value, o.Samples) || o.Samples < 1 || o.Samples > 1048576))
+    if (arg == "--samples" && (!ParseInt(value, o.Samples) || o.Samples < 1 || o.Samples > 1048576))
     {
       return bad("--samples needs an integer 1..1048576, got '" + value + "'");
     }
@@ -323,19 +323,19 @@ std::vector<float> GrabLuminance(vtkRenderWindow* window)
   std::vector<float> lum(rgb->GetNumberOfTuples());
   for (vtkIdType i = 0; i < rgb->GetNumberOfTuples(); ++i)
   {
-    lum[i] = static_cast<float>((0.2126 * rgb->GetComponent(i, 0) +
-                                  0.7152 * rgb->GetComponent(i, 1) +
-                                  0.0722 * rgb->GetComponent(i, 2)) /
-      255.0);
+    lum[i] =
+      static_cast<float>((0.2126 * rgb->GetComponent(i, 0) + 0.7152 * rgb->GetComponent(i, 1) +
+                           0.0722 * rgb->GetComponent(i, 2)) /
+        255.0);
   }
   return lum;
 }
 
 struct Accuracy
 {
-  double Rmse = 0, Mae = 0, RmseLayer1 = 0;           // raw
+  double Rmse = 0, Mae = 0, RmseLayer1 = 0;               // raw
   double Gamma = 1, CRmse = 0, CMae = 0, CRmseLayer1 = 0; // calibrated
-  double CaptureDifference = -1;                      // ours: mean |ratio - captured AV|
+  double CaptureDifference = -1;                          // ours: mean |ratio - captured AV|
   double MeanAV = 0;
   double CRmseBorder = 0; // calibrated, on the valid pixels within BorderFraction of the edge
   long BorderPixels = 0;
@@ -472,8 +472,8 @@ bool LoadScene(const Options& o, const std::string& name, vtkRenderer* renderer,
     }
     if (!ok)
     {
-      std::fprintf(stderr, "%s: cannot load scene %s from %s\n", Program, name.c_str(),
-        o.Data.c_str());
+      std::fprintf(
+        stderr, "%s: cannot load scene %s from %s\n", Program, name.c_str(), o.Data.c_str());
       return false;
     }
     loader->Populate(renderer);
@@ -599,7 +599,8 @@ int main(int argc, char* argv[])
     auto gbuffer = vtkSmartPointer<vtkDeepGBufferPass>::New();
     gbuffer->SetNumberOfLayers(2);
 
-    auto renderStill = [&](vtkRenderPass* pass, int frames) {
+    auto renderStill = [&](vtkRenderPass* pass, int frames)
+    {
       renderer->SetPass(pass);
       for (int f = 0; f < frames; ++f)
       {
@@ -793,7 +794,8 @@ int main(int argc, char* argv[])
           k == 0 ? nullptr : (k == 1 ? gbuffer.GetPointer() : passes[k - 2].GetPointer());
         renderer->SetPass(pass);
         const std::vector<double> t = TimeFrames(
-          [&]() {
+          [&]()
+          {
             window->Render();
             window->WaitForCompletion();
           },
@@ -806,9 +808,9 @@ int main(int argc, char* argv[])
       sceneResults[k].FrameMs = Median(ms[k + 2]);
       results.push_back(sceneResults[k]);
     }
-    infos.push_back({ sceneName, scene.Geometry->GetNumberOfPolys(), r,
-      reference->GetMeanStandardError(), Median(ms[0]), Median(ms[1]), nValid, nExcluded, nLayer1,
-      refSeconds });
+    infos.push_back(
+      { sceneName, scene.Geometry->GetNumberOfPolys(), r, reference->GetMeanStandardError(),
+        Median(ms[0]), Median(ms[1]), nValid, nExcluded, nLayer1, refSeconds });
     renderer->SetPass(nullptr);
     for (auto& p : passes)
     {
@@ -820,26 +822,28 @@ int main(int argc, char* argv[])
 
   // ---- tables ----
   std::ostringstream md, csv;
-  md << "Accuracy at " << options.AccuracyWidth << "x" << options.AccuracyHeight
-     << ", time at " << options.Width << "x" << options.Height << " (median of "
-     << options.Frames * options.Rounds << " frames per method, " << options.Rounds
-     << " rounds, after " << options.Warmup
-     << " warm-up frames per round); OpenGL renderer: " << device << ".\n"
-     << "r = " << options.RadiusFraction
-     << " x scene diagonal for every method; vtkSSAOPass: Radius r, Bias 0.02 r, Blur on; "
-        "ours: Radius r, Bias 0.01 r, Epsilon 0.01 r^2; reference: Embree, "
-     << options.Samples
-     << " rays per pixel, same beta and eps, on the G-buffer capture of the same frame "
-        "(layer 0).\nAV of a method = luminance(method) / luminance(plain) on white "
-        "ambient-only surfaces (plain = VTK for vtkSSAOPass, the G-buffer pass alone for ours).\n\n";
+  md
+    << "Accuracy at " << options.AccuracyWidth << "x" << options.AccuracyHeight << ", time at "
+    << options.Width << "x" << options.Height << " (median of " << options.Frames * options.Rounds
+    << " frames per method, " << options.Rounds << " rounds, after " << options.Warmup
+    << " warm-up frames per round); OpenGL renderer: " << device << ".\n"
+    << "r = " << options.RadiusFraction
+    << " x scene diagonal for every method; vtkSSAOPass: Radius r, Bias 0.02 r, Blur on; "
+       "ours: Radius r, Bias 0.01 r, Epsilon 0.01 r^2; reference: Embree, "
+    << options.Samples
+    << " rays per pixel, same beta and eps, on the G-buffer capture of the same frame "
+       "(layer 0).\nAV of a method = luminance(method) / luminance(plain) on white "
+       "ambient-only surfaces (plain = VTK for vtkSSAOPass, the G-buffer pass alone for ours).\n\n";
   md << "| scene | triangles | r | valid px | excluded px | layer-1 px | reference std. error | "
-        "reference [s] | VTK frame [ms] | G-buffer (2 layers) frame [ms] |\n|---|---|---|---|---|---|---|---|---|---|\n";
+        "reference [s] | VTK frame [ms] | G-buffer (2 layers) frame [ms] "
+        "|\n|---|---|---|---|---|---|---|---|---|---|\n";
   for (const SceneInfo& s : infos)
   {
     char b[512];
-    std::snprintf(b, sizeof(b), "| %s | %lld | %.4g | %ld | %ld | %ld | %.4f | %.1f | %.2f | %.2f |\n",
-      s.Name.c_str(), static_cast<long long>(s.Triangles), s.Radius, s.Valid, s.Excluded,
-      s.Layer1, s.RefError, s.ReferenceSeconds, s.PlainMs, s.GBufferMs);
+    std::snprintf(b, sizeof(b),
+      "| %s | %lld | %.4g | %ld | %ld | %ld | %.4f | %.1f | %.2f | %.2f |\n", s.Name.c_str(),
+      static_cast<long long>(s.Triangles), s.Radius, s.Valid, s.Excluded, s.Layer1, s.RefError,
+      s.ReferenceSeconds, s.PlainMs, s.GBufferMs);
     md << b;
   }
   md << "\n| scene | method | frame [ms] | AO cost [ms] | RMSE | MAE | RMSE layer-1 px | gamma | "
@@ -1013,8 +1017,8 @@ int main(int argc, char* argv[])
     }
   }
   if (!WritePlot(options.Output + "/benchmark-ao-plot.png",
-        "Ambient obscurance: error vs time (mean over scenes)", TimeAxis, ErrorAxis, families,
-        mean, options.Backend))
+        "Ambient obscurance: error vs time (mean over scenes)", TimeAxis, ErrorAxis, families, mean,
+        options.Backend))
   {
     std::fprintf(stderr, "%s: cannot write the plot\n", Program);
     return 1;

@@ -54,16 +54,15 @@ struct Options
 
 void Usage()
 {
-  std::printf(
-    "Usage: deepgi-benchmark-gbuffer [options]\n"
-    "Times the deep G-buffer's first and second layers on the demo scene.\n"
-    "  --triangles N   demo scene size (default 1200000)\n"
-    "  --size WxH      render size in pixels (default 1024x1024)\n"
-    "  --frames N      timed frames per method and round (default 9)\n"
-    "  --rounds N      rounds over all methods (default 2)\n"
-    "  --backend NAME  auto, x11 or egl (default auto)\n"
-    "  --output DIR    writes DIR/benchmark-gbuffer.{md,csv} (default output)\n"
-    "  --help          this text\n");
+  std::printf("Usage: deepgi-benchmark-gbuffer [options]\n"
+              "Times the deep G-buffer's first and second layers on the demo scene.\n"
+              "  --triangles N   demo scene size (default 1200000)\n"
+              "  --size WxH      render size in pixels (default 1024x1024)\n"
+              "  --frames N      timed frames per method and round (default 9)\n"
+              "  --rounds N      rounds over all methods (default 2)\n"
+              "  --backend NAME  auto, x11 or egl (default auto)\n"
+              "  --output DIR    writes DIR/benchmark-gbuffer.{md,csv} (default output)\n"
+              "  --help          this text\n");
 }
 
 bool ParseOptions(int argc, char* argv[], Options& o)
@@ -71,7 +70,8 @@ bool ParseOptions(int argc, char* argv[], Options& o)
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
-    auto next = [&](const char* what) -> const char* {
+    auto next = [&](const char* what) -> const char*
+    {
       if (i + 1 >= argc)
       {
         std::fprintf(stderr, "deepgi-benchmark-gbuffer: %s needs a value\n", what);
@@ -116,7 +116,8 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     {
       if (!value)
       {
-        std::fprintf(stderr, "deepgi-benchmark-gbuffer: unknown or incomplete option %s\n", arg.c_str());
+        std::fprintf(
+          stderr, "deepgi-benchmark-gbuffer: unknown or incomplete option %s\n", arg.c_str());
       }
       return false;
     }
@@ -166,8 +167,8 @@ int main(int argc, char* argv[])
     return 2;
   }
 
-  vtkSmartPointer<vtkRenderWindow> window =
-    vtkSmartPointer<vtkRenderWindow>::Take(vtkDeepGIRenderWindowFactory::NewRenderWindow(options.Backend));
+  vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::Take(
+    vtkDeepGIRenderWindowFactory::NewRenderWindow(options.Backend));
   if (!window)
   {
     std::fprintf(stderr, "deepgi-benchmark-gbuffer: no render window for this backend\n");
@@ -261,7 +262,8 @@ int main(int argc, char* argv[])
      << options.Height << ", camera moving along the scene's path; median of "
      << options.Frames * options.Rounds << " frames per method (" << options.Rounds
      << " rounds); OpenGL renderer: " << device << ".\n\n";
-  md << "| method | geometry submissions | frame [ms] | second layer [ms] | second layer / first layer |\n";
+  md << "| method | geometry submissions | frame [ms] | second layer [ms] | second layer / first "
+        "layer |\n";
   md << "|---|---|---|---|---|\n";
   csv << "method,geometry_submissions,frame_ms,second_layer_ms,second_over_first\n";
   char buffer[512];

@@ -15,16 +15,14 @@
 // - accuracy (at --accuracy-size, default 200x150): a still frame; the
 //   G-buffer capture of that frame (two layers) goes to the reference
 //   (VTK's lights of the scene, plus the emitting surfaces the scene
-//   polydata marks with "Emission"), layer 0, with MaximumDistance = the pass's effective radius r (the
-//   gather's own limit) and unlimited. The pass's "Irradiance_0" (E after
-//   the bilateral filter; alpha 0) is compared with the reference's
-//   "IndirectIrradiance" on the luminance of E (0.2126, 0.7152, 0.0722) over
-//   the valid pixels of layer 0 and over those where layer 1 exists: RMSE,
-//   MAE, bias (mean signed error), relative error (sum |error| / sum E_ref).
-//   Also: the estimator normalised by N instead of M (E M / N, from the
-//   same capture: "Irradiance_0" x "Confidence_0" after the filter, and
-//   "RawIrradiance_0" x "RawConfidence_0" before it), and the mean |error|
-//   in the lowest and highest quartiles of the confidence.
+//   polydata marks with "Emission"), layer 0, with MaximumDistance = the pass's effective radius r
+//   (the gather's own limit) and unlimited. The pass's "Irradiance_0" (E after the bilateral
+//   filter; alpha 0) is compared with the reference's "IndirectIrradiance" on the luminance of E
+//   (0.2126, 0.7152, 0.0722) over the valid pixels of layer 0 and over those where layer 1 exists:
+//   RMSE, MAE, bias (mean signed error), relative error (sum |error| / sum E_ref). Also: the
+//   estimator normalised by N instead of M (E M / N, from the same capture: "Irradiance_0" x
+//   "Confidence_0" after the filter, and "RawIrradiance_0" x "RawConfidence_0" before it), and the
+//   mean |error| in the lowest and highest quartiles of the confidence.
 // - time (at --size, default 320x240): median over the frames of every
 //   round after warm-up; each method's frames back to back, all methods
 //   in each round; every frame timed from Render() to WaitForCompletion().
@@ -509,7 +507,7 @@ struct BounceResult
 {
   std::string Scene;
   double Damping = 0;
-  double Change = 0;    // RMS change of E between the last two frames / mean E
+  double Change = 0;     // RMS change of E between the last two frames / mean E
   int UnchangedFrom = 0; // first frame equal to the one before (0: none)
   double MeanPass = 0, MeanReference = 0, MeanReferenceUnlimited = 0;
   Stats Limited, Unlimited, OneBounce;
@@ -751,8 +749,8 @@ int main(int argc, char* argv[])
               d2 += mask[i] ? (last[i] - before[i]) * (last[i] - before[i]) : 0.0;
               sum += mask[i] ? last[i] : 0.0;
             }
-            change = std::sqrt(d2 / std::max(1L, nValid)) /
-              std::max(1e-12, sum / std::max(1L, nValid));
+            change =
+              std::sqrt(d2 / std::max(1L, nValid)) / std::max(1e-12, sum / std::max(1L, nValid));
             unchangedFrom = d2 == 0.0 && unchangedFrom == 0 ? f : unchangedFrom;
           }
         }
@@ -806,8 +804,7 @@ int main(int argc, char* argv[])
           std::fprintf(stderr, "%s: the reference failed on %s\n", Program, sceneName.c_str());
           return 1;
         }
-        const std::vector<float> refNAll =
-          Luminance(reference->GetOutput(), "IndirectIrradiance");
+        const std::vector<float> refNAll = Luminance(reference->GetOutput(), "IndirectIrradiance");
         b.ReferenceSeconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         for (size_t i = 0; i < np; ++i)
@@ -964,15 +961,14 @@ int main(int argc, char* argv[])
         "border vs E_ref | border px |\n|---|---|---|---|---|---|---|---|\n";
   for (const Result& r : results)
   {
-    if (r.M.Layers != 2 || !r.M.NormalTest ||
-      r.M.Estimator != vtkDeepRadiosityPass::SOLID_ANGLE)
+    if (r.M.Layers != 2 || !r.M.NormalTest || r.M.Estimator != vtkDeepRadiosityPass::SOLID_ANGLE)
     {
       continue;
     }
     char b[512];
     std::snprintf(b, sizeof(b), "| %s | %s | %.2f | %.4f | %.4f | %+.4f | %.4f | %ld |\n",
-      r.Scene.c_str(), r.M.Name.c_str(), r.FrameMs, r.Limited.Rmse, r.Border.Rmse,
-      r.Border.Bias, r.BorderUnlimited.Rmse, r.Border.Pixels);
+      r.Scene.c_str(), r.M.Name.c_str(), r.FrameMs, r.Limited.Rmse, r.Border.Rmse, r.Border.Bias,
+      r.BorderUnlimited.Rmse, r.Border.Pixels);
     md << b;
   }
 
@@ -982,8 +978,8 @@ int main(int argc, char* argv[])
        << "Two layers, SOLID_ANGLE, BALANCED, guard band "
        << vtkDeepRadiosityPass::DEFAULT_GUARD_BAND << ", TemporalAlpha 0, still camera: E of "
        << "the pass with Damping delta after " << BounceFrames
-       << " frames against vtkDeepGIReferenceIrradiance with NumberOfBounces "
-       << options.Bounces << " and BounceDamping delta (" << options.Samples
+       << " frames against vtkDeepGIReferenceIrradiance with NumberOfBounces " << options.Bounces
+       << " and BounceDamping delta (" << options.Samples
        << " paths per pixel), MaximumDistance r on every segment (E_ref,r) and unlimited "
           "(E_ref). change: RMS of the change of E between the last two frames over the mean "
           "E; fixed from: the first frame whose E equals the frame before's exactly. 1 bounce: "

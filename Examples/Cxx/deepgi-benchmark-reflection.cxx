@@ -31,9 +31,9 @@
 #include "vtkDataArray.h"
 #include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferPass.h"
-#include "vtkDeepRadiosityPass.h"
 #include "vtkDeepGIReferenceReflection.h"
 #include "vtkDeepGIRenderWindowFactory.h"
+#include "vtkDeepRadiosityPass.h"
 #include "vtkDeepReflectionPass.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
@@ -344,8 +344,8 @@ int main(int argc, char* argv[])
         }
       }
       results.push_back(r);
-      std::fprintf(stderr, "%s: %s, %d layer(s), guard band %g done\n", Program,
-        sceneName.c_str(), layers, configuration.second);
+      std::fprintf(stderr, "%s: %s, %d layer(s), guard band %g done\n", Program, sceneName.c_str(),
+        layers, configuration.second);
     }
   }
 

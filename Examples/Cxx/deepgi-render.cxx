@@ -208,14 +208,15 @@ struct OptionEntry
 
 const OptionEntry OptionTable[] = {
   { "--preset",
-    [](const std::string& v, Options& o) -> std::string {
+    [](const std::string& v, Options& o) -> std::string
+    {
       o.Preset = v == "off" ? -1 : vtkDeepGIPass::GetPresetFromString(v.c_str());
-      return v == "off" || o.Preset >= 0
-        ? ""
-        : "needs high_performance, balanced, high_quality or off";
+      return v == "off" || o.Preset >= 0 ? ""
+                                         : "needs high_performance, balanced, high_quality or off";
     } },
   { "--effects",
-    [](const std::string& v, Options& o) -> std::string {
+    [](const std::string& v, Options& o) -> std::string
+    {
       // The pass parses the list; its warning is replaced by this message.
       vtkNew<vtkDeepGIPass> probe;
       const int warnings = vtkObject::GetGlobalWarningDisplay();
@@ -224,39 +225,43 @@ const OptionEntry OptionTable[] = {
       vtkObject::SetGlobalWarningDisplay(warnings);
       o.Effects = v;
       o.GiOptionGiven = true;
-      return valid
-        ? ""
-        : "needs a comma-separated list of distinct ao, radiosity, reflections, or all";
+      return valid ? ""
+                   : "needs a comma-separated list of distinct ao, radiosity, reflections, or all";
     } },
   { "--radius",
-    [](const std::string& v, Options& o) -> std::string {
+    [](const std::string& v, Options& o) -> std::string
+    {
       o.GiOptionGiven = true;
       return ParseReal(v, o.RadiusFraction) && o.RadiusFraction > 0.0 && o.RadiusFraction <= 1.0
         ? ""
         : "needs a fraction of the scene's diagonal in (0, 1]";
     } },
   { "--exposure",
-    [](const std::string& v, Options& o) -> std::string {
+    [](const std::string& v, Options& o) -> std::string
+    {
       return ParseReal(v, o.Exposure) && o.Exposure > 0.0 && o.Exposure <= 1000.0
         ? ""
         : "needs a factor in (0, 1000]";
     } },
   { "--tolerance",
-    [](const std::string& v, Options& o) -> std::string {
+    [](const std::string& v, Options& o) -> std::string
+    {
       o.GiOptionGiven = true;
       return ParseReal(v, o.Tolerance) && o.Tolerance >= 0.0 && o.Tolerance <= 255.0
         ? ""
         : "needs a number of 8-bit levels from 0 to 255";
     } },
   { "--max-frames",
-    [](const std::string& v, Options& o) -> std::string {
+    [](const std::string& v, Options& o) -> std::string
+    {
       long long n = 0;
       o.GiOptionGiven = true;
       o.MaximumFrames = ParseInteger(v, 1, 10000, n) ? static_cast<int>(n) : 0;
       return o.MaximumFrames > 0 ? "" : "needs an integer from 1 to 10000";
     } },
   { "--guard-band",
-    [](const std::string& v, Options& o) -> std::string {
+    [](const std::string& v, Options& o) -> std::string
+    {
       o.GiOptionGiven = true;
       return ParseReal(v, o.GuardBand) && o.GuardBand >= 0.0 &&
           o.GuardBand <= vtkDeepGBufferPass::MAXIMUM_GUARD_BAND
@@ -264,32 +269,36 @@ const OptionEntry OptionTable[] = {
         : "needs a number from 0 to 0.5";
     } },
   { "--mesh",
-    [](const std::string& v, Options& o) -> std::string {
+    [](const std::string& v, Options& o) -> std::string
+    {
       o.Meshes.push_back(v);
       return "";
     } },
   { "--volume",
-    [](const std::string& v, Options& o) -> std::string {
+    [](const std::string& v, Options& o) -> std::string
+    {
       const bool first = o.Volume.empty();
       o.Volume = v;
       return first ? "" : "is given twice";
     } },
   { "--iso",
-    [](const std::string& v, Options& o) -> std::string {
+    [](const std::string& v, Options& o) -> std::string
+    {
       o.IsoGiven = true;
       return ParseReal(v, o.Iso) ? "" : "needs a finite number";
     } },
   { "--triangles",
-    [](const std::string& v, Options& o) -> std::string {
+    [](const std::string& v, Options& o) -> std::string
+    {
       return ParseInteger(v, 0, 500000000, o.Triangles) ? ""
                                                         : "needs an integer from 0 to 500000000";
     } },
   { "--scale",
-    [](const std::string& v, Options& o) -> std::string {
-      return ParseReal(v, o.Scale) && o.Scale > 0.0 ? "" : "needs a positive number";
-    } },
+    [](const std::string& v, Options& o) -> std::string
+    { return ParseReal(v, o.Scale) && o.Scale > 0.0 ? "" : "needs a positive number"; } },
   { "--view",
-    [](const std::string& v, Options& o) -> std::string {
+    [](const std::string& v, Options& o) -> std::string
+    {
       o.View = v;
       o.ViewGiven = true;
       for (int i = 0; i < vtkDeepGBufferDemoScene::GetNumberOfNamedViews(); ++i)
@@ -302,7 +311,8 @@ const OptionEntry OptionTable[] = {
       return "needs one of default, overview, columns, decal, panel";
     } },
   { "--layers",
-    [](const std::string& v, Options& o) -> std::string {
+    [](const std::string& v, Options& o) -> std::string
+    {
       long long n = 0;
       o.LayersGiven = true;
       o.Layers = ParseInteger(v, 1, vtkDeepGBufferPass::MAXIMUM_NUMBER_OF_LAYERS, n)
@@ -311,27 +321,28 @@ const OptionEntry OptionTable[] = {
       return o.Layers > 0 ? "" : "needs an integer from 1 to 8";
     } },
   { "--dz",
-    [](const std::string& v, Options& o) -> std::string {
-      return ParseReal(v, o.Dz) && o.Dz >= 0.0 ? "" : "needs a number >= 0 (world units)";
-    } },
+    [](const std::string& v, Options& o) -> std::string
+    { return ParseReal(v, o.Dz) && o.Dz >= 0.0 ? "" : "needs a number >= 0 (world units)"; } },
   { "--oracle",
-    [](const std::string& v, Options& o) -> std::string {
+    [](const std::string& v, Options& o) -> std::string
+    {
       o.Oracle = vtkDeepGBufferPass::GetOracleFromString(v.c_str());
       return o.Oracle >= 0 ? "" : "needs depth_peel, previous, reproject, predict or delay";
     } },
   { "--size",
-    [](const std::string& v, Options& o) -> std::string {
-      return ParseSize(v, o.Width, o.Height) ? "" : "needs WIDTHxHEIGHT, each 1 to 16384";
-    } },
+    [](const std::string& v, Options& o) -> std::string
+    { return ParseSize(v, o.Width, o.Height) ? "" : "needs WIDTHxHEIGHT, each 1 to 16384"; } },
   { "--backend",
-    [](const std::string& v, Options& o) -> std::string {
+    [](const std::string& v, Options& o) -> std::string
+    {
       o.Backend = v;
       return vtkDeepGIRenderWindowFactory::GetBackendFromString(v.c_str()) >= 0
         ? ""
         : "needs auto, x11 or egl";
     } },
   { "--output",
-    [](const std::string& v, Options& o) -> std::string {
+    [](const std::string& v, Options& o) -> std::string
+    {
       o.Output = v;
       return v.empty() ? "needs a directory name" : "";
     } },
@@ -364,7 +375,8 @@ std::string CheckCombinations(const Options& o)
 int ParseOptions(int argc, char* argv[], Options& o, bool& exitNow)
 {
   exitNow = false;
-  auto bad = [](const std::string& message) {
+  auto bad = [](const std::string& message)
+  {
     std::cerr << "deepgi-render: " << message << "\nRun 'deepgi-render --help' for the options.\n";
     return ExitUsage;
   };
@@ -583,22 +595,22 @@ vtkSmartPointer<vtkImageData> CompareFigure(
   if ((ran & vtkDeepGIPass::RADIOSITY) &&
     pass->GetRadiosityPass()->CaptureIrradiance(capture, renderer))
   {
-    indirect =
-      Fig::Panel(capture, "IndirectRadiance_0", "Valid_0", Fig::Mapping::Exposure, &scale);
+    indirect = Fig::Panel(capture, "IndirectRadiance_0", "Valid_0", Fig::Mapping::Exposure, &scale);
   }
   auto plainPanel = vtkSmartPointer<vtkImageData>::New();
   plainPanel->DeepCopy(plain);
   auto giPanel = vtkSmartPointer<vtkImageData>::New();
   giPanel->DeepCopy(gi);
   Fig::Label(plainPanel, "plain VTK");
-  Fig::Label(giPanel, std::string("vtkDeepGIPass ") + vtkDeepGIPass::GetPresetAsString(pass->GetPreset()));
+  Fig::Label(
+    giPanel, std::string("vtkDeepGIPass ") + vtkDeepGIPass::GetPresetAsString(pass->GetPreset()));
   if (!visibility)
   {
     visibility = Fig::BlankPanel(dims[0], dims[1]);
   }
-  Fig::Label(visibility, (ran & vtkDeepGIPass::AMBIENT_OBSCURANCE)
-      ? "ambient visibility (dark: occluded)"
-      : "ambient obscurance did not run");
+  Fig::Label(visibility,
+    (ran & vtkDeepGIPass::AMBIENT_OBSCURANCE) ? "ambient visibility (dark: occluded)"
+                                              : "ambient obscurance did not run");
   std::ostringstream label;
   label << std::setprecision(3) << "indirect light added (x" << scale << ")";
   if (!indirect)
@@ -664,8 +676,8 @@ std::string Levels(double levels)
   return text.str();
 }
 
-void PrintSummary(const Options& o, vtkDeepGIPass* gi, int frames,
-  const std::vector<std::string>& written)
+void PrintSummary(
+  const Options& o, vtkDeepGIPass* gi, int frames, const std::vector<std::string>& written)
 {
   std::cout << std::defaultfloat << std::setprecision(4) << "deepgi-render: done\n";
   if (gi)
@@ -718,8 +730,8 @@ bool RunGBufferOnly(const Options& o, vtkRenderWindow* window, vtkRenderer* rend
   return ok;
 }
 
-bool RunGI(const Options& o, vtkRenderWindow* window, vtkRenderer* renderer,
-  vtkImageData* plain, std::vector<std::string>& written)
+bool RunGI(const Options& o, vtkRenderWindow* window, vtkRenderer* renderer, vtkImageData* plain,
+  std::vector<std::string>& written)
 {
   vtkNew<vtkDeepGIPass> gi;
   ConfigureGI(o, gi);
@@ -785,10 +797,9 @@ int main(int argc, char* argv[])
   {
     return ExitFailure;
   }
-  std::cout << "deepgi-render: " << scene.Description << ", " << scene.Triangles
-            << " triangles, " << o.Width << "x" << o.Height << ", backend " << o.Backend
-            << ", preset " << (o.Preset < 0 ? "off" : vtkDeepGIPass::GetPresetAsString(o.Preset))
-            << std::endl;
+  std::cout << "deepgi-render: " << scene.Description << ", " << scene.Triangles << " triangles, "
+            << o.Width << "x" << o.Height << ", backend " << o.Backend << ", preset "
+            << (o.Preset < 0 ? "off" : vtkDeepGIPass::GetPresetAsString(o.Preset)) << std::endl;
 
   std::vector<std::string> written;
   double plainMilliseconds = 0.0;

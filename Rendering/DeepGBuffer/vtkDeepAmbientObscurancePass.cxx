@@ -26,9 +26,9 @@
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkShaderProgram.h"
-#include "vtkTextureUnitManager.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
+#include "vtkTextureUnitManager.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWeakPointer.h"
 #include "vtk_glew.h"
@@ -65,7 +65,7 @@ struct vtkDeepAmbientObscuranceRendererState
 {
   vtkWeakPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkTextureObject> Targets[NUMBER_OF_TARGETS];
-  int Width = 0;  // of the G-buffer's layers (frame and guard band)
+  int Width = 0; // of the G-buffer's layers (frame and guard band)
   int Height = 0;
   int GuardBand = 0;
   int ShadedRegion[4] = { 0, 0, 0, 0 }; // vtkDeepScreenSpace::ShadedRegion
@@ -165,7 +165,6 @@ public:
   vtkOpenGLQuadHelper* MinifyQuad = nullptr;
   vtkOpenGLQuadHelper* TemporalQuad = nullptr;
   bool WarnedUnsupported = false;
-
 };
 
 //------------------------------------------------------------------------------
@@ -205,8 +204,8 @@ void vtkDeepAmbientObscurancePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Bias: " << this->Bias << "\n";
   os << indent << "Epsilon: " << this->Epsilon << "\n";
   os << indent << "Intensity: " << this->Intensity << "\n";
-  os << indent << "NumberOfSamples: " << this->NumberOfSamples
-     << " (spiral turns " << GetSpiralTurns(this->NumberOfSamples) << ")\n";
+  os << indent << "NumberOfSamples: " << this->NumberOfSamples << " (spiral turns "
+     << GetSpiralTurns(this->NumberOfSamples) << ")\n";
   os << indent << "UseSecondLayer: " << (this->UseSecondLayer ? "On" : "Off") << "\n";
   os << indent << "BlurRadius: " << this->BlurRadius << "\n";
   os << indent << "GuardBandShadedFraction: " << this->GuardBandShadedFraction << "\n";
@@ -253,8 +252,8 @@ void vtkDeepAmbientObscurancePass::SetIntensity(double intensity)
 {
   if (!std::isfinite(intensity))
   {
-    vtkWarningMacro("Intensity " << intensity << " is not finite; keeping " << this->Intensity
-                                 << ".");
+    vtkWarningMacro(
+      "Intensity " << intensity << " is not finite; keeping " << this->Intensity << ".");
     return;
   }
   if (intensity < 0.0)
@@ -673,9 +672,8 @@ unsigned int vtkDeepAmbientObscurancePass::GetVisibilityTextureHandle(vtkRendere
 }
 
 //------------------------------------------------------------------------------
-int vtkDeepAmbientObscurancePass::BuildDistancePyramid(
-  vtkDeepAmbientObscuranceRendererState& state, vtkOpenGLRenderWindow* window, int distanceUnit,
-  int layers)
+int vtkDeepAmbientObscurancePass::BuildDistancePyramid(vtkDeepAmbientObscuranceRendererState& state,
+  vtkOpenGLRenderWindow* window, int distanceUnit, int layers)
 {
   const int width = state.Width, height = state.Height;
   int finest = 0;
@@ -779,8 +777,8 @@ bool vtkDeepAmbientObscurancePass::CaptureDistancePyramid(
   }
   if (level < 0 || level >= levels || !handle)
   {
-    vtkErrorMacro("CaptureDistancePyramid: level " << level << " does not exist (" << levels
-                                                   << " levels).");
+    vtkErrorMacro(
+      "CaptureDistancePyramid: level " << level << " does not exist (" << levels << " levels).");
     return false;
   }
   vtkOpenGLRenderWindow* window =

@@ -146,7 +146,6 @@ public:
    */
   static int GetSpiralTurns(int numberOfSamples);
 
-
   ///@{
   /**
    * World-space obscurance radius r. Setting a value switches

@@ -14,7 +14,6 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkLightsPass.h"
-#include "vtkRenderStepsPass.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -36,6 +35,7 @@
 #include "vtkProp.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
+#include "vtkRenderStepsPass.h"
 #include "vtkShaderProgram.h"
 #include "vtkShaderProperty.h"
 #include "vtkShadowMapBakerPass.h"
@@ -58,10 +58,10 @@
 #include "vtkDeepGBufferLayerImplVS.h"
 #include "vtkDeepGBufferLayerTestFS.h"
 #include "vtkDeepGBufferOutputsFS.h"
-#include "vtkDeepGBufferShaderTokens.h"
-#include "vtkDeepGIShaderConstantsGLSL.h"
-#include "vtkDeepGBufferUnlitNormalFS.h"
 #include "vtkDeepGBufferResolveFS.h"
+#include "vtkDeepGBufferShaderTokens.h"
+#include "vtkDeepGBufferUnlitNormalFS.h"
+#include "vtkDeepGIShaderConstantsGLSL.h"
 #include "vtkDeepScreenSpaceHelpers.h"
 
 #include <algorithm>
@@ -175,8 +175,8 @@ std::array<float, 4> ProjectionDepthRows(const Matrix& projection)
 // Which separation test the fragment shader applies to layers j > 0.
 enum TestMode
 {
-  TEST_NONE = DEEP_TEST_NONE,             // layer 0, or the oracle layer
-  TEST_SAME_PIXEL = DEEP_TEST_SAME_PIXEL, // DEPTH_PEEL, PREVIOUS, PREDICT, DELAY
+  TEST_NONE = DEEP_TEST_NONE,              // layer 0, or the oracle layer
+  TEST_SAME_PIXEL = DEEP_TEST_SAME_PIXEL,  // DEPTH_PEEL, PREVIOUS, PREDICT, DELAY
   TEST_REPROJECTED = DEEP_TEST_REPROJECTED // REPROJECT: tested in the previous frame
 };
 
@@ -188,8 +188,8 @@ const char* const QuantityNames[] = { "RADIANCE", "ALBEDO", "NORMAL", "DEPTH", "
 constexpr int BaseQuantities = vtkDeepGBufferPass::REFLECTIVITY;
 
 // Internal formats of the quantities, in the order of the Quantity enum.
-const GLenum QuantityInternalFormats[] = { GL_RGBA16F, GL_RGBA8, GL_RG8, GL_R32F,
-  GL_R11F_G11F_B10F, GL_RGBA8 };
+const GLenum QuantityInternalFormats[] = { GL_RGBA16F, GL_RGBA8, GL_RG8, GL_R32F, GL_R11F_G11F_B10F,
+  GL_RGBA8 };
 const GLenum QuantityFormats[] = { GL_RGBA, GL_RGBA, GL_RG, GL_RED, GL_RGB, GL_RGBA };
 const GLenum QuantityTypes[] = { GL_HALF_FLOAT, GL_UNSIGNED_BYTE, GL_UNSIGNED_BYTE, GL_FLOAT,
   GL_FLOAT, GL_UNSIGNED_BYTE };
@@ -208,10 +208,10 @@ struct vtkDeepGBufferRendererState
 {
   vtkWeakPointer<vtkRenderer> Renderer;
 
-  int Width = 0;  // of the layers: the frame plus the guard band on both sides
+  int Width = 0; // of the layers: the frame plus the guard band on both sides
   int Height = 0;
-  int GuardBand = 0; // pixels added on each side of the frame (last frame)
-  int Slots = 0;        // array layers: k, plus one oracle layer for PREDICT/DELAY
+  int GuardBand = 0;     // pixels added on each side of the frame (last frame)
+  int Slots = 0;         // array layers: k, plus one oracle layer for PREDICT/DELAY
   int HistoryLayers = 0; // max(1, k - 1)
   GLuint Textures[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES] = { 0, 0, 0, 0, 0, 0 };
   GLuint DepthTexture = 0;
@@ -474,11 +474,9 @@ void vtkDeepGBufferPass::SetMinimumSeparation(double dz)
 {
   if (!std::isfinite(dz))
   {
-    vtkWarningMacro("MinimumSeparation must be finite (got " << dz << "); keeping "
-                                                              << (this->AutomaticMinimumSeparation
-                                                                     ? "the automatic value"
-                                                                     : "the previous value")
-                                                              << ".");
+    vtkWarningMacro("MinimumSeparation must be finite (got "
+      << dz << "); keeping "
+      << (this->AutomaticMinimumSeparation ? "the automatic value" : "the previous value") << ".");
     return;
   }
   if (dz < 0.0)
@@ -505,7 +503,7 @@ void vtkDeepGBufferPass::SetGuardBand(double fraction)
   {
     const double clamped = std::min(std::max(fraction, 0.0), MAXIMUM_GUARD_BAND);
     vtkWarningMacro("GuardBand must be within [0, " << MAXIMUM_GUARD_BAND << "] (got " << fraction
-                                                     << "); using " << clamped << ".");
+                                                    << "); using " << clamped << ".");
     fraction = clamped;
   }
   if (fraction != this->GuardBand)
@@ -613,9 +611,13 @@ std::string OutputExpressions(const std::string& fs, bool writeReflectivity)
   // its ambient part is what ambient obscurance darkens. PBR lighting has no
   // separate ambient term here (its image-based light is left whole).
   std::string defines = std::string("#define DEEP_GBUFFER_ALBEDO ") +
-    (pbr ? "albedo" : textured ? "(diffuseColor * tcolor.rgb)" : "diffuseColor") +
+    (pbr           ? "albedo"
+        : textured ? "(diffuseColor * tcolor.rgb)"
+                   : "diffuseColor") +
     "\n#define DEEP_GBUFFER_AMBIENT " +
-    (pbr ? "vec3(0.0)" : textured ? "(ambientColor * tcolor.rgb)" : "ambientColor") +
+    (pbr           ? "vec3(0.0)"
+        : textured ? "(ambientColor * tcolor.rgb)"
+                   : "ambientColor") +
     "\n#define DEEP_GBUFFER_NORMAL " +
     (Contains(fs, Tokens::ShadingNormalDeclaration) ? "normalize(normalVCVSOutput)"
                                                     : "deepGeometricNormal") +
@@ -631,8 +633,8 @@ std::string OutputExpressions(const std::string& fs, bool writeReflectivity)
       Contains(fs, Tokens::PBRFresnelDeclaration) ? "F0" : "mix(vec3(0.04), albedo, metallic)";
     defines += std::string("#define DEEP_GBUFFER_REFLECTIVITY ") +
       (pbr ? "(" + f0 + " * ((1.0 - roughness) * (1.0 - roughness)))"
-           : Contains(fs, Tokens::SpecularColorDeclaration) ? std::string("specularColor")
-                                                            : std::string("vec3(0.0)")) +
+          : Contains(fs, Tokens::SpecularColorDeclaration) ? std::string("specularColor")
+                                                           : std::string("vec3(0.0)")) +
       "\n";
   }
   return defines;
@@ -653,8 +655,7 @@ bool vtkDeepGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
     return true;
   }
   vtkInternals& in = *this->Internals;
-  const bool routed =
-    in.GeometryShaderSlots > 1 && geometryShader.empty() && in.IsRouted(prop);
+  const bool routed = in.GeometryShaderSlots > 1 && geometryShader.empty() && in.IsRouted(prop);
   // Mappers whose geometry shader projects view-space positions itself get
   // the guard band's scale at each vertex it emits, not in the vertex shader.
   const bool geometryShaderProjects = Contains(geometryShader, Tokens::GeometryProjects);
@@ -685,9 +686,8 @@ bool vtkDeepGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
   }
   vtkShaderProgram::Substitute(fragmentShader, Tokens::DepthPeelingDeclarations,
     std::string(Tokens::DepthPeelingDeclarations) + "\n" + vtkDeepGIShaderConstantsGLSL +
-      (routed ? "#define DEEP_GBUFFER_ROUTED\n" : "") +
-      "//VTK::DeepGBuffer::OutputExpressions\n" + vtkDeepGBufferLayerDecFS +
-      vtkDeepGBufferCommon,
+      (routed ? "#define DEEP_GBUFFER_ROUTED\n" : "") + "//VTK::DeepGBuffer::OutputExpressions\n" +
+      vtkDeepGBufferLayerDecFS + vtkDeepGBufferCommon,
     false);
   vtkShaderProgram::Substitute(fragmentShader, Tokens::DepthPeelingPreColor,
     std::string(Tokens::DepthPeelingPreColor) + "\n" + vtkDeepGBufferLayerTestFS, false);
@@ -700,8 +700,8 @@ bool vtkDeepGBufferPass::PreReplaceShaderValues(std::string& vertexShader,
 //------------------------------------------------------------------------------
 // The G-buffer outputs, once VTK's shading has declared what they read.
 bool vtkDeepGBufferPass::PostReplaceShaderValues(std::string& vtkNotUsed(vertexShader),
-  std::string& vtkNotUsed(geometryShader), std::string& fragmentShader,
-  vtkAbstractMapper* mapper, vtkProp* vtkNotUsed(prop))
+  std::string& vtkNotUsed(geometryShader), std::string& fragmentShader, vtkAbstractMapper* mapper,
+  vtkProp* vtkNotUsed(prop))
 {
   if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
   {
@@ -798,8 +798,8 @@ void SetIfUsed(vtkShaderProgram* program, const char* name, const std::array<flo
 // uses, also those whose vertex shader has no position hook (and so no
 // deepOtherMCDC), such as point Gaussian splats: their fragment shaders
 // still write the layers.
-bool vtkDeepGBufferPass::SetShaderParameters(vtkShaderProgram* program,
-  vtkAbstractMapper* mapper, vtkProp* prop, vtkOpenGLVertexArrayObject* vtkNotUsed(VAO))
+bool vtkDeepGBufferPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper,
+  vtkProp* prop, vtkOpenGLVertexArrayObject* vtkNotUsed(VAO))
 {
   vtkInternals& in = *this->Internals;
   if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) || !in.Current)
@@ -836,8 +836,8 @@ bool vtkDeepGBufferPass::SetShaderParameters(vtkShaderProgram* program,
   // An emissive prop's ambient term is its emission, not the environment's
   // light: it stays in RADIANCE and out of AMBIENT (see EMISSIVE()).
   vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
-  SetIfUsed(program, "deepEmissive",
-    keys && keys->Has(EMISSIVE()) && keys->Get(EMISSIVE()) != 0 ? 1 : 0);
+  SetIfUsed(
+    program, "deepEmissive", keys && keys->Has(EMISSIVE()) && keys->Get(EMISSIVE()) != 0 ? 1 : 0);
   return true;
 }
 
@@ -918,8 +918,8 @@ static bool AllocateTargets(vtkDeepGBufferRendererState& state, vtkOpenGLState* 
     state.Textures[q] = NewArrayTexture(
       QuantityInternalFormats[q], QuantityFormats[q], QuantityTypes[q], width, height, slots);
   }
-  state.DepthTexture = NewArrayTexture(
-    GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT, width, height, slots);
+  state.DepthTexture =
+    NewArrayTexture(GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT, width, height, slots);
   state.HistoryTexture = NewArrayTexture(GL_R32F, GL_RED, GL_FLOAT, width, height, historyLayers);
 
   ostate->PushFramebufferBindings();
@@ -929,7 +929,8 @@ static bool AllocateTargets(vtkDeepGBufferRendererState& state, vtkOpenGLState* 
   // it after a bind may be skipped.
   const GLenum drawBuffers[BaseQuantities] = { GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1,
     GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3, GL_COLOR_ATTACHMENT4 };
-  auto attach = [&](GLuint framebuffer, int layer) {
+  auto attach = [&](GLuint framebuffer, int layer)
+  {
     ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     glDrawBuffers(BaseQuantities, drawBuffers);
     for (int q = 0; q < BaseQuantities; ++q)
@@ -952,8 +953,7 @@ static bool AllocateTargets(vtkDeepGBufferRendererState& state, vtkOpenGLState* 
     {
       glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, state.DepthTexture, 0, layer);
     }
-    complete = complete &&
-      glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    complete = complete && glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
   };
   glGenFramebuffers(1, &state.LayeredFramebuffer);
   attach(state.LayeredFramebuffer, -1);
@@ -972,8 +972,8 @@ static bool AllocateTargets(vtkDeepGBufferRendererState& state, vtkOpenGLState* 
 // Adds or removes the optional REFLECTIVITY target of a renderer's G-buffer
 // (attachment BaseQuantities of every framebuffer) without touching the
 // other targets, so the oracles' history survives the change.
-static bool UpdateReflectivityTarget(vtkDeepGBufferRendererState& state, vtkOpenGLState* ostate,
-  bool write)
+static bool UpdateReflectivityTarget(
+  vtkDeepGBufferRendererState& state, vtkOpenGLState* ostate, bool write)
 {
   GLuint& texture = state.Textures[vtkDeepGBufferPass::REFLECTIVITY];
   if (write == (texture != 0))
@@ -992,7 +992,8 @@ static bool UpdateReflectivityTarget(vtkDeepGBufferRendererState& state, vtkOpen
   const int count = write ? vtkDeepGBufferPass::NUMBER_OF_QUANTITIES : BaseQuantities;
   ostate->PushFramebufferBindings();
   bool complete = true;
-  auto attach = [&](GLuint framebuffer, int layer) {
+  auto attach = [&](GLuint framebuffer, int layer)
+  {
     ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     if (layer < 0)
     {
@@ -1123,7 +1124,8 @@ static bool CheckSupport(vtkOpenGLRenderWindow* window, int& maximumSlots, std::
   if (drawBuffers < vtkDeepGBufferPass::NUMBER_OF_QUANTITIES ||
     attachments < vtkDeepGBufferPass::NUMBER_OF_QUANTITIES)
   {
-    why = "fewer than " + std::to_string(vtkDeepGBufferPass::NUMBER_OF_QUANTITIES) + " draw buffers";
+    why =
+      "fewer than " + std::to_string(vtkDeepGBufferPass::NUMBER_OF_QUANTITIES) + " draw buffers";
     return false;
   }
   maximumSlots = std::min({ static_cast<int>(arrayLayers), static_cast<int>(gsVertices) / 3,
@@ -1357,8 +1359,8 @@ bool vtkDeepGBufferPass::PrepareRendererState(vtkLayerFrame& frame)
   vtkDeepGBufferRendererState& state = *slot;
   frame.RendererState = &state;
   vtkOpenGLClearErrorMacro();
-  if (!AllocateTargets(state, frame.GL, frame.Width, frame.Height, frame.Slots,
-        std::max(1, frame.Layers - 1)) ||
+  if (!AllocateTargets(
+        state, frame.GL, frame.Width, frame.Height, frame.Slots, std::max(1, frame.Layers - 1)) ||
     !UpdateReflectivityTarget(state, frame.GL, this->WriteReflectivity))
   {
     in.WarnOnce(this, WARN_FRAMEBUFFER_INCOMPLETE,
@@ -1596,9 +1598,8 @@ void vtkDeepGBufferPass::RecordFrame(const vtkLayerFrame& frame)
   state.RenderedLayers = frame.Layers;
   state.LayerView = delayed ? in.OtherView : state.View;
   state.LayerProjection = delayed ? in.OtherProjection : state.Projection;
-  state.LayerFrameProjection = delayed && in.OtherUsesPreviousFrame
-    ? state.PreviousFrameProjection
-    : state.FrameProjection;
+  state.LayerFrameProjection =
+    delayed && in.OtherUsesPreviousFrame ? state.PreviousFrameProjection : state.FrameProjection;
   state.GuardBand = frame.Guard;
   state.MinimumSeparation = frame.MinimumSeparation;
   state.Oracle = frame.RoutedDone ? frame.Oracle : DEPTH_PEEL;
@@ -1745,9 +1746,8 @@ void vtkDeepGBufferPass::ReleaseGraphicsResources(vtkWindow* w)
   in.CheckedWindow = nullptr;
   in.LightsPass->ReleaseGraphicsResources(w);
   in.Steps->ReleaseGraphicsResources(w);
-  for (vtkRenderPass* step :
-    { this->TranslucentPass, this->VolumetricPass, this->OverlayPass,
-      static_cast<vtkRenderPass*>(this->ShadowMapPass) })
+  for (vtkRenderPass* step : { this->TranslucentPass, this->VolumetricPass, this->OverlayPass,
+         static_cast<vtkRenderPass*>(this->ShadowMapPass) })
   {
     if (step)
     {
@@ -1830,8 +1830,8 @@ unsigned int vtkDeepGBufferPass::GetTextureHandle(vtkRenderer* renderer, int qua
 int vtkDeepGBufferPass::ActivateTexture(vtkRenderer* renderer, int quantity)
 {
   GLuint handle = this->GetTextureHandle(renderer, quantity);
-  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(
-    renderer ? renderer->GetRenderWindow() : nullptr);
+  vtkOpenGLRenderWindow* window =
+    vtkOpenGLRenderWindow::SafeDownCast(renderer ? renderer->GetRenderWindow() : nullptr);
   if (!handle || !window)
   {
     return -1;
@@ -1848,8 +1848,8 @@ int vtkDeepGBufferPass::ActivateTexture(vtkRenderer* renderer, int quantity)
 void vtkDeepGBufferPass::DeactivateTexture(vtkRenderer* renderer, int quantity)
 {
   GLuint handle = this->GetTextureHandle(renderer, quantity);
-  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(
-    renderer ? renderer->GetRenderWindow() : nullptr);
+  vtkOpenGLRenderWindow* window =
+    vtkOpenGLRenderWindow::SafeDownCast(renderer ? renderer->GetRenderWindow() : nullptr);
   if (!handle || !window)
   {
     return;
@@ -1897,7 +1897,8 @@ void DownloadLayers(
   vtkOpenGLState::ScopedglActiveTexture savedUnit(ostate);
   GLint previous = 0;
   glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &previous);
-  auto download = [&](int quantity, GLenum format, GLenum type, void* data) {
+  auto download = [&](int quantity, GLenum format, GLenum type, void* data)
+  {
     glBindTexture(GL_TEXTURE_2D_ARRAY, state.Textures[quantity]);
     glGetTexImage(GL_TEXTURE_2D_ARRAY, 0, format, type, data);
   };
@@ -1909,8 +1910,7 @@ void DownloadLayers(
   if (state.Textures[vtkDeepGBufferPass::REFLECTIVITY])
   {
     d.Reflectivity.resize(slotPixels * 4);
-    download(
-      vtkDeepGBufferPass::REFLECTIVITY, GL_RGBA, GL_UNSIGNED_BYTE, d.Reflectivity.data());
+    download(vtkDeepGBufferPass::REFLECTIVITY, GL_RGBA, GL_UNSIGNED_BYTE, d.Reflectivity.data());
   }
   glBindTexture(GL_TEXTURE_2D_ARRAY, previous);
   ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
@@ -1934,7 +1934,8 @@ void AddLayerArrays(vtkPointData* pd, const LayerDownload& d, int j, size_t pixe
   auto normal = NewLayerArray("Normal", j, 3, pixels);
   auto ambient = NewLayerArray("Ambient", j, 3, pixels);
   auto depth = NewLayerArray("Depth", j, 1, pixels);
-  auto reflectivity = d.Reflectivity.empty() ? nullptr : NewLayerArray("Reflectivity", j, 3, pixels);
+  auto reflectivity =
+    d.Reflectivity.empty() ? nullptr : NewLayerArray("Reflectivity", j, 3, pixels);
   vtkNew<vtkUnsignedCharArray> valid;
   valid->SetName(("Valid_" + std::to_string(j)).c_str());
   valid->SetNumberOfTuples(static_cast<vtkIdType>(pixels));
@@ -1960,8 +1961,7 @@ void AddLayerArrays(vtkPointData* pd, const LayerDownload& d, int j, size_t pixe
       normal->SetTypedComponent(p, c, static_cast<float>(n[c]));
       if (reflectivity)
       {
-        reflectivity->SetTypedComponent(
-          p, c, isValid ? d.Reflectivity[4 * q + c] / 255.0f : 0.0f);
+        reflectivity->SetTypedComponent(p, c, isValid ? d.Reflectivity[4 * q + c] / 255.0f : 0.0f);
       }
     }
   }

@@ -41,10 +41,10 @@
  * | ALBEDO    | RGBA8             | 4        | diffuse albedo after VTK's colouring  |
  * | NORMAL    | RG8 (Oct16)       | 2        | camera-space normal, paper Table 1    |
  * | DEPTH     | R32F              | 4        | camera-space distance, 0 = empty      |
- * | AMBIENT   | R11F_G11F_B10F    | 4        | the ambient part of RADIANCE (0 for EMISSIVE props) |
- * | REFLECTIVITY | RGBA8 (optional) | 4      | mirror reflectance, only while requested |
- * | (z-test)  | DEPTH_COMPONENT32F| 4        | hardware depth per layer              |
- * Reads: nothing but the props. Writes: the renderer's colour and depth.
+ * | AMBIENT   | R11F_G11F_B10F    | 4        | the ambient part of RADIANCE (0 for EMISSIVE props)
+ * | | REFLECTIVITY | RGBA8 (optional) | 4      | mirror reflectance, only while requested | |
+ * (z-test)  | DEPTH_COMPONENT32F| 4        | hardware depth per layer              | Reads: nothing
+ * but the props. Writes: the renderer's colour and depth.
  *
  * Bad input never crashes: a non-finite or negative separation, an
  * unsupported layer count or an OpenGL without geometry shaders or array

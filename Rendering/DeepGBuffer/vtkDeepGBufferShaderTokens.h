@@ -35,11 +35,12 @@ constexpr const char* GeometryMain = "void main()";
 constexpr const char* GeometryEmitVertex = "EmitVertex();";
 
 // Probes of the final fragment shader and the variables they make readable.
-constexpr const char* PBRAlbedoDeclaration = "vec3 albedo"; // PBR: "albedo", "metallic", "roughness"
+constexpr const char* PBRAlbedoDeclaration =
+  "vec3 albedo";                                           // PBR: "albedo", "metallic", "roughness"
 constexpr const char* PBRFresnelDeclaration = "vec3 F0 ="; // PBR where lit: "F0"
-constexpr const char* TextureColorDeclaration = "vec4 tcolor "; // a texture: "tcolor"
+constexpr const char* TextureColorDeclaration = "vec4 tcolor ";           // a texture: "tcolor"
 constexpr const char* ShadingNormalDeclaration = "vec3 normalVCVSOutput"; // lit props
-constexpr const char* SpecularColorDeclaration = "vec3 specularColor ="; // Phong/Gouraud
+constexpr const char* SpecularColorDeclaration = "vec3 specularColor =";  // Phong/Gouraud
 }
 
 #endif

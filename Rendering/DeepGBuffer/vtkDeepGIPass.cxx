@@ -80,7 +80,8 @@ constexpr int EffectMask =
 template <typename Visitor>
 bool AnyOpaqueActor(vtkRenderer* renderer, Visitor visit)
 {
-  return vtkDeepScreenSpace::AnyActor(renderer, [&visit](vtkActor* actor)
+  return vtkDeepScreenSpace::AnyActor(renderer,
+    [&visit](vtkActor* actor)
     { return actor->GetMapper() && actor->HasOpaqueGeometry() && visit(actor); });
 }
 
@@ -474,8 +475,8 @@ bool ReadViewportColour(vtkRenderer* renderer, vtkUnsignedCharArray* rgb)
   {
     return false;
   }
-  return renderer->GetRenderWindow()->GetPixelData(origin[0], origin[1],
-           origin[0] + size[0] - 1, origin[1] + size[1] - 1, /*front=*/0, rgb) == 1 &&
+  return renderer->GetRenderWindow()->GetPixelData(origin[0], origin[1], origin[0] + size[0] - 1,
+           origin[1] + size[1] - 1, /*front=*/0, rgb) == 1 &&
     rgb->GetNumberOfValues() == 3LL * size[0] * size[1];
 }
 
@@ -513,7 +514,7 @@ int vtkDeepGIPass::Converge(vtkRenderer* renderer, int maximumFrames, double tol
   if (!(tolerance >= 0.0))
   {
     vtkWarningMacro("Converge: tolerance " << tolerance << " is not >= 0; using 0 (all "
-                                            << maximumFrames << " frames).");
+                                           << maximumFrames << " frames).");
     tolerance = 0.0;
   }
   if (renderer->GetPass() != this)

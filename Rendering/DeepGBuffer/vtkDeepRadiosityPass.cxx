@@ -101,7 +101,7 @@ struct vtkDeepRadiosityRendererState
   double PreviousProjection[16];
   vtkDeepScreenSpace::RenderCounter Renders;
   unsigned int FrameIndex = 0; // frames since the history was reset
-  int Width = 0;  // of the G-buffer's layers (frame and guard band)
+  int Width = 0;               // of the G-buffer's layers (frame and guard band)
   int Height = 0;
   int GuardBand = 0;
   int ShadedRegion[4] = { 0, 0, 0, 0 }; // vtkDeepScreenSpace::ShadedRegion
@@ -170,7 +170,6 @@ public:
   vtkOpenGLQuadHelper* TemporalQuad = nullptr;
   vtkOpenGLQuadHelper* CompositeQuad = nullptr;
   bool WarnedUnsupported = false;
-
 };
 
 //------------------------------------------------------------------------------
@@ -701,8 +700,7 @@ void vtkDeepRadiosityPass::ComputeBounceInput(
   program->SetUniformi("deepLayers", frame.UsedLayers);
   program->SetUniformi("deepHasHistory", state.HistoryValid ? 1 : 0);
   program->SetUniformMatrix4x4("deepToPrevious", frame.ToPrevious);
-  program->SetUniformMatrix4x4(
-    "deepPrevProjection", frame.PreviousProjection);
+  program->SetUniformMatrix4x4("deepPrevProjection", frame.PreviousProjection);
   program->SetUniformf("deepTolerance", static_cast<float>(frame.Tolerance));
   program->SetUniformf("deepDamping", static_cast<float>(this->Damping));
   program->SetUniformi("deepBoost", this->UseColorBoost ? 1 : 0);
@@ -781,8 +779,7 @@ void vtkDeepRadiosityPass::AccumulateIrradiance(
   program->SetUniformi("deepLayers", frame.UsedLayers);
   program->SetUniformi("deepHasHistory", state.HistoryValid ? 1 : 0);
   program->SetUniformMatrix4x4("deepToPrevious", frame.ToPrevious);
-  program->SetUniformMatrix4x4(
-    "deepPrevProjection", frame.PreviousProjection);
+  program->SetUniformMatrix4x4("deepPrevProjection", frame.PreviousProjection);
   program->SetUniformf("deepTolerance", static_cast<float>(frame.Tolerance));
   program->SetUniformf("deepAlpha", static_cast<float>(this->TemporalAlpha));
   program->SetUniformi("deepBoost", this->UseColorBoost ? 1 : 0);
@@ -799,8 +796,7 @@ void vtkDeepRadiosityPass::AccumulateIrradiance(
 
 //------------------------------------------------------------------------------
 // This frame's history becomes the last frame's; what captures report.
-void vtkDeepRadiosityPass::RecordFrame(
-  vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
+void vtkDeepRadiosityPass::RecordFrame(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
 {
   state.HistoryCurrent = frame.Next;
   state.HistoryValid = true;
@@ -888,7 +884,8 @@ std::vector<float> DownloadDistance(GLuint handle, size_t pixels, int& slots)
   return distance;
 }
 
-vtkFloatArray* AddFloatArray(vtkPointData* pd, const std::string& name, int components, size_t pixels)
+vtkFloatArray* AddFloatArray(
+  vtkPointData* pd, const std::string& name, int components, size_t pixels)
 {
   vtkNew<vtkFloatArray> array;
   array->SetName(name.c_str());
@@ -912,8 +909,8 @@ void AddIrradianceFieldData(vtkFieldData* fd, const vtkDeepRadiosityRendererStat
   };
   addDoubles("Radius", { state.Radius });
   addDoubles("ReprojectionTolerance", { state.Tolerance });
-  addDoubles("EnvironmentIrradiance",
-    { state.Environment[0], state.Environment[1], state.Environment[2] });
+  addDoubles(
+    "EnvironmentIrradiance", { state.Environment[0], state.Environment[1], state.Environment[2] });
   for (auto value : { std::make_pair("NumberOfSamples", state.NumberOfSamples),
          std::make_pair("NumberOfLayers", state.LayerCount),
          std::make_pair("Frames", static_cast<int>(state.FrameIndex)) })

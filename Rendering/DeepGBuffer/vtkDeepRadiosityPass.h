@@ -156,22 +156,22 @@ public:
   enum Estimator
   {
     ACCEPTED_TAPS = DEEP_ESTIMATOR_ACCEPTED_TAPS, ///< eq. 4 as printed: 2 pi / M sum B (w.n_X)
-    ALL_TAPS = DEEP_ESTIMATOR_ALL_TAPS, ///< 2 pi / N sum B (w.n_X): rejected taps count as 0
+    ALL_TAPS = DEEP_ESTIMATOR_ALL_TAPS,      ///< 2 pi / N sum B (w.n_X): rejected taps count as 0
     SOLID_ANGLE = DEEP_ESTIMATOR_SOLID_ANGLE ///< sum B (w.n_X) dOmega_i, each tap's solid angle
   };
 
   /// Table 2's parameter sets.
   enum Preset
   {
-    HIGH_PERFORMANCE = 0, ///< N 13, 9 filter taps, no n_Y test, minimum MIP level 3, 10 % of the guard band shaded
-    BALANCED = 1,         ///< N 14, 11 filter taps, n_Y test, minimum MIP level 2, 50 % (defaults)
-    HIGH_QUALITY = 2      ///< N 30, 13 filter taps, n_Y test, minimum MIP level 0, 80 %
+    HIGH_PERFORMANCE =
+      0, ///< N 13, 9 filter taps, no n_Y test, minimum MIP level 3, 10 % of the guard band shaded
+    BALANCED = 1,    ///< N 14, 11 filter taps, n_Y test, minimum MIP level 2, 50 % (defaults)
+    HIGH_QUALITY = 2 ///< N 30, 13 filter taps, n_Y test, minimum MIP level 0, 80 %
   };
 
   /// The guard band (vtkDeepGBufferPass::SetGuardBand) of the G-buffer this
   /// pass creates: 0.1 of the viewport's height on each side.
   static constexpr double DEFAULT_GUARD_BAND = 0.1;
-
 
   ///@{
   /**

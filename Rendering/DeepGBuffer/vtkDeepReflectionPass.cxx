@@ -124,7 +124,7 @@ struct vtkDeepReflectionRendererState
 {
   vtkWeakPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkTextureObject> Targets[NUMBER_OF_TARGETS];
-  int Width = 0;  // of the G-buffer's layers (frame and guard band)
+  int Width = 0; // of the G-buffer's layers (frame and guard band)
   int Height = 0;
   int GuardBand = 0;
   bool HasFrame = false; // the targets hold this renderer's last frame
@@ -134,10 +134,7 @@ struct vtkDeepReflectionRendererState
   double View[16];
   double FrameProjection[16]; // the camera's: the frame without the guard band
 
-  void Attach(vtkRenderer* renderer)
-  {
-    this->Renderer = renderer;
-  }
+  void Attach(vtkRenderer* renderer) { this->Renderer = renderer; }
 
   void Release(vtkWindow* w)
   {
@@ -184,7 +181,6 @@ public:
     }
     return any;
   }
-
 };
 
 //------------------------------------------------------------------------------
@@ -562,9 +558,8 @@ void vtkDeepReflectionPass::BindEnvironment(vtkTraceFrame& frame)
   }
   frame.Environment = environment;
   frame.EnvironmentObject = object;
-  frame.EnvironmentKind = object->GetTarget() == GL_TEXTURE_CUBE_MAP
-    ? ENVIRONMENT_CUBE_MAP
-    : ENVIRONMENT_EQUIRECTANGULAR;
+  frame.EnvironmentKind =
+    object->GetTarget() == GL_TEXTURE_CUBE_MAP ? ENVIRONMENT_CUBE_MAP : ENVIRONMENT_EQUIRECTANGULAR;
 }
 
 //------------------------------------------------------------------------------
@@ -850,8 +845,8 @@ bool vtkDeepReflectionPass::CaptureReflections(vtkImageData* output, vtkRenderer
   const size_t pixels = static_cast<size_t>(w) * h;
   ReflectionDownload download;
   DownloadReflections(*state,
-    this->GBufferPass->GetTextureHandle(ren, vtkDeepGBufferPass::REFLECTIVITY),
-    window->GetState(), pixels, download);
+    this->GBufferPass->GetTextureHandle(ren, vtkDeepGBufferPass::REFLECTIVITY), window->GetState(),
+    pixels, download);
   output->Initialize();
   output->SetDimensions(w, h, 1);
   output->SetSpacing(1.0, 1.0, 1.0);

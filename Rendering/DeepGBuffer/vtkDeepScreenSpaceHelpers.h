@@ -135,8 +135,8 @@ private:
 class ScopedCompositeState
 {
 public:
-  ScopedCompositeState(vtkOpenGLState* state, unsigned int sourceFactor,
-    unsigned int destinationFactor);
+  ScopedCompositeState(
+    vtkOpenGLState* state, unsigned int sourceFactor, unsigned int destinationFactor);
   ScopedCompositeState(const ScopedCompositeState&) = delete;
   void operator=(const ScopedCompositeState&) = delete;
 

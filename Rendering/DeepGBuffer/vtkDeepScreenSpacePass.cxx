@@ -161,8 +161,8 @@ void vtkDeepScreenSpacePass::SetFraction(const char* name, double fraction, doub
   if (fraction < 0.0 || fraction > 1.0)
   {
     const double clamped = std::min(std::max(fraction, 0.0), 1.0);
-    vtkWarningMacro(<< name << " must be within [0, 1] (got " << fraction << "); using "
-                    << clamped << ".");
+    vtkWarningMacro(<< name << " must be within [0, 1] (got " << fraction << "); using " << clamped
+                    << ".");
     fraction = clamped;
   }
   if (fraction != value)

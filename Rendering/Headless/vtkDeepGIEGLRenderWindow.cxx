@@ -117,8 +117,7 @@ private:
       this->GetPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
         eglGetProcAddress("eglGetPlatformDisplayEXT"));
     }
-    if (HasExtension(ext, "EGL_EXT_device_enumeration") ||
-      HasExtension(ext, "EGL_EXT_device_base"))
+    if (HasExtension(ext, "EGL_EXT_device_enumeration") || HasExtension(ext, "EGL_EXT_device_base"))
     {
       this->QueryDevices =
         reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
@@ -272,7 +271,8 @@ EGLDisplay ChooseDisplay(
     }
   }
 
-  auto tryDevice = [&](int i) -> EGLDisplay {
+  auto tryDevice = [&](int i) -> EGLDisplay
+  {
     std::ostringstream what;
     what << "EGL device " << i;
     std::string devExt = DeviceExtensions(devices[i]);
@@ -295,8 +295,7 @@ EGLDisplay ChooseDisplay(
     {
       return tryDevice(deviceIndex);
     }
-    log << "  EGL device " << deviceIndex << ": only " << devices.size()
-        << " device(s) found\n";
+    log << "  EGL device " << deviceIndex << ": only " << devices.size() << " device(s) found\n";
     return EGL_NO_DISPLAY;
   }
 
@@ -404,8 +403,8 @@ const char* GLEWErrorName(GLenum code)
 // the default framebuffer; VTK renders into its own FBOs), or, with
 // EGL_KHR_surfaceless_context, any 8-bit RGB one without a pbuffer. False
 // with `why` set when there is none.
-bool ChooseConfig(EGLDisplay display, bool surfacelessContext, EGLConfig& config,
-  bool& usePbuffer, std::string& why)
+bool ChooseConfig(EGLDisplay display, bool surfacelessContext, EGLConfig& config, bool& usePbuffer,
+  std::string& why)
 {
   EGLint numConfigs = 0;
   usePbuffer = true;
@@ -739,7 +738,10 @@ void vtkDeepGIEGLRenderWindow::OpenGLInitContext()
       const char* Name;
       void* Pointer;
     };
-#define DEEPGI_ENTRY(fn) { #fn, reinterpret_cast<void*>(fn) }
+#define DEEPGI_ENTRY(fn)                                                                           \
+  {                                                                                                \
+#fn, reinterpret_cast < void*>(fn)                                                             \
+  }
     const EntryPoint entries[] = {
       DEEPGI_ENTRY(glGetStringi),
       DEEPGI_ENTRY(glGenFramebuffers),
@@ -987,8 +989,8 @@ void vtkDeepGIEGLRenderWindow::SetUseOffScreenBuffers(bool val)
 {
   if (!val)
   {
-    vtkWarningMacro(
-      "vtkDeepGIEGLRenderWindow always renders into offscreen buffers; UseOffScreenBuffers stays on");
+    vtkWarningMacro("vtkDeepGIEGLRenderWindow always renders into offscreen buffers; "
+                    "UseOffScreenBuffers stays on");
   }
 }
 

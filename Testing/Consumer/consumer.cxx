@@ -8,6 +8,7 @@ int main()
 {
   vtkNew<vtkDeepGBufferPass> pass;
   pass->SetOracleToReproject();
-  std::printf("vtkDeepGBufferPass oracle %s\n", vtkDeepGBufferPass::GetOracleAsString(pass->GetOracle()));
+  std::printf(
+    "vtkDeepGBufferPass oracle %s\n", vtkDeepGBufferPass::GetOracleAsString(pass->GetOracle()));
   return 0;
 }

@@ -24,8 +24,8 @@ inline std::string Folder(int argc, char* argv[], const char* testName)
       return argv[i + 1];
     }
   }
-  std::fprintf(stderr, "%s: no test data folder (--data DIR, normally <source>/Testing/Data)\n",
-    testName);
+  std::fprintf(
+    stderr, "%s: no test data folder (--data DIR, normally <source>/Testing/Data)\n", testName);
   return std::string();
 }
 

@@ -353,8 +353,8 @@ int TestDeepGIReferenceBounces(int, char*[])
     reference->AddObserver(vtkCommand::ErrorEvent, events);
     reference->SetScene(sphere.PolyData);
     reference->SetSamplesPerPixel(1024);
-    for (auto setting : { std::make_pair(1, 1.0), std::make_pair(2, 1.0),
-           std::make_pair(4, 1.0), std::make_pair(6, 0.5) })
+    for (auto setting : { std::make_pair(1, 1.0), std::make_pair(2, 1.0), std::make_pair(4, 1.0),
+           std::make_pair(6, 0.5) })
     {
       reference->SetNumberOfBounces(setting.first);
       reference->SetBounceDamping(setting.second);
@@ -455,8 +455,8 @@ int TestDeepGIReferenceBounces(int, char*[])
     Check(reference->GetBounceDamping() == 0.25 && events->Warnings == 6,
       "BounceDamping NaN: ignored, a warning");
     reference->SetBounceDamping(0.0);
-    Check(reference->GetBounceDamping() == 0.0 && events->Warnings == 6,
-      "BounceDamping 0: no warning");
+    Check(
+      reference->GetBounceDamping() == 0.0 && events->Warnings == 6, "BounceDamping 0: no warning");
   }
 
   std::cout << (Failures() ? "FAILED" : "passed") << " (" << Failures() << " failures)\n";

@@ -338,8 +338,7 @@ int TestDeepGIReferenceEmission(int, char*[])
       "NaN and negative emission: one warning");
     Check(MaxAbs(reference, "IndirectIrradiance") < 10.0, "NaN and negative emission: E finite");
     CompareExact(
-      reference,
-      [&](vtkIdType p, int c) { return c == 2 ? emittedExact(p, c) : 0.0; },
+      reference, [&](vtkIdType p, int c) { return c == 2 ? emittedExact(p, c) : 0.0; },
       "NaN and negative emission clamped to 0, blue unchanged");
     const double infinite[3] = { std::numeric_limits<double>::infinity(), 0.0, 0.0 };
     reference->SetScene(SquareScene(true, EmissionArray(infinite)));
@@ -359,8 +358,7 @@ int TestDeepGIReferenceEmission(int, char*[])
     reference->SetScene(SquareScene(true, EmissionArray(grey, 1)));
     Check(reference->Compute(capture) && events->Warnings == 4, "grey emission: Compute");
     CompareExact(
-      reference,
-      [&](vtkIdType p, int) { return vtkMath::Pi() * 0.4 * viewFactor(p); },
+      reference, [&](vtkIdType p, int) { return vtkMath::Pi() * 0.4 * viewFactor(p); },
       "a 1-component Emission array is grey (closed form)");
   }
 
@@ -369,8 +367,8 @@ int TestDeepGIReferenceEmission(int, char*[])
     const double e = 4.0;
     const std::array<std::array<double, 3>, 4> up = { { { -e, -e, 0 }, { e, -e, 0 }, { e, e, 0 },
       { -e, e, 0 } } };
-    const std::array<std::array<double, 3>, 4> down = { { { -e, -e, 0 }, { -e, e, 0 },
-      { e, e, 0 }, { e, -e, 0 } } };
+    const std::array<std::array<double, 3>, 4> down = { { { -e, -e, 0 }, { -e, e, 0 }, { e, e, 0 },
+      { e, -e, 0 } } };
     vtkNew<vtkDeepGIReferenceIrradiance> reference;
     reference->SetQuantityToDirectRadiance();
     auto maxError = [&](const double expected[3])
@@ -419,8 +417,7 @@ int TestDeepGIReferenceEmission(int, char*[])
     reference->SetSamplesPerPixel(1024);
     Check(reference->Compute(capture), "unsigned char emission: Compute");
     CompareExact(
-      reference,
-      [&](vtkIdType p, int c) { return vtkMath::Pi() * rgb[c] / 255.0 * viewFactor(p); },
+      reference, [&](vtkIdType p, int c) { return vtkMath::Pi() * rgb[c] / 255.0 * viewFactor(p); },
       "unsigned char emission / 255 (closed form)");
   }
 

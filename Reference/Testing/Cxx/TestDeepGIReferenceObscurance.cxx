@@ -53,7 +53,7 @@ int Failures = 0;
   {                                                                                                \
     if (!(condition))                                                                              \
     {                                                                                              \
-      std::cerr << "FAILED (line " << __LINE__ << "): " << message << "\n";                       \
+      std::cerr << "FAILED (line " << __LINE__ << "): " << message << "\n";                        \
       ++Failures;                                                                                  \
     }                                                                                              \
   } while (false)
@@ -91,8 +91,8 @@ void AddQuad(vtkPoints* points, vtkCellArray* polys, const double p[4][3], const
   vtkIdType ids[4];
   for (int k = 0; k < 4; ++k)
   {
-    ids[k] = points->InsertNextPoint(p[k][0] * s.Scale + s.Shift[0],
-      p[k][1] * s.Scale + s.Shift[1], p[k][2] * s.Scale + s.Shift[2]);
+    ids[k] = points->InsertNextPoint(p[k][0] * s.Scale + s.Shift[0], p[k][1] * s.Scale + s.Shift[1],
+      p[k][2] * s.Scale + s.Shift[2]);
   }
   polys->InsertNextCell(4, ids);
 }
@@ -207,7 +207,8 @@ vtkSmartPointer<vtkImageData> MakeCapture(const Setup& s, int w, int h, double c
   capture->GetPointData()->AddArray(depth);
   capture->GetPointData()->AddArray(normal);
   capture->GetPointData()->AddArray(valid);
-  for (auto m : { std::make_pair("ViewMatrix", view), std::make_pair("ProjectionMatrix", projection) })
+  for (auto m :
+    { std::make_pair("ViewMatrix", view), std::make_pair("ProjectionMatrix", projection) })
   {
     vtkNew<vtkDoubleArray> values;
     values->SetName(m.first);
@@ -290,9 +291,10 @@ double CompareExact(vtkDeepGIReferenceObscurance* reference,
     ++n;
   }
   const double meanDiff = sumDiff / n, meanSE = std::sqrt(sumVar) / n;
-  std::cout << what << ": " << n << " pixels, mean AV - exact " << meanDiff << " (its standard error "
-            << meanSE << "), max |diff| " << maxDiff << ", max |diff| / tolerance " << maxZ
-            << ", mean SE " << reference->GetMeanStandardError() << ", max SE "
+  std::cout << what << ": " << n << " pixels, mean AV - exact " << meanDiff
+            << " (its standard error " << meanSE << "), max |diff| " << maxDiff
+            << ", max |diff| / tolerance " << maxZ << ", mean SE "
+            << reference->GetMeanStandardError() << ", max SE "
             << reference->GetMaximumStandardError() << ", " << reference->GetComputeTime()
             << " s\n";
   CHECK(n > 0, what << ": no valid pixel");
@@ -383,8 +385,8 @@ int TestDeepGIReferenceObscurance(int, char*[])
     const double a = cornerPositions[p][0] - corner.WallX, b = cornerPositions[p][1] - corner.WallY;
     if (a > 0 && b > 0)
     {
-      cornerExact[p] = 1.0 -
-        (a < r && b < r ? CornerObscurance(a, b, r) : WallObscurance(std::min(a, b), r));
+      cornerExact[p] =
+        1.0 - (a < r && b < r ? CornerObscurance(a, b, r) : WallObscurance(std::min(a, b), r));
     }
   }
   CompareExact(

@@ -14,8 +14,8 @@
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDeepGBufferDemoScene.h"
-#include "vtkDeepGIKeys.h"
 #include "vtkDeepGBufferSceneLoader.h"
+#include "vtkDeepGIKeys.h"
 #include "vtkFlyingEdges3D.h"
 #include "vtkInformation.h"
 #include "vtkInformationIntegerKey.h"
@@ -50,7 +50,7 @@ int Failures = 0;
   {                                                                                                \
     if (!(condition))                                                                              \
     {                                                                                              \
-      std::cerr << "FAILED (line " << __LINE__ << "): " << message << "\n";                       \
+      std::cerr << "FAILED (line " << __LINE__ << "): " << message << "\n";                        \
       ++Failures;                                                                                  \
     }                                                                                              \
   } while (false)
@@ -75,7 +75,8 @@ public:
 bool CheckMesh(vtkPolyData* pd, bool expectNormals, bool expectColors, const std::string& what)
 {
   bool ok = true;
-  auto fail = [&](const std::string& m) {
+  auto fail = [&](const std::string& m)
+  {
     std::cerr << "FAILED: " << what << ": " << m << "\n";
     ++Failures;
     ok = false;
@@ -148,8 +149,8 @@ vtkIdType CountBadPointIds(vtkPolyData* pd)
       vtkIdType n;
       const vtkIdType* ids;
       it->GetCurrentCell(n, ids);
-      bad += std::count_if(
-        ids, ids + n, [=](vtkIdType id) { return id < 0 || id >= numberOfPoints; });
+      bad +=
+        std::count_if(ids, ids + n, [=](vtkIdType id) { return id < 0 || id >= numberOfPoints; });
     }
   }
   return bad;
@@ -298,8 +299,8 @@ void TestDemoScene()
     b->GetPosition(pb);
     a->GetFocalPoint(fa);
     b->GetFocalPoint(fb);
-    CHECK(pa[0] == pb[0] && pa[1] == pb[1] && pa[2] == pb[2] && fa[0] == fb[0] &&
-        fa[1] == fb[1] && fa[2] == fb[2],
+    CHECK(pa[0] == pb[0] && pa[1] == pb[1] && pa[2] == pb[2] && fa[0] == fb[0] && fa[1] == fb[1] &&
+        fa[2] == fb[2],
       "path frame " << f << " is deterministic");
     for (int i = 0; i < 3; ++i)
     {
@@ -389,8 +390,8 @@ void TestLoader(const std::string& data, const std::string& temp)
   // Cornell box: 8 materials, 36 triangles, the left wall red (Kd).
   CHECK(loader->Load((data + "/scenes/cornell-original/CornellBox-Original.obj").c_str()),
     "CornellBox-Original.obj loads");
-  CHECK(loader->GetNumberOfParts() == 8, "Cornell box has " << loader->GetNumberOfParts()
-                                                            << " parts, expected 8");
+  CHECK(loader->GetNumberOfParts() == 8,
+    "Cornell box has " << loader->GetNumberOfParts() << " parts, expected 8");
   CHECK(loader->GetNumberOfTriangles() == 36, "Cornell box has 36 triangles");
   bool foundRed = false;
   for (int i = 0; i < loader->GetNumberOfParts(); ++i)
@@ -419,8 +420,8 @@ void TestLoader(const std::string& data, const std::string& temp)
   {
     loader->GetPartEmission(7, ke);
   }
-  CHECK(hasLamp && std::string(loader->GetPartName(7)).find("light") != std::string::npos && ke[0] == 17.0 &&
-      ke[1] == 12.0 && ke[2] == 4.0,
+  CHECK(hasLamp && std::string(loader->GetPartName(7)).find("light") != std::string::npos &&
+      ke[0] == 17.0 && ke[1] == 12.0 && ke[2] == 4.0,
     "the lamp part has Ke 17 12 4");
   vtkActor* lamp = actors->GetLastActor();
   vtkProperty* lampProperty = lamp ? lamp->GetProperty() : nullptr;
@@ -486,8 +487,8 @@ void TestLoader(const std::string& data, const std::string& temp)
   CHECK(loader->Load(cornell.c_str()), "a third CornellBox-Original.obj load succeeds");
   for (vtkDeepGBufferSceneLoader* l : { again.Get(), loader.Get() })
   {
-    CHECK(l->GetNumberOfParts() == 8, "reloaded Cornell box has " << l->GetNumberOfParts()
-                                                                   << " parts, expected 8");
+    CHECK(l->GetNumberOfParts() == 8,
+      "reloaded Cornell box has " << l->GetNumberOfParts() << " parts, expected 8");
     CHECK(l->GetNumberOfTriangles() == CountObjTriangles(cornell),
       "reloaded Cornell box has " << l->GetNumberOfTriangles() << " triangles, expected 36");
     int coincident = 0;
@@ -505,15 +506,15 @@ void TestLoader(const std::string& data, const std::string& temp)
              << part->GetNumberOfPoints() << " points");
       CheckMesh(part, true, false, "reloaded " + name);
       const int duplicates = CountCoincidentTriangles(part);
-      const bool block = name.find("shortBox") != std::string::npos ||
-        name.find("tallBox") != std::string::npos;
+      const bool block =
+        name.find("shortBox") != std::string::npos || name.find("tallBox") != std::string::npos;
       CHECK(duplicates == (block ? 2 : 0),
         name << " has " << duplicates << " coincident duplicate triangles, expected "
              << (block ? 2 : 0) << " (one quad stored twice per block)");
       coincident += duplicates;
     }
-    CHECK(coincident == 4, "the Cornell box keeps its 2 duplicate quads (" << coincident
-                                                                           << " triangles)");
+    CHECK(coincident == 4,
+      "the Cornell box keeps its 2 duplicate quads (" << coincident << " triangles)");
     vtkPolyData* all = l->GetScenePolyData();
     CHECK(all && CountBadPointIds(all) == 0 && all->GetNumberOfPolys() == 36 &&
         CountCoincidentTriangles(all) == 4,
@@ -528,12 +529,12 @@ void TestLoader(const std::string& data, const std::string& temp)
     {
       std::ofstream out(bad);
       out << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\n"
-             "f 1 2 3\n"          // good
-             "f 1 3 9\n"          // vertex 9 does not exist
-             "f -1 -2 -7\n"       // -7: before the first vertex
-             "f 0 1 2\n"          // 0 is no index
+             "f 1 2 3\n"                   // good
+             "f 1 3 9\n"                   // vertex 9 does not exist
+             "f -1 -2 -7\n"                // -7: before the first vertex
+             "f 0 1 2\n"                   // 0 is no index
              "f -4//1 -3//1 -2//1 -1//1\n" // good quad, relative indices
-             "f 1 2 5//3\n"       // forward reference; normal 3 does not exist
+             "f 1 2 5//3\n"                // forward reference; normal 3 does not exist
              "v 0 0 1\n";
     }
     vtkNew<vtkDeepGBufferSceneLoader> l;

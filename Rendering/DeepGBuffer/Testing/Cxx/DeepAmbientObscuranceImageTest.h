@@ -30,9 +30,9 @@ namespace DeepGBufferTest
 {
 struct AVExpectations
 {
-  double MeanMin, MeanMax;             // mean filtered AV over surface pixels
-  double UnoccludedMin;                // fraction of surface pixels with AV > 0.999
-  double DarkMin;                      // fraction of surface pixels with AV < 0.8
+  double MeanMin, MeanMax; // mean filtered AV over surface pixels
+  double UnoccludedMin;    // fraction of surface pixels with AV > 0.999
+  double DarkMin;          // fraction of surface pixels with AV < 0.8
 };
 
 // Grey 8-bit image of the "AmbientVisibility" array of `av`.
@@ -137,11 +137,12 @@ inline int RunAOImageTest(int argc, char* argv[], const std::function<bool(vtkRe
   const double fu = static_cast<double>(unoccluded) / std::max(surface, 1L);
   const double fd = static_cast<double>(dark) / std::max(surface, 1L);
   const bool finite = AllFinite(av);
-  std::printf("AV: %ld surface px (radius %.4g, N %d), mean %.4f (expected %.3f..%.3f), "
-              "unoccluded %.3f (>= %.3f), dark %.3f (>= %.3f), %ld values outside [0, 1], %ld empty "
-              "px not 1, finite: %s, change since the displayed frame %.2e\n",
-    surface, pass->GetEffectiveRadius(), pass->GetNumberOfSamples(), mean, e.MeanMin, e.MeanMax,
-    fu, e.UnoccludedMin, fd, e.DarkMin, outOfRange, emptyNotOne, finite ? "yes" : "no", changed);
+  std::printf(
+    "AV: %ld surface px (radius %.4g, N %d), mean %.4f (expected %.3f..%.3f), "
+    "unoccluded %.3f (>= %.3f), dark %.3f (>= %.3f), %ld values outside [0, 1], %ld empty "
+    "px not 1, finite: %s, change since the displayed frame %.2e\n",
+    surface, pass->GetEffectiveRadius(), pass->GetNumberOfSamples(), mean, e.MeanMin, e.MeanMax, fu,
+    e.UnoccludedMin, fd, e.DarkMin, outOfRange, emptyNotOne, finite ? "yes" : "no", changed);
   const bool numbersOk = finite && outOfRange == 0 && emptyNotOne == 0 && surface > W * H / 10 &&
     mean >= e.MeanMin && mean <= e.MeanMax && fu >= e.UnoccludedMin && fd >= e.DarkMin &&
     changed <= 1e-6;

@@ -4,19 +4,19 @@
 #define DeepGBufferTestUtilities_h
 
 #include "vtkActor.h"
-#include "vtkCamera.h"
-#include "vtkCubeSource.h"
-#include "vtkDoubleArray.h"
-#include "vtkFieldData.h"
-#include "vtkPlaneSource.h"
 #include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
 #include "vtkCommand.h"
+#include "vtkCubeSource.h"
 #include "vtkDataArray.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDeepGIRenderWindowFactory.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
+#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -27,8 +27,8 @@
 #include "vtkWindowToImageFilter.h"
 
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -140,8 +140,8 @@ inline bool AllFinite(vtkImageData* image)
       {
         if (!std::isfinite(array->GetComponent(t, c)))
         {
-          std::printf("non-finite value in %s at %lld\n", array->GetName(),
-            static_cast<long long>(t));
+          std::printf(
+            "non-finite value in %s at %lld\n", array->GetName(), static_cast<long long>(t));
           return false;
         }
       }
@@ -152,7 +152,8 @@ inline bool AllFinite(vtkImageData* image)
 
 inline vtkDataArray* Layer(vtkImageData* image, const char* quantity, int layer)
 {
-  return image->GetPointData()->GetArray((std::string(quantity) + "_" + std::to_string(layer)).c_str());
+  return image->GetPointData()->GetArray(
+    (std::string(quantity) + "_" + std::to_string(layer)).c_str());
 }
 
 // Camera-space position of the centre of texel (floor(i), floor(j)) of
@@ -162,13 +163,15 @@ inline bool CameraPosition(vtkImageData* layers, int layer, double i, double j, 
 {
   const int* dims = layers->GetDimensions();
   const int ii = static_cast<int>(std::floor(i)), jj = static_cast<int>(std::floor(j));
-  const double d = Layer(layers, "Depth", layer)->GetTuple1(static_cast<vtkIdType>(jj) * dims[0] + ii);
+  const double d =
+    Layer(layers, "Depth", layer)->GetTuple1(static_cast<vtkIdType>(jj) * dims[0] + ii);
   if (!(d > 0.0))
   {
     return false;
   }
-  const double* P = vtkDoubleArray::SafeDownCast(
-    layers->GetFieldData()->GetArray("ProjectionMatrix"))->GetPointer(0);
+  const double* P =
+    vtkDoubleArray::SafeDownCast(layers->GetFieldData()->GetArray("ProjectionMatrix"))
+      ->GetPointer(0);
   const double ndc[2] = { (ii + 0.5) / dims[0] * 2.0 - 1.0, (jj + 0.5) / dims[1] * 2.0 - 1.0 };
   const double z = -d, w = P[14] * z + P[15];
   out[0] = (ndc[0] * w - P[2] * z - P[3]) / P[0];
@@ -187,8 +190,8 @@ inline bool WorldPosition(vtkImageData* layers, int layer, int i, int j, double 
     return false;
   }
   vtkNew<vtkMatrix4x4> view;
-  view->DeepCopy(vtkDoubleArray::SafeDownCast(layers->GetFieldData()->GetArray("ViewMatrix"))
-                   ->GetPointer(0));
+  view->DeepCopy(
+    vtkDoubleArray::SafeDownCast(layers->GetFieldData()->GetArray("ViewMatrix"))->GetPointer(0));
   view->Invert();
   double out[4];
   view->MultiplyPoint(c, out);
@@ -201,8 +204,8 @@ inline bool WorldPosition(vtkImageData* layers, int layer, int i, int j, double 
 
 struct SeparationReport
 {
-  long Pixels = 0;     // valid pixels of layer j
-  long Violations = 0; // valid pixels of layer j closer than dz behind layer j - 1
+  long Pixels = 0;            // valid pixels of layer j
+  long Violations = 0;        // valid pixels of layer j closer than dz behind layer j - 1
   double WorstExcess = 1e300; // min over pixels of depth_j - depth_{j-1} - dz
 };
 
@@ -240,7 +243,7 @@ struct LayerDifference
   long Compared = 0;        // pixels valid in either capture
   long MaskMismatches = 0;  // valid in one capture only
   long DepthMismatches = 0; // valid in both, depths differ beyond the tolerance
-  long Ties = 0; // differing pixels whose surface lies within rounding of d0 + dz
+  long Ties = 0;            // differing pixels whose surface lies within rounding of d0 + dz
   long Different() const { return this->MaskMismatches + this->DepthMismatches; }
   double Fraction() const
   {
@@ -286,9 +289,8 @@ inline LayerDifference CompareLayer(vtkImageData* a, vtkImageData* b, int layer,
     if (dz >= 0.0 && front)
     {
       const double threshold = front->GetTuple1(p) + dz;
-      auto nearThreshold = [&](double depth) {
-        return std::abs(depth - threshold) <= relativeTolerance * depth;
-      };
+      auto nearThreshold = [&](double depth)
+      { return std::abs(depth - threshold) <= relativeTolerance * depth; };
       if ((inA && nearThreshold(da->GetTuple1(p))) || (inB && nearThreshold(db->GetTuple1(p))))
       {
         ++d.Ties;
@@ -313,8 +315,8 @@ struct EventCounter
   EventCounter(vtkObject* object, unsigned long event)
   {
     this->Callback->SetClientData(this);
-    this->Callback->SetCallback(
-      [](vtkObject*, unsigned long, void* self, void*) { ++static_cast<EventCounter*>(self)->Count; });
+    this->Callback->SetCallback([](vtkObject*, unsigned long, void* self, void*)
+      { ++static_cast<EventCounter*>(self)->Count; });
     object->AddObserver(event, this->Callback);
   }
 };

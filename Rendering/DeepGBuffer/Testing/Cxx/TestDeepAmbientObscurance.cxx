@@ -97,8 +97,9 @@ double ReferenceAV(vtkImageData* layers, int i, int j, int layerCount, int n, do
   {
     return 1.0;
   }
-  const double* P = vtkDoubleArray::SafeDownCast(
-    layers->GetFieldData()->GetArray("ProjectionMatrix"))->GetPointer(0);
+  const double* P =
+    vtkDoubleArray::SafeDownCast(layers->GetFieldData()->GetArray("ProjectionMatrix"))
+      ->GetPointer(0);
   double nX[3];
   Layer(layers, "Normal", 0)->GetTuple(static_cast<vtkIdType>(j) * Width + i, nX);
   const double w = P[14] * X[2] + P[15];
@@ -176,7 +177,8 @@ void TestPlane(bool parallel)
   auto pass = MakePass(1.0);
   Result r;
   if (!Render(
-        [&](vtkRenderer* ren) {
+        [&](vtkRenderer* ren)
+        {
           const double o[3] = { -20, 0, -20 }, p1[3] = { 20, 0, -20 }, p2[3] = { -20, 0, 20 };
           AddQuad(ren, o, p1, p2);
           SetCamera(ren, 0.0, 3.0, 4.0, 0.0, 0.0, -2.0, parallel);
@@ -222,8 +224,8 @@ void TestCorner()
   const int layerCount = r.Layers->GetFieldData()->GetArray("NumberOfLayers")->GetTuple1(0);
   vtkNew<vtkImageData> pyramid;
   Check(pass->CaptureDistancePyramid(0, pyramid, r.Renderer), "capture the distance pyramid");
-  const int levels = static_cast<int>(
-    pyramid->GetFieldData()->GetArray("NumberOfMipLevels")->GetTuple1(0));
+  const int levels =
+    static_cast<int>(pyramid->GetFieldData()->GetArray("NumberOfMipLevels")->GetTuple1(0));
   std::printf("corner: %d pyramid levels\n", levels);
   for (int j = 0; j < Height; ++j)
   {
@@ -233,9 +235,9 @@ void TestCorner()
       {
         continue;
       }
-      const double reference = ReferenceAV(r.Layers, i, j, layerCount,
-        pass->GetNumberOfSamples(), radius, pass->GetBias() * radius,
-        pass->GetEpsilon() * radius * radius, pass->GetMipThreshold(), levels);
+      const double reference = ReferenceAV(r.Layers, i, j, layerCount, pass->GetNumberOfSamples(),
+        radius, pass->GetBias() * radius, pass->GetEpsilon() * radius * radius,
+        pass->GetMipThreshold(), levels);
       const double d = std::abs(reference - Value(r.AO, "RawAmbientVisibility", i, j));
       ++compared;
       mismatched += d > 2e-3 ? 1 : 0;
@@ -327,7 +329,8 @@ void TestCorner()
     const double av = r.AO->GetPointData()->GetArray("AmbientVisibility")->GetTuple1(p);
     for (int c = 0; c < 3; ++c)
     {
-      worstColor = std::max(worstColor, std::abs(a->GetComponent(p, c) - b->GetComponent(p, c) * av));
+      worstColor =
+        std::max(worstColor, std::abs(a->GetComponent(p, c) - b->GetComponent(p, c) * av));
     }
     worstDepth = std::max(worstDepth,
       std::abs(depthAO->GetPointData()->GetScalars()->GetTuple1(p) -
@@ -347,7 +350,8 @@ void TestNoBleed()
   const int R = pass->GetBlurRadius();
   Result r;
   if (!Render(
-        [](vtkRenderer* ren) {
+        [](vtkRenderer* ren)
+        {
           const double o[3] = { -20, -20, 0 }, p1[3] = { 20, -20, 0 }, p2[3] = { -20, 20, 0 };
           AddQuad(ren, o, p1, p2);
           const double q0[3] = { -1, -1, 0.3 }, q1[3] = { 1, -1, 0.3 }, q2[3] = { -1, 1, 0.3 };
@@ -358,9 +362,8 @@ void TestNoBleed()
   {
     return;
   }
-  auto depth = [&](int i, int j) {
-    return Layer(r.Layers, "Depth", 0)->GetTuple1(static_cast<vtkIdType>(j) * Width + i);
-  };
+  auto depth = [&](int i, int j)
+  { return Layer(r.Layers, "Depth", 0)->GetTuple1(static_cast<vtkIdType>(j) * Width + i); };
   auto onQuad = [&](int i, int j) { return depth(i, j) < 9.85; };
   double quadWorst = 0.0, worstEscape = 0.0, nearPlaneMax = 0.0;
   long planeChecked = 0, quadPixels = 0;

@@ -24,8 +24,8 @@ using namespace DeepGBufferTest;
 
 namespace
 {
-void AddQuad(vtkRenderer* renderer, const double o[3], const double p1[3], const double p2[3],
-  double ambient)
+void AddQuad(
+  vtkRenderer* renderer, const double o[3], const double p1[3], const double p2[3], double ambient)
 {
   vtkNew<vtkPlaneSource> plane;
   plane->SetOrigin(o[0], o[1], o[2]);
@@ -117,8 +117,8 @@ CompositeResult Run(double ambient, int composition)
               "ambient)| = %.2f levels, max |image - radiance AV| = %.2f levels, largest "
               "darkening %.1f levels, background error %.2f\n",
     vtkDeepAmbientObscurancePass::GetCompositionAsString(composition), ambient,
-    vtkDeepAmbientObscurancePass::GetCompositionAsString(result.EffectiveComposition),
-    result.Valid, result.WorstAmbient, result.WorstMultiply, result.Darkening, background);
+    vtkDeepAmbientObscurancePass::GetCompositionAsString(result.EffectiveComposition), result.Valid,
+    result.WorstAmbient, result.WorstMultiply, result.Darkening, background);
   Check(background <= 1.0, "background kept");
   pass->ReleaseGraphicsResources(window);
   return result;
@@ -136,8 +136,8 @@ int TestDeepAmbientObscuranceComposite(int, char*[])
   Check(r.Valid > 1000 && r.WorstAmbient <= 2.0 && r.Darkening <= 1.0,
     "Ambient = 0: the plain radiance");
   r = Run(0.4, Pass::COMPOSITE_AUTOMATIC);
-  Check(r.EffectiveComposition == Pass::COMPOSITE_AMBIENT && r.WorstAmbient <= 2.0 &&
-      r.Darkening > 5.0,
+  Check(
+    r.EffectiveComposition == Pass::COMPOSITE_AMBIENT && r.WorstAmbient <= 2.0 && r.Darkening > 5.0,
     "automatic with an ambient term: the ambient composition");
   r = Run(0.0, Pass::COMPOSITE_AUTOMATIC);
   Check(r.EffectiveComposition == Pass::COMPOSITE_MULTIPLY && r.WorstMultiply <= 2.0 &&

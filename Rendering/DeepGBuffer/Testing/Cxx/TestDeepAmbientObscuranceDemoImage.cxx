@@ -19,7 +19,8 @@ int TestDeepAmbientObscuranceDemoImage(int argc, char* argv[])
 {
   return DeepGBufferTest::RunAOImageTest(
     argc, argv,
-    [](vtkRenderer* renderer) {
+    [](vtkRenderer* renderer)
+    {
       vtkNew<vtkDeepGBufferDemoScene> scene;
       scene->SetTargetNumberOfTriangles(20000);
       scene->Populate(renderer);

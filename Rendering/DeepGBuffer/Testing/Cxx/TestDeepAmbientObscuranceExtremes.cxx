@@ -29,7 +29,8 @@ namespace
 constexpr int Width = 160;
 constexpr int Height = 120;
 
-void AddQuad(vtkRenderer* renderer, double s, const double o[3], const double a[3], const double b[3])
+void AddQuad(
+  vtkRenderer* renderer, double s, const double o[3], const double a[3], const double b[3])
 {
   vtkNew<vtkPlaneSource> plane;
   plane->SetOrigin(s * o[0], s * o[1], s * o[2]);
@@ -47,7 +48,8 @@ using Scene = std::function<void(vtkRenderer*)>;
 // Floor y = 0, wall z = -2, a unit box on the floor; everything times s.
 Scene CornerBox(double s)
 {
-  return [s](vtkRenderer* renderer) {
+  return [s](vtkRenderer* renderer)
+  {
     const double f0[3] = { -4, 0, 4 }, f1[3] = { 4, 0, 4 }, f2[3] = { -4, 0, -2 };
     AddQuad(renderer, s, f0, f1, f2);
     const double w0[3] = { -4, 0, -2 }, w1[3] = { 4, 0, -2 }, w2[3] = { -4, 3, -2 };
@@ -175,8 +177,7 @@ void PrintDifference(const char* what, const char* name, const Difference& d, do
 
 // Layers of `b` (scale s) against `a` (scale 1): depth / s within a relative
 // `tolerance`, same masks; layer 1 at least dz behind layer 0 in both.
-void CompareScaledLayers(
-  Frame& a, Frame& b, double s, const char* what, long allowedBeyond = 0)
+void CompareScaledLayers(Frame& a, Frame& b, double s, const char* what, long allowedBeyond = 0)
 {
   long mismatch = 0, compared = 0, beyond = 0;
   double worst = 0.0;
@@ -235,13 +236,14 @@ void TestScale(Frame& reference)
     RenderAO(CornerBox(s), pass, f);
     char what[64];
     std::snprintf(what, sizeof(what), "scale %.0e", s);
-    std::printf(" %s: radius %.6g (scale 1: %.6g), dz %.6g\n", what, pass->GetEffectiveRadius(),
-      r1, pass->GetGBufferPass()->GetEffectiveMinimumSeparation());
+    std::printf(" %s: radius %.6g (scale 1: %.6g), dz %.6g\n", what, pass->GetEffectiveRadius(), r1,
+      pass->GetGBufferPass()->GetEffectiveMinimumSeparation());
     Check(FiniteAndInRange(f), "AV and layers finite, AV in [0, 1]");
     // The automatic radius is a fraction of the bounds' diagonal: it must
     // scale exactly up to the float rounding of the points the bounds come
     // from (6e-8 relative): 1e-6.
-    Check(std::abs(pass->GetEffectiveRadius() / s - r1) <= 1e-6 * r1, "radius scales with the scene");
+    Check(
+      std::abs(pass->GetEffectiveRadius() / s - r1) <= 1e-6 * r1, "radius scales with the scene");
     // Everything in eq. 1-2 is scale-free (beta = Bias r, eps = Epsilon r^2,
     // r_p in pixels), so AV must be the same up to float rounding: taps that
     // land on a texel border may pick the neighbour, and silhouette pixels
@@ -284,8 +286,8 @@ void TestScale(Frame& reference)
           what, l0.Different(), l1.Different(), l1.Compared, l1.Ties, sep.Violations);
         // Same tolerance as TestDeepGBufferLayers (relative 1e-5: the
         // geometry shader interpolates in a different order).
-        Check(AllFinite(reproject) && l0.Different() == 0 && l1.Different() == 0 &&
-            sep.Violations == 0,
+        Check(
+          AllFinite(reproject) && l0.Different() == 0 && l1.Different() == 0 && sep.Violations == 0,
           "REPROJECT equals DEPTH_PEEL");
       }
       g->ReleaseGraphicsResources(window);
@@ -307,9 +309,9 @@ void TestClippingRange(Frame& reference)
   {
     vtkNew<vtkDeepAmbientObscurancePass> pass;
     Frame f;
-    RenderAO(CornerBox(1.0), pass, f, Width, Height, [range](vtkRenderer* renderer) {
-      renderer->GetActiveCamera()->SetClippingRange(range.Near, range.Far);
-    });
+    RenderAO(CornerBox(1.0), pass, f, Width, Height,
+      [range](vtkRenderer* renderer)
+      { renderer->GetActiveCamera()->SetClippingRange(range.Near, range.Far); });
     char what[64];
     std::snprintf(what, sizeof(what), "near/far %.0e", range.Near / range.Far);
     std::printf(" %s (near %g, far %g):\n", what, range.Near, range.Far);
@@ -368,7 +370,8 @@ void TestClippingRange(Frame& reference)
 // A 400 x 400 plane y = 0 (no other geometry), seen from height h.
 Scene Plane(double size = 200.0)
 {
-  return [size](vtkRenderer* renderer) {
+  return [size](vtkRenderer* renderer)
+  {
     const double o[3] = { -size, 0, -size }, a[3] = { size, 0, -size }, b[3] = { -size, 0, size };
     AddQuad(renderer, 1.0, o, a, b);
   };
@@ -406,20 +409,22 @@ void TestGrazing()
       pass->SetRadius(1.0);
       pass->SetBias(bias);
       Frame f;
-      RenderAO(Plane(), pass, f, Width, Height, [degrees](vtkRenderer* renderer) {
-        // Camera 0.5 above the plane looking down by `degrees`.
-        vtkCamera* camera = renderer->GetActiveCamera();
-        const double t = std::tan(degrees * 3.14159265358979 / 180.0);
-        camera->SetPosition(0.0, 0.5, 150.0);
-        camera->SetFocalPoint(0.0, 0.5 - 10.0 * t, 140.0);
-        camera->SetViewUp(0.0, 1.0, 0.0);
-        camera->SetViewAngle(30.0);
-        renderer->ResetCameraClippingRange();
-      });
+      RenderAO(Plane(), pass, f, Width, Height,
+        [degrees](vtkRenderer* renderer)
+        {
+          // Camera 0.5 above the plane looking down by `degrees`.
+          vtkCamera* camera = renderer->GetActiveCamera();
+          const double t = std::tan(degrees * 3.14159265358979 / 180.0);
+          camera->SetPosition(0.0, 0.5, 150.0);
+          camera->SetFocalPoint(0.0, 0.5 - 10.0 * t, 140.0);
+          camera->SetViewUp(0.0, 1.0, 0.0);
+          camera->SetViewAngle(30.0);
+          renderer->ResetCameraClippingRange();
+        });
       long valid = 0;
       const double worst = WorstUnoccluded(f, valid);
-      std::printf(" %.0f degrees, bias %.2f r: %ld valid px, max 1 - AV %.2e\n", degrees, bias,
-        valid, worst);
+      std::printf(
+        " %.0f degrees, bias %.2f r: %ld valid px, max 1 - AV %.2e\n", degrees, bias, valid, worst);
       Check(FiniteAndInRange(f), "AV and layers finite, AV in [0, 1]");
       if (bias > 0.0)
       {
@@ -454,13 +459,17 @@ void TestWindowSizes()
     }
     Frame f;
     const auto start = std::chrono::steady_clock::now();
-    RenderAO(Plane(50.0), pass, f, size, size, [](vtkRenderer* renderer) {
-      vtkCamera* camera = renderer->GetActiveCamera();
-      camera->SetPosition(0.0, 3.0, 4.0);
-      camera->SetFocalPoint(0.0, 0.0, -2.0);
-      camera->SetViewUp(0.0, 1.0, 0.0);
-      renderer->ResetCameraClippingRange();
-    }, size == 1, size == 1 ? 3 : 1);
+    RenderAO(
+      Plane(50.0), pass, f, size, size,
+      [](vtkRenderer* renderer)
+      {
+        vtkCamera* camera = renderer->GetActiveCamera();
+        camera->SetPosition(0.0, 3.0, 4.0);
+        camera->SetFocalPoint(0.0, 0.0, -2.0);
+        camera->SetViewUp(0.0, 1.0, 0.0);
+        renderer->ResetCameraClippingRange();
+      },
+      size == 1, size == 1 ? 3 : 1);
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     long valid = 0;
@@ -469,8 +478,9 @@ void TestWindowSizes()
     std::printf(" %d x %d: capture %d x %d, %ld valid px, max 1 - AV %.2e, %.2f s\n", size, size,
       captured[0], captured[1], valid, worst, seconds);
     Check(f.Ok && captured[0] == size && captured[1] == size, "capture has the window's size");
-    Check(FiniteAndInRange(f, size == 1), size == 1 ? "AV and layers finite, AV in [0, 1]"
-                                                  : "AV finite, in [0, 1] (layers not captured)");
+    Check(FiniteAndInRange(f, size == 1),
+      size == 1 ? "AV and layers finite, AV in [0, 1]"
+                : "AV finite, in [0, 1] (layers not captured)");
     // The plane fills the view; 1e-3 as for every unoccluded plane.
     Check(valid == static_cast<long>(size) * size && worst <= 1e-3, "AV = 1 within 1e-3");
     pass->ReleaseGraphicsResources(f.Window);
@@ -480,7 +490,8 @@ void TestWindowSizes()
 void TestSampleCounts(Frame& reference)
 {
   std::printf("sample counts (corner + box, scale 1):\n");
-  const double mean16 = [&] {
+  const double mean16 = [&]
+  {
     double sum = 0.0;
     long n = 0;
     vtkDataArray* a = Array(reference.AO, "RawAmbientVisibility");

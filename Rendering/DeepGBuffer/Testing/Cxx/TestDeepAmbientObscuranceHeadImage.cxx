@@ -9,20 +9,23 @@
 // quarter-resolution CT), so only 1.1 % of it is fully unoccluded (AV >
 // 0.999): required >= 0.5 %.
 
-#include "DeepGITestData.h"
 #include "DeepAmbientObscuranceImageTest.h"
+#include "DeepGITestData.h"
 #include "vtkDeepGBufferSceneLoader.h"
 
 int TestDeepAmbientObscuranceHeadImage(int argc, char* argv[])
 {
   const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepAmbientObscuranceHeadImage");
-  if (!DeepGITestData::Require(data, { "volumes/headsq/quarter.nhdr", "volumes/headsq/quarter.1", "volumes/headsq/quarter.93" }, "TestDeepAmbientObscuranceHeadImage"))
+  if (!DeepGITestData::Require(data,
+        { "volumes/headsq/quarter.nhdr", "volumes/headsq/quarter.1", "volumes/headsq/quarter.93" },
+        "TestDeepAmbientObscuranceHeadImage"))
   {
     return EXIT_FAILURE;
   }
   return DeepGBufferTest::RunAOImageTest(
     argc, argv,
-    [&data](vtkRenderer* renderer) {
+    [&data](vtkRenderer* renderer)
+    {
       vtkNew<vtkDeepGBufferSceneLoader> loader;
       loader->SetIsoValue(500.0);
       if (!loader->Load((data + "/volumes/headsq/quarter").c_str()) ||

@@ -237,7 +237,8 @@ int TestDeepAmbientObscuranceScene(int, char*[])
   right->SetPass(pass);
 
   // Images with and without the volume and the sphere, same cameras.
-  auto render = [&](bool volume, bool sphere) {
+  auto render = [&](bool volume, bool sphere)
+  {
     parts.Volume->SetVisibility(volume);
     parts.Sphere->SetVisibility(sphere);
     for (int i = 0; i < 3; ++i)
@@ -299,8 +300,8 @@ int TestDeepAmbientObscuranceScene(int, char*[])
   const ChangeCount both = CountChanges(withVolume, full, masked);
   std::printf("volume changes %ld left px (of %ld), %ld right px, %ld of %ld quad px; sphere "
               "changes %ld right px, %ld left px; sphere over volume frame: %ld right px\n",
-    volume.Left, viewportPixels - quadPixels, volume.Right, volume.Masked, quadPixels,
-    sphere.Right, sphere.Left + sphere.Masked, both.Right);
+    volume.Left, viewportPixels - quadPixels, volume.Right, volume.Masked, quadPixels, sphere.Right,
+    sphere.Left + sphere.Masked, both.Right);
   Check(quadPixels > viewportPixels / 20, "the opaque quad covers part of the left view");
   Check(volume.Left > viewportPixels / 20, "the volume is drawn");
   Check(volume.Right == 0, "the volume stays in its viewport");

@@ -20,13 +20,11 @@
 int TestDeepAmbientObscuranceTau(int, char*[])
 {
   // Copied from the paper's text, 15 values per row as printed there.
-  const int listing3[] = {
-    1, 1, 2, 3, 2, 5, 2, 3, 2, 3, 3, 5, 5, 3, 4,
-    7, 5, 5, 7, 9, 8, 5, 5, 7, 7, 7, 8, 5, 8, 11, 12, 7, 10, 13, 8,
-    11, 8, 7, 14, 11, 11, 13, 12, 13, 19, 17, 13, 11, 18, 19, 11, 11,
-    14, 17, 21, 15, 16, 17, 18, 13, 17, 11, 17, 19, 18, 25, 18, 19,
-    19, 29, 21, 19, 27, 31, 29, 21, 18, 17, 29, 31, 31, 23, 18, 25,
-    26, 25, 23, 19, 34, 19, 27, 21, 25, 39, 29, 17, 21, 27 };
+  const int listing3[] = { 1, 1, 2, 3, 2, 5, 2, 3, 2, 3, 3, 5, 5, 3, 4, 7, 5, 5, 7, 9, 8, 5, 5, 7,
+    7, 7, 8, 5, 8, 11, 12, 7, 10, 13, 8, 11, 8, 7, 14, 11, 11, 13, 12, 13, 19, 17, 13, 11, 18, 19,
+    11, 11, 14, 17, 21, 15, 16, 17, 18, 13, 17, 11, 17, 19, 18, 25, 18, 19, 19, 29, 21, 19, 27, 31,
+    29, 21, 18, 17, 29, 31, 31, 23, 18, 25, 26, 25, 23, 19, 34, 19, 27, 21, 25, 39, 29, 17, 21,
+    27 };
   const int count = static_cast<int>(sizeof(listing3) / sizeof(listing3[0]));
   int failures = 0;
   if (count != 98 || vtkDeepAmbientObscurancePass::MAXIMUM_NUMBER_OF_SAMPLES != 98)
@@ -58,7 +56,8 @@ int TestDeepAmbientObscuranceTau(int, char*[])
   int warnings = 0;
   vtkNew<vtkCallbackCommand> onWarning;
   onWarning->SetClientData(&warnings);
-  onWarning->SetCallback([](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
+  onWarning->SetCallback(
+    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
   pass->AddObserver(vtkCommand::WarningEvent, onWarning);
   pass->SetNumberOfSamples(99);
   if (pass->GetNumberOfSamples() != 98 || warnings != 1)
@@ -70,8 +69,8 @@ int TestDeepAmbientObscuranceTau(int, char*[])
   pass->SetNumberOfSamples(0);
   if (pass->GetNumberOfSamples() != 1 || warnings != 2)
   {
-    std::printf("N = 0 gave %d with %d warnings, expected 1 with 2\n", pass->GetNumberOfSamples(),
-      warnings);
+    std::printf(
+      "N = 0 gave %d with %d warnings, expected 1 with 2\n", pass->GetNumberOfSamples(), warnings);
     ++failures;
   }
   pass->SetNumberOfSamples(9);

@@ -183,7 +183,8 @@ void TestOffIsIdentical()
 void TestConvergence()
 {
   const int w = 200, h = 160;
-  auto configure = [](vtkDeepAmbientObscurancePass* pass, int n, double alpha) {
+  auto configure = [](vtkDeepAmbientObscurancePass* pass, int n, double alpha)
+  {
     pass->SetRadius(1.0);
     pass->SetNumberOfSamples(n);
     pass->SetBlurRadius(0);
@@ -304,8 +305,8 @@ void TestMovingCamera()
         // Classify over the 3x3 texels around the nearest one, so that float
         // rounding on the GPU cannot change the outcome.
         const int tx = static_cast<int>(std::floor(px)), ty = static_cast<int>(std::floor(py));
-        bool outside = C[3] <= 0.0 || dr <= 0.0 || px < -1.0 || py < -1.0 || px >= w + 1.0 ||
-          py >= h + 1.0;
+        bool outside =
+          C[3] <= 0.0 || dr <= 0.0 || px < -1.0 || py < -1.0 || px >= w + 1.0 || py >= h + 1.0;
         bool allBad = true, allGood = true, nearEdge = false;
         std::vector<double> candidates;
         if (!outside)

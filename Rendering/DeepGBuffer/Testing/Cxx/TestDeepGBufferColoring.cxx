@@ -14,6 +14,7 @@
 #include "DeepGBufferTestUtilities.h"
 
 #include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLookupTable.h"
@@ -21,7 +22,6 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
-#include "vtkColorTransferFunction.h"
 #include "vtkSmartVolumeMapper.h"
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
@@ -196,8 +196,8 @@ int TestDeepGBufferColoring(int, char*[])
     for (int c = 0; c < 3; ++c)
     {
       error = std::max(error, std::abs(ambient->GetComponent(pixel, c) - expected[c]));
-      leastDirect = std::min(
-        leastDirect, radiance->GetComponent(pixel, c) - ambient->GetComponent(pixel, c));
+      leastDirect =
+        std::min(leastDirect, radiance->GetComponent(pixel, c) - ambient->GetComponent(pixel, c));
     }
     std::printf("  ambient (%.3f %.3f %.3f), radiance - ambient >= %.3f\n",
       ambient->GetComponent(pixel, 0), ambient->GetComponent(pixel, 1),

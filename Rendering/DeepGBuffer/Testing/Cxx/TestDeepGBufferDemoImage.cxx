@@ -11,7 +11,8 @@ int TestDeepGBufferDemoImage(int argc, char* argv[])
 {
   return DeepGBufferTest::RunLayerImageTest(
     argc, argv,
-    [](vtkRenderer* renderer) {
+    [](vtkRenderer* renderer)
+    {
       vtkNew<vtkDeepGBufferDemoScene> scene;
       scene->SetTargetNumberOfTriangles(20000);
       scene->Populate(renderer);

@@ -4,8 +4,8 @@
 // the automatic minimum separation (1.5 % of the scene's diagonal).
 // Threshold 0.5, as for the demo scene.
 
-#include "DeepGITestData.h"
 #include "DeepGBufferImageTest.h"
+#include "DeepGITestData.h"
 
 #include "vtkLight.h"
 #include "vtkPLYReader.h"
@@ -22,7 +22,8 @@ int TestDeepGBufferDragonImage(int argc, char* argv[])
   }
   return DeepGBufferTest::RunLayerImageTest(
     argc, argv,
-    [&data](vtkRenderer* renderer) {
+    [&data](vtkRenderer* renderer)
+    {
       vtkNew<vtkPLYReader> reader;
       reader->SetFileName((data + "/meshes/dragon.ply").c_str());
       vtkNew<vtkPolyDataNormals> normals;

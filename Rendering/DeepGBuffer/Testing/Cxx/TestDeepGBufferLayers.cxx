@@ -10,8 +10,8 @@
 // - with dz = 0 the Cornell box's duplicate faces come back in layer 1,
 //   with dz > 0 they do not.
 
-#include "DeepGITestData.h"
 #include "DeepGBufferTestUtilities.h"
+#include "DeepGITestData.h"
 
 #include "vtkCamera.h"
 #include "vtkDeepGBufferDemoScene.h"
@@ -33,8 +33,8 @@ using SceneBuilder = std::function<bool(vtkRenderWindow*, vtkRenderer*)>;
 
 // Renders `frames` frames of a still camera and captures the layers.
 // Returns the window so that callers can read its framebuffer.
-vtkSmartPointer<vtkRenderWindow> RenderScene(const SceneBuilder& build, vtkDeepGBufferPass* pass,
-  vtkImageData* capture, int frames = 3)
+vtkSmartPointer<vtkRenderWindow> RenderScene(
+  const SceneBuilder& build, vtkDeepGBufferPass* pass, vtkImageData* capture, int frames = 3)
 {
   auto window = MakeWindow(Width, Height);
   vtkNew<vtkRenderer> renderer;
@@ -135,8 +135,7 @@ bool CheckScene(const SceneBuilder& build, const char* name, double dz)
     bool finite = AllFinite(capture);
     SeparationReport separation = CheckSeparation(capture, 1, dz, 1e-6);
     LayerDifference layer0 = CompareLayer(capture, reference, 0, EquivalenceTolerance);
-    LayerDifference layer1 =
-      CompareLayer(capture, reference, 1, EquivalenceTolerance, nullptr, dz);
+    LayerDifference layer1 = CompareLayer(capture, reference, 1, EquivalenceTolerance, nullptr, dz);
     std::printf("%s/%s: %d geometry pass(es), layer 1: %ld px, separation violations %ld "
                 "(worst excess over dz %g), vs DEPTH_PEEL: layer 0 %ld / layer 1 %ld of %ld px "
                 "differ (mask %ld, depth %ld, rounding ties %ld)\n",
@@ -164,7 +163,8 @@ long DuplicatePixels(vtkImageData* capture)
   long count = 0;
   for (vtkIdType p = 0; p < d1->GetNumberOfTuples(); ++p)
   {
-    if (v1->GetTuple1(p) && std::abs(d1->GetTuple1(p) - d0->GetTuple1(p)) <= 1e-4 * d1->GetTuple1(p))
+    if (v1->GetTuple1(p) &&
+      std::abs(d1->GetTuple1(p) - d0->GetTuple1(p)) <= 1e-4 * d1->GetTuple1(p))
     {
       ++count;
     }
@@ -176,12 +176,16 @@ long DuplicatePixels(vtkImageData* capture)
 int TestDeepGBufferLayers(int argc, char* argv[])
 {
   const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepGBufferLayers");
-  if (!DeepGITestData::Require(data, { "scenes/cornell-original/CornellBox-Original.obj", "scenes/cornell-original/CornellBox-Original.mtl" }, "TestDeepGBufferLayers"))
+  if (!DeepGITestData::Require(data,
+        { "scenes/cornell-original/CornellBox-Original.obj",
+          "scenes/cornell-original/CornellBox-Original.mtl" },
+        "TestDeepGBufferLayers"))
   {
     return EXIT_FAILURE;
   }
 
-  SceneBuilder demo = [](vtkRenderWindow*, vtkRenderer* renderer) {
+  SceneBuilder demo = [](vtkRenderWindow*, vtkRenderer* renderer)
+  {
     vtkNew<vtkDeepGBufferDemoScene> scene;
     scene->SetTargetNumberOfTriangles(20000);
     scene->Populate(renderer);
@@ -189,7 +193,8 @@ int TestDeepGBufferLayers(int argc, char* argv[])
     renderer->ResetCameraClippingRange();
     return true;
   };
-  SceneBuilder cornell = [data](vtkRenderWindow*, vtkRenderer* renderer) {
+  SceneBuilder cornell = [data](vtkRenderWindow*, vtkRenderer* renderer)
+  {
     vtkNew<vtkDeepGBufferSceneLoader> loader;
     if (!loader->Load((data + "/scenes/cornell-original/CornellBox-Original.obj").c_str()) ||
       loader->Populate(renderer) == 0)
@@ -222,8 +227,8 @@ int TestDeepGBufferLayers(int argc, char* argv[])
     }
     pass->ReleaseGraphicsResources(window);
     long duplicates = DuplicatePixels(capture);
-    std::printf("cornell-original, dz = %g: %ld layer-1 pixels repeat layer 0's surface\n", dz,
-      duplicates);
+    std::printf(
+      "cornell-original, dz = %g: %ld layer-1 pixels repeat layer 0's surface\n", dz, duplicates);
     if ((dz == 0.0) != (duplicates > 0))
     {
       std::printf("FAILED: duplicates expected only without minimum separation\n");

@@ -218,7 +218,8 @@ bool TestGlslEncoder()
   }
   if (byteMismatches)
   {
-    std::printf("GLSL and C++ encoders differ by more than one level on %d values\n", byteMismatches);
+    std::printf(
+      "GLSL and C++ encoders differ by more than one level on %d values\n", byteMismatches);
     return false;
   }
   return CheckStatistics("GLSL encoder", maximum, sum, n);

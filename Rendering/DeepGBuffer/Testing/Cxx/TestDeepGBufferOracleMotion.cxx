@@ -122,8 +122,8 @@ OracleMotion RunPath(int oracle, double dz)
   renderer->AddActor(sphere);
   double bounds[6];
   scene->GetBounds(bounds);
-  const double center[3] = { 0.5 * (bounds[0] + bounds[1]), bounds[2] + 0.3 * (bounds[3] - bounds[2]),
-    0.5 * (bounds[4] + bounds[5]) };
+  const double center[3] = { 0.5 * (bounds[0] + bounds[1]),
+    bounds[2] + 0.3 * (bounds[3] - bounds[2]), 0.5 * (bounds[4] + bounds[5]) };
 
   vtkNew<vtkDeepGBufferPass> reference, pass;
   reference->SetOracleToDepthPeel();
@@ -138,8 +138,8 @@ OracleMotion RunPath(int oracle, double dz)
   for (int f = 0; f < RenderedFrames; ++f)
   {
     scene->SetCameraToPathFrame(renderer->GetActiveCamera(), f, PathFrames);
-    sphere->SetPosition(center[0] + 0.25 * (bounds[1] - bounds[0]) * std::sin(0.02 * f),
-      center[1], center[2] + 0.15 * (bounds[5] - bounds[4]) * std::cos(0.02 * f));
+    sphere->SetPosition(center[0] + 0.25 * (bounds[1] - bounds[0]) * std::sin(0.02 * f), center[1],
+      center[2] + 0.15 * (bounds[5] - bounds[4]) * std::cos(0.02 * f));
     renderer->ResetCameraClippingRange();
 
     auto referenceCapture = vtkSmartPointer<vtkImageData>::New();
@@ -189,8 +189,9 @@ int TestDeepGBufferOracleMotion(int, char*[])
   for (int oracle = vtkDeepGBufferPass::PREVIOUS; oracle <= vtkDeepGBufferPass::DELAY; ++oracle)
   {
     results[oracle] = RunPath(oracle, dz);
-    std::printf("%-9s layer-1 pixels differing from DEPTH_PEEL: mean %.4f, max %.4f per frame "
-                "(%ld pixels in all, %ld rounding ties); %.1f%% of them within %d px of a silhouette\n",
+    std::printf(
+      "%-9s layer-1 pixels differing from DEPTH_PEEL: mean %.4f, max %.4f per frame "
+      "(%ld pixels in all, %ld rounding ties); %.1f%% of them within %d px of a silhouette\n",
       vtkDeepGBufferPass::GetOracleAsString(oracle), results[oracle].MeanFraction,
       results[oracle].MaximumFraction, results[oracle].Different, results[oracle].Ties,
       100.0 * results[oracle].SilhouetteShare, SilhouetteRadius);

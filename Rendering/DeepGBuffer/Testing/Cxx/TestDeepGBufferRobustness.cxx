@@ -142,7 +142,8 @@ void TestLayerCounts()
       pass->SetNumberOfLayers(layers);
       pass->SetMinimumSeparation(0.25);
       pass->DeepLayerBackfaceCullingOff(); // the sphere's far side makes layer 2
-      auto capture = RenderAndCapture(pass, [](vtkRenderer* r) { AddSphereAndWall(r); }, 3);
+      auto capture = RenderAndCapture(
+        pass, [](vtkRenderer* r) { AddSphereAndWall(r); }, 3);
       const bool shape = capture && Layer(capture, "Depth", layers - 1) &&
         !Layer(capture, "Depth", layers) && pass->GetEffectiveNumberOfLayers() == layers;
       std::string what = std::to_string(layers) + " layer(s) with " +
@@ -156,7 +157,8 @@ void TestLayerCounts()
   EventCounter warnings(predict, vtkCommand::WarningEvent);
   predict->SetOracleToPredict();
   predict->SetNumberOfLayers(3);
-  auto capture = RenderAndCapture(predict, [](vtkRenderer* r) { AddSphereAndWall(r); }, 3);
+  auto capture = RenderAndCapture(
+    predict, [](vtkRenderer* r) { AddSphereAndWall(r); }, 3);
   Check(capture && warnings.Count == 1 &&
       predict->GetEffectiveOracle() == vtkDeepGBufferPass::REPROJECT,
     "PREDICT with 3 layers warns and uses REPROJECT");
@@ -211,7 +213,8 @@ void TestEmptyAndChangingScenes()
 void TestViewportsAndProjection()
 {
   // Two renderers side by side share one pass; the right one is parallel.
-  auto build = [](vtkRenderWindow* window, vtkRenderer* left, vtkRenderer* right) {
+  auto build = [](vtkRenderWindow* window, vtkRenderer* left, vtkRenderer* right)
+  {
     left->SetViewport(0.0, 0.0, 0.5, 1.0);
     right->SetViewport(0.5, 0.0, 1.0, 1.0);
     window->AddRenderer(left);
@@ -307,7 +310,8 @@ void TestMappersAndTranslucency()
   renderer->SetWorldPoint(world);
   renderer->WorldToDisplay();
   renderer->GetDisplayPoint(display);
-  const vtkIdType pixel = static_cast<vtkIdType>(display[1]) * 200 + static_cast<vtkIdType>(display[0]);
+  const vtkIdType pixel =
+    static_cast<vtkIdType>(display[1]) * 200 + static_cast<vtkIdType>(display[0]);
   vtkDataArray* colour = rgb->GetPointData()->GetScalars();
   vtkDataArray* albedo = Layer(layers, "Albedo", 0);
   vtkDataArray* radiance = Layer(layers, "Radiance", 0);

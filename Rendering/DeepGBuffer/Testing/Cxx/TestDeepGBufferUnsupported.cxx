@@ -3,9 +3,9 @@
 // glCopyImageSubData). Each pass (vtkDeepGBufferPass,
 // vtkDeepAmbientObscurancePass, vtkDeepRadiosityPass and vtkDeepGIPass) must say so once with a
 // warning over three frames and render VTK's plain image exactly; a capture
-// fails with one error (for vtkDeepGIPass: its G-buffer's capture), not a crash; rendering after ReleaseGraphicsResources still works
-// (the check, and its warning, are made again for the released context).
-// On a driver that ignores Mesa's overrides the test is skipped.
+// fails with one error (for vtkDeepGIPass: its G-buffer's capture), not a crash; rendering after
+// ReleaseGraphicsResources still works (the check, and its warning, are made again for the released
+// context). On a driver that ignores Mesa's overrides the test is skipped.
 
 #include "DeepGBufferTestUtilities.h"
 
@@ -80,25 +80,25 @@ int TestDeepGBufferUnsupported(int, char*[])
 {
   vtkNew<vtkDeepGBufferPass> gbuffer;
   const int gbufferResult = CheckPass(gbuffer,
-    [&](vtkImageData* out, vtkRenderer* renderer) { return gbuffer->CaptureLayers(out, renderer); });
+    [&](vtkImageData* out, vtkRenderer* renderer)
+    { return gbuffer->CaptureLayers(out, renderer); });
   if (gbufferResult == 125)
   {
     return 125;
   }
   vtkNew<vtkDeepAmbientObscurancePass> ao;
-  const int aoResult = CheckPass(ao, [&](vtkImageData* out, vtkRenderer* renderer) {
-    return ao->CaptureAmbientVisibility(out, renderer);
-  });
+  const int aoResult = CheckPass(ao,
+    [&](vtkImageData* out, vtkRenderer* renderer)
+    { return ao->CaptureAmbientVisibility(out, renderer); });
   vtkNew<vtkDeepRadiosityPass> radiosity;
-  const int radiosityResult = CheckPass(radiosity, [&](vtkImageData* out, vtkRenderer* renderer) {
-    return radiosity->CaptureIrradiance(out, renderer);
-  });
+  const int radiosityResult = CheckPass(radiosity,
+    [&](vtkImageData* out, vtkRenderer* renderer)
+    { return radiosity->CaptureIrradiance(out, renderer); });
   vtkNew<vtkDeepGIPass> gi;
   const int giResult = CheckPass(
     gi,
-    [&](vtkImageData* out, vtkRenderer* renderer) {
-      return gi->GetGBufferPass()->CaptureLayers(out, renderer);
-    },
+    [&](vtkImageData* out, vtkRenderer* renderer)
+    { return gi->GetGBufferPass()->CaptureLayers(out, renderer); },
     gi->GetGBufferPass());
   return (gbufferResult == 0 && aoResult == 0 && radiosityResult == 0 && giResult == 0) ? 0 : 1;
 }

@@ -25,10 +25,10 @@
 
 #include "DeepRadiosityTest.h"
 
+#include "vtkAssembly.h"
 #include "vtkDeepAmbientObscurancePass.h"
 #include "vtkDeepGIPass.h"
 #include "vtkDeepReflectionPass.h"
-#include "vtkAssembly.h"
 #include "vtkLightCollection.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
@@ -387,8 +387,7 @@ struct ConvergenceObserver
     grab->ShouldRerenderOff();
     grab->SetInputBufferTypeToRGB();
     grab->Update();
-    auto* rgb =
-      vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+    auto* rgb = vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
     std::vector<unsigned char> image(
       rgb->GetPointer(0), rgb->GetPointer(0) + rgb->GetNumberOfValues());
     if (!self->Previous.empty())
@@ -417,8 +416,8 @@ void CheckConvergeTolerance(Run& run, double floor)
 
   const double tolerance = 2.0 * floor / 255.0;
   const int early = gi->Converge(run.Renderer, 40, tolerance);
-  std::printf("Converge(40, %.4f/255): %d frames, last change %.4f/255\n", 255.0 * tolerance,
-    early, 255.0 * gi->GetLastConvergenceChange());
+  std::printf("Converge(40, %.4f/255): %d frames, last change %.4f/255\n", 255.0 * tolerance, early,
+    255.0 * gi->GetLastConvergenceChange());
   Check(early >= 2 && early < 40 && gi->GetLastConvergenceReached() &&
       gi->GetLastConvergenceChange() <= tolerance,
     "with a tolerance of 2 x the floor it stops early, at a change within the tolerance");
@@ -500,8 +499,8 @@ void CheckBadInput()
   gi->SetPreset(static_cast<const char*>(nullptr));
   Check(gi->GetPreset() == vtkDeepGIPass::HIGH_QUALITY && warnings.Count == 6,
     "unknown preset names warn and change nothing");
-  Check(gi->SetEffects(" AO, reflections ") && gi->GetAmbientObscurance() &&
-      !gi->GetRadiosity() && gi->GetReflections(),
+  Check(gi->SetEffects(" AO, reflections ") && gi->GetAmbientObscurance() && !gi->GetRadiosity() &&
+      gi->GetReflections(),
     "SetEffects: named effects on, the others off, case and spaces ignored");
   Check(gi->SetEffects("none") && !gi->GetAmbientObscurance() && !gi->GetRadiosity() &&
       !gi->GetReflections() && gi->SetEffects("all") && gi->GetAmbientObscurance() &&

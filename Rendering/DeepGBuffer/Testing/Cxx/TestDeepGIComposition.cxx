@@ -86,7 +86,9 @@ double Brightest(vtkImageData* image)
 int TestDeepGIComposition(int argc, char* argv[])
 {
   const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepGIComposition");
-  if (!DeepGITestData::Require(data, { "volumes/headsq/quarter.nhdr", "volumes/headsq/quarter.1", "volumes/headsq/quarter.93" }, "TestDeepGIComposition"))
+  if (!DeepGITestData::Require(data,
+        { "volumes/headsq/quarter.nhdr", "volumes/headsq/quarter.1", "volumes/headsq/quarter.93" },
+        "TestDeepGIComposition"))
   {
     return EXIT_FAILURE;
   }

@@ -41,7 +41,9 @@ constexpr double MEAN_LOW = -5.2, MEAN_HIGH = -3.5, FRACTION_LOW = 0.41, FRACTIO
 int TestDeepGIHeadImage(int argc, char* argv[])
 {
   const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepGIHeadImage");
-  if (!DeepGITestData::Require(data, { "volumes/headsq/quarter.nhdr", "volumes/headsq/quarter.1", "volumes/headsq/quarter.93" }, "TestDeepGIHeadImage"))
+  if (!DeepGITestData::Require(data,
+        { "volumes/headsq/quarter.nhdr", "volumes/headsq/quarter.1", "volumes/headsq/quarter.93" },
+        "TestDeepGIHeadImage"))
   {
     return EXIT_FAILURE;
   }

@@ -87,8 +87,8 @@ struct Result
 // `damping`, no temporal filter): `guardFraction` of the height as guard
 // band, `widen` pixels of widened view (the no-guard-band reference),
 // `shaded` of the guard band shaded.
-void Render(Result& r, double guardFraction, int widen, double shaded, double damping = 0.0,
-  int frames = 1)
+void Render(
+  Result& r, double guardFraction, int widen, double shaded, double damping = 0.0, int frames = 1)
 {
   r.Window = MakeWindow(Width + 2 * widen, Height + 2 * widen);
   r.Renderer = vtkSmartPointer<vtkRenderer>::New();
@@ -210,10 +210,10 @@ void TestExactness()
     Compare(guarded.Layers, wide.Layers, "Radiance_0", Guard, guarded.Layers, wide.Layers, 2e-3);
   const Comparison av = Compare(guarded.Visibility, wide.Visibility, "AmbientVisibility", Guard,
     guarded.Layers, wide.Layers, 2e-3);
-  const Comparison raw = Compare(guarded.Radiosity, wide.Radiosity, "RawIrradiance_0", Guard,
-    guarded.Layers, wide.Layers, 2e-3);
-  const Comparison filtered = Compare(guarded.Radiosity, wide.Radiosity, "Irradiance_0", Guard,
-    guarded.Layers, wide.Layers, 2e-3);
+  const Comparison raw = Compare(
+    guarded.Radiosity, wide.Radiosity, "RawIrradiance_0", Guard, guarded.Layers, wide.Layers, 2e-3);
+  const Comparison filtered = Compare(
+    guarded.Radiosity, wide.Radiosity, "Irradiance_0", Guard, guarded.Layers, wide.Layers, 2e-3);
   Report("guard band vs wide: layer 0 distance", depth);
   Report("guard band vs wide: layer 0 radiance", radiance);
   Report("guard band vs wide: AV", av);
@@ -225,8 +225,8 @@ void TestExactness()
   Check(MostlyEqual(raw), "raw irradiance = the wide render's centre");
   Check(MostlyEqual(filtered), "filtered irradiance = the wide render's centre");
 
-  const Comparison plainAV = Compare(plain.Visibility, wide.Visibility, "AmbientVisibility",
-    Guard, plain.Layers, wide.Layers, 2e-3);
+  const Comparison plainAV = Compare(
+    plain.Visibility, wide.Visibility, "AmbientVisibility", Guard, plain.Layers, wide.Layers, 2e-3);
   const Comparison plainE = Compare(
     plain.Radiosity, wide.Radiosity, "Irradiance_0", Guard, plain.Layers, wide.Layers, 2e-3);
   Report("no guard band vs wide: AV", plainAV);
@@ -372,8 +372,8 @@ void TestBadValues()
     "huge guard band clamped to the maximum");
   // The pixel count: rounded up to 8, limited by the largest texture.
   bool limited = true;
-  Check(vtkDeepGBufferPass::ComputeGuardBandPixels(0.1, 1920, 1080, 16384, &limited) == 112 &&
-      !limited,
+  Check(
+    vtkDeepGBufferPass::ComputeGuardBandPixels(0.1, 1920, 1080, 16384, &limited) == 112 && !limited,
     "0.1 of 1080 is 108 pixels, rounded up to 112");
   Check(vtkDeepGBufferPass::ComputeGuardBandPixels(0.0, 640, 480, 16384) == 0 &&
       vtkDeepGBufferPass::ComputeGuardBandPixels(0.001, 640, 480, 16384) == 0 &&
@@ -382,8 +382,8 @@ void TestBadValues()
   Check(vtkDeepGBufferPass::ComputeGuardBandPixels(0.5, 12000, 6000, 16384, &limited) == 2192 &&
       limited,
     "a band that would exceed the largest texture is limited to fit (12000 + 2 x 2192 <= 16384)");
-  Check(vtkDeepGBufferPass::ComputeGuardBandPixels(0.1, 20000, 100, 16384, &limited) == 0 &&
-      limited,
+  Check(
+    vtkDeepGBufferPass::ComputeGuardBandPixels(0.1, 20000, 100, 16384, &limited) == 0 && limited,
     "a frame wider than the largest texture gets no band");
   Check(vtkDeepGBufferPass::ComputeGuardBandPixels(std::nan(""), 640, 480, 16384) == 0 &&
       vtkDeepGBufferPass::ComputeGuardBandPixels(9.0, 640, 480, 16384) == 240,

@@ -441,8 +441,8 @@ void TestNormalTest()
       BlueExcess(f, largest[e][on], mean[e][on], pixels[e][on]);
       std::printf("%s, n_Y test %s: %ld floor pixels behind the panel, blue excess mean %.4g, "
                   "largest %.4g\n",
-        vtkDeepRadiosityPass::GetEstimatorAsString(estimators[e]), on ? "on" : "off",
-        pixels[e][on], mean[e][on], largest[e][on]);
+        vtkDeepRadiosityPass::GetEstimatorAsString(estimators[e]), on ? "on" : "off", pixels[e][on],
+        mean[e][on], largest[e][on]);
       pass->ReleaseGraphicsResources(f.Window);
     }
   }

@@ -115,7 +115,10 @@ std::pair<double, double> Measure(const std::string& sceneName, const std::strin
 int TestDeepRadiosityConfidence(int argc, char* argv[])
 {
   const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepRadiosityConfidence");
-  if (!DeepGITestData::Require(data, { "scenes/cornell-original/CornellBox-Original.obj", "scenes/cornell-original/CornellBox-Original.mtl" }, "TestDeepRadiosityConfidence"))
+  if (!DeepGITestData::Require(data,
+        { "scenes/cornell-original/CornellBox-Original.obj",
+          "scenes/cornell-original/CornellBox-Original.mtl" },
+        "TestDeepRadiosityConfidence"))
   {
     return EXIT_FAILURE;
   }

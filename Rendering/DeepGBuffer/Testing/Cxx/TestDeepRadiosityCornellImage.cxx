@@ -61,7 +61,10 @@ struct Region
 int TestDeepRadiosityCornellImage(int argc, char* argv[])
 {
   const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepRadiosityCornellImage");
-  if (!DeepGITestData::Require(data, { "scenes/cornell-original/CornellBox-Original.obj", "scenes/cornell-original/CornellBox-Original.mtl" }, "TestDeepRadiosityCornellImage"))
+  if (!DeepGITestData::Require(data,
+        { "scenes/cornell-original/CornellBox-Original.obj",
+          "scenes/cornell-original/CornellBox-Original.mtl" },
+        "TestDeepRadiosityCornellImage"))
   {
     return EXIT_FAILURE;
   }

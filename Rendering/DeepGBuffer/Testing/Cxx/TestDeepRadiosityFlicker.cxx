@@ -169,8 +169,8 @@ Measure Flicker(double alpha, double guardBand)
   std::printf("alpha %.2f, guard band %.2f: %ld reprojected pixels, mean |change| %.5f, mean "
               "indirect luminance %.5f, relative flicker %.4f; %ld entering pixels, mean "
               "|change| %.5f\n",
-    alpha, guardBand, pixels, pixels ? change / pixels : 0.0, pixels ? level / pixels : 0.0,
-    m.All, entering, m.Entering);
+    alpha, guardBand, pixels, pixels ? change / pixels : 0.0, pixels ? level / pixels : 0.0, m.All,
+    entering, m.Entering);
   Check(pixels > 10000, "enough pixels are seen in consecutive frames");
   Check(entering > 100, "surfaces enter the frame along the path");
   renderer->SetPass(nullptr);

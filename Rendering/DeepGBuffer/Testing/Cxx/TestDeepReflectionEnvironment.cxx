@@ -204,7 +204,8 @@ int TestDeepReflectionEnvironment(int, char*[])
     window->Render();
     vtkNew<vtkImageData> hdrReflections;
     pass->CaptureReflections(hdrReflections, renderer);
-    auto scaled = [&equirectangular](const Vector& r, const Vector& rc) -> Vector {
+    auto scaled = [&equirectangular](const Vector& r, const Vector& rc) -> Vector
+    {
       const Vector e = equirectangular(r, rc);
       return { 4.0 * e[0], 4.0 * e[1], 4.0 * e[2] };
     };

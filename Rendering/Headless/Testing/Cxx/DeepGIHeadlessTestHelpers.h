@@ -195,7 +195,8 @@ inline bool Near(const unsigned char* p, const double c[3], int tol)
 inline int CheckSphereImage(vtkRenderWindow* rw, const char* label)
 {
   vtkNew<vtkUnsignedCharArray> pixels;
-  if (rw->GetPixelData(0, 0, Size - 1, Size - 1, 1, pixels) != 1 && pixels->GetNumberOfValues() == 0)
+  if (rw->GetPixelData(0, 0, Size - 1, Size - 1, 1, pixels) != 1 &&
+    pixels->GetNumberOfValues() == 0)
   {
     std::fprintf(stderr, "%s: GetPixelData failed\n", label);
     return 1;
@@ -236,8 +237,8 @@ inline int CheckSphereImage(vtkRenderWindow* rw, const char* label)
       {
         if (failures < 5)
         {
-          std::fprintf(stderr, "%s: pixel (%d,%d) = (%d,%d,%d): %s\n", label, x, y, p[0], p[1],
-            p[2], problem);
+          std::fprintf(
+            stderr, "%s: pixel (%d,%d) = (%d,%d,%d): %s\n", label, x, y, p[0], p[1], p[2], problem);
         }
         ++failures;
       }
@@ -246,8 +247,8 @@ inline int CheckSphereImage(vtkRenderWindow* rw, const char* label)
   const double expectedArea = M_PI * DiscRadiusPx * DiscRadiusPx;
   if (std::fabs(sphereCount - expectedArea) > 0.02 * expectedArea)
   {
-    std::fprintf(stderr, "%s: sphere covers %d pixels, expected %.0f +- 2%%\n", label,
-      sphereCount, expectedArea);
+    std::fprintf(stderr, "%s: sphere covers %d pixels, expected %.0f +- 2%%\n", label, sphereCount,
+      expectedArea);
     ++failures;
   }
   std::printf("%s: %d sphere pixels (pi r^2 = %.0f), %d failures\n", label, sphereCount,

@@ -18,7 +18,8 @@ int TestDeepGIRenderWindowFactory(int, char*[])
     return EXIT_FAILURE;
   }
   int failures = 0;
-  auto expect = [&](bool ok, const char* what) {
+  auto expect = [&](bool ok, const char* what)
+  {
     if (!ok)
     {
       std::fprintf(stderr, "FAILED: %s\n", what);

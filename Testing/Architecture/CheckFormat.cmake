@@ -1,0 +1,26 @@
+# The C++ sources follow the project's .clang-format (VTK's style): every
+# file under the source folders is checked with clang-format --dry-run.
+#   cmake -DSOURCE=<source tree> -DCLANG_FORMAT=<clang-format> -P CheckFormat.cmake
+set(files)
+foreach (folder IN ITEMS Core Scenes IO Reference Rendering Examples Testing)
+  file(GLOB_RECURSE found "${SOURCE}/${folder}/*.h" "${SOURCE}/${folder}/*.cxx")
+  list(APPEND files ${found})
+endforeach ()
+list(FILTER files EXCLUDE REGEX "/Testing/Data/")
+list(LENGTH files count)
+if (count EQUAL 0)
+  message(FATAL_ERROR "no C++ sources found under ${SOURCE}")
+endif ()
+set(unformatted)
+foreach (file IN LISTS files)
+  execute_process(COMMAND "${CLANG_FORMAT}" --dry-run -Werror "--style=file" "${file}"
+    WORKING_DIRECTORY "${SOURCE}" RESULT_VARIABLE rc OUTPUT_QUIET ERROR_QUIET)
+  if (rc)
+    list(APPEND unformatted "${file}")
+  endif ()
+endforeach ()
+if (unformatted)
+  string(REPLACE ";" "\n  " unformatted "${unformatted}")
+  message(FATAL_ERROR "not formatted (clang-format -i FILE):\n  ${unformatted}")
+endif ()
+message(STATUS "${count} C++ files follow .clang-format")
