@@ -155,6 +155,7 @@
 
 #include "vtkDeepGIReferenceModule.h" // for export macro
 #include "vtkDeepGIReferenceObscurance.h"
+#include "vtkDeepGISetGet.h" // for vtkDeepGISetClampMacro
 
 #include <memory> // for std::unique_ptr
 
@@ -307,7 +308,7 @@ public:
    * [0, 1]; default 1. The scene polydata of vtkDeepGBufferDemoScene and
    * vtkDeepGBufferSceneLoader carry their actors' Diffuse as field data.
    */
-  vtkSetClampMacro(DiffuseCoefficient, double, 0.0, 1.0);
+  vtkDeepGISetClampMacro(DiffuseCoefficient, double, 0.0, 1.0);
   vtkGetMacro(DiffuseCoefficient, double);
   ///@}
 

@@ -101,6 +101,7 @@
 #define vtkDeepGIReferenceObscurance_h
 
 #include "vtkDeepGIReferenceModule.h" // for export macro
+#include "vtkDeepGISetGet.h"          // for vtkDeepGISetClampMacro
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for ivars
 
@@ -142,7 +143,7 @@ public:
    * ignores occluders close to the tangent plane. Set it to the
    * screen-space pass's value when comparing with it.
    */
-  vtkSetClampMacro(Bias, double, 0.0, VTK_DOUBLE_MAX);
+  vtkDeepGISetClampMacro(Bias, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Bias, double);
   ///@}
 
@@ -151,7 +152,7 @@ public:
    * eps of eq. 2 (world units squared, >= 0; default 0): regularises
    * 1 / |v| for very near occluders.
    */
-  vtkSetClampMacro(Epsilon, double, 0.0, VTK_DOUBLE_MAX);
+  vtkDeepGISetClampMacro(Epsilon, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Epsilon, double);
   ///@}
 
@@ -188,7 +189,7 @@ public:
    * |X - scene centre|) to avoid self-intersection; dimensionless,
    * [0, 0.01]; default 1e-5.
    */
-  vtkSetClampMacro(RelativeOffset, double, 0.0, 0.01);
+  vtkDeepGISetClampMacro(RelativeOffset, double, 0.0, 0.01);
   vtkGetMacro(RelativeOffset, double);
   ///@}
 

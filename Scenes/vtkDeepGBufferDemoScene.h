@@ -45,6 +45,7 @@
 #define vtkDeepGBufferDemoScene_h
 
 #include "vtkDeepGIScenesModule.h" // for export macro
+#include "vtkDeepGISetGet.h"       // for vtkDeepGISetClampMacro
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for ivars
 #include "vtkTimeStamp.h"    // for ivars
@@ -126,7 +127,7 @@ public:
    * Edges between triangles meeting at more than this angle (degrees) are
    * hard: the normals are split there. Range 0 to 180. Default 30.
    */
-  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkDeepGISetClampMacro(FeatureAngle, double, 0.0, 180.0);
   vtkGetMacro(FeatureAngle, double);
   ///@}
 

@@ -51,6 +51,7 @@
 #define vtkDeepGBufferSceneLoader_h
 
 #include "vtkDeepGIScenesModule.h" // for export macro
+#include "vtkDeepGISetGet.h"       // for vtkDeepGISetClampMacro
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for the protected helpers
 
@@ -109,7 +110,7 @@ public:
    * Feature angle (degrees) where computed mesh normals are split, so hard
    * edges stay hard. Range 0 to 180. Default 30.
    */
-  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkDeepGISetClampMacro(FeatureAngle, double, 0.0, 180.0);
   vtkGetMacro(FeatureAngle, double);
   ///@}
 

@@ -105,6 +105,7 @@
 #define vtkDeepAmbientObscurancePass_h
 
 #include "vtkDeepGIRenderingModule.h" // for export macro
+#include "vtkDeepGISetGet.h"          // for vtkDeepGISetClampMacro
 #include "vtkDeepGIShaderConstants.h" // for the enum values shared with GLSL
 #include "vtkDeepScreenSpacePass.h"
 
@@ -167,7 +168,7 @@ public:
   vtkSetMacro(AutomaticRadius, bool);
   vtkGetMacro(AutomaticRadius, bool);
   vtkBooleanMacro(AutomaticRadius, bool);
-  vtkSetClampMacro(AutomaticRadiusFraction, double, 0.0, 1.0);
+  vtkDeepGISetClampMacro(AutomaticRadiusFraction, double, 0.0, 1.0);
   vtkGetMacro(AutomaticRadiusFraction, double);
   ///@}
 
@@ -181,7 +182,7 @@ public:
    * depth and normal quantisation. Default 0.01 (SAO's 1.2 cm at r = 1 m).
    * Clamped to [0, 1].
    */
-  vtkSetClampMacro(Bias, double, 0.0, 1.0);
+  vtkDeepGISetClampMacro(Bias, double, 0.0, 1.0);
   vtkGetMacro(Bias, double);
   ///@}
 
@@ -191,7 +192,7 @@ public:
    * units squared is Epsilon * r^2. Default 0.01 (SAO's 0.01 m^2 at
    * r = 1 m). Clamped to [1e-6, 1].
    */
-  vtkSetClampMacro(Epsilon, double, 1e-6, 1.0);
+  vtkDeepGISetClampMacro(Epsilon, double, 1e-6, 1.0);
   vtkGetMacro(Epsilon, double);
   ///@}
 
@@ -237,9 +238,9 @@ public:
    */
   vtkSetClampMacro(BlurRadius, int, 0, 16);
   vtkGetMacro(BlurRadius, int);
-  vtkSetClampMacro(BlurPlaneTolerance, double, 1e-6, 1.0);
+  vtkDeepGISetClampMacro(BlurPlaneTolerance, double, 1e-6, 1.0);
   vtkGetMacro(BlurPlaneTolerance, double);
-  vtkSetClampMacro(BlurNormalPower, double, 0.0, 128.0);
+  vtkDeepGISetClampMacro(BlurNormalPower, double, 0.0, 128.0);
   vtkGetMacro(BlurNormalPower, double);
   ///@}
 
@@ -266,7 +267,7 @@ public:
    * 2^LOG_MAX_OFFSET; clamped to [1, 65536]), and the coarsest level L
    * (0 to 15, default 5 as SAO's MAX_MIP_LEVEL; 0 disables the pyramid).
    */
-  vtkSetClampMacro(MipThreshold, double, 1.0, 65536.0);
+  vtkDeepGISetClampMacro(MipThreshold, double, 1.0, 65536.0);
   vtkGetMacro(MipThreshold, double);
   vtkSetClampMacro(MaximumMipLevel, int, 0, 15);
   vtkGetMacro(MaximumMipLevel, int);
@@ -280,7 +281,7 @@ public:
    * frames (about (1 + alpha) / (1 - alpha) frames for a still camera) but
    * lag more behind changes. Clamped to [0, 0.99].
    */
-  vtkSetClampMacro(TemporalAlpha, double, 0.0, 0.99);
+  vtkDeepGISetClampMacro(TemporalAlpha, double, 0.0, 0.99);
   vtkGetMacro(TemporalAlpha, double);
   ///@}
 

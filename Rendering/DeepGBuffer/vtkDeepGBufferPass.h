@@ -58,6 +58,7 @@
 #define vtkDeepGBufferPass_h
 
 #include "vtkDeepGIRenderingModule.h" // for export macro
+#include "vtkDeepGISetGet.h"          // for vtkDeepGISetClampMacro
 #include "vtkDeepGIShaderConstants.h" // for the enum values shared with GLSL
 #include "vtkOpenGLRenderPass.h"
 
@@ -162,7 +163,7 @@ public:
   vtkSetMacro(AutomaticMinimumSeparation, bool);
   vtkGetMacro(AutomaticMinimumSeparation, bool);
   vtkBooleanMacro(AutomaticMinimumSeparation, bool);
-  vtkSetClampMacro(AutomaticSeparationFraction, double, 0.0, 1.0);
+  vtkDeepGISetClampMacro(AutomaticSeparationFraction, double, 0.0, 1.0);
   vtkGetMacro(AutomaticSeparationFraction, double);
   ///@}
 

@@ -113,6 +113,7 @@
 #define vtkDeepRadiosityPass_h
 
 #include "vtkDeepGIRenderingModule.h" // for export macro
+#include "vtkDeepGISetGet.h"          // for vtkDeepGISetClampMacro
 #include "vtkDeepGIShaderConstants.h" // for the enum values shared with GLSL
 #include "vtkDeepScreenSpacePass.h"
 
@@ -193,7 +194,7 @@ public:
   vtkSetMacro(AutomaticRadius, bool);
   vtkGetMacro(AutomaticRadius, bool);
   vtkBooleanMacro(AutomaticRadius, bool);
-  vtkSetClampMacro(AutomaticRadiusFraction, double, 0.0, 1.0);
+  vtkDeepGISetClampMacro(AutomaticRadiusFraction, double, 0.0, 1.0);
   vtkGetMacro(AutomaticRadiusFraction, double);
   ///@}
 
@@ -275,9 +276,9 @@ public:
    */
   vtkSetClampMacro(FilterTaps, int, 1, 33);
   vtkGetMacro(FilterTaps, int);
-  vtkSetClampMacro(BlurPlaneTolerance, double, 1e-6, 1.0);
+  vtkDeepGISetClampMacro(BlurPlaneTolerance, double, 1e-6, 1.0);
   vtkGetMacro(BlurPlaneTolerance, double);
-  vtkSetClampMacro(BlurNormalPower, double, 0.0, 128.0);
+  vtkDeepGISetClampMacro(BlurNormalPower, double, 0.0, 128.0);
   vtkGetMacro(BlurNormalPower, double);
   ///@}
 
@@ -307,7 +308,7 @@ public:
    * default 5; the minimum wins when larger). Both are also limited by
    * floor(log2(max(width, height))).
    */
-  vtkSetClampMacro(MipThreshold, double, 1.0, 65536.0);
+  vtkDeepGISetClampMacro(MipThreshold, double, 1.0, 65536.0);
   vtkGetMacro(MipThreshold, double);
   vtkSetClampMacro(MinimumMipLevel, int, 0, 15);
   vtkGetMacro(MinimumMipLevel, int);
@@ -353,7 +354,7 @@ public:
   vtkSetMacro(AutomaticReprojectionTolerance, bool);
   vtkGetMacro(AutomaticReprojectionTolerance, bool);
   vtkBooleanMacro(AutomaticReprojectionTolerance, bool);
-  vtkSetClampMacro(AutomaticReprojectionFraction, double, 0.0, 1.0);
+  vtkDeepGISetClampMacro(AutomaticReprojectionFraction, double, 0.0, 1.0);
   vtkGetMacro(AutomaticReprojectionFraction, double);
   ///@}
 

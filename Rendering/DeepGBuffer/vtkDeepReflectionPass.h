@@ -91,6 +91,7 @@
 #define vtkDeepReflectionPass_h
 
 #include "vtkDeepGIRenderingModule.h" // for export macro
+#include "vtkDeepGISetGet.h"          // for vtkDeepGISetClampMacro
 #include "vtkDeepScreenSpacePass.h"
 
 #include <memory> // for std::unique_ptr
@@ -130,7 +131,7 @@ public:
   vtkSetMacro(AutomaticMaximumDistance, bool);
   vtkGetMacro(AutomaticMaximumDistance, bool);
   vtkBooleanMacro(AutomaticMaximumDistance, bool);
-  vtkSetClampMacro(AutomaticDistanceFraction, double, 0.0, 10.0);
+  vtkDeepGISetClampMacro(AutomaticDistanceFraction, double, 0.0, 10.0);
   vtkGetMacro(AutomaticDistanceFraction, double);
   ///@}
 
