@@ -10,10 +10,12 @@
 # - EGL tests: libEGL loads and unloads Mesa's driver, whose allocations
 #   LeakSanitizer cannot attribute to a library, so only memory errors are
 #   checked there.
-# - Python tests: the ASan runtime is preloaded into VTK's Python; memory
+# - Python tests, and the tests that start VTK's Python (deepgi-install,
+#   deepgi-getting-started): the ASan runtime is preloaded into it; memory
 #   errors are checked, leaks are not (the interpreter keeps its objects).
-# - deepgi-find-package is left out: it builds a consumer program without
-#   the sanitizer flags, which cannot load the sanitized libraries.
+# - deepgi-find-package and deepgi-install-consumer are left out: they build
+#   a consumer program without the sanitizer flags, which cannot load the
+#   sanitized libraries.
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -45,7 +47,8 @@ run() {
     -j"$jobs" --timeout 1800 "$@" || status=1
 }
 ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=$suppressions" \
-  run -E "EGL|Factory|Python|python|find-package"
+  run -E "EGL|Factory|Python|python|find-package|install|getting-started"
 ASAN_OPTIONS=detect_leaks=0 run -R "EGL|Factory"
-LD_PRELOAD="$runtime" ASAN_OPTIONS=detect_leaks=0 run -R "Python|python"
+LD_PRELOAD="$runtime" ASAN_OPTIONS=detect_leaks=0 \
+  run -R "Python|python|getting-started|deepgi-install$"
 exit "$status"
