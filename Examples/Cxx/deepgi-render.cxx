@@ -139,6 +139,8 @@ struct Options
   std::string Output = "output";
   int Preset = vtkDeepGIPass::BALANCED; // -1: off
   std::string Effects = "all";
+  int EffectMask =
+    vtkDeepGIPass::AMBIENT_OBSCURANCE | vtkDeepGIPass::RADIOSITY | vtkDeepGIPass::REFLECTIONS;
   double RadiusFraction = -1.0; // < 0: the passes' defaults
   double Exposure = 1.0;
   double Tolerance = 0.07; // 8-bit levels
@@ -217,16 +219,11 @@ const OptionEntry OptionTable[] = {
   { "--effects",
     [](const std::string& v, Options& o) -> std::string
     {
-      // The pass parses the list; its warning is replaced by this message.
-      vtkNew<vtkDeepGIPass> probe;
-      const int warnings = vtkObject::GetGlobalWarningDisplay();
-      vtkObject::GlobalWarningDisplayOff();
-      const bool valid = v != "none" && probe->SetEffects(v.c_str());
-      vtkObject::SetGlobalWarningDisplay(warnings);
       o.Effects = v;
       o.GiOptionGiven = true;
-      return valid ? ""
-                   : "needs a comma-separated list of distinct ao, radiosity, reflections, or all";
+      return vtkDeepGIPass::ParseEffects(v.c_str(), o.EffectMask) && o.EffectMask != 0
+        ? ""
+        : "needs a comma-separated list of distinct ao, radiosity, reflections, or all";
     } },
   { "--radius",
     [](const std::string& v, Options& o) -> std::string
@@ -546,7 +543,9 @@ struct ProgressPrinter
 void ConfigureGI(const Options& o, vtkDeepGIPass* gi)
 {
   gi->SetPreset(o.Preset);
-  gi->SetEffects(o.Effects.c_str());
+  gi->SetAmbientObscurance((o.EffectMask & vtkDeepGIPass::AMBIENT_OBSCURANCE) != 0);
+  gi->SetRadiosity((o.EffectMask & vtkDeepGIPass::RADIOSITY) != 0);
+  gi->SetReflections((o.EffectMask & vtkDeepGIPass::REFLECTIONS) != 0);
   gi->GetGBufferPass()->SetOracle(o.Oracle);
   gi->GetGBufferPass()->SetGuardBand(o.GuardBand);
   if (o.Dz >= 0.0)

@@ -340,6 +340,23 @@ void vtkDeepGIPass::SetPreset(const char* name)
 //------------------------------------------------------------------------------
 bool vtkDeepGIPass::SetEffects(const char* names)
 {
+  int effects = 0;
+  if (!ParseEffects(names, effects))
+  {
+    vtkWarningMacro("SetEffects: '" << (names ? names : "(null)")
+                                    << "' is not a list of distinct ao, radiosity, reflections "
+                                       "(or all, none); the effects are unchanged.");
+    return false;
+  }
+  this->SetAmbientObscurance((effects & AMBIENT_OBSCURANCE) != 0);
+  this->SetRadiosity((effects & RADIOSITY) != 0);
+  this->SetReflections((effects & REFLECTIONS) != 0);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGIPass::ParseEffects(const char* names, int& effects)
+{
   std::string list;
   for (const char* c = names ? names : ""; *c; ++c)
   {
@@ -348,41 +365,33 @@ bool vtkDeepGIPass::SetEffects(const char* names)
       list += static_cast<char>(std::tolower(static_cast<unsigned char>(*c)));
     }
   }
-  bool ao = false, radiosity = false, reflections = false;
-  bool valid = !list.empty() && list.back() != ',';
-  if (list == "all")
+  if (list == "all" || list == "none")
   {
-    ao = radiosity = reflections = true;
+    effects = list == "all" ? EffectMask : 0;
+    return true;
   }
-  else if (list != "none")
+  int parsed = 0;
+  size_t start = 0;
+  while (!list.empty() && start <= list.size())
   {
-    size_t start = 0;
-    while (valid && start <= list.size())
+    const size_t end = std::min(list.find(',', start), list.size());
+    const std::string item = list.substr(start, end - start);
+    const int bit = item == "ao" ? AMBIENT_OBSCURANCE
+      : item == "radiosity"      ? RADIOSITY
+      : item == "reflections"    ? REFLECTIONS
+                                 : 0;
+    if (!bit || (parsed & bit))
     {
-      const size_t end = std::min(list.find(',', start), list.size());
-      const std::string item = list.substr(start, end - start);
-      bool* flag = item == "ao" ? &ao
-        : item == "radiosity"   ? &radiosity
-        : item == "reflections" ? &reflections
-                                : nullptr;
-      valid = flag && !*flag;
-      if (valid)
-      {
-        *flag = true;
-      }
-      start = end + 1;
+      return false;
     }
+    parsed |= bit;
+    start = end + 1;
   }
-  if (!valid)
+  if (!parsed)
   {
-    vtkWarningMacro("SetEffects: '" << (names ? names : "(null)")
-                                    << "' is not a list of distinct ao, radiosity, reflections "
-                                       "(or all, none); the effects are unchanged.");
     return false;
   }
-  this->SetAmbientObscurance(ao);
-  this->SetRadiosity(radiosity);
-  this->SetReflections(reflections);
+  effects = parsed;
   return true;
 }
 

@@ -165,6 +165,12 @@ public:
    */
   bool SetEffects(const char* names);
 
+  /**
+   * Parses such a list into a mask of AMBIENT_OBSCURANCE, RADIOSITY and
+   * REFLECTIONS ("none": 0); false, `effects` untouched, when it is not one.
+   */
+  static bool ParseEffects(const char* names, int& effects);
+
   ///@{
   /**
    * Sets the three effects' presets at once (see the table in the class
