@@ -329,6 +329,16 @@ bool vtkDeepAmbientObscurancePass::RendererHasAmbientTerm(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
+int vtkDeepAmbientObscurancePass::ResolveComposition(vtkRenderer* renderer) const
+{
+  if (this->Composition != COMPOSITE_AUTOMATIC)
+  {
+    return this->Composition;
+  }
+  return RendererHasAmbientTerm(renderer) ? COMPOSITE_AMBIENT : COMPOSITE_MULTIPLY;
+}
+
+//------------------------------------------------------------------------------
 void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
 {
   vtkInternals& in = *this->Internals;
@@ -373,11 +383,7 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
     vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
     vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
     vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(ostate);
-    int composition = this->Composition;
-    if (composition == COMPOSITE_AUTOMATIC)
-    {
-      composition = RendererHasAmbientTerm(renderer) ? COMPOSITE_AMBIENT : COMPOSITE_MULTIPLY;
-    }
+    const int composition = this->ResolveComposition(renderer);
     // COMPOSITE_AMBIENT needs the radiance on display (it rewrites it).
     const bool ambientOnly = composition == COMPOSITE_AMBIENT &&
       gbuffer->GetDisplayQuantity() == vtkDeepGBufferPass::RADIANCE;

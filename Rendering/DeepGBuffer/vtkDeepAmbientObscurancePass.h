@@ -384,6 +384,13 @@ public:
    */
   static bool RendererHasAmbientTerm(vtkRenderer* renderer);
 
+  /**
+   * The composition this pass's Composition means for `renderer` now:
+   * COMPOSITE_AMBIENT or COMPOSITE_MULTIPLY (AUTOMATIC resolved with
+   * RendererHasAmbientTerm). vtkDeepGIPass composes AV the same way.
+   */
+  int ResolveComposition(vtkRenderer* renderer) const;
+
   ///@{
   /**
    * Access for passes that composite AV themselves: binds the final AV of

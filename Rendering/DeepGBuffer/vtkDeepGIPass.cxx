@@ -209,13 +209,18 @@ class vtkDeepGIPass::vtkInternals
 public:
   vtkDeepGIOpaqueStep* OpaqueStep = nullptr;
   std::map<vtkRenderer*, std::unique_ptr<vtkDeepGIRendererState>> States;
-  // One composite program per combination of effects (bits 0-2).
-  vtkOpenGLQuadHelper* CompositeQuads[EffectMask + 1] = {};
+  // One composite program per combination of effects (bits 0-2) and AV
+  // composition (bit 3: MultiplyVisibility).
+  static constexpr int MultiplyVariant = EffectMask + 1;
+  vtkOpenGLQuadHelper* CompositeQuads[2 * MultiplyVariant] = {};
   vtkOpenGLQuadHelper* CoverageQuad = nullptr;
   bool Converging = false;
   bool WarnedUnsupported = false;
   // The effects wanted in the frame being rendered (set by Render).
   int Wanted = 0;
+  // AV scales the whole direct radiance (COMPOSITE_MULTIPLY) instead of the
+  // ambient term only, in the frame being rendered (set by Render).
+  bool MultiplyVisibility = false;
   vtkDeepGIRendererState* Current = nullptr;
 
   bool AnyReflects()
@@ -589,6 +594,9 @@ void vtkDeepGIPass::Render(const vtkRenderState* s)
   this->GBufferPass->SetWriteReflectivity(in.AnyReflects());
 
   in.Wanted = wanted;
+  in.MultiplyVisibility = (wanted & AMBIENT_OBSCURANCE) &&
+    this->AmbientObscurancePass->ResolveComposition(renderer) ==
+      vtkDeepAmbientObscurancePass::COMPOSITE_MULTIPLY;
   in.Current = &state;
   this->GBufferPass->RenderFrame(s, in.OpaqueStep);
   in.Current = nullptr;
@@ -600,7 +608,12 @@ void vtkDeepGIPass::Render(const vtkRenderState* s)
 int vtkDeepGIPass::WantedEffects(vtkRenderer* renderer) const
 {
   int wanted = 0;
-  if (this->AmbientObscurance && vtkDeepAmbientObscurancePass::RendererHasAmbientTerm(renderer))
+  // With the ambient composition AV scales only the ambient term, which
+  // must then exist; the multiplying one darkens whatever VTK shaded.
+  const vtkDeepAmbientObscurancePass* obscurance = this->AmbientObscurancePass;
+  if (this->AmbientObscurance &&
+    (obscurance->ResolveComposition(renderer) == vtkDeepAmbientObscurancePass::COMPOSITE_MULTIPLY ||
+      vtkDeepAmbientObscurancePass::RendererHasAmbientTerm(renderer)))
   {
     wanted |= AMBIENT_OBSCURANCE;
   }
@@ -801,9 +814,13 @@ int vtkDeepGIPass::ActivateCompositeInputs(
   int composited = effects;
   if (effects & AMBIENT_OBSCURANCE)
   {
-    inputs.Ambient = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::AMBIENT);
+    if (!this->Internals->MultiplyVisibility)
+    {
+      inputs.Ambient = gbuffer->ActivateTexture(renderer, vtkDeepGBufferPass::AMBIENT);
+    }
     inputs.Visibility = this->AmbientObscurancePass->ActivateVisibilityTexture(renderer);
-    composited &= (inputs.Ambient < 0 || inputs.Visibility < 0) ? ~AMBIENT_OBSCURANCE : ~0;
+    const bool ambientMissing = !this->Internals->MultiplyVisibility && inputs.Ambient < 0;
+    composited &= (ambientMissing || inputs.Visibility < 0) ? ~AMBIENT_OBSCURANCE : ~0;
   }
   if (effects & RADIOSITY)
   {
@@ -827,12 +844,15 @@ bool vtkDeepGIPass::DrawComposite(
   vtkOpenGLRenderer* renderer, int composited, const vtkCompositeInputs& inputs)
 {
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  vtkOpenGLQuadHelper*& quad = this->Internals->CompositeQuads[composited];
+  const bool multiply = (composited & AMBIENT_OBSCURANCE) && this->Internals->MultiplyVisibility;
+  vtkOpenGLQuadHelper*& quad =
+    this->Internals->CompositeQuads[composited + (multiply ? vtkInternals::MultiplyVariant : 0)];
   std::string fs = vtkDeepGICompositeFS;
   vtkShaderProgram::Substitute(fs, "//VTK::DeepGI::Effects",
     std::string("#define DEEP_GI_AO ") + ((composited & AMBIENT_OBSCURANCE) ? "1" : "0") +
-      "\n#define DEEP_GI_RADIOSITY " + ((composited & RADIOSITY) ? "1" : "0") +
-      "\n#define DEEP_GI_REFLECTIONS " + ((composited & REFLECTIONS) ? "1" : "0") + "\n");
+      "\n#define DEEP_GI_AO_MULTIPLY " + (multiply ? "1" : "0") + "\n#define DEEP_GI_RADIOSITY " +
+      ((composited & RADIOSITY) ? "1" : "0") + "\n#define DEEP_GI_REFLECTIONS " +
+      ((composited & REFLECTIONS) ? "1" : "0") + "\n");
   if (inputs.Distance < 0 || inputs.Radiance < 0 ||
     !vtkDeepScreenSpace::ReadyQuad(quad, window, fs.c_str()))
   {
@@ -850,7 +870,10 @@ bool vtkDeepGIPass::DrawComposite(
   program->SetUniformi("deepGuardBand", guardBand);
   if (composited & AMBIENT_OBSCURANCE)
   {
-    program->SetUniformi("deepAmbient", inputs.Ambient);
+    if (!multiply)
+    {
+      program->SetUniformi("deepAmbient", inputs.Ambient);
+    }
     program->SetUniformi("deepVisibility", inputs.Visibility);
   }
   if (composited & RADIOSITY)

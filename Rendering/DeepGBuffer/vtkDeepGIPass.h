@@ -37,11 +37,23 @@
  *   that VTK's local shading does not contain, so it is added.
  * - REFLECTIVITY * L_r: mirror reflections (section 3.6), the reflected
  *   radiance weighted by the G-buffer's REFLECTIVITY, added like L_ind.
+ * When no visible opaque actor has an ambient term (VTK's default actors:
+ * Ambient 0) the obscurance pass's COMPOSITE_AUTOMATIC composition resolves
+ * to COMPOSITE_MULTIPLY and the composite is
+ *
+ *   colour = AV * RADIANCE + L_ind + REFLECTIVITY * L_r
+ *
+ * VTK's lights then stand for all the light that arrives, which nearby
+ * surfaces occlude (what vtkSSAOPass darkens); SetCompositionToAmbient() on
+ * GetAmbientObscurancePass() keeps AV to the ambient term only. The model
+ * and its ray-traced reference (vtkDeepGIReferenceImage) are in
+ * Documentation/lighting-model.md.
  * Alpha is kept; pixels where layer 0 is empty keep the background.
  *
  * Model only what the scene requires. Each frame and per renderer:
- * - ambient obscurance runs when AmbientObscurance is on and a visible
- *   opaque actor has an ambient term (otherwise AV * AMBIENT is 0 anyway);
+ * - ambient obscurance runs when AmbientObscurance is on, unless the
+ *   obscurance pass's composition is COMPOSITE_AMBIENT and no visible opaque
+ *   actor has an ambient term (AV * AMBIENT would be 0);
  * - radiosity runs when Radiosity is on, a light is switched on and a
  *   visible opaque actor can reflect diffuse light (Diffuse > 0 and a
  *   non-black DiffuseColor, or colours from scalars or a texture);

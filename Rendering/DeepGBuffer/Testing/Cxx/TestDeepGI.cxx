@@ -5,7 +5,10 @@
 //    RADIANCE - (1 - AV) AMBIENT + L_ind + REFLECTIVITY L_r from the
 //    sub-passes' captures within 2 of 255 (8-bit rounding), and each term
 //    is large somewhere (so dropping one fails the test).
-// 2. Model only what the scene requires: no ambient term -> no AO; black
+//    The same scene with VTK's default Ambient 0 on every actor uses the
+//    multiplying composition: AV RADIANCE + L_ind + REFLECTIVITY L_r.
+// 2. Model only what the scene requires: no ambient term and the ambient
+//    composition chosen -> no AO; black
 //    diffuse albedo or no light -> no radiosity; no specular prop -> no
 //    reflections and no REFLECTIVITY in the G-buffer; in each case the
 //    image is bit-identical to the one with that switch off. A plane seen
@@ -46,9 +49,9 @@ namespace
 constexpr int W = 160, H = 120;
 
 // The red-wall scene of the radiosity tests with an ambient term on every
-// actor (0.3, the actor's colour), a specular floor (Specular 0.5) and a
+// actor (`ambient`, 0.3 unless said, the actor's colour), a specular floor (Specular 0.5) and a
 // grey box in front of the wall (depth complexity for layer 1).
-void AllEffectsScene(vtkRenderer* renderer)
+void AllEffectsSceneWithAmbient(vtkRenderer* renderer, double ambient)
 {
   RedWallScene(renderer);
   // GetActors() rebuilds the collection: take it once per traversal.
@@ -65,10 +68,15 @@ void AllEffectsScene(vtkRenderer* renderer)
   actors->InitTraversal(it);
   while (vtkActor* actor = actors->GetNextActor(it))
   {
-    actor->GetProperty()->SetAmbient(0.3);
+    actor->GetProperty()->SetAmbient(ambient);
     actor->GetProperty()->SetAmbientColor(actor->GetProperty()->GetDiffuseColor());
   }
   renderer->ResetCameraClippingRange();
+}
+
+void AllEffectsScene(vtkRenderer* renderer)
+{
+  AllEffectsSceneWithAmbient(renderer, 0.3);
 }
 
 struct Run
@@ -110,11 +118,13 @@ double Difference(Run& a, Run& b)
   return MaximumColorDifference(a.Image, b.Image);
 }
 
-void CheckComposite()
+// `multiply`: the scene without an ambient term, where AV scales RADIANCE.
+void CheckComposite(bool multiply)
 {
   Run run;
   Render(
-    run, AllEffectsScene, [](vtkDeepGIPass*) {}, 4);
+    run, [multiply](vtkRenderer* r) { AllEffectsSceneWithAmbient(r, multiply ? 0.0 : 0.3); },
+    [](vtkDeepGIPass*) {}, 4);
   vtkDeepGIPass* gi = run.Pass;
   const int all = vtkDeepGIPass::AMBIENT_OBSCURANCE | vtkDeepGIPass::RADIOSITY |
     vtkDeepGIPass::REFLECTIONS | vtkDeepGIPass::SECOND_LAYER;
@@ -153,7 +163,8 @@ void CheckComposite()
     ++surface;
     for (int c = 0; c < 3; ++c)
     {
-      const double obscured = (1.0 - visibility->GetTuple1(p)) * ambient->GetComponent(p, c);
+      const double scaled = multiply ? radiance->GetComponent(p, c) : ambient->GetComponent(p, c);
+      const double obscured = (1.0 - visibility->GetTuple1(p)) * scaled;
       const double bounced = indirect->GetComponent(p, c);
       const double mirrored = traced->GetTuple1(p) != 0
         ? reflectivity->GetComponent(p, c) * reflected->GetComponent(p, c)
@@ -166,11 +177,14 @@ void CheckComposite()
       reflectionTerm = std::max(reflectionTerm, mirrored);
     }
   }
-  std::printf("composite: %ld surface px, largest |image - formula| %.3f / 255; largest terms: "
-              "(1 - AV) AMBIENT %.3f, L_ind %.3f, R L_r %.3f\n",
-    surface, worst, aoTerm, indirectTerm, reflectionTerm);
+  const std::string formula =
+    multiply ? "AV RADIANCE + L_ind + R L_r" : "DIRECT + AV AMBIENT + L_ind + R L_r";
+  std::printf("composite %s: %ld surface px, largest |image - formula| %.3f / 255; largest terms: "
+              "(1 - AV) %s %.3f, L_ind %.3f, R L_r %.3f\n",
+    formula.c_str(), surface, worst, multiply ? "RADIANCE" : "AMBIENT", aoTerm, indirectTerm,
+    reflectionTerm);
   Check(surface > W * H / 3, "the scene fills the view");
-  Check(worst <= 2.0, "image = DIRECT + AV AMBIENT + L_ind + R L_r within 2/255");
+  Check(worst <= 2.0, "image = " + formula + " within 2/255");
   Check(aoTerm > 0.02 && indirectTerm > 0.02 && reflectionTerm > 0.02,
     "every term contributes more than 5/255 somewhere");
   Release(run);
@@ -178,13 +192,22 @@ void CheckComposite()
 
 // An effect the scene cannot use does not run, and the image equals the
 // one with the effect switched off.
-void CheckSkipped(const char* what, const std::function<void(vtkRenderer*)>& scene, int effect,
-  const std::function<void(vtkDeepGIPass*)>& switchOff)
+// `setup` applies to both runs.
+void CheckSkipped(
+  const char* what, const std::function<void(vtkRenderer*)>& scene, int effect,
+  const std::function<void(vtkDeepGIPass*)>& switchOff,
+  const std::function<void(vtkDeepGIPass*)>& setup = [](vtkDeepGIPass*) {})
 {
   Run on, off;
+  Render(on, scene, setup, 3);
   Render(
-    on, scene, [](vtkDeepGIPass*) {}, 3);
-  Render(off, scene, switchOff, 3);
+    off, scene,
+    [&](vtkDeepGIPass* gi)
+    {
+      setup(gi);
+      switchOff(gi);
+    },
+    3);
   const int effects = on.Pass->GetLastFrameEffects();
   std::printf("%s: effects %s, image difference to the switch off %.0f\n", what,
     vtkDeepGIPass::GetEffectsAsString(effects).c_str(), Difference(on, off));
@@ -236,10 +259,12 @@ void CheckAssembly()
 
 void CheckSkipLogic()
 {
-  // No ambient term anywhere (RedWallScene's Diffuse() sets Ambient 0).
+  // No ambient term anywhere (RedWallScene's Diffuse() sets Ambient 0)
+  // and AV asked to scale only the ambient term.
   CheckSkipped(
-    "no ambient term", [](vtkRenderer* r) { RedWallScene(r); }, vtkDeepGIPass::AMBIENT_OBSCURANCE,
-    [](vtkDeepGIPass* gi) { gi->AmbientObscuranceOff(); });
+    "no ambient term, ambient composition", [](vtkRenderer* r) { RedWallScene(r); },
+    vtkDeepGIPass::AMBIENT_OBSCURANCE, [](vtkDeepGIPass* gi) { gi->AmbientObscuranceOff(); },
+    [](vtkDeepGIPass* gi) { gi->GetAmbientObscurancePass()->SetCompositionToAmbient(); });
   // Black diffuse albedo: ambient-only actors.
   CheckSkipped(
     "black albedo",
@@ -541,7 +566,8 @@ void CheckBadInput()
 int TestDeepGI(int, char*[])
 {
   CheckBadInput();
-  CheckComposite();
+  CheckComposite(false);
+  CheckComposite(true);
   CheckSkipLogic();
   CheckAssembly();
   CheckConverge();
