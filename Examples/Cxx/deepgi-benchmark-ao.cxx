@@ -14,8 +14,8 @@
 //   white and the luminance ratio (method / plain, clamped to [0, 1]) is the
 //   method's ambient visibility AV on that pixel. The ground truth is
 //   vtkDeepGIReferenceObscurance (Embree) on the G-buffer capture of the
-//   same frame (layer 0), same r, beta = 0.01 r and eps = 0.01 r^2 (our
-//   pass's Bias and Epsilon). Errors: RMSE and mean absolute error over
+//   same frame (layer 0), same r, beta = eps = 0 (the obscurance itself,
+//   not the screen-space estimators' regularised form). Errors: RMSE and mean absolute error over
 //   valid pixels (layer 0 valid, both plain luminances > 0.05), RMSE on the
 //   pixels where layer 1 exists (Valid_1), raw and after fitting one
 //   exponent gamma per method and scene (AV^gamma vs reference).
@@ -90,6 +90,11 @@ struct Options
   int Backend = vtkDeepGIRenderWindowFactory::BACKEND_AUTO;
   std::string Output = "output";
   std::string Data = DEEPGI_DATA_DIR;
+  // The user's own scenes ("mesh:PATH" or "volume:ISO:PATH"), measured after
+  // the built-in ones named with --scenes (none unless --scenes is given).
+  std::vector<std::string> Files;
+  bool ScenesGiven = false;
+  std::string PendingVolume; // a --volume waiting for its --iso
   std::vector<std::string> Scenes = { "demo", "demo-columns", "cornell-lucy", "dragon", "headsq" };
   std::vector<std::string> Methods;
   bool ErrorMaps = true;
@@ -124,6 +129,11 @@ void Usage()
     "                       layers, a G-buffer guard band of 0.1), low, medium, high (two\n"
     "                       layers with a quality preset). Default:\n"
     "                       %s\n"
+    "  --mesh FILE          one more scene: a mesh or OBJ scene the scene loader reads\n"
+    "                       (.ply, .stl, .vtk, .vtp, .obj; repeatable); --scene FILE is\n"
+    "                       the same. With any of them, only the files are measured\n"
+    "                       unless --scenes names built-in scenes too.\n"
+    "  --volume FILE --iso V  one more scene: the iso-surface V of a volume\n"
     "  --data DIR           test data folder (default %s)\n"
     "  --no-error-maps      do not write the error-map PNGs\n"
     "  --backend NAME       auto, x11 or egl (default auto)\n"
@@ -143,6 +153,7 @@ struct Method
   int Preset = -1;    // ours: a vtkDeepAmbientObscurancePass quality preset, or -1
   bool DeepLayerBackfaceCulling = true; // ours: the G-buffer's culling in layer 1
   double GuardBand = 0.0;               // ours: the G-buffer's guard band
+  int Estimator = -1; // ours: vtkDeepAmbientObscurancePass::EstimatorType, or -1 (default)
 };
 
 /// Width of the frame's border, as a fraction of the height, on which the
@@ -164,8 +175,16 @@ bool ParseMethod(const std::string& spec, Method& m)
       return true;
     }
   }
-  const std::vector<std::string> p = Split(spec, ':');
-  if (p.size() == 2 && p[0] == "ssao")
+  std::vector<std::string> p = Split(spec, ':');
+  std::string estimator;
+  if (p.size() >= 3 && (p.back() == "sa" || p.back() == "eq1"))
+  {
+    estimator = p.back();
+    p.pop_back();
+    m.Estimator = estimator == "sa" ? vtkDeepAmbientObscurancePass::SOLID_ANGLE
+                                    : vtkDeepAmbientObscurancePass::EQUATION_1;
+  }
+  if (p.size() == 2 && p[0] == "ssao" && estimator.empty())
   {
     int k = 0;
     if (!ParseInt(p[1], k) || k < 1 || k > 1000)
@@ -195,11 +214,57 @@ bool ParseMethod(const std::string& spec, Method& m)
       : !m.DeepLayerBackfaceCulling       ? "2 layers, no layer-1 culling"
       : m.GuardBand > 0.0                 ? "2 layers, guard band"
                                           : "2 layers";
-    m.Name = "ours " + label + " N=" + p[1] + (b != 4 ? " B=" + std::to_string(b) : "");
-    m.Family = b == 4 ? "ours, " + label + " (N)" : "";
+    const std::string by = estimator == "sa" ? ", solid angle"
+      : estimator == "eq1"                   ? ", eq. 1"
+                                             : "";
+    m.Name = "ours " + label + by + " N=" + p[1] + (b != 4 ? " B=" + std::to_string(b) : "");
+    m.Family = b == 4 ? "ours, " + label + by + " (N)" : "";
     return true;
   }
   return false;
+}
+
+/// --mesh FILE, --scene FILE (any file vtkDeepGBufferSceneLoader reads),
+/// --volume FILE --iso V: one scene each, checked for a readable file here.
+template <typename Bad>
+bool ParseSceneFileOption(const std::string& arg, const std::string& value, Options& o, Bad bad)
+{
+  if (arg != "--mesh" && arg != "--scene" && arg != "--volume" && arg != "--iso")
+  {
+    return true;
+  }
+  if (arg != "--iso" && !vtksys::SystemTools::FileExists(value, true))
+  {
+    return bad(arg + ": no such file '" + value + "'");
+  }
+  if (arg == "--iso")
+  {
+    char* end = nullptr;
+    const double iso = std::strtod(value.c_str(), &end);
+    if (o.PendingVolume.empty())
+    {
+      return bad("--iso needs a --volume before it");
+    }
+    if (value.empty() || *end || !std::isfinite(iso))
+    {
+      return bad("--iso needs a finite number, got '" + value + "'");
+    }
+    o.Files.push_back("volume:" + value + ":" + o.PendingVolume);
+    o.PendingVolume.clear();
+  }
+  else if (arg == "--volume")
+  {
+    if (!o.PendingVolume.empty())
+    {
+      return bad("--volume " + o.PendingVolume + " needs --iso V after it");
+    }
+    o.PendingVolume = value;
+  }
+  else
+  {
+    o.Files.push_back("mesh:" + value);
+  }
+  return true;
 }
 
 bool ParseOptions(int argc, char* argv[], Options& o)
@@ -224,8 +289,8 @@ bool ParseOptions(int argc, char* argv[], Options& o)
       continue;
     }
     static const char* const withValue[] = { "--size", "--accuracy-size", "--frames", "--rounds",
-      "--samples", "--radius-fraction", "--scenes", "--methods", "--data", "--backend",
-      "--output" };
+      "--samples", "--radius-fraction", "--scenes", "--methods", "--data", "--backend", "--output",
+      "--mesh", "--scene", "--volume", "--iso" };
     if (std::find_if(std::begin(withValue), std::end(withValue),
           [&](const char* s) { return arg == s; }) == std::end(withValue))
     {
@@ -267,6 +332,7 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     }
     if (arg == "--scenes")
     {
+      o.ScenesGiven = true;
       o.Scenes = Split(value, ',');
       if (o.Scenes.empty())
       {
@@ -286,11 +352,24 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     {
       methods = value;
     }
+    if (!ParseSceneFileOption(arg, value, o, bad))
+    {
+      return false;
+    }
     std::string error;
     if (!ParseSharedOption(arg, value, o.Data, o.Backend, o.Output, error))
     {
       return bad(error);
     }
+  }
+  if (!o.PendingVolume.empty())
+  {
+    return bad("--volume " + o.PendingVolume + " needs --iso V after it");
+  }
+  if (!o.Files.empty())
+  {
+    o.Scenes = o.ScenesGiven ? o.Scenes : std::vector<std::string>();
+    o.Scenes.insert(o.Scenes.end(), o.Files.begin(), o.Files.end());
   }
   o.Methods = Split(methods, ',');
   if (o.Methods.empty())
@@ -303,7 +382,8 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     if (!ParseMethod(m, parsed))
     {
       return bad("unknown method '" + m +
-        "' (ssao:K, ours1:N[:B], ours2:N[:B], ours2nc:N[:B], ours2gb:N[:B], low, medium, high)");
+        "' (ssao:K, ours1:N[:B][:E], ours2:N[:B][:E], ours2nc:N[:B][:E], ours2gb:N[:B][:E], low, "
+        "medium, high; E: sa or eq1)");
     }
   }
   return true;
@@ -456,7 +536,20 @@ bool LoadScene(const Options& o, const std::string& name, vtkRenderer* renderer,
   {
     auto loader = vtkSmartPointer<vtkDeepGBufferSceneLoader>::New();
     bool ok = false;
-    if (name == "cornell-lucy")
+    if (name.rfind("mesh:", 0) == 0)
+    {
+      s.Name = vtksys::SystemTools::GetFilenameName(name.substr(5));
+      ok = loader->Load(name.substr(5).c_str());
+    }
+    else if (name.rfind("volume:", 0) == 0)
+    {
+      const size_t colon = name.find(':', 7);
+      const std::string path = name.substr(colon + 1);
+      s.Name = vtksys::SystemTools::GetFilenameName(path) + " iso " + name.substr(7, colon - 7);
+      ok =
+        loader->LoadVolume(path.c_str(), std::strtod(name.substr(7, colon - 7).c_str(), nullptr));
+    }
+    else if (name == "cornell-lucy")
     {
       ok = loader->Load((o.Data + "/scenes/cornell-lucy/CornellBox-Lucy.obj").c_str());
     }
@@ -589,6 +682,10 @@ int main(int argc, char* argv[])
           ao->SetNumberOfSamples(m.Parameter);
           ao->SetBlurRadius(m.Blur);
         }
+        if (m.Estimator >= 0)
+        {
+          ao->SetEstimator(m.Estimator);
+        }
         ao->SetUseSecondLayer(m.Layers == 2);
         ao->GetGBufferPass()->SetNumberOfLayers(m.Layers);
         ao->GetGBufferPass()->SetDeepLayerBackfaceCulling(m.DeepLayerBackfaceCulling);
@@ -674,8 +771,10 @@ int main(int argc, char* argv[])
     vtkNew<vtkDeepGIReferenceObscurance> reference;
     reference->SetScene(scene.Geometry);
     reference->SetRadius(r);
-    reference->SetBias(0.01 * r);
-    reference->SetEpsilon(0.01 * r * r);
+    // The quantity itself (eq. 2 with beta = epsilon = 0), not the
+    // regularised form the screen-space estimators use.
+    reference->SetBias(0.0);
+    reference->SetEpsilon(0.0);
     reference->SetSamplesPerPixel(options.Samples);
     const auto refStart = std::chrono::steady_clock::now();
     if (!reference->Compute(capture))
@@ -829,10 +928,11 @@ int main(int argc, char* argv[])
     << " warm-up frames per round); OpenGL renderer: " << device << ".\n"
     << "r = " << options.RadiusFraction
     << " x scene diagonal for every method; vtkSSAOPass: Radius r, Bias 0.02 r, Blur on; "
-       "ours: Radius r, Bias 0.01 r, Epsilon 0.01 r^2; reference: Embree, "
+       "ours: Radius r and the pass's defaults (Bias 0.01 r, Epsilon 1e-4 r^2, estimator "
+       "SOLID_ANGLE unless the method says otherwise); reference: Embree, "
     << options.Samples
-    << " rays per pixel, same beta and eps, on the G-buffer capture of the same frame "
-       "(layer 0).\nAV of a method = luminance(method) / luminance(plain) on white "
+    << " rays per pixel, beta = eps = 0 (the obscurance itself), on the G-buffer capture of the "
+       "same frame (layer 0).\nAV of a method = luminance(method) / luminance(plain) on white "
        "ambient-only surfaces (plain = VTK for vtkSSAOPass, the G-buffer pass alone for ours).\n\n";
   md << "| scene | triangles | r | valid px | excluded px | layer-1 px | reference std. error | "
         "reference [s] | VTK frame [ms] | G-buffer (2 layers) frame [ms] "

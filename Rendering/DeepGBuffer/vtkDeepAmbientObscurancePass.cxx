@@ -204,6 +204,7 @@ void vtkDeepAmbientObscurancePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Bias: " << this->Bias << "\n";
   os << indent << "Epsilon: " << this->Epsilon << "\n";
   os << indent << "Intensity: " << this->Intensity << "\n";
+  os << indent << "Estimator: " << GetEstimatorAsString(this->Estimator) << "\n";
   os << indent << "NumberOfSamples: " << this->NumberOfSamples << " (spiral turns "
      << GetSpiralTurns(this->NumberOfSamples) << ")\n";
   os << indent << "UseSecondLayer: " << (this->UseSecondLayer ? "On" : "Off") << "\n";
@@ -245,6 +246,14 @@ const char* vtkDeepAmbientObscurancePass::GetCompositionAsString(int composition
 void vtkDeepAmbientObscurancePass::SetRadius(double radius)
 {
   this->SetManualLength("Radius", radius, this->Radius, this->AutomaticRadius);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkDeepAmbientObscurancePass::GetEstimatorAsString(int estimator)
+{
+  return estimator == EQUATION_1 ? "EQUATION_1"
+    : estimator == SOLID_ANGLE   ? "SOLID_ANGLE"
+                                 : "UNKNOWN";
 }
 
 //------------------------------------------------------------------------------
@@ -556,6 +565,7 @@ void vtkDeepAmbientObscurancePass::ComputeRawVisibility(const EffectFrame& frame
   program->SetUniformf(
     "deepEpsilon", static_cast<float>(std::max(this->Epsilon * radius * radius, 1e-30)));
   program->SetUniformf("deepIntensity", static_cast<float>(this->Intensity));
+  program->SetUniformi("deepEstimator", this->Estimator);
   program->SetUniformi("deepDistanceMip", mipUnit >= 0 ? mipUnit : distanceUnit);
   program->SetUniformi("deepMaxMip", mipUnit >= 0 ? state.MipLevels - 1 : 0);
   program->SetUniformf("deepMipThreshold", static_cast<float>(this->MipThreshold));

@@ -13,7 +13,9 @@
  * by default), which compose against layer 0's depth.
  *
  * Ambient visibility at the layer-0 surface point X (camera space) with
- * normal n_X (paper eq. 1, with the Intensity exponent, see below):
+ * normal n_X (paper eq. 1, with the Intensity exponent, see below; the
+ * default Estimator SOLID_ANGLE weights each tap by its solid angle instead
+ * of the square root, see SetEstimator):
  *
  *   AV(X) = max(0, 1 - sqrt(pi / N * sum_i max(0, A_i^0, A_i^1, ...)))^Intensity
  *   A_i^j = O(X, Y_i^j), Y_i^j the surface of layer j at spiral tap i,
@@ -189,16 +191,53 @@ public:
   ///@{
   /**
    * epsilon of eq. 2, relative to the squared radius: epsilon in world
-   * units squared is Epsilon * r^2. Default 0.01 (SAO's 0.01 m^2 at
-   * r = 1 m). Clamped to [1e-6, 1].
+   * units squared is Epsilon * r^2. It keeps 1 / |v| (1 / |v|^2 for
+   * SOLID_ANGLE) finite for taps very near X. Default 1e-4: larger values
+   * discard the occluders nearest X, whose solid angle is largest (with
+   * SOLID_ANGLE, 0.01, SAO's 0.01 m^2 at r = 1 m, leaves the obscurance
+   * of a floor point beside a wall 0.22 too low; 1e-4, 0.12). Clamped to
+   * [1e-6, 1].
    */
   vtkDeepGISetClampMacro(Epsilon, double, 1e-6, 1.0);
   vtkGetMacro(Epsilon, double);
   ///@}
 
+  /// How the taps' eq. 2 values become AV.
+  enum EstimatorType
+  {
+    /// the paper's eq. 1: AV = max(0, 1 - sqrt(pi / N sum_i O_i))
+    EQUATION_1 = DEEP_AO_ESTIMATOR_EQUATION_1,
+    /// each tap weighted by its solid angle: AV = 1 - A, the obscurance itself
+    SOLID_ANGLE = DEEP_AO_ESTIMATOR_SOLID_ANGLE
+  };
+
   ///@{
   /**
-   * Exponent applied to eq. 1's AV: AV = max(0, 1 - sqrt(...))^Intensity.
+   * How the taps become AV. SOLID_ANGLE (default) estimates the obscurance
+   * A of the ray-traced reference (vtkDeepGIReferenceObscurance) itself:
+   * the tap at kappa_i stands for the screen ring of area
+   * 2 pi h_i r_p / N pixels, i.e. (w_Y / f)^2 / |n_Y . d_Y| of surface
+   * per pixel, whose solid angle seen from X is that area times
+   * |n_Y . v| / |v|^3 (n_Y the tap's normal, d_Y its view ray, w the clip
+   * w, f the focal length in pixels). Weighting each tap's
+   * (1 - v.v / r^2) max(0, v.n - beta) / |v| by it gives
+   *   AV = max(0, 1 - (2 / N) sum_i max_j (1 - v.v / r^2) max(0, v.n - beta)
+   *        r (w_Y / w_X) v.v / (v.v + epsilon)^2 |n_Y . v| / (|v| max(|n_Y . d_Y|, 0.1)))
+   * (the floor 0.1 bounds surfaces seen edge-on by the camera).
+   * EQUATION_1 is the paper's eq. 1, whose square root is a contrast
+   * curve: small obscurance becomes a broad grey shadow, 2-4 times darker
+   * than the reference (Documentation/ambient-obscurance.md).
+   */
+  vtkSetClampMacro(Estimator, int, EQUATION_1, SOLID_ANGLE);
+  vtkGetMacro(Estimator, int);
+  void SetEstimatorToEquation1() { this->SetEstimator(EQUATION_1); }
+  void SetEstimatorToSolidAngle() { this->SetEstimator(SOLID_ANGLE); }
+  static const char* GetEstimatorAsString(int estimator);
+  ///@}
+
+  ///@{
+  /**
+   * Exponent applied to AV: AV = max(0, 1 - sqrt(...))^Intensity.
    * 1 (default) is exactly eq. 1, 0 disables obscurance (AV = 1), larger
    * values darken; AV stays in [0, 1]. Negative values are clamped to 0
    * with a warning.
@@ -435,8 +474,9 @@ protected:
   bool AutomaticRadius = true;
   double AutomaticRadiusFraction = 0.05;
   double EffectiveRadius = 0.0;
+  int Estimator = SOLID_ANGLE;
   double Bias = 0.01;
-  double Epsilon = 0.01;
+  double Epsilon = 0.0001;
   double Intensity = 1.0;
   int NumberOfSamples = 16;
   bool UseSecondLayer = true;

@@ -28,6 +28,11 @@
 #define DEEP_ESTIMATOR_ALL_TAPS 1
 #define DEEP_ESTIMATOR_SOLID_ANGLE 2
 
+// vtkDeepAmbientObscurancePass::Estimator: how the taps become AV (the
+// paper's eq. 1 contrast curve, or each tap weighted by its solid angle).
+#define DEEP_AO_ESTIMATOR_EQUATION_1 0
+#define DEEP_AO_ESTIMATOR_SOLID_ANGLE 1
+
 // vtkDeepAmbientObscurancePass::Composition: what the visibility darkens.
 #define DEEP_COMPOSITE_MULTIPLY 0
 #define DEEP_COMPOSITE_AMBIENT 1

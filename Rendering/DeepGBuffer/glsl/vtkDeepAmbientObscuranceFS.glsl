@@ -16,7 +16,8 @@ uniform float deepTurns;       // tau(N), Listing 3
 uniform float deepRadius;      // r, world units
 uniform float deepBias;        // beta, world units
 uniform float deepEpsilon;     // epsilon, world units squared
-uniform float deepIntensity;   // exponent applied to eq. 1
+uniform float deepIntensity;   // exponent applied to AV
+uniform int deepEstimator;     // DEEP_AO_ESTIMATOR_*
 uniform sampler2DArray deepDistanceMip; // rotated-grid distance pyramid
 uniform int deepMaxMip;        // finest..coarsest level index available
 uniform float deepMipThreshold; // q, pixels
@@ -50,6 +51,9 @@ void main()
   // frame-dependent offset while accumulating temporally (0 otherwise, so
   // phi is unchanged bit for bit).
   float phi = deepSpiralRotation(pixel) + deepRotationOffset;
+  // The view ray through X and X's pixel footprint (SOLID_ANGLE weights).
+  vec3 ray = normalize(deepPositionFromDistance(center, size, 2.0 * d) - X);
+  float footprint = deepClipW(d);
 
   float sum = 0.0;
   float invN = 1.0 / float(deepSamples);
@@ -81,15 +85,36 @@ void main()
       float vv = dot(v, v);
       if (vv < r2)
       {
-        // Equation 2.
-        float o = (1.0 - vv / r2) * max((dot(v, n) - deepBias) / sqrt(vv + deepEpsilon), 0.0);
+        // Equation 2, or its solid-angle form: a tap at screen distance h
+        // stands for a patch whose solid angle seen from X is about
+        // (its share of the disc) x r / |v|, so O r / |v| averages to A / 2
+        // (see the class description).
+        float falloff = 1.0 - vv / r2;
+        float o;
+        if (deepEstimator == DEEP_AO_ESTIMATOR_SOLID_ANGLE)
+        {
+          float along = dot(v, ray);
+          float across = sqrt(max(vv - along * along, 0.0));
+          float t2 = vv + deepEpsilon;
+          vec3 ny = deepDecodeOct16(texelFetch(deepNormal, ivec3(ivec2(tapCenter), j), 0).rg);
+          vec3 rayY = normalize(deepPositionFromDistance(tapCenter, size, 2.0 * dy) - (v + X));
+          float cosCamera = max(abs(dot(ny, rayY)), 0.1);
+          float cosX = abs(dot(ny, v)) * inversesqrt(max(vv, 1e-30));
+          o = falloff * max(dot(v, n) - deepBias, 0.0) * deepRadius * (deepClipW(dy) / footprint) *
+            vv / (t2 * t2) * cosX / cosCamera;
+        }
+        else
+        {
+          o = falloff * max((dot(v, n) - deepBias) / sqrt(vv + deepEpsilon), 0.0);
+        }
         best = max(best, o);
       }
     }
     sum += best;
   }
-  // Equation 1, raised to the Intensity exponent.
-  float av = max(0.0, 1.0 - sqrt(deepPi * invN * sum));
+  // Equation 1 or the linear A = 2 / N sum, raised to the Intensity exponent.
+  float av = deepEstimator == DEEP_AO_ESTIMATOR_SOLID_ANGLE ? max(0.0, 1.0 - 2.0 * invN * sum)
+                                                            : max(0.0, 1.0 - sqrt(deepPi * invN * sum));
   if (deepIntensity != 1.0)
   {
     av = deepIntensity > 0.0 ? (av > 0.0 ? exp2(deepIntensity * log2(av)) : 0.0) : 1.0;
