@@ -40,6 +40,7 @@
 // errors/SCENE-METHOD.png (|E - E_ref| on the luminance).
 
 #include "DeepGIBenchmarkCommon.h"
+#include "DeepGIOutput.h"
 
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
@@ -60,14 +61,12 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkXMLPolyDataWriter.h"
-#include "vtksys/SystemTools.hxx"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -419,10 +418,22 @@ bool WriteRectangle(
   plane->SetPoint1(p1[0], p1[1], p1[2]);
   plane->SetPoint2(p2[0], p2[1], p2[2]);
   plane->SetResolution(8, 8);
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetInputConnection(plane->GetOutputPort());
-  writer->SetFileName(file.c_str());
-  return writer->Write() == 1;
+  std::string error;
+  const bool written = DeepGIOutput::WriteAtomically(
+    file,
+    [&plane](const std::string& temporary)
+    {
+      vtkNew<vtkXMLPolyDataWriter> writer;
+      writer->SetInputConnection(plane->GetOutputPort());
+      writer->SetFileName(temporary.c_str());
+      return writer->Write() == 1 && writer->GetErrorCode() == 0;
+    },
+    error);
+  if (!written)
+  {
+    std::fprintf(stderr, "%s: %s\n", Program, error.c_str());
+  }
+  return written;
 }
 
 /// Populates `renderer` with `name` (the scenes' own colours, lights and
@@ -539,10 +550,13 @@ int main(int argc, char* argv[])
     ParseMethod(spec, m);
     methods.push_back(m);
   }
-  vtksys::SystemTools::MakeDirectory(options.Output);
-  if (options.ErrorMaps)
+  // The outputs are checked before the hours of measuring.
+  std::string outputError;
+  if (!DeepGIOutput::PrepareDirectory(options.Output, outputError) ||
+    (options.ErrorMaps && !DeepGIOutput::PrepareDirectory(options.Output + "/errors", outputError)))
   {
-    vtksys::SystemTools::MakeDirectory(options.Output + "/errors");
+    std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
+    return 1;
   }
 
   std::vector<Result> results;
@@ -705,9 +719,13 @@ int main(int argc, char* argv[])
       res.HighConfidenceError = byConfidence.second;
       if (options.ErrorMaps)
       {
-        WriteErrorMap(
-          options.Output + "/errors/" + sceneName + "-" + FileTag(methods[k].Name) + ".png", w, h,
-          error, mask, 2.0 * std::max(1e-6, meanRef));
+        if (!WriteErrorMap(
+              options.Output + "/errors/" + sceneName + "-" + FileTag(methods[k].Name) + ".png", w,
+              h, error, mask, 2.0 * std::max(1e-6, meanRef), outputError))
+        {
+          std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
+          return 1;
+        }
       }
       sceneResults.push_back(res);
     }
@@ -1022,8 +1040,12 @@ int main(int argc, char* argv[])
   }
 
   std::fputs(md.str().c_str(), stdout);
-  std::ofstream(options.Output + "/benchmark-radiosity.md") << md.str();
-  std::ofstream(options.Output + "/benchmark-radiosity.csv") << csv.str();
+  if (!DeepGIOutput::WriteText(options.Output + "/benchmark-radiosity.md", md.str(), outputError) ||
+    !DeepGIOutput::WriteText(options.Output + "/benchmark-radiosity.csv", csv.str(), outputError))
+  {
+    std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
+    return 1;
+  }
 
   // ---- plots ----
   std::vector<std::string> families;
@@ -1057,9 +1079,9 @@ int main(int argc, char* argv[])
   }
   if (!WritePlot(options.Output + "/benchmark-radiosity-plot.png",
         "Radiosity (single bounce): error vs time (mean over scenes)", xTitle, yTitle, families,
-        mean, options.Backend))
+        mean, options.Backend, outputError))
   {
-    std::fprintf(stderr, "%s: cannot write the plot\n", Program);
+    std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
     return 1;
   }
   for (const SceneInfo& s : infos)
@@ -1072,9 +1094,13 @@ int main(int argc, char* argv[])
         curves[r.M.Family].push_back({ r.FrameMs, r.Limited.Rmse });
       }
     }
-    WritePlot(options.Output + "/benchmark-radiosity-plot-" + s.Name + ".png",
-      "Radiosity (single bounce): error vs time, " + s.Name, xTitle, yTitle, families, curves,
-      options.Backend);
+    if (!WritePlot(options.Output + "/benchmark-radiosity-plot-" + s.Name + ".png",
+          "Radiosity (single bounce): error vs time, " + s.Name, xTitle, yTitle, families, curves,
+          options.Backend, outputError))
+    {
+      std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
+      return 1;
+    }
   }
   std::printf("\nwrote %s/benchmark-radiosity.{md,csv}, %s/benchmark-radiosity-plot.png\n",
     options.Output.c_str(), options.Output.c_str());
