@@ -25,6 +25,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderState.h"
+#include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
 #include "vtkSSAAPass.h"
 #include "vtkSequencePass.h"
@@ -45,6 +46,7 @@
 #include <cstring>
 #include <map>
 #include <string>
+#include <vector>
 
 #include <signal.h>
 
@@ -217,6 +219,12 @@ class vtkDeepGIPass::vtkInternals
 {
 public:
   vtkDeepGIOpaqueStep* OpaqueStep = nullptr;
+  // The render window whose context holds this pass's OpenGL objects
+  // (null: none yet), the windows refused since (one error each), and
+  // the plain VTK steps that draw their renderers.
+  vtkWeakPointer<vtkRenderWindow> Window;
+  std::vector<vtkWeakPointer<vtkRenderWindow>> Refused;
+  vtkNew<vtkRenderStepsPass> PlainSteps;
   std::map<vtkRenderer*, std::unique_ptr<vtkDeepGIRendererState>> States;
   // One composite program per combination of effects (bits 0-2).
   vtkOpenGLQuadHelper* CompositeQuads[EffectMask + 1] = {};
@@ -712,11 +720,49 @@ int vtkDeepGIPass::Converge(vtkRenderer* renderer, int maximumFrames, double tol
 }
 
 //------------------------------------------------------------------------------
+bool vtkDeepGIPass::AcceptWindow(vtkRenderer* renderer)
+{
+  vtkInternals& in = *this->Internals;
+  vtkRenderWindow* window = renderer->GetRenderWindow();
+  if (!in.Window || in.Window == window)
+  {
+    in.Window = window;
+    return true;
+  }
+  for (const auto& refused : in.Refused)
+  {
+    if (refused == window)
+    {
+      return false;
+    }
+  }
+  in.Refused.emplace_back(window);
+  vtkErrorMacro("This vtkDeepGIPass renders into render window "
+    << static_cast<void*>(in.Window.GetPointer())
+    << " and cannot render into another one: its OpenGL objects belong to that window's "
+       "context. Render window "
+    << static_cast<void*>(window)
+    << " is drawn without global illumination. Give each render window its own vtkDeepGIPass, "
+       "or call ReleaseGraphicsResources(first window) before moving the pass.");
+  return false;
+}
+
+//------------------------------------------------------------------------------
 void vtkDeepGIPass::Render(const vtkRenderState* s)
 {
   vtkInternals& in = *this->Internals;
   this->NumberOfRenderedProps = 0;
   vtkRenderer* renderer = s->GetRenderer();
+  if (!this->AcceptWindow(renderer))
+  {
+    // Another window's renderer: VTK's plain image, no OpenGL object of
+    // this pass touched.
+    this->LastFrameEffects = 0;
+    this->LastFrameNumberOfLayers = 0;
+    in.PlainSteps->Render(s);
+    this->NumberOfRenderedProps = in.PlainSteps->GetNumberOfRenderedProps();
+    return;
+  }
   auto& slot = in.States[renderer];
   if (!slot || !slot->Renderer)
   {
@@ -1047,6 +1093,14 @@ void vtkDeepGIPass::DeactivateCompositeInputs(
 void vtkDeepGIPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkInternals& in = *this->Internals;
+  in.PlainSteps->ReleaseGraphicsResources(w);
+  if (in.Window && w != in.Window)
+  {
+    // A refused window: none of this pass's objects are in its context.
+    return;
+  }
+  in.Window = nullptr;
+  in.Refused.clear();
   for (auto& entry : in.States)
   {
     entry.second->Release();

@@ -92,6 +92,15 @@
  * pass also when wrapped (vtkOpenGLFXAAPass, vtkToneMappingPass and other
  * vtkImageProcessingPass, vtkSSAAPass, vtkCameraPass, vtkSequencePass).
  *
+ * One render window at a time: the sub-passes' programs and textures
+ * belong to the OpenGL context of the window they were made in. A pass
+ * already rendering into one window refuses a renderer of another window
+ * with one error per window and draws that renderer the plain VTK way
+ * (no GI, no OpenGL error); ReleaseGraphicsResources(window) with the
+ * window it renders into frees everything and frees the pass for another
+ * window (with any other window it frees nothing: the objects are not that
+ * context's). Give each window its own vtkDeepGIPass to have GI in both.
+ *
  * Bad input: a non-positive frame count, a renderer that does not use this
  * pass, or a probe interval below 1 give a warning and no crash. When the
  * G-buffer is unsupported the frame is VTK's plain image, with one
@@ -323,6 +332,10 @@ private:
 
   // Converge's checks before the first frame (false: nothing to render).
   bool CheckConvergeArguments(vtkRenderer* renderer, int& maximumFrames, double& tolerance);
+
+  // Whether `renderer` may be drawn with GI: its window is the one this
+  // pass renders into (see the class description); otherwise one error.
+  bool AcceptWindow(vtkRenderer* renderer);
 
   // The stages of Render and RenderOpaque, in order.
   struct vtkCompositeInputs;
