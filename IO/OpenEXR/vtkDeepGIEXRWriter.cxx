@@ -63,6 +63,54 @@ std::vector<std::string> ChannelNames(const std::string& name, int components)
   return channels;
 }
 
+// Header attributes "vtkFieldData.<name>" for the field arrays of one tuple
+// (see the class documentation); others are skipped with a warning.
+void AddFieldData(vtkFieldData* fd, Imf::Header& header, vtkObject* self)
+{
+  for (int a = 0; fd && a < fd->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* abstract = fd->GetAbstractArray(a);
+    if (!abstract || !abstract->GetName())
+    {
+      continue;
+    }
+    const std::string name = FieldPrefix + std::string(abstract->GetName());
+    vtkDataArray* array = vtkDataArray::SafeDownCast(abstract);
+    auto strings = vtkStringArray::SafeDownCast(abstract);
+    if (strings && strings->GetNumberOfValues() == 1)
+    {
+      header.insert(name, Imf::StringAttribute(strings->GetValue(0)));
+    }
+    else if (array && array->GetNumberOfTuples() == 1 && array->GetNumberOfComponents() == 1)
+    {
+      if (array->GetDataType() == VTK_FLOAT || array->GetDataType() == VTK_DOUBLE)
+      {
+        header.insert(name, Imf::DoubleAttribute(array->GetComponent(0, 0)));
+      }
+      else
+      {
+        header.insert(name, Imf::IntAttribute(static_cast<int>(array->GetComponent(0, 0))));
+      }
+    }
+    else if (array && array->GetNumberOfTuples() == 1 && array->GetNumberOfComponents() == 16)
+    {
+      Imath::M44d m;
+      for (int k = 0; k < 16; ++k)
+      {
+        m[k / 4][k % 4] = array->GetComponent(0, k);
+      }
+      header.insert(name, Imf::M44dAttribute(m));
+    }
+    else
+    {
+      vtkWarningWithObjectMacro(self,
+        "Field array \"" << abstract->GetName()
+                         << "\" is not one number, one string or one 4x4 matrix; "
+                            "not written.");
+    }
+  }
+}
+
 // The whole file in memory: OpenEXR writes its line offset table when the
 // OutputFile is destroyed and cannot report a failure then, so the file's
 // own writing (and its errors) is left to WriteAtomically.
@@ -271,48 +319,7 @@ void vtkDeepGIEXRWriter::WriteData()
     return;
   }
 
-  vtkFieldData* fd = image->GetFieldData();
-  for (int a = 0; fd && a < fd->GetNumberOfArrays(); ++a)
-  {
-    vtkAbstractArray* abstract = fd->GetAbstractArray(a);
-    if (!abstract || !abstract->GetName())
-    {
-      continue;
-    }
-    const std::string name = FieldPrefix + std::string(abstract->GetName());
-    vtkDataArray* array = vtkDataArray::SafeDownCast(abstract);
-    auto strings = vtkStringArray::SafeDownCast(abstract);
-    if (strings && strings->GetNumberOfValues() == 1)
-    {
-      header.insert(name, Imf::StringAttribute(strings->GetValue(0)));
-    }
-    else if (array && array->GetNumberOfTuples() == 1 && array->GetNumberOfComponents() == 1)
-    {
-      if (array->GetDataType() == VTK_FLOAT || array->GetDataType() == VTK_DOUBLE)
-      {
-        header.insert(name, Imf::DoubleAttribute(array->GetComponent(0, 0)));
-      }
-      else
-      {
-        header.insert(name, Imf::IntAttribute(static_cast<int>(array->GetComponent(0, 0))));
-      }
-    }
-    else if (array && array->GetNumberOfTuples() == 1 && array->GetNumberOfComponents() == 16)
-    {
-      Imath::M44d m;
-      for (int k = 0; k < 16; ++k)
-      {
-        m[k / 4][k % 4] = array->GetComponent(0, k);
-      }
-      header.insert(name, Imf::M44dAttribute(m));
-    }
-    else
-    {
-      vtkWarningMacro("Field array \"" << abstract->GetName()
-                                       << "\" is not one number, one string or one 4x4 matrix; "
-                                          "not written.");
-    }
-  }
+  AddFieldData(image->GetFieldData(), header, this);
 
   std::string bytes, reason;
   int errorNumber = 0;
