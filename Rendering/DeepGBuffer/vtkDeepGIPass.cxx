@@ -301,6 +301,7 @@ void vtkDeepGIPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastLayerCoverage: " << this->LastLayerCoverage << "\n";
   os << indent << "LastConvergenceChange: " << this->LastConvergenceChange << "\n";
   os << indent << "LastConvergenceReached: " << this->LastConvergenceReached << "\n";
+  os << indent << "LastConvergenceAborted: " << this->LastConvergenceAborted << "\n";
   os << indent << "GBufferPass:\n";
   this->GBufferPass->PrintSelf(os, indent.GetNextIndent());
   os << indent << "AmbientObscurancePass:\n";
