@@ -409,17 +409,17 @@ std::pair<double, double> ErrorByConfidence(const std::vector<float>& e,
   return { nlo ? lo / nlo : 0.0, nhi ? hi / nhi : 0.0 };
 }
 
-/// Writes an axis-aligned rectangle (corner, two edges) as a .vtp file.
-bool WriteRectangle(
-  const std::string& file, const double o[3], const double p1[3], const double p2[3])
+/// Writes an axis-aligned rectangle (corner, two edges) as a .vtp file;
+/// false with `error` set when it cannot.
+bool WriteRectangle(const std::string& file, const double o[3], const double p1[3],
+  const double p2[3], std::string& error)
 {
   vtkNew<vtkPlaneSource> plane;
   plane->SetOrigin(o[0], o[1], o[2]);
   plane->SetPoint1(p1[0], p1[1], p1[2]);
   plane->SetPoint2(p2[0], p2[1], p2[2]);
   plane->SetResolution(8, 8);
-  std::string error;
-  const bool written = DeepGIOutput::WriteAtomically(
+  return DeepGIOutput::WriteAtomically(
     file,
     [&plane](const std::string& temporary)
     {
@@ -429,11 +429,6 @@ bool WriteRectangle(
       return writer->Write() == 1 && writer->GetErrorCode() == 0;
     },
     error);
-  if (!written)
-  {
-    std::fprintf(stderr, "%s: %s\n", Program, error.c_str());
-  }
-  return written;
 }
 
 /// Populates `renderer` with `name` (the scenes' own colours, lights and
@@ -481,9 +476,15 @@ vtkSmartPointer<vtkPolyData> LoadScene(const Options& o, const std::string& name
                    w2[3] = { cx - m, b[2] + 1.2 * (b[3] - b[2]), wz };
       const std::string floorFile = o.Output + "/dragon-floor.vtp";
       const std::string wallFile = o.Output + "/dragon-wall.vtp";
-      ok = WriteRectangle(floorFile, f0, f1, f2) && WriteRectangle(wallFile, w0, w1, w2);
+      std::string error;
+      if (!WriteRectangle(floorFile, f0, f1, f2, error) ||
+        !WriteRectangle(wallFile, w0, w1, w2, error))
+      {
+        std::fprintf(stderr, "%s: %s\n", Program, error.c_str());
+        return nullptr;
+      }
       loader->SetDefaultColor(0.9, 0.9, 0.9);
-      ok = ok && loader->LoadMesh(floorFile.c_str());
+      ok = loader->LoadMesh(floorFile.c_str());
       loader->SetDefaultColor(0.9, 0.15, 0.1);
       ok = ok && loader->LoadMesh(wallFile.c_str());
       // Seen from the front and above, the wall behind.
