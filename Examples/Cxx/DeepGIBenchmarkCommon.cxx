@@ -1,5 +1,7 @@
 #include "DeepGIBenchmarkCommon.h"
 
+#include "DeepGIOutput.h"
+
 #include "vtkAxis.h"
 #include "vtkChartXY.h"
 #include "vtkContextScene.h"
@@ -8,7 +10,6 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
-#include "vtkPNGWriter.h"
 #include "vtkPlot.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -134,7 +135,7 @@ std::vector<double> TimeFrames(const std::function<void()>& frame, int warmup, i
 }
 
 bool WriteErrorMap(const std::string& file, int w, int h, const std::vector<float>& error,
-  const std::vector<unsigned char>& mask, double scale)
+  const std::vector<unsigned char>& mask, double scale, std::string& message)
 {
   vtkNew<vtkImageData> image;
   image->SetDimensions(w, h, 1);
@@ -152,21 +153,18 @@ bool WriteErrorMap(const std::string& file, int w, int h, const std::vector<floa
     }
     std::copy(rgb, rgb + 3, p + 3 * i);
   }
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputData(image);
-  writer->SetFileName(file.c_str());
-  writer->Write();
-  return writer->GetErrorCode() == 0;
+  return DeepGIOutput::WritePNG(image, file, message);
 }
 
 bool WritePlot(const std::string& file, const std::string& title, const std::string& xTitle,
   const std::string& yTitle, const std::vector<std::string>& families, const Curves& curves,
-  int backend)
+  int backend, std::string& message)
 {
   vtkSmartPointer<vtkRenderWindow> window =
     vtkSmartPointer<vtkRenderWindow>::Take(vtkDeepGIRenderWindowFactory::NewRenderWindow(backend));
   if (!window)
   {
+    message = "cannot write " + file + ": no render window for the plot";
     return false;
   }
   window->SetOffScreenRendering(1);
@@ -220,10 +218,6 @@ bool WritePlot(const std::string& file, const std::string& title, const std::str
   grab->ReadFrontBufferOff();
   grab->ShouldRerenderOff();
   grab->Update();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->SetFileName(file.c_str());
-  writer->Write();
-  return writer->GetErrorCode() == 0;
+  return DeepGIOutput::WritePNG(grab->GetOutput(), file, message);
 }
 }

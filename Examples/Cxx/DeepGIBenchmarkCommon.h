@@ -43,17 +43,19 @@ std::vector<double> TimeFrames(const std::function<void()>& frame, int warmup, i
 
 /// Writes a w x h PNG of `error` (bottom row first) with the colour map
 /// black -> red -> yellow -> white for error = 0 .. `scale`; pixels where
-/// mask is 0 are dark blue.
+/// mask is 0 are dark blue. Written with DeepGIOutput::WritePNG; false with
+/// `message` set when it fails.
 bool WriteErrorMap(const std::string& file, int w, int h, const std::vector<float>& error,
-  const std::vector<unsigned char>& mask, double scale);
+  const std::vector<unsigned char>& mask, double scale, std::string& message);
 
 /// One curve per family (in `families`' order, skipping missing ones) of
 /// (x, y) points sorted by x, drawn with vtkChartXY in an offscreen
-/// 900 x 600 window of `backend` and written as a PNG.
+/// 900 x 600 window of `backend` and written as a PNG with
+/// DeepGIOutput::WritePNG; false with `message` set when it fails.
 using Curves = std::map<std::string, std::vector<std::pair<double, double>>>;
 bool WritePlot(const std::string& file, const std::string& title, const std::string& xTitle,
   const std::string& yTitle, const std::vector<std::string>& families, const Curves& curves,
-  int backend);
+  int backend, std::string& message);
 }
 
 #endif

@@ -1,18 +1,17 @@
 #include "DeepGIRenderFigures.h"
 
+#include "DeepGIOutput.h"
+
 #include "vtkDataArray.h"
 #include "vtkImageAppend.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
-#include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkTextProperty.h"
 #include "vtkTextRenderer.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
-
-#include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -277,19 +276,10 @@ vtkSmartPointer<vtkImageData> Tile(
 //------------------------------------------------------------------------------
 bool WritePNG(vtkImageData* image, const std::string& fileName)
 {
-  // The rename replaces `fileName` itself, even when it is a symbolic link;
-  // a stale partial file (or a link of that name) is removed first.
-  const std::string partial = fileName + ".partial";
-  vtksys::SystemTools::RemoveFile(partial);
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputData(image);
-  writer->SetFileName(partial.c_str());
-  writer->Write();
-  if (writer->GetErrorCode() != 0 || !vtksys::SystemTools::FileExists(partial, true) ||
-    std::rename(partial.c_str(), fileName.c_str()) != 0)
+  std::string error;
+  if (!DeepGIOutput::WritePNG(image, fileName, error))
   {
-    vtksys::SystemTools::RemoveFile(partial);
-    std::cerr << "deepgi-render: cannot write " << fileName << "\n";
+    std::cerr << "deepgi-render: " << error << "\n";
     return false;
   }
   return true;

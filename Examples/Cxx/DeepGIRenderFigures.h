@@ -51,8 +51,9 @@ vtkSmartPointer<vtkImageData> Tile(
   const std::vector<vtkSmartPointer<vtkImageData>>& panels, int columns);
 
 /**
- * Writes `image` as a PNG file: into `fileName`.partial first, renamed to
- * `fileName` once complete. Returns false with a message on stderr.
+ * Writes `image` as a PNG file through DeepGIOutput::WritePNG (a temporary
+ * file renamed onto `fileName` once complete; a symbolic link there is
+ * replaced, not followed). Returns false with a message on stderr.
  */
 bool WritePNG(vtkImageData* image, const std::string& fileName);
 } // namespace DeepGIRenderFigures

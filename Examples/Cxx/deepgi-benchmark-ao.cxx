@@ -29,6 +29,7 @@
 // errors/SCENE-METHOD.png (|AV - AV_ref|, colour map 0..0.5).
 
 #include "DeepGIBenchmarkCommon.h"
+#include "DeepGIOutput.h"
 
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
@@ -54,14 +55,12 @@
 #include "vtkSSAOPass.h"
 #include "vtkSmartPointer.h"
 #include "vtkWindowToImageFilter.h"
-#include "vtksys/SystemTools.hxx"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -607,10 +606,13 @@ int main(int argc, char* argv[])
     methods.push_back(m);
   }
 
-  vtksys::SystemTools::MakeDirectory(options.Output);
-  if (options.ErrorMaps)
+  // The outputs are checked before the hours of measuring.
+  std::string outputError;
+  if (!DeepGIOutput::PrepareDirectory(options.Output, outputError) ||
+    (options.ErrorMaps && !DeepGIOutput::PrepareDirectory(options.Output + "/errors", outputError)))
   {
-    vtksys::SystemTools::MakeDirectory(options.Output + "/errors");
+    std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
+    return 1;
   }
 
   std::vector<Result> results;
@@ -849,8 +851,12 @@ int main(int argc, char* argv[])
         {
           error[i] = av[i] - ref[i];
         }
-        WriteErrorMap(options.Output + "/errors/" + sceneName + "-" + FileTag(m.Name) + ".png", w,
-          h, error, mask, 0.5);
+        if (!WriteErrorMap(options.Output + "/errors/" + sceneName + "-" + FileTag(m.Name) + ".png",
+              w, h, error, mask, 0.5, outputError))
+        {
+          std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
+          return 1;
+        }
       }
       sceneResults.push_back(res);
       sceneAV[k] = av;
@@ -1083,8 +1089,12 @@ int main(int argc, char* argv[])
   }
 
   std::fputs(md.str().c_str(), stdout);
-  std::ofstream(options.Output + "/benchmark-ao.md") << md.str();
-  std::ofstream(options.Output + "/benchmark-ao.csv") << csv.str();
+  if (!DeepGIOutput::WriteText(options.Output + "/benchmark-ao.md", md.str(), outputError) ||
+    !DeepGIOutput::WriteText(options.Output + "/benchmark-ao.csv", csv.str(), outputError))
+  {
+    std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
+    return 1;
+  }
 
   // ---- plots ----
   std::vector<std::string> families;
@@ -1118,9 +1128,9 @@ int main(int argc, char* argv[])
   }
   if (!WritePlot(options.Output + "/benchmark-ao-plot.png",
         "Ambient obscurance: error vs time (mean over scenes)", TimeAxis, ErrorAxis, families, mean,
-        options.Backend))
+        options.Backend, outputError))
   {
-    std::fprintf(stderr, "%s: cannot write the plot\n", Program);
+    std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
     return 1;
   }
   for (const SceneInfo& s : infos)
@@ -1133,9 +1143,13 @@ int main(int argc, char* argv[])
         curves[r.M.Family.empty() ? r.M.Name : r.M.Family].push_back({ r.FrameMs, r.A.CRmse });
       }
     }
-    WritePlot(options.Output + "/benchmark-ao-plot-" + s.Name + ".png",
-      "Ambient obscurance: error vs time, " + s.Name, TimeAxis, ErrorAxis, families, curves,
-      options.Backend);
+    if (!WritePlot(options.Output + "/benchmark-ao-plot-" + s.Name + ".png",
+          "Ambient obscurance: error vs time, " + s.Name, TimeAxis, ErrorAxis, families, curves,
+          options.Backend, outputError))
+    {
+      std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
+      return 1;
+    }
   }
   std::printf("\nwrote %s/benchmark-ao.{md,csv}, %s/benchmark-ao-plot.png\n",
     options.Output.c_str(), options.Output.c_str());

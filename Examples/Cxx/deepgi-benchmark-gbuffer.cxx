@@ -17,6 +17,8 @@
 // machine affect them alike, and the median frame time of each is reported
 // with the second layer's cost, (T2 - T1), as a ratio of the first layer's T1.
 
+#include "DeepGIOutput.h"
+
 #include "vtkCamera.h"
 #include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferPass.h"
@@ -27,13 +29,11 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
-#include "vtksys/SystemTools.hxx"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -165,6 +165,13 @@ int main(int argc, char* argv[])
   {
     Usage();
     return 2;
+  }
+  // The outputs are checked before the measuring.
+  std::string outputError;
+  if (!DeepGIOutput::PrepareDirectory(options.Output, outputError))
+  {
+    std::fprintf(stderr, "deepgi-benchmark-gbuffer: %s\n", outputError.c_str());
+    return 1;
   }
 
   vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::Take(
@@ -317,15 +324,18 @@ int main(int argc, char* argv[])
   md << buffer;
 
   std::fputs(md.str().c_str(), stdout);
-  vtksys::SystemTools::MakeDirectory(options.Output);
-  std::ofstream(options.Output + "/benchmark-gbuffer.md") << md.str();
-  std::ofstream(options.Output + "/benchmark-gbuffer.csv") << csv.str();
   for (Method& m : methods)
   {
     if (m.Pass)
     {
       m.Pass->ReleaseGraphicsResources(window);
     }
+  }
+  if (!DeepGIOutput::WriteText(options.Output + "/benchmark-gbuffer.md", md.str(), outputError) ||
+    !DeepGIOutput::WriteText(options.Output + "/benchmark-gbuffer.csv", csv.str(), outputError))
+  {
+    std::fprintf(stderr, "deepgi-benchmark-gbuffer: %s\n", outputError.c_str());
+    return 1;
   }
   return 0;
 }

@@ -40,6 +40,7 @@
 // errors/SCENE-METHOD.png (|E - E_ref| on the luminance).
 
 #include "DeepGIBenchmarkCommon.h"
+#include "DeepGIOutput.h"
 
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
@@ -60,14 +61,12 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkXMLPolyDataWriter.h"
-#include "vtksys/SystemTools.hxx"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -410,19 +409,26 @@ std::pair<double, double> ErrorByConfidence(const std::vector<float>& e,
   return { nlo ? lo / nlo : 0.0, nhi ? hi / nhi : 0.0 };
 }
 
-/// Writes an axis-aligned rectangle (corner, two edges) as a .vtp file.
-bool WriteRectangle(
-  const std::string& file, const double o[3], const double p1[3], const double p2[3])
+/// Writes an axis-aligned rectangle (corner, two edges) as a .vtp file;
+/// false with `error` set when it cannot.
+bool WriteRectangle(const std::string& file, const double o[3], const double p1[3],
+  const double p2[3], std::string& error)
 {
   vtkNew<vtkPlaneSource> plane;
   plane->SetOrigin(o[0], o[1], o[2]);
   plane->SetPoint1(p1[0], p1[1], p1[2]);
   plane->SetPoint2(p2[0], p2[1], p2[2]);
   plane->SetResolution(8, 8);
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetInputConnection(plane->GetOutputPort());
-  writer->SetFileName(file.c_str());
-  return writer->Write() == 1;
+  return DeepGIOutput::WriteAtomically(
+    file,
+    [&plane](const std::string& temporary)
+    {
+      vtkNew<vtkXMLPolyDataWriter> writer;
+      writer->SetInputConnection(plane->GetOutputPort());
+      writer->SetFileName(temporary.c_str());
+      return writer->Write() == 1 && writer->GetErrorCode() == 0;
+    },
+    error);
 }
 
 /// Populates `renderer` with `name` (the scenes' own colours, lights and
@@ -470,9 +476,15 @@ vtkSmartPointer<vtkPolyData> LoadScene(const Options& o, const std::string& name
                    w2[3] = { cx - m, b[2] + 1.2 * (b[3] - b[2]), wz };
       const std::string floorFile = o.Output + "/dragon-floor.vtp";
       const std::string wallFile = o.Output + "/dragon-wall.vtp";
-      ok = WriteRectangle(floorFile, f0, f1, f2) && WriteRectangle(wallFile, w0, w1, w2);
+      std::string error;
+      if (!WriteRectangle(floorFile, f0, f1, f2, error) ||
+        !WriteRectangle(wallFile, w0, w1, w2, error))
+      {
+        std::fprintf(stderr, "%s: %s\n", Program, error.c_str());
+        return nullptr;
+      }
       loader->SetDefaultColor(0.9, 0.9, 0.9);
-      ok = ok && loader->LoadMesh(floorFile.c_str());
+      ok = loader->LoadMesh(floorFile.c_str());
       loader->SetDefaultColor(0.9, 0.15, 0.1);
       ok = ok && loader->LoadMesh(wallFile.c_str());
       // Seen from the front and above, the wall behind.
@@ -539,10 +551,13 @@ int main(int argc, char* argv[])
     ParseMethod(spec, m);
     methods.push_back(m);
   }
-  vtksys::SystemTools::MakeDirectory(options.Output);
-  if (options.ErrorMaps)
+  // The outputs are checked before the hours of measuring.
+  std::string outputError;
+  if (!DeepGIOutput::PrepareDirectory(options.Output, outputError) ||
+    (options.ErrorMaps && !DeepGIOutput::PrepareDirectory(options.Output + "/errors", outputError)))
   {
-    vtksys::SystemTools::MakeDirectory(options.Output + "/errors");
+    std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
+    return 1;
   }
 
   std::vector<Result> results;
@@ -705,9 +720,13 @@ int main(int argc, char* argv[])
       res.HighConfidenceError = byConfidence.second;
       if (options.ErrorMaps)
       {
-        WriteErrorMap(
-          options.Output + "/errors/" + sceneName + "-" + FileTag(methods[k].Name) + ".png", w, h,
-          error, mask, 2.0 * std::max(1e-6, meanRef));
+        if (!WriteErrorMap(
+              options.Output + "/errors/" + sceneName + "-" + FileTag(methods[k].Name) + ".png", w,
+              h, error, mask, 2.0 * std::max(1e-6, meanRef), outputError))
+        {
+          std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
+          return 1;
+        }
       }
       sceneResults.push_back(res);
     }
@@ -1022,8 +1041,12 @@ int main(int argc, char* argv[])
   }
 
   std::fputs(md.str().c_str(), stdout);
-  std::ofstream(options.Output + "/benchmark-radiosity.md") << md.str();
-  std::ofstream(options.Output + "/benchmark-radiosity.csv") << csv.str();
+  if (!DeepGIOutput::WriteText(options.Output + "/benchmark-radiosity.md", md.str(), outputError) ||
+    !DeepGIOutput::WriteText(options.Output + "/benchmark-radiosity.csv", csv.str(), outputError))
+  {
+    std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
+    return 1;
+  }
 
   // ---- plots ----
   std::vector<std::string> families;
@@ -1057,9 +1080,9 @@ int main(int argc, char* argv[])
   }
   if (!WritePlot(options.Output + "/benchmark-radiosity-plot.png",
         "Radiosity (single bounce): error vs time (mean over scenes)", xTitle, yTitle, families,
-        mean, options.Backend))
+        mean, options.Backend, outputError))
   {
-    std::fprintf(stderr, "%s: cannot write the plot\n", Program);
+    std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
     return 1;
   }
   for (const SceneInfo& s : infos)
@@ -1072,9 +1095,13 @@ int main(int argc, char* argv[])
         curves[r.M.Family].push_back({ r.FrameMs, r.Limited.Rmse });
       }
     }
-    WritePlot(options.Output + "/benchmark-radiosity-plot-" + s.Name + ".png",
-      "Radiosity (single bounce): error vs time, " + s.Name, xTitle, yTitle, families, curves,
-      options.Backend);
+    if (!WritePlot(options.Output + "/benchmark-radiosity-plot-" + s.Name + ".png",
+          "Radiosity (single bounce): error vs time, " + s.Name, xTitle, yTitle, families, curves,
+          options.Backend, outputError))
+    {
+      std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
+      return 1;
+    }
   }
   std::printf("\nwrote %s/benchmark-radiosity.{md,csv}, %s/benchmark-radiosity-plot.png\n",
     options.Output.c_str(), options.Output.c_str());

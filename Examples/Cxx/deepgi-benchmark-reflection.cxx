@@ -22,6 +22,7 @@
 // Outputs in --output DIR: benchmark-reflection.md and .csv.
 
 #include "DeepGIBenchmarkCommon.h"
+#include "DeepGIOutput.h"
 
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
@@ -45,13 +46,11 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
-#include "vtksys/SystemTools.hxx"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -246,7 +245,13 @@ int main(int argc, char* argv[])
     Usage();
     return 2;
   }
-  vtksys::SystemTools::MakeDirectory(options.Output);
+  // The outputs are checked before the measuring.
+  std::string outputError;
+  if (!DeepGIOutput::PrepareDirectory(options.Output, outputError))
+  {
+    std::fprintf(stderr, "deepgi-benchmark-reflection: %s\n", outputError.c_str());
+    return 1;
+  }
   std::vector<Result> results;
   for (const std::string& sceneName : options.Scenes)
   {
@@ -379,7 +384,12 @@ int main(int argc, char* argv[])
     csv << b;
   }
   std::fputs(md.str().c_str(), stdout);
-  std::ofstream(options.Output + "/benchmark-reflection.md") << md.str();
-  std::ofstream(options.Output + "/benchmark-reflection.csv") << csv.str();
+  if (!DeepGIOutput::WriteText(
+        options.Output + "/benchmark-reflection.md", md.str(), outputError) ||
+    !DeepGIOutput::WriteText(options.Output + "/benchmark-reflection.csv", csv.str(), outputError))
+  {
+    std::fprintf(stderr, "deepgi-benchmark-reflection: %s\n", outputError.c_str());
+    return 1;
+  }
   return 0;
 }

@@ -4,6 +4,7 @@
 // and writes the images and figures that show what global illumination
 // changed. Run with --help for the options.
 
+#include "DeepGIOutput.h"
 #include "DeepGIRenderFigures.h"
 
 #include "vtkCallbackCommand.h"
@@ -479,10 +480,10 @@ void ApplyExposure(vtkRenderer* renderer, double exposure)
 // Removes this program's outputs from an earlier run.
 bool PrepareOutput(const std::string& dir)
 {
-  if (vtksys::SystemTools::FileExists(dir, /*isFile=*/true) ||
-    !vtksys::SystemTools::MakeDirectory(dir))
+  std::string error;
+  if (!DeepGIOutput::PrepareDirectory(dir, error))
   {
-    std::cerr << "deepgi-render: cannot create the output directory " << dir << "\n";
+    std::cerr << "deepgi-render: " << error << "\n";
     return false;
   }
   for (const char* name : OutputFiles)

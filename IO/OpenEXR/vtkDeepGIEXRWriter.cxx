@@ -17,13 +17,20 @@
 #include <ImfIntAttribute.h>
 #include <ImfMatrixAttribute.h>
 #include <ImfOutputFile.h>
+#include <ImfStdIO.h>
 #include <ImfStringAttribute.h>
 #include <half.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <exception>
 #include <string>
 #include <vector>
+
+#include <sys/stat.h>
+#include <unistd.h>
 
 vtkStandardNewMacro(vtkDeepGIEXRWriter);
 
@@ -54,6 +61,129 @@ std::vector<std::string> ChannelNames(const std::string& name, int components)
     }
   }
   return channels;
+}
+
+// Header attributes "vtkFieldData.<name>" for the field arrays of one tuple
+// (see the class documentation); others are skipped with a warning.
+void AddFieldData(vtkFieldData* fd, Imf::Header& header, vtkObject* self)
+{
+  for (int a = 0; fd && a < fd->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* abstract = fd->GetAbstractArray(a);
+    if (!abstract || !abstract->GetName())
+    {
+      continue;
+    }
+    const std::string name = FieldPrefix + std::string(abstract->GetName());
+    vtkDataArray* array = vtkDataArray::SafeDownCast(abstract);
+    auto strings = vtkStringArray::SafeDownCast(abstract);
+    if (strings && strings->GetNumberOfValues() == 1)
+    {
+      header.insert(name, Imf::StringAttribute(strings->GetValue(0)));
+    }
+    else if (array && array->GetNumberOfTuples() == 1 && array->GetNumberOfComponents() == 1)
+    {
+      if (array->GetDataType() == VTK_FLOAT || array->GetDataType() == VTK_DOUBLE)
+      {
+        header.insert(name, Imf::DoubleAttribute(array->GetComponent(0, 0)));
+      }
+      else
+      {
+        header.insert(name, Imf::IntAttribute(static_cast<int>(array->GetComponent(0, 0))));
+      }
+    }
+    else if (array && array->GetNumberOfTuples() == 1 && array->GetNumberOfComponents() == 16)
+    {
+      Imath::M44d m;
+      for (int k = 0; k < 16; ++k)
+      {
+        m[k / 4][k % 4] = array->GetComponent(0, k);
+      }
+      header.insert(name, Imf::M44dAttribute(m));
+    }
+    else
+    {
+      vtkWarningWithObjectMacro(self,
+        "Field array \"" << abstract->GetName()
+                         << "\" is not one number, one string or one 4x4 matrix; "
+                            "not written.");
+    }
+  }
+}
+
+// The whole file in memory: OpenEXR writes its line offset table when the
+// OutputFile is destroyed and cannot report a failure then, so the file's
+// own writing (and its errors) is left to WriteAtomically.
+bool Encode(const Imf::Header& header, const Imf::FrameBuffer& frameBuffer, int height,
+  std::string& bytes, std::string& reason)
+{
+  try
+  {
+    Imf::StdOSStream stream;
+    {
+      Imf::OutputFile file(stream, header);
+      file.setFrameBuffer(frameBuffer);
+      file.writePixels(height);
+    }
+    bytes = stream.str();
+    return true;
+  }
+  catch (const std::exception& e)
+  {
+    reason = e.what();
+    return false;
+  }
+}
+
+// Writes `bytes` under a temporary name next to `path` (a new file, created
+// with O_EXCL, with the permissions the umask gives new files), every write
+// and the close checked, and renames it onto `path` once complete. A failed
+// write (a full disk) leaves no partial file and keeps an older file of that
+// name; a symbolic link at `path` is replaced, its target left alone.
+bool WriteAtomically(
+  const std::string& path, const std::string& bytes, std::string& reason, int& errorNumber)
+{
+  std::vector<char> name(path.begin(), path.end());
+  const char suffix[] = ".partial-XXXXXX";
+  name.insert(name.end(), suffix, suffix + sizeof(suffix)); // with the terminating 0
+  const int fd = mkstemp(name.data());
+  if (fd < 0)
+  {
+    errorNumber = errno;
+    reason = std::strerror(errorNumber);
+    return false;
+  }
+  const mode_t mask = umask(0);
+  umask(mask);
+  fchmod(fd, 0666 & ~mask);
+  std::FILE* file = fdopen(fd, "wb");
+  if (!file)
+  {
+    errorNumber = errno;
+    close(fd);
+    std::remove(name.data());
+    reason = std::strerror(errorNumber);
+    return false;
+  }
+  bool ok = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
+  ok = ok && std::fflush(file) == 0 && fsync(fileno(file)) == 0;
+  errorNumber = ok ? 0 : errno;
+  if (std::fclose(file) != 0 && ok)
+  {
+    ok = false;
+    errorNumber = errno;
+  }
+  if (ok && std::rename(name.data(), path.c_str()) != 0)
+  {
+    ok = false;
+    errorNumber = errno;
+  }
+  if (!ok)
+  {
+    std::remove(name.data());
+    reason = std::strerror(errorNumber);
+  }
+  return ok;
 }
 }
 
@@ -189,59 +319,17 @@ void vtkDeepGIEXRWriter::WriteData()
     return;
   }
 
-  vtkFieldData* fd = image->GetFieldData();
-  for (int a = 0; fd && a < fd->GetNumberOfArrays(); ++a)
-  {
-    vtkAbstractArray* abstract = fd->GetAbstractArray(a);
-    if (!abstract || !abstract->GetName())
-    {
-      continue;
-    }
-    const std::string name = FieldPrefix + std::string(abstract->GetName());
-    vtkDataArray* array = vtkDataArray::SafeDownCast(abstract);
-    auto strings = vtkStringArray::SafeDownCast(abstract);
-    if (strings && strings->GetNumberOfValues() == 1)
-    {
-      header.insert(name, Imf::StringAttribute(strings->GetValue(0)));
-    }
-    else if (array && array->GetNumberOfTuples() == 1 && array->GetNumberOfComponents() == 1)
-    {
-      if (array->GetDataType() == VTK_FLOAT || array->GetDataType() == VTK_DOUBLE)
-      {
-        header.insert(name, Imf::DoubleAttribute(array->GetComponent(0, 0)));
-      }
-      else
-      {
-        header.insert(name, Imf::IntAttribute(static_cast<int>(array->GetComponent(0, 0))));
-      }
-    }
-    else if (array && array->GetNumberOfTuples() == 1 && array->GetNumberOfComponents() == 16)
-    {
-      Imath::M44d m;
-      for (int k = 0; k < 16; ++k)
-      {
-        m[k / 4][k % 4] = array->GetComponent(0, k);
-      }
-      header.insert(name, Imf::M44dAttribute(m));
-    }
-    else
-    {
-      vtkWarningMacro("Field array \"" << abstract->GetName()
-                                       << "\" is not one number, one string or one 4x4 matrix; "
-                                          "not written.");
-    }
-  }
+  AddFieldData(image->GetFieldData(), header, this);
 
-  try
+  std::string bytes, reason;
+  int errorNumber = 0;
+  if (!Encode(header, frameBuffer, height, bytes, reason) ||
+    !WriteAtomically(this->FileName, bytes, reason, errorNumber))
   {
-    Imf::OutputFile file(this->FileName.c_str(), header);
-    file.setFrameBuffer(frameBuffer);
-    file.writePixels(height);
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro("Cannot write \"" << this->FileName << "\": " << e.what());
-    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
+    vtkErrorMacro("Cannot write \"" << this->FileName << "\": " << reason);
+    this->SetErrorCode(errorNumber == ENOSPC || errorNumber == EDQUOT || errorNumber == EFBIG
+        ? vtkErrorCode::OutOfDiskSpaceError
+        : vtkErrorCode::CannotOpenFileError);
   }
 }
 

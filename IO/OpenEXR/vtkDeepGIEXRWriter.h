@@ -34,9 +34,17 @@
  * ProjectionMatrix), one string as a string attribute. Others are skipped with
  * a warning.
  *
+ * The file is encoded in memory and written under a temporary name in the
+ * same directory ("FileName.partial-XXXXXX", every write checked), then
+ * renamed onto FileName: a failed write (a full disk, a read-only
+ * directory) removes the temporary file and leaves no partial file (an
+ * older file of that name stays as it was), and a symbolic link at
+ * FileName is replaced by the new file, its target never written.
+ *
  * Errors (no input, not 2D, no points, no numeric point array, no file name,
- * a path that cannot be written) are reported with vtkErrorMacro and an error
- * code (vtkErrorCode); Write() then returns 0 and never throws.
+ * a path that cannot be written, a full disk: OutOfDiskSpaceError) are
+ * reported with vtkErrorMacro and an error code (vtkErrorCode); Write()
+ * then returns 0 and never throws.
  *
  * @sa vtkDeepGIEXRReader
  */

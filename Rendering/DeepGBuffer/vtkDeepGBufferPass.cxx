@@ -70,6 +70,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -1235,10 +1236,13 @@ bool vtkDeepGBufferPass::BeginLayerFrame(const vtkRenderState* s, vtkLayerFrame&
     ComputeGuardBandPixels(this->GuardBand, size[0], size[1], in.MaximumTextureSize, &limited);
   if (limited)
   {
-    in.WarnOnce(this, WARN_GUARD_BAND_LIMITED,
-      "The guard band of " + std::to_string(this->GuardBand) +
-        " of the height exceeds this GPU's texture size " + std::to_string(in.MaximumTextureSize) +
-        "; it is limited to " + std::to_string(frame.Guard) + " pixels.");
+    std::ostringstream message;
+    message << "The guard band of " << this->GuardBand << " of the height of a " << size[0] << " x "
+            << size[1] << " frame is limited to " << frame.Guard << " pixels per side (at most "
+            << MAXIMUM_GUARD_BAND << " of the smaller side, " << MAXIMUM_GUARD_BAND_PIXELS
+            << " pixels, and layers within this GPU's texture size " << in.MaximumTextureSize
+            << "); warned once.";
+    in.WarnOnce(this, WARN_GUARD_BAND_LIMITED, message.str());
   }
   frame.Width = size[0] + 2 * frame.Guard;
   frame.Height = size[1] + 2 * frame.Guard;
@@ -1777,10 +1781,18 @@ int vtkDeepGBufferPass::ComputeGuardBandPixels(
   const int alignment = GUARD_BAND_ALIGNMENT;
   const double clamped =
     std::isfinite(fraction) ? std::min(std::max(fraction, 0.0), MAXIMUM_GUARD_BAND) : 0.0;
-  int guard = static_cast<int>(std::lround(clamped * std::max(height, 0)));
-  guard = (guard + alignment - 1) / alignment * alignment;
-  const int limit =
+  auto alignUp = [alignment](double pixels)
+  { return (static_cast<int>(std::lround(pixels)) + alignment - 1) / alignment * alignment; };
+  const int guard = alignUp(clamped * std::max(height, 0));
+  // What the frame needs: the band of a tall frame is bounded by its width
+  // (at most MAXIMUM_GUARD_BAND of the smaller side, so the layers hold at
+  // most about 4 x the frame's pixels), and no band exceeds
+  // MAXIMUM_GUARD_BAND_PIXELS; the layers fit the largest texture.
+  const int smallerSide = std::max(0, std::min(width, height));
+  const int textureLimit =
     std::max(0, (maximumTextureSize - std::max(width, height)) / 2 / alignment * alignment);
+  const int limit = std::min(
+    { alignUp(MAXIMUM_GUARD_BAND * smallerSide), MAXIMUM_GUARD_BAND_PIXELS, textureLimit });
   if (limited)
   {
     *limited = guard > limit;

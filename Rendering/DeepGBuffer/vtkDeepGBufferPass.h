@@ -104,8 +104,12 @@ public:
   /// The largest layer count this class supports (the GPU may allow fewer).
   static constexpr int MAXIMUM_NUMBER_OF_LAYERS = 8;
 
-  /// The largest guard band, as a fraction of the viewport's height per side.
+  /// The largest guard band, as a fraction of the viewport's height per side
+  /// (and, at render time, of its smaller side: see ComputeGuardBandPixels).
   static constexpr double MAXIMUM_GUARD_BAND = 0.5;
+
+  /// The largest guard band in pixels per side, whatever the frame's size.
+  static constexpr int MAXIMUM_GUARD_BAND_PIXELS = 1024;
 
   /// The guard band in pixels is a multiple of this: 8, the block of MIP
   /// level 3 (Table 2's coarsest minimum level).
@@ -218,9 +222,13 @@ public:
    * 0.1 at 16:9 is 1.34x. Default 0 (the layers are the frame); the
    * G-buffers that vtkDeepRadiosityPass and vtkDeepGIPass create use 0.1.
    * 0 to MAXIMUM_GUARD_BAND: values outside are clamped and NaN ignored,
-   * with a warning; the band is also limited to what the GPU's largest
-   * texture allows (a warning says so). The resolved image, the depth buffer
-   * and CaptureLayers are the frame's.
+   * with a warning. At render time the band is bounded by what the frame
+   * needs (ComputeGuardBandPixels: at most MAXIMUM_GUARD_BAND of the frame's
+   * smaller side, so that a tall, narrow frame does not get layers many
+   * times its size, at most MAXIMUM_GUARD_BAND_PIXELS, and layers within
+   * the GPU's largest texture), with one warning per pass the first time
+   * a limit applies. The resolved image, the depth buffer and CaptureLayers
+   * are the frame's.
    */
   void SetGuardBand(double fraction);
   vtkGetMacro(GuardBand, double);
@@ -233,9 +241,14 @@ public:
    * The guard band in pixels on each side for a frame of width x height
    * pixels: round(fraction x height) (fraction clamped to [0,
    * MAXIMUM_GUARD_BAND], 0 if not finite) rounded up to a multiple of
-   * GUARD_BAND_ALIGNMENT, at most what keeps the layers within
-   * maximumTextureSize (GL_MAX_TEXTURE_SIZE), also a multiple of the
-   * alignment. `limited` (if not null) tells whether that limit applied.
+   * GUARD_BAND_ALIGNMENT, and at most the smallest of
+   * - round(MAXIMUM_GUARD_BAND x min(width, height)) rounded up to the
+   *   alignment (an 8 x 4000 frame with 0.5 gets 8 pixels, not 2000: its
+   *   layers are 24 x 4016, not 4008 x 8000),
+   * - MAXIMUM_GUARD_BAND_PIXELS,
+   * - what keeps the layers within maximumTextureSize (GL_MAX_TEXTURE_SIZE),
+   *   rounded down to the alignment.
+   * `limited` (if not null) tells whether one of these limits applied.
    */
   static int ComputeGuardBandPixels(
     double fraction, int width, int height, int maximumTextureSize, bool* limited = nullptr);

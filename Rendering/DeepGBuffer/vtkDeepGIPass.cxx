@@ -4,12 +4,14 @@
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
 #include "vtkCamera.h"
+#include "vtkCameraPass.h"
 #include "vtkCommand.h"
 #include "vtkDataSet.h"
 #include "vtkDeepAmbientObscurancePass.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDeepRadiosityPass.h"
 #include "vtkDeepReflectionPass.h"
+#include "vtkImageProcessingPass.h"
 #include "vtkMapper.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -21,8 +23,12 @@
 #include "vtkOpenGLState.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
+#include "vtkRenderPassCollection.h"
 #include "vtkRenderState.h"
+#include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
+#include "vtkSSAAPass.h"
+#include "vtkSequencePass.h"
 #include "vtkShaderProgram.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWeakPointer.h"
@@ -36,8 +42,13 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <csignal>
+#include <cstring>
 #include <map>
 #include <string>
+#include <vector>
+
+#include <signal.h>
 
 vtkStandardNewMacro(vtkDeepGIPass);
 
@@ -208,6 +219,12 @@ class vtkDeepGIPass::vtkInternals
 {
 public:
   vtkDeepGIOpaqueStep* OpaqueStep = nullptr;
+  // The render window whose context holds this pass's OpenGL objects
+  // (null: none yet), the windows refused since (one error each), and
+  // the plain VTK steps that draw their renderers.
+  vtkWeakPointer<vtkRenderWindow> Window;
+  std::vector<vtkWeakPointer<vtkRenderWindow>> Refused;
+  vtkNew<vtkRenderStepsPass> PlainSteps;
   std::map<vtkRenderer*, std::unique_ptr<vtkDeepGIRendererState>> States;
   // One composite program per combination of effects (bits 0-2) and AV
   // composition (bit 3: MultiplyVisibility).
@@ -289,6 +306,7 @@ void vtkDeepGIPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastLayerCoverage: " << this->LastLayerCoverage << "\n";
   os << indent << "LastConvergenceChange: " << this->LastConvergenceChange << "\n";
   os << indent << "LastConvergenceReached: " << this->LastConvergenceReached << "\n";
+  os << indent << "LastConvergenceAborted: " << this->LastConvergenceAborted << "\n";
   os << indent << "GBufferPass:\n";
   this->GBufferPass->PrintSelf(os, indent.GetNextIndent());
   os << indent << "AmbientObscurancePass:\n";
@@ -511,19 +529,134 @@ double MeanAbsoluteChange(vtkUnsignedCharArray* a, vtkUnsignedCharArray* b)
 } // anonymous namespace
 
 //------------------------------------------------------------------------------
-int vtkDeepGIPass::Converge(vtkRenderer* renderer, int maximumFrames, double tolerance)
+namespace
 {
-  this->LastConvergenceChange = -1.0;
-  this->LastConvergenceReached = false;
+// Whether `pass` is `target` or wraps it: the delegates of image
+// processing passes (vtkOpenGLFXAAPass, vtkToneMappingPass, ...),
+// vtkSSAAPass and vtkCameraPass, and the passes of a vtkSequencePass.
+bool PassUses(vtkRenderPass* pass, vtkRenderPass* target, int depth = 0)
+{
+  if (!pass || depth > 32) // depth: a guard against cycles
+  {
+    return false;
+  }
+  if (pass == target)
+  {
+    return true;
+  }
+  if (auto* processing = vtkImageProcessingPass::SafeDownCast(pass))
+  {
+    return PassUses(processing->GetDelegatePass(), target, depth + 1);
+  }
+  if (auto* ssaa = vtkSSAAPass::SafeDownCast(pass))
+  {
+    return PassUses(ssaa->GetDelegatePass(), target, depth + 1);
+  }
+  if (auto* camera = vtkCameraPass::SafeDownCast(pass))
+  {
+    return PassUses(camera->GetDelegatePass(), target, depth + 1);
+  }
+  auto* sequence = vtkSequencePass::SafeDownCast(pass);
+  if (sequence && sequence->GetPasses())
+  {
+    vtkCollectionSimpleIterator it;
+    sequence->GetPasses()->InitTraversal(it);
+    while (vtkRenderPass* step = sequence->GetPasses()->GetNextRenderPass(it))
+    {
+      if (PassUses(step, target, depth + 1))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+// SIGINT while converging: caught into a flag; when the scope ends the
+// previous action is restored and, if SIGINT arrived, raised again for it
+// (Python's handler then raises KeyboardInterrupt). A SIGINT that is
+// ignored stays ignored.
+volatile std::sig_atomic_t InterruptReceived = 0;
+
+extern "C" void CatchInterrupt(int)
+{
+  InterruptReceived = 1;
+}
+
+class ScopedInterruptCatcher
+{
+public:
+  ScopedInterruptCatcher()
+  {
+    InterruptReceived = 0;
+    struct sigaction current;
+    if (sigaction(SIGINT, nullptr, &current) != 0 || current.sa_handler == SIG_IGN)
+    {
+      return;
+    }
+    struct sigaction catcher;
+    std::memset(&catcher, 0, sizeof(catcher));
+    catcher.sa_handler = CatchInterrupt;
+    sigemptyset(&catcher.sa_mask);
+    this->Installed = sigaction(SIGINT, &catcher, &this->Previous) == 0;
+  }
+  ~ScopedInterruptCatcher()
+  {
+    if (this->Installed)
+    {
+      sigaction(SIGINT, &this->Previous, nullptr);
+      if (InterruptReceived)
+      {
+        std::raise(SIGINT);
+      }
+    }
+  }
+  bool Received() const { return InterruptReceived != 0; }
+  ScopedInterruptCatcher(const ScopedInterruptCatcher&) = delete;
+  void operator=(const ScopedInterruptCatcher&) = delete;
+
+private:
+  bool Installed = false;
+  struct sigaction Previous;
+};
+
+// Sets a flag for a scope, also when an exception leaves it.
+class ScopedFlag
+{
+public:
+  explicit ScopedFlag(bool& flag)
+    : Flag(flag)
+  {
+    this->Flag = true;
+  }
+  ~ScopedFlag() { this->Flag = false; }
+  ScopedFlag(const ScopedFlag&) = delete;
+  void operator=(const ScopedFlag&) = delete;
+
+private:
+  bool& Flag;
+};
+} // anonymous namespace
+
+//------------------------------------------------------------------------------
+bool vtkDeepGIPass::CheckConvergeArguments(
+  vtkRenderer* renderer, int& maximumFrames, double& tolerance)
+{
   if (!renderer || !renderer->GetRenderWindow())
   {
     vtkWarningMacro("Converge: a renderer in a render window is needed; nothing rendered.");
-    return 0;
+    return false;
   }
   if (maximumFrames < 1)
   {
     vtkWarningMacro("Converge: " << maximumFrames << " frames requested; nothing rendered.");
-    return 0;
+    return false;
+  }
+  if (maximumFrames > MAXIMUM_CONVERGE_FRAMES)
+  {
+    vtkWarningMacro("Converge: " << maximumFrames << " frames requested; rendering at most "
+                                 << MAXIMUM_CONVERGE_FRAMES << " (MAXIMUM_CONVERGE_FRAMES).");
+    maximumFrames = MAXIMUM_CONVERGE_FRAMES;
   }
   if (!(tolerance >= 0.0))
   {
@@ -531,20 +664,37 @@ int vtkDeepGIPass::Converge(vtkRenderer* renderer, int maximumFrames, double tol
                                            << maximumFrames << " frames).");
     tolerance = 0.0;
   }
-  if (renderer->GetPass() != this)
+  if (!PassUses(renderer->GetPass(), this))
   {
     vtkWarningMacro("Converge: the renderer does not use this pass (call SetPass first); the "
                     "frames are rendered without converging anything.");
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkDeepGIPass::Converge(vtkRenderer* renderer, int maximumFrames, double tolerance)
+{
+  this->LastConvergenceChange = -1.0;
+  this->LastConvergenceReached = false;
+  this->LastConvergenceAborted = false;
+  if (!this->CheckConvergeArguments(renderer, maximumFrames, tolerance))
+  {
+    return 0;
+  }
+  vtkRenderWindow* window = renderer->GetRenderWindow();
   const bool measure = tolerance > 0.0;
   vtkNew<vtkUnsignedCharArray> previous;
   vtkNew<vtkUnsignedCharArray> current;
   bool havePrevious = false;
-  this->Internals->Converging = true;
-  int k = 1;
-  for (; k <= maximumFrames; ++k)
+  // Both restored also when an observer throws.
+  ScopedFlag converging(this->Internals->Converging);
+  ScopedInterruptCatcher interrupt;
+  int k = 0;
+  while (k < maximumFrames)
   {
-    renderer->GetRenderWindow()->Render();
+    window->Render();
+    ++k;
     bool done = false;
     if (measure && ReadViewportColour(renderer, current))
     {
@@ -563,9 +713,44 @@ int vtkDeepGIPass::Converge(vtkRenderer* renderer, int maximumFrames, double tol
       this->LastConvergenceReached = true;
       break;
     }
+    // VTK's abort convention: the window's AbortRender flag, set by an
+    // observer (of ProgressEvent, or of the window's AbortCheckEvent that
+    // CheckAbortStatus fires); Render() clears it before the next frame.
+    if (window->CheckAbortStatus() || interrupt.Received())
+    {
+      this->LastConvergenceAborted = true;
+      break;
+    }
   }
-  this->Internals->Converging = false;
-  return std::min(k, maximumFrames);
+  return k;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGIPass::AcceptWindow(vtkRenderer* renderer)
+{
+  vtkInternals& in = *this->Internals;
+  vtkRenderWindow* window = renderer->GetRenderWindow();
+  if (!in.Window || in.Window == window)
+  {
+    in.Window = window;
+    return true;
+  }
+  for (const auto& refused : in.Refused)
+  {
+    if (refused == window)
+    {
+      return false;
+    }
+  }
+  in.Refused.emplace_back(window);
+  vtkErrorMacro("This vtkDeepGIPass renders into render window "
+    << static_cast<void*>(in.Window.GetPointer())
+    << " and cannot render into another one: its OpenGL objects belong to that window's "
+       "context. Render window "
+    << static_cast<void*>(window)
+    << " is drawn without global illumination. Give each render window its own vtkDeepGIPass, "
+       "or call ReleaseGraphicsResources(first window) before moving the pass.");
+  return false;
 }
 
 //------------------------------------------------------------------------------
@@ -574,6 +759,16 @@ void vtkDeepGIPass::Render(const vtkRenderState* s)
   vtkInternals& in = *this->Internals;
   this->NumberOfRenderedProps = 0;
   vtkRenderer* renderer = s->GetRenderer();
+  if (!this->AcceptWindow(renderer))
+  {
+    // Another window's renderer: VTK's plain image, no OpenGL object of
+    // this pass touched.
+    this->LastFrameEffects = 0;
+    this->LastFrameNumberOfLayers = 0;
+    in.PlainSteps->Render(s);
+    this->NumberOfRenderedProps = in.PlainSteps->GetNumberOfRenderedProps();
+    return;
+  }
   auto& slot = in.States[renderer];
   if (!slot || !slot->Renderer)
   {
@@ -922,6 +1117,14 @@ void vtkDeepGIPass::DeactivateCompositeInputs(
 void vtkDeepGIPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkInternals& in = *this->Internals;
+  in.PlainSteps->ReleaseGraphicsResources(w);
+  if (in.Window && w != in.Window)
+  {
+    // A refused window: none of this pass's objects are in its context.
+    return;
+  }
+  in.Window = nullptr;
+  in.Refused.clear();
   for (auto& entry : in.States)
   {
     entry.second->Release();

@@ -95,6 +95,24 @@
  * (the rotating taps of the temporal filter). See Documentation/gi.md and
  * Examples/Python/deepgi_convergence.py.
  *
+ * Converge stops between two frames when asked to, the way VTK's
+ * rendering is aborted: the render window's AbortRender flag set (by a
+ * ProgressEvent observer, or by an AbortCheckEvent observer of the window,
+ * which Converge fires through vtkRenderWindow::CheckAbortStatus after each
+ * frame), or SIGINT (Ctrl-C) received. It renders at most
+ * MAXIMUM_CONVERGE_FRAMES frames. It finds this pass in the renderer's
+ * pass also when wrapped (vtkOpenGLFXAAPass, vtkToneMappingPass and other
+ * vtkImageProcessingPass, vtkSSAAPass, vtkCameraPass, vtkSequencePass).
+ *
+ * One render window at a time: the sub-passes' programs and textures
+ * belong to the OpenGL context of the window they were made in. A pass
+ * already rendering into one window refuses a renderer of another window
+ * with one error per window and draws that renderer the plain VTK way
+ * (no GI, no OpenGL error); ReleaseGraphicsResources(window) with the
+ * window it renders into frees everything and frees the pass for another
+ * window (with any other window it frees nothing: the objects are not that
+ * context's). Give each window its own vtkDeepGIPass to have GI in both.
+ *
  * Bad input: a non-positive frame count, a renderer that does not use this
  * pass, or a probe interval below 1 give a warning and no crash. When the
  * G-buffer is unsupported the frame is VTK's plain image, with one
@@ -135,6 +153,10 @@ public:
     REFLECTIONS = 4,
     SECOND_LAYER = 8 ///< the G-buffer had two layers
   };
+
+  /// The most frames one Converge call renders; more are clamped, with a
+  /// warning.
+  static constexpr int MAXIMUM_CONVERGE_FRAMES = 10000;
 
   /// Quality presets (see the class description).
   enum Preset
@@ -236,12 +258,27 @@ public:
    * Renders `renderer`'s window `frames` times without moving the camera,
    * so that the radiosity bounces and the temporal filters settle, and
    * fires vtkCommand::ProgressEvent with a double progress (k / frames)
-   * after frame k. The renderer should use this pass (a warning
-   * otherwise; the frames are rendered anyway). Interval probes of the
-   * layer count are not started while converging (they would reset the
-   * radiosity history). Returns the number of frames rendered (0 with a
-   * warning for a null renderer, a renderer without a window or
-   * frames < 1).
+   * after frame k. The renderer should use this pass, directly or through
+   * wrapping passes such as vtkOpenGLFXAAPass, vtkSSAAPass or
+   * vtkToneMappingPass (a warning otherwise; the frames are rendered
+   * anyway). Interval probes of the layer count are not started while
+   * converging (they would reset the radiosity history). Returns the
+   * number of frames rendered (0 with a warning for a null renderer, a
+   * renderer without a window or frames < 1; frames above
+   * MAXIMUM_CONVERGE_FRAMES are clamped with a warning).
+   *
+   * Interruption: after each frame and its ProgressEvent, Converge stops
+   * when the render window's AbortRender flag is set (an observer calls
+   * window->SetAbortRender(1); vtkRenderWindow::CheckAbortStatus is called,
+   * so AbortCheckEvent observers of the window can set it too) or when
+   * SIGINT arrived during the call; GetLastConvergenceAborted() then is
+   * true. While Converge runs, SIGINT is caught (unless it is ignored);
+   * afterwards the previous SIGINT action is restored and, if SIGINT
+   * arrived, it is raised again for that action (Python then raises
+   * KeyboardInterrupt, a C++ program without a handler ends). An exception
+   * thrown by an observer leaves Converge (the pass and the signal
+   * handling restored); Python observers cannot throw through VTK (their
+   * exceptions are printed): they abort with SetAbortRender(1).
    */
   int Converge(vtkRenderer* renderer, int frames);
 
@@ -270,6 +307,10 @@ public:
   vtkGetMacro(LastConvergenceChange, double);
   vtkGetMacro(LastConvergenceReached, bool);
 
+  /// Whether the last Converge call stopped because it was aborted
+  /// (AbortRender or SIGINT, see Converge).
+  vtkGetMacro(LastConvergenceAborted, bool);
+
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
@@ -295,10 +336,18 @@ protected:
   long long LastLayerCoverage = -1;
   double LastConvergenceChange = -1.0;
   bool LastConvergenceReached = false;
+  bool LastConvergenceAborted = false;
 
 private:
   vtkDeepGIPass(const vtkDeepGIPass&) = delete;
   void operator=(const vtkDeepGIPass&) = delete;
+
+  // Converge's checks before the first frame (false: nothing to render).
+  bool CheckConvergeArguments(vtkRenderer* renderer, int& maximumFrames, double& tolerance);
+
+  // Whether `renderer` may be drawn with GI: its window is the one this
+  // pass renders into (see the class description); otherwise one error.
+  bool AcceptWindow(vtkRenderer* renderer);
 
   // The stages of Render and RenderOpaque, in order.
   struct vtkCompositeInputs;
