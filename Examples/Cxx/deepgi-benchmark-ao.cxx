@@ -55,6 +55,7 @@
 #include "vtkSSAOPass.h"
 #include "vtkSmartPointer.h"
 #include "vtkWindowToImageFilter.h"
+#include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
 #include <chrono>
@@ -628,7 +629,7 @@ int main(int argc, char* argv[])
   std::vector<SceneInfo> infos;
   std::string device = "unknown";
 
-  for (const std::string& sceneName : options.Scenes)
+  for (const std::string& sceneSpec : options.Scenes)
   {
     vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::Take(
       vtkDeepGIRenderWindowFactory::NewRenderWindow(options.Backend));
@@ -643,10 +644,12 @@ int main(int argc, char* argv[])
     window->AddRenderer(renderer);
     SceneSetup scene;
     vtkSmartPointer<vtkObject> keep;
-    if (!LoadScene(options, sceneName, renderer, scene, keep))
+    if (!LoadScene(options, sceneSpec, renderer, scene, keep))
     {
       return 1;
     }
+    // The built-in scene's name, or the user's file name (its iso-value).
+    const std::string sceneName = scene.Name;
     double bounds[6];
     scene.Geometry->GetBounds(bounds);
     const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
@@ -851,8 +854,9 @@ int main(int argc, char* argv[])
         {
           error[i] = av[i] - ref[i];
         }
-        if (!WriteErrorMap(options.Output + "/errors/" + sceneName + "-" + FileTag(m.Name) + ".png",
-              w, h, error, mask, 0.5, outputError))
+        if (!WriteErrorMap(
+              options.Output + "/errors/" + FileTag(sceneName) + "-" + FileTag(m.Name) + ".png", w,
+              h, error, mask, 0.5, outputError))
         {
           std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
           return 1;
@@ -1143,7 +1147,7 @@ int main(int argc, char* argv[])
         curves[r.M.Family.empty() ? r.M.Name : r.M.Family].push_back({ r.FrameMs, r.A.CRmse });
       }
     }
-    if (!WritePlot(options.Output + "/benchmark-ao-plot-" + s.Name + ".png",
+    if (!WritePlot(options.Output + "/benchmark-ao-plot-" + FileTag(s.Name) + ".png",
           "Ambient obscurance: error vs time, " + s.Name, TimeAxis, ErrorAxis, families, curves,
           options.Backend, outputError))
     {
