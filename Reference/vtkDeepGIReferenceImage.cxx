@@ -299,7 +299,7 @@ vtkSmartPointer<vtkPolyData> ActorTriangles(vtkActor* actor, bool& approximatedC
 }
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkPolyData> vtkDeepGIReferenceImage::SceneFromRenderer(vtkRenderer* renderer)
+bool vtkDeepGIReferenceImage::SceneFromRenderer(vtkRenderer* renderer, vtkPolyData* scene)
 {
   vtkNew<vtkAppendPolyData> append;
   bool approximatedColour = false;
@@ -334,13 +334,14 @@ vtkSmartPointer<vtkPolyData> vtkDeepGIReferenceImage::SceneFromRenderer(vtkRende
       "Actors coloured by scalars or textures keep their "
       "property's colour in the reference scene.");
   }
-  auto scene = vtkSmartPointer<vtkPolyData>::New();
-  if (parts > 0)
+  scene->Initialize();
+  if (parts == 0)
   {
-    append->Update();
-    scene->ShallowCopy(append->GetOutput());
+    return false;
   }
-  return scene;
+  append->Update();
+  scene->ShallowCopy(append->GetOutput());
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -41,7 +41,7 @@
 
 #include "vtkDeepGIReferenceModule.h" // for export macro
 #include "vtkObject.h"
-#include "vtkSmartPointer.h" // for the scene
+#include "vtkSmartPointer.h" // for the sub-references
 
 class vtkDeepGIReferenceIrradiance;
 class vtkDeepGIReferenceObscurance;
@@ -114,14 +114,15 @@ public:
   ///@}
 
   /**
-   * The visible actors of `renderer` with opaque polygonal geometry as one
-   * triangle mesh in world coordinates, with cell arrays "Colors" (the
-   * property's DiffuseColor, RGB double) and "Diffuse" (its Diffuse) and
-   * the actors' point normals where they have them. Actors coloured by
-   * scalars or textures keep their property colour (a warning says so);
-   * inputs that are not vtkPolyData are skipped with a warning.
+   * Sets `scene` to the visible actors of `renderer` with opaque polygonal
+   * geometry as one triangle mesh in world coordinates, with cell arrays
+   * "Colors" (the property's DiffuseColor, RGB double) and "Diffuse" (its
+   * Diffuse) and the actors' point normals where they all have them.
+   * Actors coloured by scalars or textures keep their property colour (a
+   * warning says so); inputs that are not vtkPolyData are skipped with a
+   * warning. Returns false (scene emptied) when no actor qualifies.
    */
-  static vtkSmartPointer<vtkPolyData> SceneFromRenderer(vtkRenderer* renderer);
+  static bool SceneFromRenderer(vtkRenderer* renderer, vtkPolyData* scene);
 
 protected:
   vtkDeepGIReferenceImage();

@@ -8,9 +8,9 @@
 // the AO (a brighter or darker region) fails. The numeric checks on the
 // captured AV carry the exact expectations: the ranges below are the values
 // measured when the baseline was made (default estimator SOLID_ANGLE: mean
-// 0.917, unoccluded fraction 0.401, dark fraction 0.168) with margins of about 0.03 for the mean and a
-// third of the fractions, wide enough for another rasteriser and narrow
-// enough to catch an AV that is all 1 or all dark.
+// 0.917, unoccluded fraction 0.401, dark fraction 0.168) with margins of about 0.03 for the mean
+// and a third of the fractions, wide enough for another rasteriser and narrow enough to catch an AV
+// that is all 1 or all dark.
 
 #include "DeepAmbientObscuranceImageTest.h"
 #include "vtkDeepGBufferDemoScene.h"

@@ -25,6 +25,7 @@
 #include "vtkDeepAmbientObscurancePass.h"
 #include "vtkDeepGIPass.h"
 #include "vtkDeepGIReferenceImage.h"
+#include "vtkPolyData.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkSSAOPass.h"
 #include "vtkSphereSource.h"
@@ -125,7 +126,9 @@ int TestDeepGIContact(int, char*[])
   vtkNew<vtkRenderer> sceneRenderer;
   BuildScene(sceneRenderer);
   vtkNew<vtkDeepGIReferenceImage> reference;
-  reference->SetScene(vtkDeepGIReferenceImage::SceneFromRenderer(sceneRenderer));
+  vtkNew<vtkPolyData> scene;
+  Check(vtkDeepGIReferenceImage::SceneFromRenderer(sceneRenderer, scene), "scene from the actors");
+  reference->SetScene(scene);
   reference->SetLightsFromRenderer(sceneRenderer);
   reference->SetObscuranceRadius(gi.ObscuranceRadius);
   reference->SetSamplesPerPixel(128);

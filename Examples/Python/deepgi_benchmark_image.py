@@ -1,0 +1,317 @@
+"""The final image against the ray-traced truth: plain VTK, vtkSSAOPass and
+vtkDeepGIPass side by side, on built-in scenes and on the user's own files.
+
+    PYTHONPATH=<build>/lib/python3/dist-packages /usr/bin/python3 \\
+        Examples/Python/deepgi_benchmark_image.py [options]
+
+(scripts/benchmark-image.sh installs, builds and runs it.) For every scene,
+at one still camera:
+
+- plain VTK; vtkSSAOPass with kernel 16 and 64 (radius = the obscurance
+  pass's automatic radius, 0.05 x the scene's diagonal, blur on); and
+  vtkDeepGIPass with each preset, converged with Converge(renderer, 16,
+  0.07 / 255) as the main job does;
+- the reference: vtkDeepGIReferenceImage (the pass's lighting model,
+  Documentation/lighting-model.md) on the G-buffer capture of the same
+  camera, with the same obscurance radius and the same rule for what
+  ambient visibility scales;
+- per method: milliseconds per frame (median of --frames frames after
+  three warm-up frames, methods interleaved in --rounds rounds, ratio to
+  plain VTK), and RMSE, MAE and bias (mean signed error) of the 8-bit image
+  (RGB / 255) against the reference over every valid surface pixel and over
+  the pixels where the G-buffer has a second layer.
+
+Scenes: --scenes takes the built-in demo, cornell-lucy, dragon and headsq;
+--mesh FILE (repeatable: .ply .stl .vtk .vtp .obj) and --volume FILE --iso V
+add the user's own. --default-actors gives every actor VTK's default
+property (white, Ambient 0, Diffuse 1, Specular 0), i.e. what a VTK user
+gets without choosing materials; otherwise the scene loader's materials.
+
+Writes OUTDIR/benchmark-image.md (the tables) and, per scene,
+OUTDIR/SCENE.png: plain | vtkSSAOPass K16 | vtkDeepGIPass BALANCED |
+reference | |BALANCED - reference| x 4.
+"""
+import argparse
+import os
+import statistics
+import sys
+import time
+
+import numpy as np
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData
+from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkRenderingCore import vtkRenderer, vtkWindowToImageFilter
+from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass, vtkSSAOPass
+
+import vtkdeepgi
+
+PRESETS = ("HIGH_PERFORMANCE", "BALANCED", "HIGH_QUALITY")
+
+
+def parse_arguments():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--size", default="320x240", help="WxH (default 320x240)")
+    parser.add_argument("--samples", type=int, default=128, help="reference rays per pixel")
+    parser.add_argument("--bounces", type=int, default=4, help="reference bounces (1..16)")
+    parser.add_argument("--frames", type=int, default=5, help="timed frames per method and round")
+    parser.add_argument("--rounds", type=int, default=2, help="rounds over the methods")
+    parser.add_argument("--scenes", default="demo,cornell-lucy,dragon,headsq")
+    parser.add_argument("--mesh", action="append", default=[], help="a mesh or OBJ scene")
+    parser.add_argument("--volume", action="append", default=[], help="a volume (with --iso)")
+    parser.add_argument("--iso", action="append", type=float, default=[], help="iso-value")
+    parser.add_argument("--default-actors", action="store_true")
+    parser.add_argument("--data", required=True, help="the project's Testing/Data folder")
+    parser.add_argument("--output", default="output")
+    args = parser.parse_args()
+    try:
+        width, height = (int(v) for v in args.size.lower().split("x"))
+    except ValueError:
+        parser.error("--size needs WxH")
+    if not (16 <= width <= 8192 and 16 <= height <= 8192):
+        parser.error("--size needs 16..8192 pixels per side")
+    args.width, args.height = width, height
+    if len(args.volume) != len(args.iso):
+        parser.error("every --volume needs one --iso")
+    for path in args.mesh + args.volume:
+        if not os.path.isfile(path):
+            parser.error("no such file: " + path)
+    if not (1 <= args.samples <= 1048576 and 1 <= args.bounces <= 16):
+        parser.error("--samples 1..1048576, --bounces 1..16")
+    if not (1 <= args.frames <= 1000 and 1 <= args.rounds <= 100):
+        parser.error("--frames 1..1000, --rounds 1..100")
+    args.scene_list = [s for s in args.scenes.split(",") if s]
+    for name in args.scene_list:
+        if name not in ("demo", "cornell-lucy", "dragon", "headsq"):
+            parser.error("unknown scene " + name)
+    args.scene_list += [("mesh", path) for path in args.mesh]
+    args.scene_list += [("volume", path, iso) for path, iso in zip(args.volume, args.iso)]
+    return args
+
+
+def populate(renderer, scene, data):
+    """Fills the renderer; returns the scene's display name, and an object to keep."""
+    if scene == "demo":
+        demo = vtkdeepgi.vtkDeepGBufferDemoScene()
+        demo.SetTargetNumberOfTriangles(20000)
+        demo.Populate(renderer)
+        demo.SetCameraToDefaultView(renderer.GetActiveCamera())
+        return "demo", demo
+    loader = vtkdeepgi.vtkDeepGBufferSceneLoader()
+    if scene == "cornell-lucy":
+        ok, name = loader.Load(data + "/scenes/cornell-lucy/CornellBox-Lucy.obj"), scene
+    elif scene == "dragon":
+        ok, name = loader.Load(data + "/meshes/dragon.ply"), scene
+    elif scene == "headsq":
+        ok, name = loader.LoadVolume(data + "/volumes/headsq/quarter", 500.0), scene
+        loader.SetViewDirection(0.0, -1.0, 0.0)
+        loader.SetViewUp(0.0, 0.0, -1.0)
+    elif scene[0] == "mesh":
+        ok, name = loader.Load(scene[1]), os.path.basename(scene[1])
+    else:
+        ok = loader.LoadVolume(scene[1], scene[2])
+        name = "%s iso %g" % (os.path.basename(scene[1]), scene[2])
+    if not ok:
+        sys.exit("deepgi_benchmark_image.py: cannot load %s" % (name if ok is not None else scene))
+    loader.Populate(renderer)
+    loader.ResetCamera(renderer)
+    return name, loader
+
+
+def use_default_properties(renderer):
+    actors = renderer.GetActors()
+    actors.InitTraversal()
+    for _ in range(actors.GetNumberOfItems()):
+        prop = actors.GetNextActor().GetProperty()
+        prop.SetColor(1.0, 1.0, 1.0)
+        prop.SetAmbient(0.0)
+        prop.SetDiffuse(1.0)
+        prop.SetSpecular(0.0)
+
+
+def grab(window):
+    image = vtkWindowToImageFilter()
+    image.SetInput(window)
+    image.ReadFrontBufferOff()
+    image.ShouldRerenderOff()
+    image.SetInputBufferTypeToRGB()
+    image.Update()
+    return vtk_to_numpy(image.GetOutput().GetPointData().GetScalars()).astype(float) / 255.0
+
+
+def timed_frames(window, count):
+    times = []
+    for _ in range(count):
+        start = time.perf_counter()
+        window.Render()
+        window.WaitForCompletion()
+        times.append(1000.0 * (time.perf_counter() - start))
+    return times
+
+
+class Method:
+    def __init__(self, name, make_pass):
+        self.name = name
+        self.make_pass = make_pass
+        self.times = []
+        self.image = None
+        self.pass_ = None
+
+
+def make_ssao(kernel, radius):
+    def make():
+        ssao = vtkSSAOPass()
+        ssao.SetDelegatePass(vtkRenderStepsPass())
+        ssao.SetKernelSize(kernel)
+        ssao.SetRadius(radius)
+        ssao.SetBias(0.02 * radius)
+        ssao.SetBlur(True)
+        return ssao
+
+    return make
+
+
+def make_gi(preset):
+    def make():
+        gi = vtkdeepgi.vtkDeepGIPass()
+        gi.SetPreset(preset)
+        return gi
+
+    return make
+
+
+def errors(image, truth, mask):
+    if not mask.any():
+        return (float("nan"),) * 3
+    d = image[mask] - truth[mask]
+    return float(np.sqrt(np.mean(d * d))), float(np.mean(np.abs(d))), float(np.mean(d))
+
+
+def save_strip(path, images, width, height):
+    strip = np.concatenate([np.clip(i, 0, 1).reshape(height, width, 3) for i in images], axis=1)
+    data = vtkImageData()
+    data.SetDimensions(strip.shape[1], height, 1)
+    scalars = numpy_to_vtk((255.0 * strip).round().astype(np.uint8).reshape(-1, 3), deep=True)
+    data.GetPointData().SetScalars(scalars)
+    writer = vtkPNGWriter()
+    writer.SetInputData(data)
+    writer.SetFileName(path)
+    writer.Write()
+
+
+def measure_scene(args, scene):
+    factory = vtkdeepgi.vtkDeepGIRenderWindowFactory
+    window = factory.NewRenderWindow(factory.BACKEND_AUTO)
+    window.SetMultiSamples(0)
+    window.SetSize(args.width, args.height)
+    renderer = vtkRenderer()
+    renderer.SetBackground(0.0, 0.0, 0.0)
+    window.AddRenderer(renderer)
+    name, keep = populate(renderer, scene, args.data)
+    if args.default_actors:
+        use_default_properties(renderer)
+    renderer.ResetCameraClippingRange()
+    window.Render()
+    bounds = renderer.ComputeVisiblePropBounds()
+    diagonal = np.linalg.norm(np.array(bounds[1::2]) - np.array(bounds[0::2]))
+    radius = 0.05 * diagonal
+
+    methods = [Method("plain VTK", None)]
+    methods += [Method("vtkSSAOPass K%d" % k, make_ssao(k, radius)) for k in (16, 64)]
+    methods += [Method("vtkDeepGIPass " + p, make_gi(p)) for p in PRESETS]
+    for m in methods:
+        m.pass_ = m.make_pass() if m.make_pass else None
+
+    # Accuracy: each method's still image, GI converged as the main job does.
+    for m in methods:
+        renderer.SetPass(m.pass_)
+        if isinstance(m.pass_, vtkdeepgi.vtkDeepGIPass):
+            m.pass_.Converge(renderer, 16, 0.07 / 255.0)
+        else:
+            window.Render()
+        m.image = grab(window)
+    balanced = methods[-2].pass_
+    renderer.SetPass(balanced)
+    window.Render()
+    capture = vtkImageData()
+    balanced.GetGBufferPass().CaptureLayers(capture, renderer)
+    obscurance = balanced.GetAmbientObscurancePass()
+    reference = vtkdeepgi.vtkDeepGIReferenceImage()
+    scene_polydata = vtkPolyData()
+    vtkdeepgi.vtkDeepGIReferenceImage.SceneFromRenderer(renderer, scene_polydata)
+    reference.SetScene(scene_polydata)
+    reference.SetLightsFromRenderer(renderer)
+    reference.SetObscuranceRadius(obscurance.GetEffectiveRadius())
+    multiply = obscurance.ResolveComposition(renderer) == obscurance.COMPOSITE_MULTIPLY
+    reference.SetVisibility(reference.AV_SCALES_RADIANCE if multiply else reference.AV_SCALES_AMBIENT)
+    reference.SetSamplesPerPixel(args.samples)
+    reference.SetNumberOfBounces(args.bounces)
+    start = time.perf_counter()
+    if not reference.Compute(capture):
+        sys.exit("deepgi_benchmark_image.py: no reference for " + name)
+    reference_seconds = time.perf_counter() - start
+    out = reference.GetOutput().GetPointData()
+    truth = vtk_to_numpy(out.GetArray("Radiance")).astype(float)
+    valid = vtk_to_numpy(out.GetArray("Valid")) > 0
+    layer1 = capture.GetPointData().GetArray("Valid_1")
+    second = valid & (vtk_to_numpy(layer1) > 0) if layer1 else np.zeros_like(valid)
+
+    # Time: methods interleaved, rounds, after warm-up.
+    for _ in range(args.rounds):
+        for m in methods:
+            renderer.SetPass(m.pass_)
+            timed_frames(window, 3)
+            m.times += timed_frames(window, args.frames)
+    for m in methods:
+        if m.pass_:
+            m.pass_.ReleaseGraphicsResources(window)
+
+    plain_ms = statistics.median(methods[0].times)
+    rows = []
+    for m in methods:
+        ms = statistics.median(m.times)
+        rows.append((name, m.name, ms, ms / plain_ms) + errors(m.image, truth, valid)
+                    + errors(m.image, truth, second)[:1])
+    difference = np.abs(methods[-2].image - truth) * 4.0
+    save_strip(os.path.join(args.output, "".join(c if c.isalnum() else "-" for c in name) + ".png"),
+               [methods[0].image, methods[1].image, methods[-2].image, truth, difference],
+               args.width, args.height)
+    info = (name, int(valid.sum()), int(second.sum()), reference.GetMeanStandardError(),
+            reference_seconds, "AV x RADIANCE" if multiply else "AV x AMBIENT")
+    del keep
+    return info, rows
+
+
+def main():
+    args = parse_arguments()
+    os.makedirs(args.output, exist_ok=True)
+    infos, rows = [], []
+    for scene in args.scene_list:
+        info, scene_rows = measure_scene(args, scene)
+        infos.append(info)
+        rows += scene_rows
+        print("scene %s done" % info[0], file=sys.stderr)
+    lines = [
+        "Final image against vtkDeepGIReferenceImage (%d rays per pixel and estimate, %d bounces), "
+        "%dx%d, %s; time: median of %d frames x %d rounds per method, interleaved." % (
+            args.samples, args.bounces, args.width, args.height,
+            "every actor with VTK's default property" if args.default_actors
+            else "the scene loader's materials", args.frames, args.rounds),
+        "",
+        "| scene | surface px | 2-layer px | reference std. error | reference [s] | AV scales |",
+        "|---|---|---|---|---|---|",
+    ]
+    lines += ["| %s | %d | %d | %.4f | %.1f | %s |" % i for i in infos]
+    lines += ["", "| scene | method | ms per frame | x plain | RMSE | MAE | bias | RMSE 2-layer px |",
+              "|---|---|---|---|---|---|---|---|"]
+    lines += ["| %s | %s | %.1f | %.2f | %.4f | %.4f | %+.4f | %.4f |" % r for r in rows]
+    text = "\n".join(lines) + "\n"
+    print(text)
+    path = os.path.join(args.output, "benchmark-image.md")
+    with open(path + ".partial", "w") as f:
+        f.write(text)
+    os.replace(path + ".partial", path)
+
+
+if __name__ == "__main__":
+    main()
