@@ -5,9 +5,9 @@
 # obscurance, measured side by side in one run) under a private Xvfb when
 # there is no DISPLAY. Options go to the benchmark (--help).
 #
-# --heldout adds the held-out scenes of scripts/heldout-scenes.py (an object
-# on a floor, an interior, a volume's iso-surface; written into the build
-# folder, after installing Debian's assimp-testmodels for the object) to the
+# --heldout adds the held-out scenes of scripts/heldout-scenes.sh (an object
+# on a floor, an interior, a volume's iso-surface, written into the build
+# folder) to the
 # built-in ones.
 set -euo pipefail
 
@@ -19,11 +19,8 @@ bash "$repo/scripts/setup.sh"
 args=()
 for arg in "$@"; do
   if [[ "$arg" == "--heldout" ]]; then
-    if [[ ! -f /usr/share/assimp/models/PLY/Wuson.ply ]]; then
-      apt-get install -y --no-install-recommends assimp-testmodels
-    fi
     heldout="$build/heldout-scenes"
-    /usr/bin/python3 "$repo/scripts/heldout-scenes.py" "$heldout"
+    bash "$repo/scripts/heldout-scenes.sh" "$heldout"
     args+=(--scenes demo,demo-columns,cornell-lucy,dragon,headsq
       --mesh "$heldout/wuson-on-floor.vtp" --mesh "$heldout/stairs-room.vtp"
       --volume "$heldout/wavelet.nhdr" --iso 160)

@@ -6,9 +6,9 @@
 # under a private Xvfb when there is no DISPLAY. Options go to the script
 # (--help).
 #
-# --heldout adds the held-out scenes of scripts/heldout-scenes.py (an object
-# on a floor, an interior, a volume's iso-surface; written into the build
-# folder, after installing Debian's assimp-testmodels for the object).
+# --heldout adds the held-out scenes of scripts/heldout-scenes.sh (an object
+# on a floor, an interior, a volume's iso-surface, written into the build
+# folder).
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -19,11 +19,8 @@ bash "$repo/scripts/setup.sh"
 args=(--data "$repo/Testing/Data")
 for arg in "$@"; do
   if [[ "$arg" == "--heldout" ]]; then
-    if [[ ! -f /usr/share/assimp/models/PLY/Wuson.ply ]]; then
-      apt-get install -y --no-install-recommends assimp-testmodels
-    fi
     heldout="$build/heldout-scenes"
-    /usr/bin/python3 "$repo/scripts/heldout-scenes.py" "$heldout"
+    bash "$repo/scripts/heldout-scenes.sh" "$heldout"
     args+=(--mesh "$heldout/wuson-on-floor.vtp" --mesh "$heldout/stairs-room.vtp"
       --volume "$heldout/wavelet.nhdr" --iso 160)
   else

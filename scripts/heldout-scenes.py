@@ -13,8 +13,8 @@ accuracy benchmarks (Documentation/benchmark-ao.md, lighting-model.md):
   --volume wavelet.nhdr --iso 160.
 
 Run with VTK's Python: /usr/bin/python3 scripts/heldout-scenes.py OUTDIR
-(scripts/benchmark-ao.sh --heldout does it, after installing
-assimp-testmodels).
+(scripts/heldout-scenes.sh installs assimp-testmodels first; the
+benchmark scripts' --heldout runs it).
 """
 
 import os
