@@ -19,7 +19,9 @@ at one still camera:
   three warm-up frames, methods interleaved in --rounds rounds, ratio to
   plain VTK), and RMSE, MAE and bias (mean signed error) of the 8-bit image
   (RGB / 255) against the reference over every valid surface pixel and over
-  the pixels where the G-buffer has a second layer.
+  the pixels where the G-buffer has a second layer. The reference is
+  clipped to [0, 1] like the images (white walls with albedo 1 and four
+  undamped bounces exceed 1).
 
 Scenes: --scenes takes the built-in demo, cornell-lucy, dragon and headsq;
 --mesh FILE (repeatable: .ply .stl .vtk .vtp .obj) and --volume FILE --iso V
@@ -251,7 +253,8 @@ def measure_scene(args, scene):
         sys.exit("deepgi_benchmark_image.py: no reference for " + name)
     reference_seconds = time.perf_counter() - start
     out = reference.GetOutput().GetPointData()
-    truth = vtk_to_numpy(out.GetArray("Radiance")).astype(float)
+    # What a display shows: the 8-bit images clip at 1, so does the truth.
+    truth = np.clip(vtk_to_numpy(out.GetArray("Radiance")).astype(float), 0.0, 1.0)
     valid = vtk_to_numpy(out.GetArray("Valid")) > 0
     layer1 = capture.GetPointData().GetArray("Valid_1")
     second = valid & (vtk_to_numpy(layer1) > 0) if layer1 else np.zeros_like(valid)
