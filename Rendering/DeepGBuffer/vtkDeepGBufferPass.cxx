@@ -19,6 +19,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
+#include "vtkOpenGLFXAAFilter.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLQuadHelper.h"
@@ -36,6 +37,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
+#include "vtkRenderWindow.h"
 #include "vtkShaderProgram.h"
 #include "vtkShaderProperty.h"
 #include "vtkShadowMapBakerPass.h"
@@ -88,12 +90,15 @@ public:
   vtkTypeMacro(vtkDeepGBufferDrawStep, vtkRenderPass);
   void Render(const vtkRenderState* s) override
   {
+    this->NumberOfRenderedProps = 0;
     if (this->Draw)
     {
       this->Draw(s);
     }
   }
   std::function<void(const vtkRenderState*)> Draw;
+  // For a Draw that delegates to another pass, which counted its props.
+  void AddRenderedProps(int count) { this->NumberOfRenderedProps += count; }
 };
 vtkStandardNewMacro(vtkDeepGBufferDrawStep);
 }
@@ -348,6 +353,12 @@ public:
   vtkNew<vtkRenderStepsPass> Steps;
   vtkNew<vtkDeepGBufferDrawStep> OpaqueStep;
   vtkNew<vtkDeepGBufferDrawStep> DrawStep;
+  // FXAA, then the overlay pass (RenderFrame, when the frame is anti-aliased).
+  vtkNew<vtkDeepGBufferDrawStep> AntiAliasedOverlayStep;
+  vtkNew<vtkOpenGLFXAAFilter> FXAAFilter;
+  // A single-sampled copy of a multisampled window's colour, which FXAA
+  // reads (it cannot read a multisampled framebuffer).
+  vtkSmartPointer<vtkOpenGLFramebufferObject> ResolvedColor;
 
   // The prop's model matrix in the other frame (SetShaderParameters).
   Matrix OtherModelMatrix(vtkProp* prop);
@@ -1719,16 +1730,75 @@ void vtkDeepGBufferPass::RenderFrame(const vtkRenderState* s, vtkRenderPass* opa
       this->ResolveToFramebuffer(state);
     }
   };
+  vtkOpenGLRenderer* renderer = static_cast<vtkOpenGLRenderer*>(s->GetRenderer());
+  vtkRenderWindow* window = renderer->GetRenderWindow();
+  this->LastFrameAntiAliased = renderer->GetUseFXAA() || (window && window->GetMultiSamples() > 1);
+  in.AntiAliasedOverlayStep->Draw = [this, renderer](const vtkRenderState* state)
+  {
+    vtkInternals& internals = *this->Internals;
+    this->ApplyFXAA(renderer);
+    if (this->OverlayPass)
+    {
+      this->OverlayPass->Render(state);
+      internals.AntiAliasedOverlayStep->AddRenderedProps(
+        this->OverlayPass->GetNumberOfRenderedProps());
+    }
+  };
   in.Steps->SetLightsPass(in.LightsPass);
   in.Steps->SetOpaquePass(in.OpaqueStep);
   in.Steps->SetTranslucentPass(this->TranslucentPass);
   in.Steps->SetVolumetricPass(this->VolumetricPass);
-  in.Steps->SetOverlayPass(this->OverlayPass);
+  in.Steps->SetOverlayPass(
+    this->LastFrameAntiAliased ? in.AntiAliasedOverlayStep.GetPointer() : this->OverlayPass);
   in.Steps->SetPostProcessPass(nullptr);
   in.Steps->Render(s);
   in.OpaqueStep->Draw = nullptr;
+  in.AntiAliasedOverlayStep->Draw = nullptr;
   this->NumberOfRenderedProps = in.Steps->GetNumberOfRenderedProps();
   vtkOpenGLCheckErrorMacro("failed after vtkDeepGBufferPass::Render");
+}
+
+//------------------------------------------------------------------------------
+// VTK's FXAA on the renderer's viewport. VTK 9.1's filter copies the colour
+// from the bound read framebuffer, which fails on a multisampled window
+// (the image turns black, with or without this pass): there the colour is
+// first resolved into a single-sampled framebuffer of the window's size,
+// which FXAA reads while it draws into the window's.
+void vtkDeepGBufferPass::ApplyFXAA(vtkOpenGLRenderer* renderer)
+{
+  vtkInternals& in = *this->Internals;
+  in.FXAAFilter->UpdateConfiguration(renderer->GetFXAAOptions());
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  if (!window || window->GetMultiSamples() <= 1)
+  {
+    in.FXAAFilter->Execute(renderer);
+    return;
+  }
+  const int* size = window->GetSize();
+  if (!in.ResolvedColor)
+  {
+    in.ResolvedColor = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    in.ResolvedColor->SetContext(window);
+  }
+  vtkOpenGLState* ostate = window->GetState();
+  ostate->PushFramebufferBindings();
+  in.ResolvedColor->Bind();
+  if (in.ResolvedColor->GetNumberOfColorAttachments() == 0)
+  {
+    in.ResolvedColor->PopulateFramebuffer(size[0], size[1]);
+  }
+  in.ResolvedColor->Resize(size[0], size[1]);
+  ostate->PopFramebufferBindings();
+  // Read: the window's multisampled colour; draw: the resolved copy.
+  ostate->PushFramebufferBindings();
+  in.ResolvedColor->Bind(GL_DRAW_FRAMEBUFFER);
+  const int extent[4] = { 0, size[0] - 1, 0, size[1] - 1 };
+  vtkOpenGLFramebufferObject::Blit(extent, extent, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  ostate->PopFramebufferBindings();
+  ostate->PushReadFramebufferBinding();
+  in.ResolvedColor->Bind(GL_READ_FRAMEBUFFER);
+  in.FXAAFilter->Execute(renderer);
+  ostate->PopReadFramebufferBinding();
 }
 
 //------------------------------------------------------------------------------
@@ -1748,6 +1818,12 @@ void vtkDeepGBufferPass::ReleaseGraphicsResources(vtkWindow* w)
     in.ResolveQuad = nullptr;
   }
   in.CheckedWindow = nullptr;
+  in.FXAAFilter->ReleaseGraphicsResources();
+  if (in.ResolvedColor)
+  {
+    in.ResolvedColor->ReleaseGraphicsResources(w);
+    in.ResolvedColor = nullptr;
+  }
   in.LightsPass->ReleaseGraphicsResources(w);
   in.Steps->ReleaseGraphicsResources(w);
   for (vtkRenderPass* step : { this->TranslucentPass, this->VolumetricPass, this->OverlayPass,

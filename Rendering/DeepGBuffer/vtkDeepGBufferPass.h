@@ -67,6 +67,7 @@
 class vtkImageData;
 class vtkInformationIntegerKey;
 class vtkOpenGLRenderWindow;
+class vtkOpenGLRenderer;
 class vtkRenderPass;
 class vtkRenderer;
 class vtkShadowMapPass;
@@ -341,8 +342,21 @@ public:
    * (vtkDeepAmbientObscurancePass) call RenderLayers from their opaque step
    * and draw their own result. With null, the opaque step is RenderLayers
    * followed by ResolveToFramebuffer, i.e. Render(s).
+   *
+   * Anti-aliasing: the layers have one sample per pixel, so a window's
+   * multisampling cannot smooth the edges they draw. When the renderer's
+   * UseFXAA is on, or the window asks for multisampling (MultiSamples > 1,
+   * VTK's default on screen), the frame applies VTK's FXAA
+   * (vtkOpenGLFXAAFilter with the renderer's FXAAOptions) to the colour
+   * after the volumetric step and before the overlay, as VTK's renderer
+   * does; on a multisampled window it reads a resolved copy of the colour
+   * (VTK 9.1's own UseFXAA on such a window gives a black image).
+   * GetLastFrameAntiAliased() tells whether it did.
    */
   void RenderFrame(const vtkRenderState* s, vtkRenderPass* opaqueStep);
+
+  /// Whether the last RenderFrame applied FXAA (see RenderFrame).
+  vtkGetMacro(LastFrameAntiAliased, bool);
 
   /**
    * The camera the layers of the last frame rendered for `renderer` were
@@ -456,6 +470,8 @@ protected:
   vtkRenderPass* TranslucentPass = nullptr;
   vtkRenderPass* VolumetricPass = nullptr;
   vtkRenderPass* OverlayPass = nullptr;
+  bool LastFrameAntiAliased = false;
+  void ApplyFXAA(vtkOpenGLRenderer* renderer);
   vtkShadowMapPass* ShadowMapPass = nullptr;
 
 private:
