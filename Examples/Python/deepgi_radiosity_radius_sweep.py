@@ -1,0 +1,88 @@
+"""The final image's error against the reference as the radiosity's gather
+radius and damping change (Documentation/lighting-model.md).
+
+    PYTHONPATH=<build>/lib/python3/dist-packages /usr/bin/python3 \\
+        Examples/Python/deepgi_radiosity_radius_sweep.py DATA HELDOUT \\
+        [FRACTION:DAMPING ...]
+
+DATA is the project's Testing/Data, HELDOUT the folder of
+scripts/heldout-scenes.sh. For the stairs room, the demo scene, the dragon
+and the Cornell box with Lucy (the scene loader's materials, 320 x 240), each
+setting (default 0.1:0.5 0.2:0.5 0.3:0.5 0.5:0.5 0.5:1.0) sets the radiosity
+pass's AutomaticRadiusFraction and Damping of a BALANCED vtkDeepGIPass,
+converges it (Converge(renderer, 24, 0.05 / 255)) and prints the RMSE and
+bias of the 8-bit image against vtkDeepGIReferenceImage (128 rays per pixel,
+clipped at 1), computed once per scene on the first setting's capture.
+Needs an X display (scripts/with-display.sh) or EGL.
+"""
+import os
+import sys
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData
+from vtkmodules.vtkRenderingCore import vtkRenderer
+
+import vtkdeepgi
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import deepgi_benchmark_image as bench  # noqa: E402 (the scenes and the grab)
+
+
+def reference_of(gi, renderer):
+    capture = vtkImageData()
+    gi.GetGBufferPass().CaptureLayers(capture, renderer)
+    reference = vtkdeepgi.vtkDeepGIReferenceImage()
+    scene = vtkPolyData()
+    reference.SceneFromRenderer(renderer, scene)
+    reference.SetScene(scene)
+    reference.SetLightsFromRenderer(renderer)
+    obscurance = gi.GetAmbientObscurancePass()
+    reference.SetObscuranceRadius(obscurance.GetEffectiveRadius())
+    multiply = obscurance.ResolveComposition(renderer) == obscurance.COMPOSITE_MULTIPLY
+    reference.SetVisibility(reference.AV_SCALES_RADIANCE if multiply else reference.AV_SCALES_AMBIENT)
+    reference.SetSamplesPerPixel(128)
+    if not reference.Compute(capture):
+        sys.exit("deepgi_radiosity_radius_sweep.py: no reference")
+    out = reference.GetOutput().GetPointData()
+    truth = np.clip(vtk_to_numpy(out.GetArray("Radiance")).astype(float), 0.0, 1.0)
+    return truth, vtk_to_numpy(out.GetArray("Valid")) > 0
+
+
+def main():
+    if len(sys.argv) < 3:
+        sys.exit(__doc__)
+    data, heldout = sys.argv[1], sys.argv[2]
+    settings = [tuple(float(v) for v in s.split(":")) for s in sys.argv[3:]] or [
+        (0.1, 0.5), (0.2, 0.5), (0.3, 0.5), (0.5, 0.5), (0.5, 1.0)]
+    scenes = [("mesh", os.path.join(heldout, "stairs-room.vtp")), "demo", "dragon", "cornell-lucy"]
+    factory = vtkdeepgi.vtkDeepGIRenderWindowFactory
+    for scene in scenes:
+        window = factory.NewRenderWindow(factory.BACKEND_AUTO)
+        window.SetMultiSamples(0)
+        window.SetSize(320, 240)
+        renderer = vtkRenderer()
+        window.AddRenderer(renderer)
+        name, keep = bench.populate(renderer, scene, data)
+        renderer.ResetCameraClippingRange()
+        truth, valid, cells = None, None, []
+        for fraction, damping in settings:
+            gi = vtkdeepgi.vtkDeepGIPass()
+            gi.GetRadiosityPass().SetAutomaticRadiusFraction(fraction)
+            gi.GetRadiosityPass().SetDamping(damping)
+            renderer.SetPass(gi)
+            gi.Converge(renderer, 24, 0.05 / 255.0)
+            image = bench.grab(window)
+            if truth is None:
+                truth, valid = reference_of(gi, renderer)
+            d = image[valid] - truth[valid]
+            cells.append("r %.1f damping %.1f: RMSE %.4f bias %+.4f" % (
+                fraction, damping, np.sqrt(np.mean(d * d)), np.mean(d)))
+            gi.ReleaseGraphicsResources(window)
+        renderer.SetPass(None)
+        print(name + " | " + " | ".join(cells), flush=True)
+        del keep
+
+
+if __name__ == "__main__":
+    main()
