@@ -1,0 +1,485 @@
+#include "vtkDeepGISceneFileChecks.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <vtksys/FStream.hxx>
+#include <vtksys/SystemTools.hxx>
+
+#include <sys/stat.h>
+
+#include <cctype>
+#include <climits>
+#include <cstdlib>
+#include <cstring>
+#include <iterator>
+#include <sstream>
+#include <vector>
+
+namespace vtkDeepGISceneFileChecks
+{
+namespace
+{
+// VTK 9.1's vtkPLY reads lines into a 4096-byte buffer (get_words): longer
+// ones are split, and a split element line has fewer values than its
+// properties need, which vtkPLY reads past. Such lines are refused.
+constexpr std::size_t MaximumPLYLineBytes = 4000;
+
+struct PLYProperty
+{
+  bool IsList = false;
+  int CountBytes = 0; // list count type (integer types only)
+  int ItemBytes = 0;  // scalar type, or the list's item type
+  bool CountSigned = false;
+};
+
+struct PLYElement
+{
+  std::string Name;
+  long long Count = 0;
+  std::vector<PLYProperty> Properties;
+};
+
+// Bytes of a PLY scalar type, 0 if unknown; `isInteger`, `isSigned` set.
+int PLYTypeBytes(const std::string& type, bool& isInteger, bool& isSigned)
+{
+  struct Type
+  {
+    const char* Name;
+    int Bytes;
+    bool Integer;
+    bool Signed;
+  };
+  static const Type types[] = { { "char", 1, true, true }, { "int8", 1, true, true },
+    { "uchar", 1, true, false }, { "uint8", 1, true, false }, { "short", 2, true, true },
+    { "int16", 2, true, true }, { "ushort", 2, true, false }, { "uint16", 2, true, false },
+    { "int", 4, true, true }, { "int32", 4, true, true }, { "uint", 4, true, false },
+    { "uint32", 4, true, false }, { "float", 4, false, true }, { "float32", 4, false, true },
+    { "double", 8, false, true }, { "float64", 8, false, true } };
+  for (const Type& t : types)
+  {
+    if (type == t.Name)
+    {
+      isInteger = t.Integer;
+      isSigned = t.Signed;
+      return t.Bytes;
+    }
+  }
+  return 0;
+}
+
+std::vector<std::string> Words(const std::string& line)
+{
+  std::vector<std::string> words;
+  std::istringstream in(line);
+  std::string w;
+  while (in >> w)
+  {
+    words.push_back(w);
+  }
+  return words;
+}
+
+// One property line ("property TYPE NAME", "property list CTYPE ITYPE NAME").
+std::string ParsePLYProperty(const std::vector<std::string>& words, PLYProperty& property)
+{
+  bool integer = false, isSigned = false;
+  if (words.size() == 5 && words[1] == "list")
+  {
+    property.IsList = true;
+    property.CountBytes = PLYTypeBytes(words[2], integer, isSigned);
+    property.CountSigned = isSigned;
+    if (!property.CountBytes || !integer)
+    {
+      return "a list count type that is not an integer type";
+    }
+    property.ItemBytes = PLYTypeBytes(words[3], integer, isSigned);
+    return property.ItemBytes ? "" : "an unknown list item type";
+  }
+  if (words.size() != 3)
+  {
+    return "a malformed property line";
+  }
+  property.ItemBytes = PLYTypeBytes(words[1], integer, isSigned);
+  return property.ItemBytes ? "" : "an unknown property type";
+}
+
+// The header: format and elements. Leaves `in` at the first data byte.
+std::string ParsePLYHeader(std::istream& in, std::string& format, std::vector<PLYElement>& elements)
+{
+  std::string line;
+  bool tooLong = false;
+  if (!ReadLine(in, line, MaximumPLYLineBytes, tooLong) ||
+    Words(line) != std::vector<std::string>{ "ply" })
+  {
+    return "it does not start with the line \"ply\"";
+  }
+  while (ReadLine(in, line, MaximumPLYLineBytes, tooLong))
+  {
+    const std::vector<std::string> words = Words(line);
+    if (words.empty() || words[0] == "comment" || words[0] == "obj_info")
+    {
+      continue;
+    }
+    if (words[0] == "end_header")
+    {
+      return format.empty() ? "the header has no format line" : "";
+    }
+    if (words[0] == "format" && words.size() == 3 && format.empty() &&
+      (words[1] == "ascii" || words[1] == "binary_little_endian" ||
+        words[1] == "binary_big_endian"))
+    {
+      format = words[1];
+    }
+    else if (words[0] == "element" && words.size() == 3)
+    {
+      PLYElement element;
+      element.Name = words[1].substr(0, 40); // for messages
+      for (char& c : element.Name)
+      {
+        c = std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+      }
+      char* end = nullptr;
+      element.Count = std::strtoll(words[2].c_str(), &end, 10);
+      if (*end || element.Count < 0 || element.Count > INT_MAX)
+      {
+        return "an element count is not an integer from 0 to 2^31 - 1";
+      }
+      elements.push_back(element);
+    }
+    else if (words[0] == "property" && !elements.empty())
+    {
+      PLYProperty property;
+      const std::string why = ParsePLYProperty(words, property);
+      if (!why.empty())
+      {
+        return "the header has " + why;
+      }
+      elements.back().Properties.push_back(property);
+    }
+    else
+    {
+      std::string shown = line.substr(0, 80);
+      for (char& c : shown)
+      {
+        c = std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+      }
+      return "the header line \"" + shown + "\" is not PLY";
+    }
+  }
+  return tooLong ? "a header line is longer than " + std::to_string(MaximumPLYLineBytes) + " bytes"
+                 : "the header has no end_header line";
+}
+
+// Reads an unsigned or signed integer of `bytes` bytes in the file's order.
+bool ReadPLYCount(std::istream& in, const PLYProperty& p, bool bigEndian, long long& count)
+{
+  unsigned char b[4] = { 0, 0, 0, 0 };
+  if (!in.read(reinterpret_cast<char*>(b), p.CountBytes))
+  {
+    return false;
+  }
+  unsigned long long u = 0;
+  for (int i = 0; i < p.CountBytes; ++i)
+  {
+    const int k = bigEndian ? i : p.CountBytes - 1 - i;
+    u = (u << 8) | b[k];
+  }
+  const unsigned long long sign = 1ULL << (8 * p.CountBytes - 1);
+  count = (p.CountSigned && (u & sign)) ? -1 : static_cast<long long>(u);
+  return true;
+}
+
+std::string CheckBinaryPLY(
+  std::istream& in, std::uint64_t size, bool bigEndian, const std::vector<PLYElement>& elements)
+{
+  std::uint64_t position = static_cast<std::uint64_t>(in.tellg());
+  for (const PLYElement& e : elements)
+  {
+    bool anyList = false;
+    std::uint64_t fixed = 0;
+    for (const PLYProperty& p : e.Properties)
+    {
+      anyList = anyList || p.IsList;
+      fixed += p.IsList ? 0 : p.ItemBytes;
+    }
+    const std::string truncated = "it ends inside element " + e.Name + " (truncated)";
+    if (!anyList)
+    {
+      if (fixed * static_cast<std::uint64_t>(e.Count) > size - position)
+      {
+        return truncated;
+      }
+      position += fixed * static_cast<std::uint64_t>(e.Count);
+      continue;
+    }
+    for (long long i = 0; i < e.Count; ++i)
+    {
+      for (const PLYProperty& p : e.Properties)
+      {
+        std::uint64_t need = p.IsList ? p.CountBytes : p.ItemBytes;
+        if (need > size - position)
+        {
+          return truncated;
+        }
+        if (p.IsList)
+        {
+          long long count = 0;
+          in.seekg(static_cast<std::streamoff>(position));
+          if (!ReadPLYCount(in, p, bigEndian, count) || count < 0)
+          {
+            return "element " + e.Name + " has a negative or unreadable list count";
+          }
+          position += need;
+          need = static_cast<std::uint64_t>(count) * p.ItemBytes;
+          if (need > size - position)
+          {
+            return truncated;
+          }
+        }
+        position += need;
+      }
+    }
+  }
+  return "";
+}
+
+// Whether `word` is a number vtkPLY reads (atoi / atof on it is safe anyway;
+// this refuses text where values belong, e.g. a truncated line).
+bool IsNumber(const std::string& word)
+{
+  char* end = nullptr;
+  std::strtod(word.c_str(), &end);
+  return end != word.c_str() && *end == '\0';
+}
+
+std::string CheckAsciiPLY(std::istream& in, const std::vector<PLYElement>& elements)
+{
+  std::string line;
+  bool tooLong = false;
+  for (const PLYElement& e : elements)
+  {
+    for (long long i = 0; i < e.Count; ++i)
+    {
+      if (!ReadLine(in, line, MaximumPLYLineBytes, tooLong))
+      {
+        return tooLong ? "a line of element " + e.Name + " is longer than " +
+            std::to_string(MaximumPLYLineBytes) + " bytes"
+                       : "it ends after " + std::to_string(i) + " of the " +
+            std::to_string(e.Count) + " lines of element " + e.Name + " (truncated)";
+      }
+      const std::vector<std::string> words = Words(line);
+      size_t next = 0;
+      for (const PLYProperty& p : e.Properties)
+      {
+        long long count = 1;
+        if (p.IsList)
+        {
+          char* end = nullptr;
+          count = next < words.size() ? std::strtoll(words[next].c_str(), &end, 10) : -1;
+          if (count < 0 || *end)
+          {
+            return "line " + std::to_string(i + 1) + " of element " + e.Name +
+              " has a missing or malformed list count";
+          }
+          ++next;
+        }
+        for (long long k = 0; k < count; ++k, ++next)
+        {
+          if (next >= words.size() || !IsNumber(words[next]))
+          {
+            return "line " + std::to_string(i + 1) + " of element " + e.Name +
+              " has fewer values than its properties need";
+          }
+        }
+      }
+    }
+  }
+  return "";
+}
+} // anonymous namespace
+
+//------------------------------------------------------------------------------
+bool IsRegularFile(const std::string& path)
+{
+  std::uint64_t bytes = 0;
+  return RegularFileSize(path, bytes);
+}
+
+//------------------------------------------------------------------------------
+bool RegularFileSize(const std::string& path, std::uint64_t& bytes)
+{
+  struct stat s;
+  if (path.empty() || stat(path.c_str(), &s) != 0 || !S_ISREG(s.st_mode))
+  {
+    return false;
+  }
+  bytes = static_cast<std::uint64_t>(s.st_size);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool ReadLine(std::istream& in, std::string& line, std::size_t maxBytes, bool& tooLong)
+{
+  line.clear();
+  tooLong = false;
+  std::streambuf* buffer = in.rdbuf();
+  if (!in.good() || !buffer)
+  {
+    return false;
+  }
+  for (;;)
+  {
+    const int c = buffer->sbumpc();
+    if (c == std::char_traits<char>::eof())
+    {
+      in.setstate(std::ios::eofbit);
+      return !line.empty();
+    }
+    if (c == '\n')
+    {
+      return true;
+    }
+    if (line.size() >= maxBytes)
+    {
+      tooLong = true;
+      in.setstate(std::ios::failbit);
+      return false;
+    }
+    line += static_cast<char>(c);
+  }
+}
+
+//------------------------------------------------------------------------------
+std::string CheckPLY(const std::string& path)
+{
+  // The file is validated here and then read by vtkPLYReader, rather than
+  // read by a PLY parser of our own: the walk below is all that VTK's reader
+  // lacks (it trusts the counts), and VTK keeps reading the properties (colours,
+  // texture coordinates) the loader may want later.
+  std::uint64_t size = 0;
+  vtksys::ifstream in(path.c_str(), std::ios::in | std::ios::binary);
+  if (!RegularFileSize(path, size) || !in)
+  {
+    return "it cannot be opened";
+  }
+  std::string format;
+  std::vector<PLYElement> elements;
+  std::string why = ParsePLYHeader(in, format, elements);
+  if (!why.empty())
+  {
+    return why;
+  }
+  for (const PLYElement& e : elements)
+  {
+    if (e.Properties.empty() && e.Count > 0)
+    {
+      return "element " + e.Name + " has no properties";
+    }
+  }
+  if (format == "ascii")
+  {
+    return CheckAsciiPLY(in, elements);
+  }
+  return CheckBinaryPLY(in, size, format == "binary_big_endian", elements);
+}
+
+//------------------------------------------------------------------------------
+std::string CheckSTL(const std::string& path)
+{
+  std::uint64_t size = 0;
+  if (!RegularFileSize(path, size))
+  {
+    return "it cannot be opened";
+  }
+  if (vtksys::SystemTools::DetectFileType(path.c_str()) == vtksys::SystemTools::FileTypeText)
+  {
+    return ""; // vtkSTLReader's ASCII parser reports what it cannot read
+  }
+  vtksys::ifstream in(path.c_str(), std::ios::in | std::ios::binary);
+  unsigned char header[84];
+  if (size < 84 || !in.read(reinterpret_cast<char*>(header), 84))
+  {
+    return "a binary STL needs 84 bytes of header, this one has " + std::to_string(size) +
+      " bytes (truncated)";
+  }
+  const std::uint64_t triangles = std::uint64_t(header[80]) | std::uint64_t(header[81]) << 8 |
+    std::uint64_t(header[82]) << 16 | std::uint64_t(header[83]) << 24;
+  const std::uint64_t needed = 84 + 50 * triangles;
+  if (needed > size)
+  {
+    return "its header declares " + std::to_string(triangles) + " triangles (" +
+      std::to_string(needed) + " bytes) but it has " + std::to_string(size) + " bytes (truncated)";
+  }
+  return "";
+}
+
+//------------------------------------------------------------------------------
+std::string CheckLegacyVTK(const std::string& path, vtkPolyData* output)
+{
+  std::uint64_t size = 0;
+  vtksys::ifstream in(path.c_str(), std::ios::in | std::ios::binary);
+  std::string line;
+  bool tooLong = false;
+  bool binary = false, version5 = false;
+  for (int i = 0; i < 3 && ReadLine(in, line, MaximumLineBytes, tooLong); ++i)
+  {
+    version5 = version5 || (i == 0 && line.find("Version 5") != std::string::npos);
+    binary = binary || (i == 2 && line.compare(0, 6, "BINARY") == 0);
+  }
+  if (!binary || !output || !RegularFileSize(path, size))
+  {
+    return ""; // ASCII: vtkPolyDataReader reports unreadable values
+  }
+  // Cell ids: int32 before version 5; from version 5 on, offsets and
+  // connectivity of the type the file names (vtktypeint64 as VTK 9 writes
+  // them; 4 bytes, the lower bound, as soon as any array is 32-bit).
+  int idBytes = 4;
+  if (version5 && size < (std::uint64_t(1) << 30))
+  {
+    in.clear();
+    in.seekg(0);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const bool any64 = text.find("vtktypeint64") != std::string::npos;
+    const bool any32 = text.find("OFFSETS vtktypeint32") != std::string::npos ||
+      text.find("CONNECTIVITY vtktypeint32") != std::string::npos;
+    idBytes = any64 && !any32 ? 8 : 4;
+  }
+  std::uint64_t needed = 0;
+  if (output->GetPoints())
+  {
+    vtkDataArray* p = output->GetPoints()->GetData();
+    needed += std::uint64_t(p->GetNumberOfValues()) * p->GetDataTypeSize();
+  }
+  for (vtkCellArray* cells :
+    { output->GetVerts(), output->GetLines(), output->GetPolys(), output->GetStrips() })
+  {
+    if (cells && cells->GetNumberOfCells() > 0)
+    {
+      const std::uint64_t ids =
+        cells->GetNumberOfConnectivityIds() + cells->GetNumberOfCells() + (version5 ? 1 : 0);
+      needed += ids * idBytes;
+    }
+  }
+  for (vtkFieldData* data : { static_cast<vtkFieldData*>(output->GetPointData()),
+         static_cast<vtkFieldData*>(output->GetCellData()) })
+  {
+    for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+    {
+      vtkDataArray* array = data->GetArray(a);
+      needed += array ? std::uint64_t(array->GetNumberOfValues()) * array->GetDataTypeSize() : 0;
+    }
+  }
+  if (needed > size)
+  {
+    return "its points, cells and data need at least " + std::to_string(needed) +
+      " bytes but it has " + std::to_string(size) + " bytes (truncated)";
+  }
+  return "";
+}
+}
