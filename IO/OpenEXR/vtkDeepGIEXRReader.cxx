@@ -23,6 +23,8 @@
 #include <ImfStringAttribute.h>
 #include <ImfTestFile.h>
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -120,6 +122,51 @@ std::vector<Group> GroupChannels(const std::vector<std::string>& channels)
   return groups;
 }
 
+// The most float bytes an image may need: 4 GiB.
+constexpr double MaximumBytes = 4.0 * 1024 * 1024 * 1024;
+// The most a compressed image can shrink: zlib's limit is about 1032:1 (ZIP,
+// ZIPS, PXR24 and the DC part of DWAA / DWAB), RLE's 64:1, B44's 32:3.
+constexpr double MaximumCompressionRatio = 1100.0;
+
+// A corrupt or hostile header can claim a data window of billions of pixels
+// in a file of a few kilobytes; the pixels would be allocated (and zeroed)
+// before OpenEXR notices the data is missing. The claim is checked against a
+// limit and against what the file can hold. "" or why the image is refused.
+std::string CheckClaimedSize(const Imf::Header& header, const std::string& fileName)
+{
+  const Imath::Box2i data = header.dataWindow();
+  const double width = static_cast<double>(data.max.x) - data.min.x + 1.0;
+  const double height = static_cast<double>(data.max.y) - data.min.y + 1.0;
+  if (width < 1.0 || height < 1.0 || width > 2147483647.0 || height > 2147483647.0)
+  {
+    return "\"" + fileName + "\" has an invalid data window.";
+  }
+  double stored = 0.0; // bytes of one pixel in the file, uncompressed
+  double channels = 0.0;
+  for (auto it = header.channels().begin(); it != header.channels().end(); ++it)
+  {
+    stored += it.channel().type == Imf::HALF ? 2.0 : 4.0;
+    channels += 1.0;
+  }
+  const double floatBytes = width * height * channels * 4.0;
+  struct stat file;
+  const double fileBytes =
+    stat(fileName.c_str(), &file) == 0 ? static_cast<double>(file.st_size) : 0.0;
+  const double ratio = header.compression() == Imf::NO_COMPRESSION ? 1.0 : MaximumCompressionRatio;
+  if (floatBytes > MaximumBytes || width * height * stored > fileBytes * ratio)
+  {
+    char claim[160];
+    std::snprintf(claim, sizeof(claim), "%.0f x %.0f pixels of %.0f channel(s) (%.3g bytes)", width,
+      height, channels, floatBytes);
+    return "\"" + fileName + "\" claims " + claim +
+      (floatBytes > MaximumBytes
+          ? ", more than the limit of 4 GiB."
+          : ", more than its " + std::to_string(static_cast<long long>(fileBytes)) +
+            " bytes can hold (corrupt or truncated).");
+  }
+  return "";
+}
+
 // Opens the file after the checks that give clear messages; nullptr and
 // `error` set on failure.
 std::unique_ptr<Imf::InputFile> Open(const std::string& fileName, std::string& error)
@@ -149,7 +196,9 @@ std::unique_ptr<Imf::InputFile> Open(const std::string& fileName, std::string& e
   }
   try
   {
-    return std::unique_ptr<Imf::InputFile>(new Imf::InputFile(fileName.c_str()));
+    std::unique_ptr<Imf::InputFile> input(new Imf::InputFile(fileName.c_str()));
+    error = CheckClaimedSize(input->header(), fileName);
+    return error.empty() ? std::move(input) : nullptr;
   }
   catch (const std::exception& e)
   {
