@@ -414,6 +414,36 @@ bool AllFinite(vtkDataArray* array)
   return true;
 }
 
+// Whether a cell array's offsets start at 0, never decrease and end at the
+// connectivity's size: a corrupt file can make a reader (vtkPolyDataReader)
+// produce offsets past the connectivity, which any walk over the cells
+// would read beyond.
+bool IsConsistent(vtkCellArray* cells)
+{
+  if (!cells)
+  {
+    return true;
+  }
+  vtkDataArray* offsets = cells->GetOffsetsArray();
+  vtkDataArray* connectivity = cells->GetConnectivityArray();
+  const vtkIdType n = offsets ? offsets->GetNumberOfValues() : 0;
+  if (n == 0 || !connectivity)
+  {
+    return connectivity == nullptr || connectivity->GetNumberOfValues() == 0;
+  }
+  double previous = 0.0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double o = offsets->GetComponent(i, 0);
+    if ((i == 0 && o != 0.0) || o < previous)
+    {
+      return false;
+    }
+    previous = o;
+  }
+  return previous == static_cast<double>(connectivity->GetNumberOfValues());
+}
+
 // Keeps the cells whose point ids exist and whose points are finite,
 // counting the others.
 struct CellFilter
@@ -1123,6 +1153,11 @@ vtkSmartPointer<vtkPolyData> vtkDeepGBufferSceneLoader::PrepareMesh(
   // only cells whose point ids exist and whose points are finite: not every
   // reader checks ids (the filters below would read out of bounds), and one
   // NaN or infinite point makes the bounds, the camera and the image wrong.
+  if (!IsConsistent(input->GetPolys()) || !IsConsistent(input->GetStrips()))
+  {
+    vtkErrorMacro("" << what << " has corrupt polygons (cell offsets beyond its point ids)");
+    return nullptr;
+  }
   vtkPoints* inputPoints = input->GetPoints();
   const vtkIdType numberOfPoints = inputPoints ? inputPoints->GetNumberOfPoints() : 0;
   CellFilter filter;

@@ -13,8 +13,10 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cctype>
 #include <climits>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <iterator>
@@ -36,6 +38,9 @@ struct PLYProperty
   int CountBytes = 0; // list count type (integer types only)
   int ItemBytes = 0;  // scalar type, or the list's item type
   bool CountSigned = false;
+  bool ItemInteger = false;
+  bool ItemSigned = false;
+  bool Indices = false; // a face's vertex_indices: each must name a vertex
 };
 
 struct PLYElement
@@ -99,6 +104,9 @@ std::string ParsePLYProperty(const std::vector<std::string>& words, PLYProperty&
       return "a list count type that is not an integer type";
     }
     property.ItemBytes = PLYTypeBytes(words[3], integer, isSigned);
+    property.ItemInteger = integer;
+    property.ItemSigned = isSigned;
+    property.Indices = words[4] == "vertex_indices" || words[4] == "vertex_index";
     return property.ItemBytes ? "" : "an unknown list item type";
   }
   if (words.size() != 3)
@@ -121,6 +129,15 @@ std::string ParsePLYHeader(std::istream& in, std::string& format, std::vector<PL
   }
   while (ReadLine(in, line, MaximumPLYLineBytes, tooLong))
   {
+    // vtkPLY reads the header as C strings: a NUL (or another control
+    // character) would end or split a line differently from here.
+    for (char c : line)
+    {
+      if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\r')
+      {
+        return "the header holds a control character";
+      }
+    }
     const std::vector<std::string> words = Words(line);
     if (words.empty() || words[0] == "comment" || words[0] == "obj_info")
     {
@@ -160,6 +177,7 @@ std::string ParsePLYHeader(std::istream& in, std::string& format, std::vector<PL
       {
         return "the header has " + why;
       }
+      property.Indices = property.Indices && elements.back().Name == "face";
       elements.back().Properties.push_back(property);
     }
     else
@@ -176,27 +194,45 @@ std::string ParsePLYHeader(std::istream& in, std::string& format, std::vector<PL
                  : "the header has no end_header line";
 }
 
-// Reads an unsigned or signed integer of `bytes` bytes in the file's order.
-bool ReadPLYCount(std::istream& in, const PLYProperty& p, bool bigEndian, long long& count)
+// Reads one binary value of `bytes` bytes in the file's byte order.
+bool ReadPLYValue(
+  std::istream& in, int bytes, bool integer, bool isSigned, bool bigEndian, double& value)
 {
-  unsigned char b[4] = { 0, 0, 0, 0 };
-  if (!in.read(reinterpret_cast<char*>(b), p.CountBytes))
+  unsigned char b[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
+  if (!in.read(reinterpret_cast<char*>(b), bytes))
   {
     return false;
   }
-  unsigned long long u = 0;
-  for (int i = 0; i < p.CountBytes; ++i)
+  std::uint64_t u = 0;
+  for (int i = 0; i < bytes; ++i)
   {
-    const int k = bigEndian ? i : p.CountBytes - 1 - i;
-    u = (u << 8) | b[k];
+    u = (u << 8) | b[bigEndian ? i : bytes - 1 - i];
   }
-  const unsigned long long sign = 1ULL << (8 * p.CountBytes - 1);
-  count = (p.CountSigned && (u & sign)) ? -1 : static_cast<long long>(u);
+  if (!integer)
+  {
+    float f;
+    double d;
+    std::uint32_t u32 = static_cast<std::uint32_t>(u);
+    std::memcpy(&f, &u32, 4);
+    std::memcpy(&d, &u, 8);
+    value = bytes == 4 ? f : d;
+    return true;
+  }
+  const std::uint64_t sign = std::uint64_t(1) << (8 * bytes - 1);
+  value =
+    (isSigned && (u & sign)) ? -static_cast<double>((~u & (sign - 1)) + 1) : static_cast<double>(u);
   return true;
 }
 
-std::string CheckBinaryPLY(
-  std::istream& in, std::uint64_t size, bool bigEndian, const std::vector<PLYElement>& elements)
+// A vertex index of a face names one of the `vertices` (vtkPLYReader reads
+// the points of every face while it reads the faces).
+bool IsVertexIndex(double value, long long vertices)
+{
+  return std::isfinite(value) && value >= 0.0 && value < static_cast<double>(vertices);
+}
+
+std::string CheckBinaryPLY(std::istream& in, std::uint64_t size, bool bigEndian,
+  const std::vector<PLYElement>& elements, long long vertices)
 {
   std::uint64_t position = static_cast<std::uint64_t>(in.tellg());
   for (const PLYElement& e : elements)
@@ -229,9 +265,9 @@ std::string CheckBinaryPLY(
         }
         if (p.IsList)
         {
-          long long count = 0;
+          double count = 0;
           in.seekg(static_cast<std::streamoff>(position));
-          if (!ReadPLYCount(in, p, bigEndian, count) || count < 0)
+          if (!ReadPLYValue(in, p.CountBytes, true, p.CountSigned, bigEndian, count) || count < 0)
           {
             return "element " + e.Name + " has a negative or unreadable list count";
           }
@@ -240,6 +276,15 @@ std::string CheckBinaryPLY(
           if (need > size - position)
           {
             return truncated;
+          }
+          for (double k = 0, index = 0; p.Indices && k < count; ++k)
+          {
+            if (!ReadPLYValue(in, p.ItemBytes, p.ItemInteger, p.ItemSigned, bigEndian, index) ||
+              !IsVertexIndex(index, vertices))
+            {
+              return "face " + std::to_string(i) + " names a vertex outside the " +
+                std::to_string(vertices) + " vertices";
+            }
           }
         }
         position += need;
@@ -258,7 +303,8 @@ bool IsNumber(const std::string& word)
   return end != word.c_str() && *end == '\0';
 }
 
-std::string CheckAsciiPLY(std::istream& in, const std::vector<PLYElement>& elements)
+std::string CheckAsciiPLY(
+  std::istream& in, const std::vector<PLYElement>& elements, long long vertices)
 {
   std::string line;
   bool tooLong = false;
@@ -295,6 +341,11 @@ std::string CheckAsciiPLY(std::istream& in, const std::vector<PLYElement>& eleme
           {
             return "line " + std::to_string(i + 1) + " of element " + e.Name +
               " has fewer values than its properties need";
+          }
+          if (p.Indices && !IsVertexIndex(std::atof(words[next].c_str()), vertices))
+          {
+            return "face " + std::to_string(i) + " names a vertex outside the " +
+              std::to_string(vertices) + " vertices";
           }
         }
       }
@@ -375,18 +426,29 @@ std::string CheckPLY(const std::string& path)
   {
     return why;
   }
+  // vtkPLYReader reads the points of each face as it reads the faces: the
+  // vertices must come first, once.
+  long long vertices = -1;
+  bool faces = false;
   for (const PLYElement& e : elements)
   {
     if (e.Properties.empty() && e.Count > 0)
     {
       return "element " + e.Name + " has no properties";
     }
+    if ((e.Name == "vertex" && (vertices >= 0 || faces)) || (e.Name == "face" && faces))
+    {
+      return "it has a second vertex or face element, or faces before the vertices";
+    }
+    vertices = e.Name == "vertex" ? e.Count : vertices;
+    faces = faces || e.Name == "face";
   }
+  vertices = std::max(vertices, 0LL);
   if (format == "ascii")
   {
-    return CheckAsciiPLY(in, elements);
+    return CheckAsciiPLY(in, elements, vertices);
   }
-  return CheckBinaryPLY(in, size, format == "binary_big_endian", elements);
+  return CheckBinaryPLY(in, size, format == "binary_big_endian", elements, vertices);
 }
 
 //------------------------------------------------------------------------------
