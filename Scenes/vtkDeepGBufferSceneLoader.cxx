@@ -12,6 +12,7 @@
 #include "vtkDataArray.h"
 #include "vtkDeepGIKeys.h"
 #include "vtkDeepGISceneFileChecks.h"
+#include "vtkDeepGISceneLegacyVTK.h"
 #include "vtkDeepGISceneNrrd.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
@@ -35,7 +36,6 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPolyDataNormals.h"
-#include "vtkPolyDataReader.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkSTLReader.h"
@@ -669,6 +669,20 @@ bool vtkDeepGBufferSceneLoader::LoadMeshUnguarded(const char* fileName)
   {
     return this->LoadOBJ(fileName);
   }
+  if (ext == ".vtk")
+  {
+    // The project's own parser, not vtkPolyDataReader (see vtkDeepGISceneLegacyVTK.h).
+    vtkNew<vtkPolyData> legacy;
+    const std::string why = vtkDeepGISceneLegacyVTK::Read(path, legacy);
+    if (!why.empty())
+    {
+      vtkErrorMacro("Cannot read mesh " << path << ": " << why);
+      return false;
+    }
+    vtkSmartPointer<vtkPolyData> mesh = this->PrepareMesh(legacy, fileName);
+    return mesh &&
+      this->AddPart(mesh, vtksys::SystemTools::GetFilenameName(path).c_str(), this->DefaultColor);
+  }
 
   vtkSmartPointer<vtkAlgorithm> reader;
   std::string invalid; // why a file is refused before VTK's reader sees it
@@ -690,17 +704,6 @@ bool vtkDeepGBufferSceneLoader::LoadMeshUnguarded(const char* fileName)
   {
     auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
     r->SetFileName(fileName);
-    reader = r;
-  }
-  else if (ext == ".vtk")
-  {
-    auto r = vtkSmartPointer<vtkPolyDataReader>::New();
-    r->SetFileName(fileName);
-    if (!r->IsFilePolyData())
-    {
-      vtkErrorMacro("Legacy VTK file " << path << " does not hold polydata");
-      return false;
-    }
     reader = r;
   }
   else if (IsVolumeExtension(ext))
@@ -743,10 +746,6 @@ bool vtkDeepGBufferSceneLoader::LoadMeshUnguarded(const char* fileName)
     }
   }
   vtkPolyData* output = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (errors->Messages.empty() && output && ext == ".vtk")
-  {
-    errors->Messages = vtkDeepGISceneFileChecks::CheckLegacyVTK(path, output);
-  }
   if (!errors->Messages.empty() || !output)
   {
     vtkErrorMacro("Cannot read mesh "

@@ -9,13 +9,14 @@
  *
  * Meshes (by extension, case-insensitive):
  * - .ply (vtkPLYReader), .stl (vtkSTLReader), .vtp (vtkXMLPolyDataReader),
- *   .vtk (vtkPolyDataReader; legacy polydata only). VTK 9.1's readers trust
- *   the counts a file declares, so the loader checks first (see
- *   vtkDeepGISceneFileChecks.h): a PLY's header and every element, list
- *   counts included, must be in the file (a truncated PLY crashes
- *   vtkPLYReader); a binary STL must hold the triangles its header declares;
- *   a binary legacy .vtk must be as long as the values read from it. Warnings
- *   of these readers count as errors (they mean lost data);
+ *   .vtk (legacy polydata, read by the project's own parser,
+ *   vtkDeepGISceneLegacyVTK.h: VTK 9.1's vtkPolyDataReader reads out of
+ *   bounds on malformed cell lists). VTK 9.1's readers trust the counts a
+ *   file declares, so the loader checks first (vtkDeepGISceneFileChecks.h):
+ *   a PLY's header and every element, list counts and face indices
+ *   included, must be in the file (a truncated PLY crashes vtkPLYReader); a
+ *   binary STL must hold the triangles its header declares. Warnings of
+ *   these readers count as errors (they mean lost data);
  * - .obj: read by this class's own parser (VTK 9.1's vtkOBJImporter
  *   resolves relative indices such as "f -4 -3 -2 -1" against a vertex count
  *   left over from the previous OBJ file of the process, and neither it nor

@@ -41,6 +41,7 @@ struct PLYProperty
   bool ItemInteger = false;
   bool ItemSigned = false;
   bool Indices = false; // a face's vertex_indices: each must name a vertex
+  std::string Name;
 };
 
 struct PLYElement
@@ -94,6 +95,7 @@ std::vector<std::string> Words(const std::string& line)
 std::string ParsePLYProperty(const std::vector<std::string>& words, PLYProperty& property)
 {
   bool integer = false, isSigned = false;
+  property.Name = words.back();
   if (words.size() == 5 && words[1] == "list")
   {
     property.IsList = true;
@@ -353,6 +355,46 @@ std::string CheckAsciiPLY(
   }
   return "";
 }
+// The properties vtkPLYReader reads, as it reads them: it asks for x, y and
+// z and goes on after "Cannot read geometry" with a closed file; it reads a
+// face's vertex_indices without checking they are there (then frees an
+// uninitialised pointer); it reads its known properties as lists or scalars
+// whatever the file says.
+std::string CheckPLYProperties(const std::vector<PLYElement>& elements)
+{
+  static const std::vector<std::string> vertexScalars = { "x", "y", "z", "u", "v", "texture_u",
+    "texture_v", "nx", "ny", "nz", "red", "green", "blue", "alpha", "diffuse_red", "diffuse_green",
+    "diffuse_blue" };
+  static const std::vector<std::string> faceScalars = { "intensity", "red", "green", "blue",
+    "alpha" };
+  static const std::vector<std::string> faceLists = { "vertex_indices", "texcoord" };
+  auto in = [](const std::vector<std::string>& names, const std::string& name)
+  { return std::find(names.begin(), names.end(), name) != names.end(); };
+  int xyz = 0;
+  for (const PLYElement& e : elements)
+  {
+    bool indices = false;
+    for (const PLYProperty& p : e.Properties)
+    {
+      const bool vertex = e.Name == "vertex", face = e.Name == "face";
+      if ((vertex && in(vertexScalars, p.Name) && p.IsList) ||
+        (face && in(faceScalars, p.Name) && p.IsList) ||
+        (face && in(faceLists, p.Name) && !p.IsList))
+      {
+        return "the property " + p.Name + " of element " + e.Name + " is " +
+          (p.IsList ? "a list" : "not a list");
+      }
+      xyz += vertex && (p.Name == "x" || p.Name == "y" || p.Name == "z") ? 1 : 0;
+      indices = indices || (face && p.Name == "vertex_indices");
+    }
+    if (e.Name == "face" && !indices)
+    {
+      return "its face element has no vertex_indices list";
+    }
+  }
+  return xyz >= 3 ? "" : "it has no vertex element with x, y and z";
+}
+
 } // anonymous namespace
 
 //------------------------------------------------------------------------------
@@ -426,6 +468,11 @@ std::string CheckPLY(const std::string& path)
   {
     return why;
   }
+  why = CheckPLYProperties(elements);
+  if (!why.empty())
+  {
+    return why;
+  }
   // vtkPLYReader reads the points of each face as it reads the faces: the
   // vertices must come first, once.
   long long vertices = -1;
@@ -477,70 +524,6 @@ std::string CheckSTL(const std::string& path)
   {
     return "its header declares " + std::to_string(triangles) + " triangles (" +
       std::to_string(needed) + " bytes) but it has " + std::to_string(size) + " bytes (truncated)";
-  }
-  return "";
-}
-
-//------------------------------------------------------------------------------
-std::string CheckLegacyVTK(const std::string& path, vtkPolyData* output)
-{
-  std::uint64_t size = 0;
-  vtksys::ifstream in(path.c_str(), std::ios::in | std::ios::binary);
-  std::string line;
-  bool tooLong = false;
-  bool binary = false, version5 = false;
-  for (int i = 0; i < 3 && ReadLine(in, line, MaximumLineBytes, tooLong); ++i)
-  {
-    version5 = version5 || (i == 0 && line.find("Version 5") != std::string::npos);
-    binary = binary || (i == 2 && line.compare(0, 6, "BINARY") == 0);
-  }
-  if (!binary || !output || !RegularFileSize(path, size))
-  {
-    return ""; // ASCII: vtkPolyDataReader reports unreadable values
-  }
-  // Cell ids: int32 before version 5; from version 5 on, offsets and
-  // connectivity of the type the file names (vtktypeint64 as VTK 9 writes
-  // them; 4 bytes, the lower bound, as soon as any array is 32-bit).
-  int idBytes = 4;
-  if (version5 && size < (std::uint64_t(1) << 30))
-  {
-    in.clear();
-    in.seekg(0);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const bool any64 = text.find("vtktypeint64") != std::string::npos;
-    const bool any32 = text.find("OFFSETS vtktypeint32") != std::string::npos ||
-      text.find("CONNECTIVITY vtktypeint32") != std::string::npos;
-    idBytes = any64 && !any32 ? 8 : 4;
-  }
-  std::uint64_t needed = 0;
-  if (output->GetPoints())
-  {
-    vtkDataArray* p = output->GetPoints()->GetData();
-    needed += std::uint64_t(p->GetNumberOfValues()) * p->GetDataTypeSize();
-  }
-  for (vtkCellArray* cells :
-    { output->GetVerts(), output->GetLines(), output->GetPolys(), output->GetStrips() })
-  {
-    if (cells && cells->GetNumberOfCells() > 0)
-    {
-      const std::uint64_t ids =
-        cells->GetNumberOfConnectivityIds() + cells->GetNumberOfCells() + (version5 ? 1 : 0);
-      needed += ids * idBytes;
-    }
-  }
-  for (vtkFieldData* data : { static_cast<vtkFieldData*>(output->GetPointData()),
-         static_cast<vtkFieldData*>(output->GetCellData()) })
-  {
-    for (int a = 0; a < data->GetNumberOfArrays(); ++a)
-    {
-      vtkDataArray* array = data->GetArray(a);
-      needed += array ? std::uint64_t(array->GetNumberOfValues()) * array->GetDataTypeSize() : 0;
-    }
-  }
-  if (needed > size)
-  {
-    return "its points, cells and data need at least " + std::to_string(needed) +
-      " bytes but it has " + std::to_string(size) + " bytes (truncated)";
   }
   return "";
 }

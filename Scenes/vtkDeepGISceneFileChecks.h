@@ -3,10 +3,10 @@
  * @brief  Checks vtkDeepGBufferSceneLoader runs on a file before a reader of
  *         VTK 9.1 sees it (private to DeepGI::Scenes).
  *
- * VTK 9.1's vtkPLYReader, vtkSTLReader and vtkPolyDataReader trust the
- * counts a file declares: a truncated PLY frees invalid pointers or reads
- * through NULL, a truncated binary STL or legacy .vtk loads "successfully"
- * with the missing part silently lost or left as garbage. The functions here
+ * VTK 9.1's vtkPLYReader and vtkSTLReader trust the counts a file
+ * declares: a truncated PLY frees invalid pointers or reads through NULL, a
+ * truncated binary STL loads "successfully" with the missing triangles
+ * silently lost. The functions here
  * validate what those readers would read and return an empty string when the
  * file is sound, else one sentence saying what is wrong.
  */
@@ -17,8 +17,6 @@
 #include <cstdint>
 #include <istream>
 #include <string>
-
-class vtkPolyData;
 
 namespace vtkDeepGISceneFileChecks
 {
@@ -55,14 +53,6 @@ std::string CheckPLY(const std::string& path);
  * 50 bytes of each triangle its header declares.
  */
 std::string CheckSTL(const std::string& path);
-
-/**
- * A legacy .vtk file after vtkPolyDataReader read it into `output`: a binary
- * file must be at least as long as the values `output` holds (points, cells,
- * point and cell data), since VTK 9.1 reads past the end of a truncated file
- * without a word.
- */
-std::string CheckLegacyVTK(const std::string& path, vtkPolyData* output);
 }
 
 #endif
