@@ -4,7 +4,7 @@
 //   TestDeepGISceneLoaderRobustness --data DIR -T TEMPDIR --finding NAME
 // NAME: ply-truncated, nrrd-rejected, nrrd-pattern-overflow, device-files,
 // duplicate-faces, truncated-data, non-finite-points, huge-volume,
-// obj-continuation. Every refused file must give exactly one error and
+// obj-continuation, fuzz-findings. Every refused file must give exactly one error and
 // leave the loader empty; nothing is rendered.
 
 #include "DeepGITestData.h"
@@ -296,6 +296,50 @@ void ObjContinuation(Fixture& f)
   f.Loads(f.Write("continued.obj", "v 0 \\\n 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 \\\n3\n"));
   CHECK(f.Loader->GetNumberOfTriangles() == 1, "continued lines make one triangle");
 }
+
+// What fuzzing (scripts/fuzz.sh) found after the fixes above, as small
+// hand-made files: each crashed VTK 9.1's vtkPLYReader or vtkPolyDataReader.
+void FuzzFindings(Fixture& f)
+{
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                          "property float y\nproperty float z\n";
+  const std::string face = "element face 1\nproperty list uchar int vertex_indices\n";
+  const std::string data = "0 0 0\n1 0 0\n0 1 0\n";
+  // vtkPolygon::Initialize read the point of a face index past the points.
+  f.Refused(f.Write("far_index.ply", ply + face + "end_header\n" + data + "3 0 1 7\n"),
+    "names a vertex outside");
+  // A NUL ended vtkPLY's header line early: a NULL element list.
+  f.Refused(
+    f.Write("nul.ply", ply + std::string("element face\0\0ace 1\n", 20) + "end_header\n" + data),
+    "control character");
+  // "Cannot read geometry", then vtkPLYReader went on with a closed file.
+  f.Refused(f.Write("no_xyz.ply",
+              "ply\nformat ascii 1.0\nelement vertex 1\nproperty float w\nend_header\n0\n"),
+    "x, y and z");
+  // A face element without vertex_indices: an uninitialised pointer freed.
+  f.Refused(
+    f.Write("no_indices.ply",
+      ply + "element face 1\nproperty list uchar int corners\nend_header\n" + data + "3 0 1 2\n"),
+    "no vertex_indices");
+  f.Refused(f.Write("faces_first.ply",
+              "ply\nformat ascii 1.0\n" + face +
+                "element vertex 3\nproperty float x\n"
+                "property float y\nproperty float z\nend_header\n3 0 1 2\n" +
+                data),
+    "faces before the vertices");
+  // vtkCellArray::AppendLegacyFormat read past a cell list whose counts run
+  // past its size.
+  const std::string vtk = "# vtk DataFile Version 4.2\nx\nASCII\nDATASET POLYDATA\n"
+                          "POINTS 3 float\n0 0 0 1 0 0 0 1 0\n";
+  f.Refused(f.Write("run_past.vtk", vtk + "POLYGONS 1 4\n9 0 1 2\n"), "runs past");
+  f.Refused(f.Write("offsets.vtk",
+              "# vtk DataFile Version 5.1\nx\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n"
+              "0 0 0 1 0 0 0 1 0\nPOLYGONS 2 3\nOFFSETS vtktypeint64\n0 9\n"
+              "CONNECTIVITY vtktypeint64\n0 1 2\n"),
+    "offsets end at");
+  f.Loads(f.Write("good.vtk", vtk + "POLYGONS 1 4\n3 0 1 2\n"));
+  CHECK(f.Loader->GetNumberOfTriangles() == 1, "good.vtk has one triangle");
+}
 } // anonymous namespace
 
 int TestDeepGISceneLoaderRobustness(int argc, char* argv[])
@@ -318,12 +362,13 @@ int TestDeepGISceneLoaderRobustness(int argc, char* argv[])
       finding = argv[++i];
     }
   }
-  const std::map<std::string, std::function<void(Fixture&)>> findings = { { "ply-truncated",
-                                                                            PlyTruncated },
-    { "nrrd-rejected", NrrdRejected }, { "nrrd-pattern-overflow", NrrdPatternOverflow },
-    { "device-files", DeviceFiles }, { "duplicate-faces", DuplicateFaces },
-    { "truncated-data", TruncatedData }, { "non-finite-points", NonFinitePoints },
-    { "huge-volume", HugeVolume }, { "obj-continuation", ObjContinuation } };
+  const std::map<std::string, std::function<void(Fixture&)>> findings = {
+    { "ply-truncated", PlyTruncated }, { "nrrd-rejected", NrrdRejected },
+    { "nrrd-pattern-overflow", NrrdPatternOverflow }, { "device-files", DeviceFiles },
+    { "duplicate-faces", DuplicateFaces }, { "truncated-data", TruncatedData },
+    { "non-finite-points", NonFinitePoints }, { "huge-volume", HugeVolume },
+    { "obj-continuation", ObjContinuation }, { "fuzz-findings", FuzzFindings }
+  };
   if (f.Data.empty() || f.Temp.empty() || !findings.count(finding))
   {
     std::cerr << "Usage: TestDeepGISceneLoaderRobustness --data DIR -T TEMPDIR --finding NAME\n";
