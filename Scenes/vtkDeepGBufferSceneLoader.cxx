@@ -109,7 +109,7 @@ public:
   }
   void Watch(vtkObject* object) { object->AddObserver(vtkCommand::ErrorEvent, this); }
   // Warnings too, for readers whose warnings mean lost data (vtkSTLReader
-  // guessing the file type, vtkImageReader2 reading past the end).
+  // guessing the file type, vtkPLYReader failing to open the file).
   void WatchAll(vtkObject* object)
   {
     this->Watch(object);

@@ -40,9 +40,12 @@ bool RegularFileSize(const std::string& path, std::uint64_t& bytes);
 bool ReadLine(std::istream& in, std::string& line, std::size_t maxBytes, bool& tooLong);
 
 /**
- * A PLY file as VTK 9.1's vtkPLYReader reads it: header syntax, and a walk
- * over every element (list properties' counts included) that proves the data
- * is there. ASCII: one line per element with at least the values its
+ * A PLY file as VTK 9.1's vtkPLYReader reads it: header syntax (no control
+ * characters), the properties it reads (vertex x, y, z; a face
+ * vertex_indices list; its optional ones as the lists or scalars it takes
+ * them for), vertices before faces, and a walk over every element (list
+ * counts included) that proves the data is there and that every face index
+ * names a vertex. ASCII: one line per element with at least the values its
  * properties need; binary: enough bytes.
  */
 std::string CheckPLY(const std::string& path);
