@@ -11,13 +11,16 @@
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDeepGIKeys.h"
+#include "vtkDeepGISceneFileChecks.h"
+#include "vtkDeepGISceneLegacyVTK.h"
+#include "vtkDeepGISceneNrrd.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkFlyingEdges3D.h"
+#include "vtkIdList.h"
 #include "vtkImageData.h"
-#include "vtkImageReader2.h"
 #include "vtkInformation.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkIntArray.h"
@@ -25,19 +28,17 @@
 #include "vtkMath.h"
 #include "vtkMetaImageReader.h"
 #include "vtkNew.h"
-#include "vtkNrrdReader.h"
 #include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
 #include "vtkPLYReader.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPolyDataNormals.h"
-#include "vtkPolyDataReader.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkSTLReader.h"
-#include "vtkStringArray.h"
 #include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVolume16Reader.h"
@@ -54,9 +55,12 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <map>
+#include <new>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -89,7 +93,8 @@ public:
     std::string message = callData ? static_cast<const char*>(callData) : "";
     // Keep the text after "ERROR: In FILE, line N\n".
     const size_t newline = message.find('\n');
-    if (message.compare(0, 6, "ERROR:") == 0 && newline != std::string::npos)
+    if ((message.compare(0, 6, "ERROR:") == 0 || message.compare(0, 8, "Warning:") == 0) &&
+      newline != std::string::npos)
     {
       message = message.substr(newline + 1);
     }
@@ -103,7 +108,59 @@ public:
     }
   }
   void Watch(vtkObject* object) { object->AddObserver(vtkCommand::ErrorEvent, this); }
+  // Warnings too, for readers whose warnings mean lost data (vtkSTLReader
+  // guessing the file type, vtkPLYReader failing to open the file).
+  void WatchAll(vtkObject* object)
+  {
+    this->Watch(object);
+    object->AddObserver(vtkCommand::WarningEvent, this);
+  }
   std::string Messages;
+};
+
+// Records the messages VTK sends to its output window (generic warnings
+// such as vtkDataReader's "Error reading binary data!" have no object to
+// observe) while it is installed, then puts the previous window back.
+class OutputTrap : public vtkOutputWindow
+{
+public:
+  static OutputTrap* New() { return new OutputTrap; }
+  void DisplayErrorText(const char* text) override { this->Add(text); }
+  void DisplayWarningText(const char* text) override { this->Add(text); }
+  void DisplayGenericWarningText(const char* text) override { this->Add(text); }
+  void DisplayText(const char*) override {}
+  void DisplayDebugText(const char*) override {}
+  void Add(const char* text)
+  {
+    std::string message = text ? text : "";
+    const size_t newline = message.find('\n');
+    message = newline == std::string::npos ? message : message.substr(newline + 1);
+    while (!message.empty() && std::isspace(static_cast<unsigned char>(message.back())))
+    {
+      message.pop_back();
+    }
+    if (!message.empty() && this->Messages.find(message) == std::string::npos)
+    {
+      this->Messages += (this->Messages.empty() ? "" : "; ") + message;
+    }
+  }
+  std::string Messages;
+};
+
+class ScopedOutputTrap
+{
+public:
+  ScopedOutputTrap()
+    : Previous(vtkOutputWindow::GetInstance())
+  {
+    vtkOutputWindow::SetInstance(this->Trap);
+  }
+  ~ScopedOutputTrap() { vtkOutputWindow::SetInstance(this->Previous); }
+  const std::string& Messages() const { return this->Trap->Messages; }
+
+private:
+  vtkSmartPointer<vtkOutputWindow> Previous;
+  vtkNew<OutputTrap> Trap;
 };
 
 std::string Lower(std::string s)
@@ -123,9 +180,11 @@ bool IsVolumeExtension(const std::string& ext)
   return ext == ".vti" || ext == ".mhd" || ext == ".mha" || ext == ".nhdr" || ext == ".nrrd";
 }
 
+// Only regular files are read: a device (/dev/zero, /dev/urandom), FIFO or
+// directory would make a parser read forever or fail obscurely.
 bool IsRegularFile(const std::string& path)
 {
-  return vtksys::SystemTools::FileExists(path, true);
+  return vtkDeepGISceneFileChecks::IsRegularFile(path);
 }
 
 std::string Trim(const std::string& s)
@@ -139,116 +198,11 @@ std::string Trim(const std::string& s)
   return s.substr(b, e - b + 1);
 }
 
-// Formats `number` into a NRRD file pattern holding exactly one %d / %i
-// conversion with optional '0' flag and width ("quarter.%d", "slice%03d.raw").
-// The pattern comes from a file, so it is never handed to printf.
-bool FormatPattern(const std::string& pattern, long number, std::string& result)
-{
-  result.clear();
-  int conversions = 0;
-  for (size_t i = 0; i < pattern.size(); ++i)
-  {
-    if (pattern[i] != '%')
-    {
-      result += pattern[i];
-      continue;
-    }
-    if (i + 1 < pattern.size() && pattern[i + 1] == '%')
-    {
-      result += '%';
-      ++i;
-      continue;
-    }
-    size_t j = i + 1;
-    bool zero = false;
-    if (j < pattern.size() && pattern[j] == '0')
-    {
-      zero = true;
-      ++j;
-    }
-    int width = 0;
-    while (
-      j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) && width < 100)
-    {
-      width = 10 * width + (pattern[j] - '0');
-      ++j;
-    }
-    if (j >= pattern.size() || (pattern[j] != 'd' && pattern[j] != 'i') || ++conversions > 1)
-    {
-      return false;
-    }
-    std::string digits = std::to_string(number < 0 ? -number : number);
-    const size_t sign = number < 0 ? 1 : 0;
-    if (digits.size() + sign < static_cast<size_t>(width))
-    {
-      const size_t pad = width - digits.size() - sign;
-      digits = zero ? std::string(pad, '0') + digits : digits;
-      result += zero ? "" : std::string(pad, ' ');
-    }
-    result += (number < 0 ? "-" : "") + digits;
-    i = j;
-  }
-  return conversions == 1;
-}
-
-// Parses "(x,y,z)" into three numbers.
-bool ParseVector(const std::string& text, double v[3])
-{
-  std::string s = text;
-  for (char& c : s)
-  {
-    if (c == '(' || c == ')' || c == ',')
-    {
-      c = ' ';
-    }
-  }
-  std::istringstream in(s);
-  return static_cast<bool>(in >> v[0] >> v[1] >> v[2]);
-}
-
-int NrrdScalarType(const std::string& type)
-{
-  const std::string t = Lower(type);
-  if (t == "short" || t == "short int" || t == "signed short" || t == "signed short int" ||
-    t == "int16" || t == "int16_t")
-  {
-    return VTK_SHORT;
-  }
-  if (t == "ushort" || t == "unsigned short" || t == "unsigned short int" || t == "uint16" ||
-    t == "uint16_t")
-  {
-    return VTK_UNSIGNED_SHORT;
-  }
-  if (t == "uchar" || t == "unsigned char" || t == "uint8" || t == "uint8_t")
-  {
-    return VTK_UNSIGNED_CHAR;
-  }
-  if (t == "signed char" || t == "int8" || t == "int8_t")
-  {
-    return VTK_SIGNED_CHAR;
-  }
-  if (t == "int" || t == "signed int" || t == "int32" || t == "int32_t")
-  {
-    return VTK_INT;
-  }
-  if (t == "uint" || t == "unsigned int" || t == "uint32" || t == "uint32_t")
-  {
-    return VTK_UNSIGNED_INT;
-  }
-  if (t == "float")
-  {
-    return VTK_FLOAT;
-  }
-  if (t == "double")
-  {
-    return VTK_DOUBLE;
-  }
-  return -1;
-}
-
 // Reads the logical lines of an OBJ or MTL file: comments ('#' to the end of
 // the line) and surrounding white space removed, backslash continuations
-// joined. `lineNumber` is the number of the line's first physical line.
+// joined (a lone "\\" joins nothing). `lineNumber` is the number of the
+// line's first physical line. Lines (joined or not) longer than
+// MaximumLineBytes end the file with TooLong set.
 class LogicalLineReader
 {
 public:
@@ -261,7 +215,8 @@ public:
     line.clear();
     std::string physical;
     bool any = false;
-    while (std::getline(this->In, physical))
+    const size_t limit = vtkDeepGISceneFileChecks::MaximumLineBytes;
+    while (vtkDeepGISceneFileChecks::ReadLine(this->In, physical, limit, this->TooLong))
     {
       ++this->Physical;
       if (!any)
@@ -275,22 +230,39 @@ public:
         physical.erase(hash);
       }
       physical = Trim(physical);
-      if (!physical.empty() && physical.back() == '\\')
+      const bool continued = !physical.empty() && physical.back() == '\\';
+      if (continued)
       {
         physical.pop_back();
-        line += physical + " ";
-        continue;
       }
-      line += physical;
-      return true;
+      line += (line.empty() || physical.empty() ? "" : " ") + physical;
+      if (line.size() > limit)
+      {
+        this->TooLong = true;
+        return false;
+      }
+      if (!continued)
+      {
+        line = Trim(line);
+        return true;
+      }
     }
-    return any;
+    line = Trim(line);
+    return any && !this->TooLong;
   }
+  bool TooLong = false;
 
 private:
   std::istream& In;
   int Physical = 0;
 };
+
+// The rest of a logical line after its first word ("usemtl red" -> "red").
+std::string Rest(const std::string& line)
+{
+  const size_t end = line.find_first_of(" \t");
+  return end == std::string::npos ? std::string() : Trim(line.substr(end));
+}
 
 // Splits `s` at white space.
 std::vector<std::string> Words(const std::string& s)
@@ -353,8 +325,10 @@ long long ResolveObjIndex(const std::string& word, long long count)
 bool ReadMaterialColors(const std::string& path, std::map<std::string, std::array<double, 3>>& kd,
   std::map<std::string, std::array<double, 3>>& ke, std::set<std::string>& materials)
 {
+  std::uint64_t bytes = 0;
   vtksys::ifstream in(path.c_str());
-  if (!in)
+  if (!vtkDeepGISceneFileChecks::RegularFileSize(path, bytes) ||
+    bytes > vtkDeepGISceneFileChecks::MaximumTextFileBytes || !in)
   {
     return false;
   }
@@ -370,7 +344,7 @@ bool ReadMaterialColors(const std::string& path, std::map<std::string, std::arra
     }
     if (words[0] == "newmtl")
     {
-      current = Trim(line.substr(6));
+      current = Rest(line);
       materials.insert(current);
     }
     else if ((words[0] == "Kd" || words[0] == "Ke") && !current.empty())
@@ -394,7 +368,7 @@ bool ReadMaterialColors(const std::string& path, std::map<std::string, std::arra
       }
     }
   }
-  return true;
+  return !reader.TooLong;
 }
 
 // The faces of one material of an OBJ file, as 0-based indices into the
@@ -407,6 +381,200 @@ struct ObjGroup
   std::vector<long long> Vertices;
   std::vector<long long> Normals;
 };
+
+// Marks the points with a NaN or infinite coordinate; returns how many.
+vtkIdType MarkNonFinitePoints(vtkPoints* points, std::vector<char>& nonFinite)
+{
+  const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
+  nonFinite.assign(static_cast<size_t>(n), 0);
+  vtkIdType count = 0;
+  double p[3];
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    points->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      nonFinite[static_cast<size_t>(i)] = 1;
+      ++count;
+    }
+  }
+  return count;
+}
+
+bool AllFinite(vtkDataArray* array)
+{
+  const vtkIdType n = array->GetNumberOfValues();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (!std::isfinite(array->GetVariantValue(i).ToDouble()))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Whether a cell array's offsets start at 0, never decrease and end at the
+// connectivity's size: a corrupt file can make a reader (vtkPolyDataReader)
+// produce offsets past the connectivity, which any walk over the cells
+// would read beyond.
+bool IsConsistent(vtkCellArray* cells)
+{
+  if (!cells)
+  {
+    return true;
+  }
+  vtkDataArray* offsets = cells->GetOffsetsArray();
+  vtkDataArray* connectivity = cells->GetConnectivityArray();
+  const vtkIdType n = offsets ? offsets->GetNumberOfValues() : 0;
+  if (n == 0 || !connectivity)
+  {
+    return connectivity == nullptr || connectivity->GetNumberOfValues() == 0;
+  }
+  double previous = 0.0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double o = offsets->GetComponent(i, 0);
+    if ((i == 0 && o != 0.0) || o < previous)
+    {
+      return false;
+    }
+    previous = o;
+  }
+  return previous == static_cast<double>(connectivity->GetNumberOfValues());
+}
+
+// Keeps the cells whose point ids exist and whose points are finite,
+// counting the others.
+struct CellFilter
+{
+  vtkIdType NumberOfPoints = 0;
+  std::vector<char> NonFinite; // per point
+  vtkIdType OutOfRange = 0;
+  vtkIdType WithNonFinite = 0;
+
+  // 0: usable, 1: an id outside the points, 2: a non-finite point.
+  int Check(vtkIdType n, const vtkIdType* ids) const
+  {
+    int why = 0;
+    for (vtkIdType i = 0; i < n && why != 1; ++i)
+    {
+      why = (ids[i] < 0 || ids[i] >= this->NumberOfPoints) ? 1
+        : this->NonFinite[static_cast<size_t>(ids[i])]     ? 2
+                                                           : why;
+    }
+    return why;
+  }
+
+  vtkSmartPointer<vtkCellArray> Apply(vtkCellArray* cells)
+  {
+    if (!cells || cells->GetNumberOfCells() == 0)
+    {
+      return nullptr;
+    }
+    vtkIdType n;
+    const vtkIdType* ids;
+    auto kept = vtkSmartPointer<vtkCellArray>::New();
+    vtkIdType bad = 0;
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      it->GetCurrentCell(n, ids);
+      const int why = this->Check(n, ids);
+      this->OutOfRange += why == 1 ? 1 : 0;
+      this->WithNonFinite += why == 2 ? 1 : 0;
+      bad += why ? 1 : 0;
+      if (!why)
+      {
+        kept->InsertNextCell(n, ids);
+      }
+    }
+    if (bad == 0)
+    {
+      return cells;
+    }
+    return kept->GetNumberOfCells() ? kept : nullptr;
+  }
+};
+
+// The point ids of a triangle, sorted: equal for coincident triangles.
+struct TriangleKey
+{
+  vtkIdType Ids[3];
+  bool operator==(const TriangleKey& o) const
+  {
+    return Ids[0] == o.Ids[0] && Ids[1] == o.Ids[1] && Ids[2] == o.Ids[2];
+  }
+};
+
+struct TriangleKeyHash
+{
+  size_t operator()(const TriangleKey& k) const
+  {
+    std::hash<vtkIdType> h;
+    return h(k.Ids[0]) ^ (h(k.Ids[1]) * 0x9e3779b97f4a7c15ULL) ^
+      (h(k.Ids[2]) * 0xc2b2ae3d27d4eb4fULL);
+  }
+};
+
+// Point normals of a triangle mesh (vtkPolyDataNormals, split at
+// `featureAngle`, consistent winding). Its consistency walk costs cubic time
+// in the number of exactly coincident triangles sharing edges (2,000 copies
+// of one face: 43 s), so the normals are computed with each such set once,
+// and every copy then takes the triangle (winding and points, hence
+// normals) of its first instance: the output has every triangle of the
+// input, in the input's order.
+vtkSmartPointer<vtkPolyData> ComputePointNormals(vtkPolyData* mesh, double featureAngle)
+{
+  std::unordered_map<TriangleKey, vtkIdType, TriangleKeyHash> firstOf;
+  std::vector<vtkIdType> uniqueOf; // per input triangle: its cell in `unique`
+  vtkNew<vtkCellArray> unique;
+  vtkIdType n;
+  const vtkIdType* ids;
+  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    it->GetCurrentCell(n, ids);
+    TriangleKey key = { { ids[0], n > 1 ? ids[1] : ids[0], n > 2 ? ids[2] : ids[0] } };
+    std::sort(key.Ids, key.Ids + 3);
+    auto inserted = firstOf.emplace(key, unique->GetNumberOfCells());
+    if (inserted.second || n != 3)
+    {
+      uniqueOf.push_back(unique->InsertNextCell(n, ids));
+      continue;
+    }
+    uniqueOf.push_back(inserted.first->second);
+  }
+  vtkNew<vtkPolyData> once;
+  once->SetPoints(mesh->GetPoints());
+  once->SetPolys(unique);
+  vtkNew<vtkPolyDataNormals> computer;
+  computer->SetInputData(once);
+  computer->SetFeatureAngle(featureAngle);
+  computer->SplittingOn();
+  computer->ConsistencyOn();
+  computer->AutoOrientNormalsOff();
+  computer->ComputePointNormalsOn();
+  computer->ComputeCellNormalsOff();
+  computer->Update();
+  auto withNormals = vtkSmartPointer<vtkPolyData>::New();
+  withNormals->ShallowCopy(computer->GetOutput());
+  vtkCellArray* computed = withNormals->GetPolys();
+  if (static_cast<vtkIdType>(uniqueOf.size()) == unique->GetNumberOfCells() ||
+    computed->GetNumberOfCells() != unique->GetNumberOfCells())
+  {
+    return withNormals; // no coincident triangles
+  }
+  vtkNew<vtkCellArray> all;
+  vtkNew<vtkIdList> cell;
+  for (vtkIdType c : uniqueOf)
+  {
+    computed->GetCellAtId(c, cell);
+    all->InsertNextCell(cell);
+  }
+  withNormals->SetPolys(all);
+  return withNormals;
+}
 } // anonymous namespace
 
 class vtkDeepGBufferSceneLoader::vtkInternals
@@ -453,6 +621,12 @@ bool vtkDeepGBufferSceneLoader::IsVolumePath(const char* path)
 //------------------------------------------------------------------------------
 bool vtkDeepGBufferSceneLoader::Load(const char* path)
 {
+  return this->Guarded("Load", path, [&]() { return this->LoadUnguarded(path); });
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGBufferSceneLoader::LoadUnguarded(const char* path)
+{
   if (!path || !*path)
   {
     vtkErrorMacro("Load: no file name given");
@@ -460,13 +634,19 @@ bool vtkDeepGBufferSceneLoader::Load(const char* path)
   }
   if (IsVolumePath(path))
   {
-    return this->LoadVolume(path, this->IsoValue);
+    return this->LoadVolumeUnguarded(path, this->IsoValue);
   }
-  return this->LoadMesh(path);
+  return this->LoadMeshUnguarded(path);
 }
 
 //------------------------------------------------------------------------------
 bool vtkDeepGBufferSceneLoader::LoadMesh(const char* fileName)
+{
+  return this->Guarded("LoadMesh", fileName, [&]() { return this->LoadMeshUnguarded(fileName); });
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGBufferSceneLoader::LoadMeshUnguarded(const char* fileName)
 {
   if (!fileName || !*fileName)
   {
@@ -489,16 +669,33 @@ bool vtkDeepGBufferSceneLoader::LoadMesh(const char* fileName)
   {
     return this->LoadOBJ(fileName);
   }
+  if (ext == ".vtk")
+  {
+    // The project's own parser, not vtkPolyDataReader (see vtkDeepGISceneLegacyVTK.h).
+    vtkNew<vtkPolyData> legacy;
+    const std::string why = vtkDeepGISceneLegacyVTK::Read(path, legacy);
+    if (!why.empty())
+    {
+      vtkErrorMacro("Cannot read mesh " << path << ": " << why);
+      return false;
+    }
+    vtkSmartPointer<vtkPolyData> mesh = this->PrepareMesh(legacy, fileName);
+    return mesh &&
+      this->AddPart(mesh, vtksys::SystemTools::GetFilenameName(path).c_str(), this->DefaultColor);
+  }
 
   vtkSmartPointer<vtkAlgorithm> reader;
+  std::string invalid; // why a file is refused before VTK's reader sees it
   if (ext == ".ply")
   {
+    invalid = vtkDeepGISceneFileChecks::CheckPLY(path);
     auto r = vtkSmartPointer<vtkPLYReader>::New();
     r->SetFileName(fileName);
     reader = r;
   }
   else if (ext == ".stl")
   {
+    invalid = vtkDeepGISceneFileChecks::CheckSTL(path);
     auto r = vtkSmartPointer<vtkSTLReader>::New();
     r->SetFileName(fileName);
     reader = r;
@@ -507,17 +704,6 @@ bool vtkDeepGBufferSceneLoader::LoadMesh(const char* fileName)
   {
     auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
     r->SetFileName(fileName);
-    reader = r;
-  }
-  else if (ext == ".vtk")
-  {
-    auto r = vtkSmartPointer<vtkPolyDataReader>::New();
-    r->SetFileName(fileName);
-    if (!r->IsFilePolyData())
-    {
-      vtkErrorMacro("Legacy VTK file " << path << " does not hold polydata");
-      return false;
-    }
     reader = r;
   }
   else if (IsVolumeExtension(ext))
@@ -532,10 +718,33 @@ bool vtkDeepGBufferSceneLoader::LoadMesh(const char* fileName)
     return false;
   }
 
+  if (!invalid.empty())
+  {
+    vtkErrorMacro("Cannot read mesh " << path << ": " << invalid);
+    return false;
+  }
+
+  // Warnings of these readers mean lost data (vtkSTLReader guessing a binary
+  // file, vtkPLYReader missing properties); the XML reader's do not.
   vtkNew<ErrorCollector> errors;
-  errors->Watch(reader);
+  if (ext == ".vtp")
+  {
+    errors->Watch(reader);
+  }
+  else
+  {
+    errors->WatchAll(reader);
+  }
   errors->Watch(reader->GetExecutive());
-  reader->Update();
+  {
+    ScopedOutputTrap trap;
+    reader->Update();
+    errors->Messages = errors->Messages.empty() ? trap.Messages() : errors->Messages;
+    if (!errors->Messages.empty() && ext != ".vtp")
+    {
+      errors->Messages += " (the file is truncated or corrupt)";
+    }
+  }
   vtkPolyData* output = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
   if (!errors->Messages.empty() || !output)
   {
@@ -669,13 +878,19 @@ bool vtkDeepGBufferSceneLoader::LoadOBJ(const char* fileName)
       }
       else if (command == "usemtl")
       {
-        useMaterial(Trim(line.substr(6)));
+        useMaterial(Rest(line));
       }
       else if (command == "mtllib")
       {
-        libraries.push_back(Trim(line.substr(6)));
+        libraries.push_back(Rest(line));
       }
       // vt, p, l, g, o, s and the rest play no part in the surfaces.
+    }
+    if (reader.TooLong)
+    {
+      vtkErrorMacro("Cannot read OBJ " << path << ": line " << lineNumber << " is longer than "
+                                       << vtkDeepGISceneFileChecks::MaximumLineBytes << " bytes");
+      return false;
     }
   }
 
@@ -763,6 +978,12 @@ bool vtkDeepGBufferSceneLoader::LoadOBJ(const char* fileName)
       {
         mtl = inDir(candidate);
       }
+      else if (vtksys::SystemTools::FileExists(inDir(candidate)) &&
+        !IsRegularFile(inDir(candidate)))
+      {
+        vtkWarningMacro("OBJ " << path << ": mtllib " << candidate
+                               << " is not a regular file (a device or directory?); ignored");
+      }
     }
   }
   if (mtl.empty())
@@ -781,7 +1002,9 @@ bool vtkDeepGBufferSceneLoader::LoadOBJ(const char* fileName)
   std::set<std::string> materials;
   if (!mtl.empty() && !ReadMaterialColors(mtl, kd, ke, materials))
   {
-    vtkWarningMacro("Cannot read the materials " << mtl << " of " << path);
+    vtkWarningMacro("Cannot read the materials " << mtl << " of " << path
+                                                 << " (larger than 64 MiB or a line longer than "
+                                                    "1 MiB); the parts get the default colour");
     mtl.clear();
   }
   if (mtl.empty())
@@ -926,59 +1149,37 @@ vtkSmartPointer<vtkPolyData> vtkDeepGBufferSceneLoader::PrepareMesh(
     return nullptr;
   }
   // Only what is used below (points, polygons, strips, point normals), and
-  // only cells whose point ids exist: not every reader checks them, and
-  // the filters below would read out of bounds.
+  // only cells whose point ids exist and whose points are finite: not every
+  // reader checks ids (the filters below would read out of bounds), and one
+  // NaN or infinite point makes the bounds, the camera and the image wrong.
+  if (!IsConsistent(input->GetPolys()) || !IsConsistent(input->GetStrips()))
+  {
+    vtkErrorMacro("" << what << " has corrupt polygons (cell offsets beyond its point ids)");
+    return nullptr;
+  }
   vtkPoints* inputPoints = input->GetPoints();
   const vtkIdType numberOfPoints = inputPoints ? inputPoints->GetNumberOfPoints() : 0;
-  vtkIdType dropped = 0;
-  auto checkedCells = [&](vtkCellArray* cells) -> vtkSmartPointer<vtkCellArray>
-  {
-    if (!cells || cells->GetNumberOfCells() == 0)
-    {
-      return nullptr;
-    }
-    auto valid = [numberOfPoints](vtkIdType n, const vtkIdType* ids)
-    {
-      return std::all_of(
-        ids, ids + n, [numberOfPoints](vtkIdType id) { return id >= 0 && id < numberOfPoints; });
-    };
-    vtkIdType n;
-    const vtkIdType* ids;
-    vtkIdType bad = 0;
-    auto it = vtk::TakeSmartPointer(cells->NewIterator());
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-    {
-      it->GetCurrentCell(n, ids);
-      bad += valid(n, ids) ? 0 : 1;
-    }
-    if (bad == 0)
-    {
-      return cells;
-    }
-    dropped += bad;
-    auto kept = vtkSmartPointer<vtkCellArray>::New();
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-    {
-      it->GetCurrentCell(n, ids);
-      if (valid(n, ids))
-      {
-        kept->InsertNextCell(n, ids);
-      }
-    }
-    return kept->GetNumberOfCells() ? kept : nullptr;
-  };
-  vtkSmartPointer<vtkCellArray> polys = checkedCells(input->GetPolys());
-  vtkSmartPointer<vtkCellArray> strips = checkedCells(input->GetStrips());
+  CellFilter filter;
+  filter.NumberOfPoints = numberOfPoints;
+  const vtkIdType nonFinite = MarkNonFinitePoints(inputPoints, filter.NonFinite);
+  vtkSmartPointer<vtkCellArray> polys = filter.Apply(input->GetPolys());
+  vtkSmartPointer<vtkCellArray> strips = filter.Apply(input->GetStrips());
   if (!polys && !strips)
   {
     vtkErrorMacro("" << what << " has no polygons whose point ids are within its " << numberOfPoints
-                     << " points");
+                     << " points and whose points are finite");
     return nullptr;
   }
-  if (dropped)
+  if (filter.OutOfRange)
   {
-    vtkWarningMacro("" << what << ": skipped " << dropped
+    vtkWarningMacro("" << what << ": skipped " << filter.OutOfRange
                        << " polygon(s) with point ids outside its " << numberOfPoints << " points");
+  }
+  if (nonFinite)
+  {
+    vtkWarningMacro("" << what << ": dropped " << nonFinite
+                       << " point(s) with non-finite (NaN or infinite) coordinates and the "
+                       << filter.WithNonFinite << " polygon(s) using them");
   }
   vtkNew<vtkPolyData> checked;
   checked->SetPoints(inputPoints);
@@ -986,7 +1187,7 @@ vtkSmartPointer<vtkPolyData> vtkDeepGBufferSceneLoader::PrepareMesh(
   checked->SetStrips(strips);
   vtkDataArray* inputNormals = input->GetPointData()->GetNormals();
   if (inputNormals && inputNormals->GetNumberOfComponents() == 3 &&
-    inputNormals->GetNumberOfTuples() == numberOfPoints)
+    inputNormals->GetNumberOfTuples() == numberOfPoints && AllFinite(inputNormals))
   {
     checked->GetPointData()->SetNormals(inputNormals);
   }
@@ -1018,18 +1219,7 @@ vtkSmartPointer<vtkPolyData> vtkDeepGBufferSceneLoader::PrepareMesh(
   }
   else if (this->ComputeNormals)
   {
-    vtkNew<vtkPolyDataNormals> computer;
-    computer->SetInputData(mesh);
-    computer->SetFeatureAngle(this->FeatureAngle);
-    computer->SplittingOn();
-    computer->ConsistencyOn();
-    computer->AutoOrientNormalsOff();
-    computer->ComputePointNormalsOn();
-    computer->ComputeCellNormalsOff();
-    computer->Update();
-    auto withNormals = vtkSmartPointer<vtkPolyData>::New();
-    withNormals->ShallowCopy(computer->GetOutput());
-    return withNormals;
+    return ComputePointNormals(mesh, this->FeatureAngle);
   }
   return mesh;
 }
@@ -1052,6 +1242,34 @@ bool vtkDeepGBufferSceneLoader::AddPart(vtkPolyData* mesh, const char* name, con
 
 //------------------------------------------------------------------------------
 bool vtkDeepGBufferSceneLoader::LoadVolume(const char* path, double isoValue)
+{
+  return this->Guarded(
+    "LoadVolume", path, [&]() { return this->LoadVolumeUnguarded(path, isoValue); });
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGBufferSceneLoader::Guarded(
+  const char* what, const char* path, const std::function<bool()>& load)
+{
+  // A file may declare more than memory holds, and not every reader checks:
+  // running out of memory is an error of this load, not the end of the process.
+  try
+  {
+    return load();
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro(<< what << ": out of memory reading " << (path ? path : "(null)"));
+  }
+  catch (const std::length_error&)
+  {
+    vtkErrorMacro(<< what << ": " << (path ? path : "(null)") << " declares more data than fits");
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGBufferSceneLoader::LoadVolumeUnguarded(const char* path, double isoValue)
 {
   if (!path || !*path)
   {
@@ -1203,15 +1421,14 @@ bool vtkDeepGBufferSceneLoader::ReadVolume(const char* path, vtkImageData* outpu
   vtkSmartPointer<vtkAlgorithm> reader;
   if (ext == ".nhdr" || ext == ".nrrd")
   {
-    bool handled = false;
-    const bool ok = this->ReadDetachedNrrd(path, output, handled);
-    if (handled)
+    // Never vtkNrrdReader: see vtkDeepGISceneNrrd.h.
+    const std::string why = vtkDeepGISceneNrrd::Read(p, output);
+    if (!why.empty())
     {
-      return ok;
+      vtkErrorMacro("Cannot read NRRD " << p << ": " << why);
+      return false;
     }
-    auto r = vtkSmartPointer<vtkNrrdReader>::New();
-    r->SetFileName(path);
-    reader = r;
+    return true;
   }
   else if (ext == ".vti")
   {
@@ -1244,239 +1461,6 @@ bool vtkDeepGBufferSceneLoader::ReadVolume(const char* path, vtkImageData* outpu
     return false;
   }
   output->ShallowCopy(image);
-  return true;
-}
-
-//------------------------------------------------------------------------------
-bool vtkDeepGBufferSceneLoader::ReadDetachedNrrd(
-  const char* fileName, vtkImageData* output, bool& handled)
-{
-  // The few header fields of a raw NRRD (http://teem.sourceforge.net/nrrd/format.html).
-  handled = false;
-  const std::string path = fileName;
-  const std::string dir = vtksys::SystemTools::GetFilenamePath(path);
-  auto inDir = [&](const std::string& name)
-  { return (dir.empty() || vtksys::SystemTools::FileIsFullPath(name)) ? name : dir + "/" + name; };
-  vtksys::ifstream in(path.c_str(), std::ios::in | std::ios::binary);
-  std::string line;
-  if (!in || !std::getline(in, line) || line.compare(0, 4, "NRRD") != 0)
-  {
-    return false; // let vtkNrrdReader report it
-  }
-  int dimension = 0, scalarType = -1;
-  int sizes[3] = { 0, 0, 0 };
-  double spacing[3] = { 1.0, 1.0, 1.0 }, origin[3] = { 0.0, 0.0, 0.0 };
-  bool haveSpacing = false, leftHanded = false;
-  std::string encoding = "raw", endian = "little";
-  long long byteSkip = 0;
-  std::vector<std::string> dataFiles;
-  bool listFollows = false;
-  while (std::getline(in, line))
-  {
-    const std::string t = Trim(line);
-    if (listFollows)
-    {
-      if (!t.empty())
-      {
-        dataFiles.push_back(inDir(t));
-      }
-      continue;
-    }
-    if (t.empty())
-    {
-      break; // end of header (attached data would follow)
-    }
-    if (t[0] == '#' || t.find(":=") != std::string::npos)
-    {
-      continue; // comments and key/value pairs
-    }
-    const size_t colon = t.find(": ");
-    if (colon == std::string::npos)
-    {
-      continue;
-    }
-    const std::string field = Lower(Trim(t.substr(0, colon)));
-    const std::string value = Trim(t.substr(colon + 2));
-    std::istringstream v(value);
-    if (field == "dimension")
-    {
-      v >> dimension;
-    }
-    else if (field == "type")
-    {
-      scalarType = NrrdScalarType(value);
-    }
-    else if (field == "sizes")
-    {
-      v >> sizes[0] >> sizes[1] >> sizes[2];
-    }
-    else if (field == "spacings")
-    {
-      std::string s[3];
-      v >> s[0] >> s[1] >> s[2];
-      for (int i = 0; i < 3; ++i)
-      {
-        const double d = std::atof(s[i].c_str());
-        spacing[i] = (std::isfinite(d) && d > 0.0) ? d : 1.0;
-      }
-      haveSpacing = true;
-    }
-    else if (field == "space directions" && !haveSpacing)
-    {
-      // "(a,0,0) (0,b,0) (0,0,c)": the spacing is each vector's length.
-      std::string vectors[3];
-      v >> vectors[0] >> vectors[1] >> vectors[2];
-      for (int i = 0; i < 3; ++i)
-      {
-        double d[3];
-        if (ParseVector(vectors[i], d) && vtkMath::Norm(d) > 0.0)
-        {
-          spacing[i] = vtkMath::Norm(d);
-        }
-      }
-    }
-    else if (field == "space origin")
-    {
-      double o[3];
-      if (ParseVector(value, o))
-      {
-        std::copy(o, o + 3, origin);
-      }
-    }
-    else if (field == "space")
-    {
-      leftHanded = value == "3D-left-handed" || value == "left-anterior-superior" || value == "LAS";
-    }
-    else if (field == "encoding")
-    {
-      encoding = Lower(value);
-    }
-    else if (field == "endian")
-    {
-      endian = Lower(value);
-    }
-    else if (field == "byte skip" || field == "byteskip")
-    {
-      v >> byteSkip;
-    }
-    else if (field == "data file" || field == "datafile")
-    {
-      std::vector<std::string> words;
-      std::string w;
-      while (v >> w)
-      {
-        words.push_back(w);
-      }
-      if (words.empty())
-      {
-        return false;
-      }
-      if (words[0] == "LIST")
-      {
-        listFollows = true;
-      }
-      else if (words.size() >= 4)
-      {
-        const long first = std::atol(words[1].c_str()), last = std::atol(words[2].c_str());
-        const long step = std::atol(words[3].c_str());
-        if (step == 0 || (last - first) / step < 0 || (last - first) / step > 100000)
-        {
-          return false;
-        }
-        for (long i = first; step > 0 ? i <= last : i >= last; i += step)
-        {
-          std::string name;
-          if (!FormatPattern(words[0], i, name))
-          {
-            return false;
-          }
-          dataFiles.push_back(inDir(name));
-        }
-      }
-      else
-      {
-        dataFiles.push_back(inDir(value));
-      }
-    }
-  }
-  const bool attached = dataFiles.empty();
-  const long long headerBytes = attached ? static_cast<long long>(in.tellg()) : 0;
-
-  // Only what this parser fully understands; the rest goes to vtkNrrdReader.
-  if (dimension != 3 || scalarType < 0 || encoding != "raw" || sizes[0] < 1 || sizes[1] < 1 ||
-    sizes[2] < 1 ||
-    (!attached && dataFiles.size() != 1 && dataFiles.size() != static_cast<size_t>(sizes[2])) ||
-    (attached && headerBytes <= 0))
-  {
-    return false;
-  }
-  handled = true;
-  for (const std::string& f : dataFiles)
-  {
-    if (!IsRegularFile(f))
-    {
-      vtkErrorMacro("NRRD header " << path << " names the missing data file " << f);
-      return false;
-    }
-  }
-
-  vtkNew<vtkImageReader2> reader;
-  // NRRD data is in index order; a left-handed space is made right-handed
-  // by flipping the rows, as vtkNrrdReader does (and as vtkVolume16Reader
-  // reads the headsq slices).
-  reader->SetFileLowerLeft(leftHanded ? 0 : 1);
-  reader->SetDataScalarType(scalarType);
-  reader->SetNumberOfScalarComponents(1);
-  reader->SetDataExtent(0, sizes[0] - 1, 0, sizes[1] - 1, 0, sizes[2] - 1);
-  reader->SetDataSpacing(spacing);
-  reader->SetDataOrigin(origin);
-  if (endian == "big")
-  {
-    reader->SetDataByteOrderToBigEndian();
-  }
-  else
-  {
-    reader->SetDataByteOrderToLittleEndian();
-  }
-  if (attached)
-  {
-    reader->SetFileName(fileName);
-    reader->SetFileDimensionality(3);
-    reader->SetHeaderSize(static_cast<unsigned long>(headerBytes + std::max(0LL, byteSkip)));
-  }
-  else if (dataFiles.size() == 1)
-  {
-    reader->SetFileName(dataFiles[0].c_str());
-    reader->SetFileDimensionality(3);
-    if (byteSkip >= 0)
-    {
-      reader->SetHeaderSize(static_cast<unsigned long>(byteSkip));
-    }
-  }
-  else
-  {
-    vtkNew<vtkStringArray> names;
-    for (const std::string& f : dataFiles)
-    {
-      names->InsertNextValue(f);
-    }
-    reader->SetFileNames(names);
-    reader->SetFileDimensionality(2);
-    if (byteSkip >= 0)
-    {
-      reader->SetHeaderSize(static_cast<unsigned long>(byteSkip));
-    }
-  }
-  vtkNew<ErrorCollector> errors;
-  errors->Watch(reader);
-  errors->Watch(reader->GetExecutive());
-  reader->Update();
-  if (!errors->Messages.empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
-  {
-    vtkErrorMacro("Cannot read the data of NRRD header " << path << ": " << errors->Messages);
-    return false;
-  }
-  output->ShallowCopy(reader->GetOutput());
   return true;
 }
 

@@ -9,7 +9,14 @@
  *
  * Meshes (by extension, case-insensitive):
  * - .ply (vtkPLYReader), .stl (vtkSTLReader), .vtp (vtkXMLPolyDataReader),
- *   .vtk (vtkPolyDataReader; legacy polydata only);
+ *   .vtk (legacy polydata, read by the project's own parser,
+ *   vtkDeepGISceneLegacyVTK.h: VTK 9.1's vtkPolyDataReader reads out of
+ *   bounds on malformed cell lists). VTK 9.1's readers trust the counts a
+ *   file declares, so the loader checks first (vtkDeepGISceneFileChecks.h):
+ *   a PLY's header and every element, list counts and face indices
+ *   included, must be in the file (a truncated PLY crashes vtkPLYReader); a
+ *   binary STL must hold the triangles its header declares. Warnings of
+ *   these readers count as errors (they mean lost data);
  * - .obj: read by this class's own parser (VTK 9.1's vtkOBJImporter
  *   resolves relative indices such as "f -4 -3 -2 -1" against a vertex count
  *   left over from the previous OBJ file of the process, and neither it nor
@@ -22,29 +29,41 @@
  *   DefaultColor. Faces with vertex indices the file does not define are
  *   skipped with a warning (an error if none is left); normals (`vn`) are
  *   kept for parts where every corner has one. Coincident vertices and
- *   faces stay as they are in the file.
+ *   faces stay as they are in the file. Backslash continuations are joined
+ *   (a lone `\` joins nothing). Lines longer than 1 MiB are refused, and an
+ *   MTL file is read only if it is a regular file (not a device such as
+ *   /dev/zero: a warning, and the default colour) of at most 64 MiB.
  * Polygons and strips become triangles (vtkTriangleFilter); vertices, lines
  * and unused points are dropped; points are not merged. Polygons and strips
- * with point ids outside the mesh's points are dropped with a warning. Meshes without point
- * normals get them from vtkPolyDataNormals (splitting at FeatureAngle) when
- * ComputeNormals is on; normals stored in the file are kept.
+ * with point ids outside the mesh's points are dropped with a warning, and
+ * so are points with a NaN or infinite coordinate, with the polygons using
+ * them (one such point would make the bounds, the camera and the image
+ * wrong). Meshes without point normals get them from vtkPolyDataNormals
+ * (splitting at FeatureAngle) when ComputeNormals is on, computed once for
+ * each set of coincident triangles (same points; its consistency walk is
+ * cubic in their number), which all keep their place in the mesh; finite
+ * normals stored in the file are kept.
  *
  * Volumes are iso-surfaced with vtkFlyingEdges3D at the iso-value given
  * (normals from the volume's gradient when ComputeNormals is on):
  * - .vti (vtkXMLImageDataReader), .mhd/.mha (vtkMetaImageReader);
- * - .nhdr/.nrrd: detached headers with raw encoding (a single data file, a
- *   `data file: PATTERN MIN MAX STEP` slice series or a LIST) are read by
- *   this class's own parser (Debian's Python build overrides vtkNrrdReader
- *   with an MPI reader that fails); anything else goes to vtkNrrdReader;
+ * - .nhdr/.nrrd: 3D volumes with raw encoding, attached or detached (a
+ *   single data file, a `data file: PATTERN MIN MAX STEP` slice series or a
+ *   LIST), read by the project's own parser only (vtkDeepGISceneNrrd.h):
+ *   VTK 9.1's vtkNrrdReader overflows the heap or hangs on malformed
+ *   headers. Data files must be regular files holding what the sizes need;
+ *   volumes over 4 GiB and other encodings (gzip, ascii, ...) are refused;
  * - a slice-series prefix such as .../headsq/quarter (files quarter.1,
  *   quarter.2, ...): PREFIX.nhdr is used if it exists, else the slices are
  *   read as square 16-bit images (size from the file size) with
  *   RawSliceSpacing and RawSliceLittleEndian (vtkVolume16Reader);
  * - a directory holding exactly one .nhdr, .nrrd, .mhd, .mha or .vti file.
  *
- * Errors (missing files, unknown extensions, unreadable or empty data, an
- * iso-value outside the data) are reported with vtkErrorMacro and the Load
- * returns false, leaving the parts loaded so far unchanged.
+ * Only regular files are read (never devices, FIFOs or directories).
+ * Errors (missing files, unknown extensions, unreadable, truncated or empty
+ * data, an iso-value outside the data, running out of memory) are reported
+ * with one vtkErrorMacro and the Load returns false, leaving the parts
+ * loaded so far unchanged.
  */
 
 #ifndef vtkDeepGBufferSceneLoader_h
@@ -55,7 +74,8 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for the protected helpers
 
-#include <memory> // for std::unique_ptr
+#include <functional> // for std::function
+#include <memory>     // for std::unique_ptr
 
 class vtkImageData;
 class vtkPolyData;
@@ -254,7 +274,11 @@ protected:
   vtkSmartPointer<vtkPolyData> PrepareMesh(vtkPolyData* input, const char* what);
   bool AddPart(vtkPolyData* mesh, const char* name, const double color[3]);
   bool ReadVolume(const char* path, vtkImageData* output);
-  bool ReadDetachedNrrd(const char* fileName, vtkImageData* output, bool& handled);
+  bool LoadUnguarded(const char* path);
+  bool LoadMeshUnguarded(const char* fileName);
+  bool LoadVolumeUnguarded(const char* path, double isoValue);
+  /// Runs `load`, turning std::bad_alloc and std::length_error into an error.
+  bool Guarded(const char* what, const char* path, const std::function<bool()>& load);
 
 private:
   vtkDeepGBufferSceneLoader(const vtkDeepGBufferSceneLoader&) = delete;

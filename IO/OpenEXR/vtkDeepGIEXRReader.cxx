@@ -20,13 +20,19 @@
 #include <ImfInputFile.h>
 #include <ImfIntAttribute.h>
 #include <ImfMatrixAttribute.h>
+#include <ImfStdIO.h>
 #include <ImfStringAttribute.h>
 #include <ImfTestFile.h>
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <string>
@@ -120,6 +126,115 @@ std::vector<Group> GroupChannels(const std::vector<std::string>& channels)
   return groups;
 }
 
+// The most float bytes an image may need (1 GiB: 8192 x 8192 RGBA), and
+// the most one line buffer of OpenEXR may take (up to 256 scan lines or one
+// tile of the file's own pixels).
+constexpr double MaximumBytes = 1024.0 * 1024 * 1024;
+// The most a compressed image can shrink: zlib's limit is about 1032:1 (ZIP,
+// ZIPS, PXR24 and the DC part of DWAA / DWAB), RLE's 64:1, B44's 32:3.
+constexpr double MaximumCompressionRatio = 1100.0;
+
+// A corrupt or hostile header can claim a data window of billions of pixels
+// in a file of a few kilobytes; the pixels would be allocated (and zeroed)
+// before OpenEXR notices the data is missing. The claim is checked against a
+// limit and against what the file can hold. "" or why the image is refused.
+std::string CheckClaimedSize(const Imf::Header& header, const std::string& fileName)
+{
+  const Imath::Box2i data = header.dataWindow();
+  const double width = static_cast<double>(data.max.x) - data.min.x + 1.0;
+  const double height = static_cast<double>(data.max.y) - data.min.y + 1.0;
+  if (width < 1.0 || height < 1.0 || width > 2147483647.0 || height > 2147483647.0)
+  {
+    return "\"" + fileName + "\" has an invalid data window.";
+  }
+  double stored = 0.0; // bytes of one pixel in the file, uncompressed
+  double channels = 0.0;
+  for (auto it = header.channels().begin(); it != header.channels().end(); ++it)
+  {
+    stored += it.channel().type == Imf::HALF ? 2.0 : 4.0;
+    channels += 1.0;
+  }
+  const double floatBytes = width * height * channels * 4.0;
+  struct stat file;
+  const double fileBytes =
+    stat(fileName.c_str(), &file) == 0 ? static_cast<double>(file.st_size) : 0.0;
+  const double ratio = header.compression() == Imf::NO_COMPRESSION ? 1.0 : MaximumCompressionRatio;
+  const double buffer = header.hasTileDescription()
+    ? static_cast<double>(header.tileDescription().xSize) * header.tileDescription().ySize * stored
+    : width * stored * 256.0;
+  if (buffer > MaximumBytes)
+  {
+    return "\"" + fileName + "\" has lines or tiles too large to buffer (corrupt?).";
+  }
+  if (floatBytes > MaximumBytes || width * height * stored > fileBytes * ratio)
+  {
+    char claim[160];
+    std::snprintf(claim, sizeof(claim), "%.0f x %.0f pixels of %.0f channel(s) (%.3g bytes)", width,
+      height, channels, floatBytes);
+    return "\"" + fileName + "\" claims " + claim +
+      (floatBytes > MaximumBytes
+          ? ", more than the limit of 1 GiB."
+          : ", more than its " + std::to_string(static_cast<long long>(fileBytes)) +
+            " bytes can hold (corrupt or truncated).");
+  }
+  return "";
+}
+
+// The attributes of a single-part header: each one's size must lie inside
+// the file (OpenEXR allocates what a size claims before reading it).
+std::string CheckHeaderBytes(const std::string& fileName)
+{
+  std::ifstream in(fileName, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  size_t at = 8; // magic number and version
+  while (at < bytes.size() && bytes[at] != '\0')
+  {
+    for (int strings = 0; strings < 2; ++strings) // name, type
+    {
+      const size_t end = bytes.find('\0', at);
+      if (end == std::string::npos || end - at > 255)
+      {
+        return "\"" + fileName + "\" has a malformed header.";
+      }
+      at = end + 1;
+    }
+    if (bytes.size() - at < 4)
+    {
+      return "\"" + fileName + "\" has a truncated header.";
+    }
+    const std::uint32_t size = std::uint32_t(static_cast<unsigned char>(bytes[at])) |
+      std::uint32_t(static_cast<unsigned char>(bytes[at + 1])) << 8 |
+      std::uint32_t(static_cast<unsigned char>(bytes[at + 2])) << 16 |
+      std::uint32_t(static_cast<unsigned char>(bytes[at + 3])) << 24;
+    at += 4;
+    if (size > bytes.size() - at)
+    {
+      return "\"" + fileName + "\" has a header attribute larger than the file.";
+    }
+    at += size;
+  }
+  return at < bytes.size() ? "" : "\"" + fileName + "\" has a truncated header.";
+}
+
+// The header alone (OpenEXR's InputFile allocates its line buffers from
+// the header while opening), checked before the file is opened for pixels.
+std::string CheckHeader(const std::string& fileName)
+{
+  std::string error = CheckHeaderBytes(fileName);
+  if (!error.empty())
+  {
+    return error;
+  }
+  Imf::StdIFStream stream(fileName.c_str());
+  char start[8];
+  stream.read(start, 8);
+  int version = static_cast<unsigned char>(start[4]) | static_cast<unsigned char>(start[5]) << 8 |
+    static_cast<unsigned char>(start[6]) << 16 | static_cast<unsigned char>(start[7]) << 24;
+  Imf::Header header;
+  header.readFrom(stream, version);
+  return CheckClaimedSize(header, fileName);
+}
+
 // Opens the file after the checks that give clear messages; nullptr and
 // `error` set on failure.
 std::unique_ptr<Imf::InputFile> Open(const std::string& fileName, std::string& error)
@@ -142,14 +257,22 @@ std::unique_ptr<Imf::InputFile> Open(const std::string& fileName, std::string& e
     error = "\"" + fileName + "\" is not an OpenEXR file.";
     return nullptr;
   }
-  if (deep)
+  if (deep || multiPart)
   {
-    error = "\"" + fileName + "\" holds deep data, which this reader does not read.";
+    error = "\"" + fileName + "\" holds " + (deep ? "deep data" : "several parts") +
+      ", which this reader does not read.";
     return nullptr;
   }
   try
   {
-    return std::unique_ptr<Imf::InputFile>(new Imf::InputFile(fileName.c_str()));
+    error = CheckHeader(fileName);
+    if (!error.empty())
+    {
+      return nullptr;
+    }
+    std::unique_ptr<Imf::InputFile> input(new Imf::InputFile(fileName.c_str()));
+    error = CheckClaimedSize(input->header(), fileName);
+    return error.empty() ? std::move(input) : nullptr;
   }
   catch (const std::exception& e)
   {
