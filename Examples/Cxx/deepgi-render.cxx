@@ -24,6 +24,7 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 
+#include <vtksys/SystemInformation.hxx>
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
@@ -420,10 +421,37 @@ struct Scene
   std::string Description;
 };
 
+// Whether the demo scene of `triangles` triangles fits in the memory the
+// host has free: measured about 100 bytes per triangle (the polydata, its
+// normals and the OpenGL copies; 4 million triangles: 520 MB in all), so
+// 120 bytes and a 200 MB base are asked for. Without the check a large
+// --triangles ends in an uncaught std::bad_alloc or the kernel's OOM killer.
+bool DemoSceneFits(long long triangles)
+{
+  // DEEPGI_HOST_MEMORY_KIB, when set, limits the host's memory (KiB).
+  vtksys::SystemInformation host;
+  const long long totalKiB = host.GetHostMemoryAvailable("DEEPGI_HOST_MEMORY_KIB");
+  const long long freeKiB = std::max(0LL, totalKiB - host.GetHostMemoryUsed());
+  const double neededGiB = (200.0e6 + 120.0 * static_cast<double>(triangles)) / (1 << 30);
+  const double freeGiB = static_cast<double>(freeKiB) / (1 << 20);
+  if (totalKiB > 0 && neededGiB > freeGiB)
+  {
+    std::cerr << "deepgi-render: --triangles " << triangles << " needs about " << std::fixed
+              << std::setprecision(1) << neededGiB << " GiB of memory; " << freeGiB
+              << " GiB are free\n";
+    return false;
+  }
+  return true;
+}
+
 bool LoadScene(const Options& o, vtkRenderer* renderer, Scene& scene)
 {
   if (!o.Loaded())
   {
+    if (!DemoSceneFits(o.Triangles))
+    {
+      return false;
+    }
     scene.Demo->SetTargetNumberOfTriangles(o.Triangles);
     scene.Demo->SetScaleFactor(o.Scale);
     scene.Demo->Populate(renderer);
