@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# asan.sh: builds the project with AddressSanitizer (and LeakSanitizer) in
-# build-asan/ (DEEPGI_ASAN_BUILD_DIR) and runs the whole test suite under
-# it. Exits non-zero when a test fails, which includes any memory error and
-# any leak reported in the C++ tests.
+# asan.sh: builds the project with AddressSanitizer (and LeakSanitizer) and
+# UndefinedBehaviorSanitizer in build-asan-ubsan/ (DEEPGI_ASAN_BUILD_DIR)
+# and runs the whole test suite under them. Exits non-zero when a test
+# fails, which includes any memory error, any undefined behaviour (it aborts
+# the test) and any leak reported in the C++ tests.
 #
 # - C++ tests: leaks are checked. Allocations that the OpenGL stack (Mesa,
 #   LLVM, X11, fontconfig) keeps until exit are suppressed by library name;
@@ -19,19 +20,19 @@
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-build="${DEEPGI_ASAN_BUILD_DIR:-$repo/build-asan}"
+build="${DEEPGI_ASAN_BUILD_DIR:-$repo/build-asan-ubsan}"
 jobs="${DEEPGI_TEST_JOBS:-2}"
 
 # Packages (and the regular build, which the sanitized one does not need).
 bash "$repo/scripts/setup.sh"
 
 if [[ ! -f "$build/build.ninja" ]]; then
-  flags="-fsanitize=address -fno-omit-frame-pointer"
+  flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
   cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" \
-    -DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address \
-    -DCMAKE_SHARED_LINKER_FLAGS=-fsanitize=address \
-    -DCMAKE_MODULE_LINKER_FLAGS=-fsanitize=address
+    -DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined \
+    -DCMAKE_SHARED_LINKER_FLAGS=-fsanitize=address,undefined \
+    -DCMAKE_MODULE_LINKER_FLAGS=-fsanitize=address,undefined
 fi
 ninja -C "$build"
 
@@ -41,6 +42,7 @@ printf 'leak:%s\n' libGLX_mesa libEGL_mesa libgallium swrast_dri libLLVM libX11 
   libfontconfig > "$suppressions"
 runtime="$(gcc -print-file-name=libasan.so)"
 
+export UBSAN_OPTIONS=print_stacktrace=1
 status=0
 run() {
   bash "$repo/scripts/with-display.sh" ctest --test-dir "$build" --output-on-failure \
