@@ -14,6 +14,7 @@
 #include "vtkDeepGISceneFileChecks.h"
 #include "vtkDeepGISceneLegacyVTK.h"
 #include "vtkDeepGISceneNrrd.h"
+#include "vtkDeepGISceneText.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
@@ -69,6 +70,11 @@ vtkStandardNewMacro(vtkDeepGBufferSceneLoader);
 
 namespace
 {
+using vtkDeepGISceneText::Lower;
+using vtkDeepGISceneText::ParseInteger;
+using vtkDeepGISceneText::Trim;
+using vtkDeepGISceneText::Words;
+
 // The lighting coefficients of every actor made here (VTK's Ambient and
 // Diffuse); the scene polydata carries the diffuse one as field data.
 constexpr double MaterialAmbient = 0.1;
@@ -163,13 +169,6 @@ private:
   vtkNew<OutputTrap> Trap;
 };
 
-std::string Lower(std::string s)
-{
-  std::transform(s.begin(), s.end(), s.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
-
 std::string Extension(const std::string& path)
 {
   return Lower(vtksys::SystemTools::GetFilenameLastExtension(path));
@@ -185,17 +184,6 @@ bool IsVolumeExtension(const std::string& ext)
 bool IsRegularFile(const std::string& path)
 {
   return vtkDeepGISceneFileChecks::IsRegularFile(path);
-}
-
-std::string Trim(const std::string& s)
-{
-  const size_t b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos)
-  {
-    return std::string();
-  }
-  const size_t e = s.find_last_not_of(" \t\r\n");
-  return s.substr(b, e - b + 1);
 }
 
 // Reads the logical lines of an OBJ or MTL file: comments ('#' to the end of
@@ -264,19 +252,6 @@ std::string Rest(const std::string& line)
   return end == std::string::npos ? std::string() : Trim(line.substr(end));
 }
 
-// Splits `s` at white space.
-std::vector<std::string> Words(const std::string& s)
-{
-  std::vector<std::string> words;
-  std::istringstream in(s);
-  std::string w;
-  while (in >> w)
-  {
-    words.push_back(w);
-  }
-  return words;
-}
-
 // Parses a whole word as a number.
 bool ParseDouble(const std::string& word, double& value)
 {
@@ -287,18 +262,6 @@ bool ParseDouble(const std::string& word, double& value)
   char* end = nullptr;
   value = std::strtod(word.c_str(), &end);
   return end == word.c_str() + word.size();
-}
-
-bool ParseInteger(const std::string& word, long long& value)
-{
-  if (word.empty())
-  {
-    return false;
-  }
-  char* end = nullptr;
-  errno = 0;
-  value = std::strtoll(word.c_str(), &end, 10);
-  return errno == 0 && end == word.c_str() + word.size();
 }
 
 // Resolves a 1-based OBJ index (negative: relative to the `count` elements

@@ -1,4 +1,5 @@
 #include "vtkDeepGISceneNrrd.h"
+#include "vtkDeepGISceneText.h"
 
 #include "vtkCommand.h"
 #include "vtkDeepGISceneFileChecks.h"
@@ -25,6 +26,11 @@ namespace vtkDeepGISceneNrrd
 {
 namespace
 {
+using vtkDeepGISceneText::Lower;
+using vtkDeepGISceneText::ParseInteger;
+using vtkDeepGISceneText::Trim;
+using vtkDeepGISceneText::Words;
+
 using vtkDeepGISceneFileChecks::RegularFileSize;
 
 struct Header
@@ -44,24 +50,6 @@ struct Header
   std::uint64_t DataOffset = 0;       // attached data: where the header ends
 };
 
-std::string Lower(std::string s)
-{
-  std::transform(s.begin(), s.end(), s.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
-
-std::string Trim(const std::string& s)
-{
-  const size_t b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos)
-  {
-    return std::string();
-  }
-  const size_t e = s.find_last_not_of(" \t\r\n");
-  return s.substr(b, e - b + 1);
-}
-
 // At most 80 characters of `s` for a message, non-printable ones as '?'.
 std::string Quote(const std::string& s)
 {
@@ -71,30 +59,6 @@ std::string Quote(const std::string& s)
     c = std::isprint(static_cast<unsigned char>(c)) ? c : '?';
   }
   return "\"" + q + (s.size() > 80 ? "...\"" : "\"");
-}
-
-std::vector<std::string> Words(const std::string& s)
-{
-  std::vector<std::string> words;
-  std::istringstream in(s);
-  std::string w;
-  while (in >> w)
-  {
-    words.push_back(w);
-  }
-  return words;
-}
-
-bool ParseInteger(const std::string& word, long long& value)
-{
-  if (word.empty())
-  {
-    return false;
-  }
-  char* end = nullptr;
-  errno = 0;
-  value = std::strtoll(word.c_str(), &end, 10);
-  return errno == 0 && end == word.c_str() + word.size();
 }
 
 // Parses "(x,y,z)" into three finite numbers.
