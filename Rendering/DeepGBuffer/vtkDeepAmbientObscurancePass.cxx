@@ -137,6 +137,25 @@ struct vtkDeepAmbientObscuranceRendererState
     this->Renders.Observe(renderer);
   }
 
+  vtkTypeInt64 TextureBytes() const
+  {
+    vtkTypeInt64 bytes = 0;
+    for (const auto& t : this->Targets)
+    {
+      bytes += vtkDeepScreenSpace::TextureBytes(t);
+    }
+    for (const auto& t : this->History)
+    {
+      bytes += vtkDeepScreenSpace::TextureBytes(t);
+    }
+    for (int m = 0; m < this->MipLevels; ++m) // R32F
+    {
+      bytes += 4LL * std::max(1, this->MipWidth >> m) * std::max(1, this->MipHeight >> m) *
+        this->MipLayers;
+    }
+    return bytes;
+  }
+
   void Release(vtkWindow* w)
   {
     this->ReleaseMip();
@@ -388,6 +407,7 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
   // Composite: layer-0 image and depth, then colour *= AV.
   gbuffer->ResolveToFramebuffer(s);
   {
+    vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "obscurance: composite");
     vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
     vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
     vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
@@ -544,6 +564,7 @@ void vtkDeepAmbientObscurancePass::ComputeRawVisibility(const EffectFrame& frame
   vtkDeepAmbientObscuranceRendererState& state, double radius, int distanceUnit, int normalUnit)
 {
   vtkInternals& in = *this->Internals;
+  vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "obscurance: gather");
   vtkOpenGLState* ostate = frame.GL;
   const int mipUnit =
     this->BuildDistancePyramid(state, frame.Window, distanceUnit, std::max(1, frame.Layers));
@@ -585,6 +606,7 @@ void vtkDeepAmbientObscurancePass::FilterVisibility(const EffectFrame& frame,
   vtkDeepAmbientObscuranceRendererState& state, int distanceUnit, int normalUnit)
 {
   vtkInternals& in = *this->Internals;
+  vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "obscurance: blur");
   const int passes[2][3] = { { RAW, BLUR_TEMP, 0 }, { BLUR_TEMP, FILTERED, 1 } };
   vtkShaderProgram* program = in.BlurQuad->Program;
   for (const auto& pass : passes)
@@ -614,6 +636,7 @@ void vtkDeepAmbientObscurancePass::AccumulateVisibility(
   const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state, int distanceUnit)
 {
   vtkInternals& in = *this->Internals;
+  vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "obscurance: temporal");
   bool allocated = true;
   for (auto& t : state.History)
   {
@@ -704,6 +727,7 @@ int vtkDeepAmbientObscurancePass::BuildDistancePyramid(vtkDeepAmbientObscuranceR
     return -1;
   }
   const int levels = coarsest + 1;
+  vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "obscurance: depth MIP");
   // Take a unit of our own first: binding on the active unit would unbind
   // the G-buffer texture the caller activated there.
   vtkOpenGLState* ostate = window->GetState();
@@ -833,6 +857,12 @@ bool vtkDeepAmbientObscurancePass::CaptureDistancePyramid(
   output->GetFieldData()->AddArray(count);
   vtkOpenGLCheckErrorMacro("failed after capturing the distance pyramid");
   return true;
+}
+
+//------------------------------------------------------------------------------
+vtkTypeInt64 vtkDeepAmbientObscurancePass::GetTextureBytes()
+{
+  return this->Internals->States.TextureBytes();
 }
 
 //------------------------------------------------------------------------------

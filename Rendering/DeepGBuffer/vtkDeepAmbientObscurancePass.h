@@ -446,6 +446,11 @@ public:
 
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
+  /// The memory of the textures this pass holds for all renderers, in bytes:
+  /// the obscurance targets, the temporal history and the distance pyramid. Proportional to the
+  /// layers' pixels; 0 after ReleaseGraphicsResources.
+  vtkTypeInt64 GetTextureBytes();
+
 protected:
   vtkDeepAmbientObscurancePass();
   ~vtkDeepAmbientObscurancePass() override;

@@ -196,6 +196,8 @@ constexpr int BaseQuantities = vtkDeepGBufferPass::REFLECTIVITY;
 // Internal formats of the quantities, in the order of the Quantity enum.
 const GLenum QuantityInternalFormats[] = { GL_RGBA16F, GL_RGBA8, GL_RG8, GL_R32F, GL_R11F_G11F_B10F,
   GL_RGBA8 };
+// Bytes per texel of those formats.
+const int QuantityBytes[] = { 8, 4, 2, 4, 4, 4 };
 const GLenum QuantityFormats[] = { GL_RGBA, GL_RGBA, GL_RG, GL_RED, GL_RGB, GL_RGBA };
 const GLenum QuantityTypes[] = { GL_HALF_FLOAT, GL_UNSIGNED_BYTE, GL_UNSIGNED_BYTE, GL_FLOAT,
   GL_FLOAT, GL_UNSIGNED_BYTE };
@@ -258,6 +260,18 @@ struct vtkDeepGBufferRendererState
   double ClippingRange[2] = { 0.0, 1.0 };
   double MinimumSeparation = 0.0;
   int Oracle = vtkDeepGBufferPass::DEPTH_PEEL;
+
+  // The memory of the layers (each quantity, the depth buffer) and history.
+  vtkTypeInt64 TextureBytes() const
+  {
+    const vtkTypeInt64 texels = static_cast<vtkTypeInt64>(this->Width) * this->Height;
+    vtkTypeInt64 perSlot = this->DepthTexture ? 4 : 0;
+    for (int q = 0; q < vtkDeepGBufferPass::NUMBER_OF_QUANTITIES; ++q)
+    {
+      perSlot += this->Textures[q] ? QuantityBytes[q] : 0;
+    }
+    return texels * (perSlot * this->Slots + (this->HistoryTexture ? 4 * this->HistoryLayers : 0));
+  }
 
   void ReleaseTextures()
   {
@@ -395,6 +409,7 @@ vtkDeepGBufferPass::~vtkDeepGBufferPass()
   delete this->Internals->ResolveQuad;
   this->Internals->LightsPass->Delete();
   this->SetTranslucentPass(nullptr);
+  this->SetStageTimer(nullptr);
   this->SetVolumetricPass(nullptr);
   this->SetOverlayPass(nullptr);
   this->SetShadowMapPass(nullptr);
@@ -404,6 +419,7 @@ vtkCxxSetObjectMacro(vtkDeepGBufferPass, TranslucentPass, vtkRenderPass);
 vtkCxxSetObjectMacro(vtkDeepGBufferPass, VolumetricPass, vtkRenderPass);
 vtkCxxSetObjectMacro(vtkDeepGBufferPass, OverlayPass, vtkRenderPass);
 vtkCxxSetObjectMacro(vtkDeepGBufferPass, ShadowMapPass, vtkShadowMapPass);
+vtkCxxSetObjectMacro(vtkDeepGBufferPass, StageTimer, vtkDeepGIStageTimer);
 //------------------------------------------------------------------------------
 vtkInformationIntegerKey* vtkDeepGBufferPass::EMISSIVE()
 {
@@ -1204,6 +1220,7 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
   }
   this->UpdateCameras(frame);
   this->ClassifyProps(frame);
+  vtkDeepScreenSpace::ScopedStageTime time(this->StageTimer, "G-buffer: layers");
   if (!this->DrawFrame(frame))
   {
     RenderPlain(s);
@@ -1293,6 +1310,7 @@ void vtkDeepGBufferPass::BakeShadowMaps(vtkLayerFrame& frame)
   {
     return;
   }
+  vtkDeepScreenSpace::ScopedStageTime time(this->StageTimer, "G-buffer: shadow maps");
   // VTK 9.1's baker re-bakes only when lights or props changed, even after
   // ReleaseGraphicsResources freed its maps, and the shadow pass then reads
   // the missing maps: mark the lights changed while a shadowing light has
@@ -1635,6 +1653,7 @@ void vtkDeepGBufferPass::ResolveToFramebuffer(const vtkRenderState* s)
   {
     return;
   }
+  vtkDeepScreenSpace::ScopedStageTime time(this->StageTimer, "G-buffer: resolve");
   vtkDeepGBufferRendererState& state = *it->second;
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   vtkOpenGLState* ostate = window->GetState();
@@ -1767,6 +1786,7 @@ void vtkDeepGBufferPass::RenderFrame(const vtkRenderState* s, vtkRenderPass* opa
 void vtkDeepGBufferPass::ApplyFXAA(vtkOpenGLRenderer* renderer)
 {
   vtkInternals& in = *this->Internals;
+  vtkDeepScreenSpace::ScopedStageTime time(this->StageTimer, "FXAA");
   in.FXAAFilter->UpdateConfiguration(renderer->GetFXAAOptions());
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   if (!window || window->GetMultiSamples() <= 1)
@@ -1799,6 +1819,17 @@ void vtkDeepGBufferPass::ApplyFXAA(vtkOpenGLRenderer* renderer)
   in.ResolvedColor->Bind(GL_READ_FRAMEBUFFER);
   in.FXAAFilter->Execute(renderer);
   ostate->PopReadFramebufferBinding();
+}
+
+//------------------------------------------------------------------------------
+vtkTypeInt64 vtkDeepGBufferPass::GetTextureBytes()
+{
+  vtkTypeInt64 bytes = 0;
+  for (const auto& entry : this->Internals->States)
+  {
+    bytes += entry.second->TextureBytes();
+  }
+  return bytes;
 }
 
 //------------------------------------------------------------------------------

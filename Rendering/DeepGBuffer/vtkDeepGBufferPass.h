@@ -64,6 +64,7 @@
 
 #include <memory> // for std::unique_ptr
 
+class vtkDeepGIStageTimer;
 class vtkImageData;
 class vtkInformationIntegerKey;
 class vtkOpenGLRenderWindow;
@@ -333,6 +334,11 @@ public:
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
+  /// The memory of the textures this pass holds for all renderers, in bytes:
+  /// the layers (every quantity and the depth buffer) and the oracle's history. Proportional to the
+  /// layers' pixels; 0 after ReleaseGraphicsResources.
+  vtkTypeInt64 GetTextureBytes();
+
   /**
    * Renders a whole frame the way Render() does, through VTK's
    * vtkRenderStepsPass (camera and clear in the renderer's viewport, lights,
@@ -416,6 +422,17 @@ public:
   ///@}
 
   ///@{
+  /**
+   * A timer of every stage of the frames that use this G-buffer: its layers,
+   * resolve and FXAA, and the stages of the effect passes sharing it (see
+   * vtkDeepGIStageTimer, which serializes each stage with glFinish). Null
+   * (default): nothing is timed.
+   */
+  void SetStageTimer(vtkDeepGIStageTimer* timer);
+  vtkGetObjectMacro(StageTimer, vtkDeepGIStageTimer);
+  ///@}
+
+  ///@{
   /// The steps drawn after the opaque layers. Defaults: vtkTranslucentPass,
   /// vtkVolumetricPass, vtkOverlayPass. Set to null to skip a step.
   void SetTranslucentPass(vtkRenderPass* pass);
@@ -473,6 +490,7 @@ protected:
   bool LastFrameAntiAliased = false;
   void ApplyFXAA(vtkOpenGLRenderer* renderer);
   vtkShadowMapPass* ShadowMapPass = nullptr;
+  vtkDeepGIStageTimer* StageTimer = nullptr;
 
 private:
   vtkDeepGBufferPass(const vtkDeepGBufferPass&) = delete;

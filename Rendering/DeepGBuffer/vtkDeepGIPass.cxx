@@ -942,6 +942,8 @@ void vtkDeepGIPass::QueryLayerCoverage(vtkOpenGLRenderer* renderer, int layers)
   {
     return;
   }
+  vtkDeepScreenSpace::ScopedStageTime time(
+    this->GBufferPass->GetStageTimer(), "GI: layer-1 coverage query");
   if (!state->Query)
   {
     glGenQueries(1, &state->Query);
@@ -988,6 +990,7 @@ struct vtkDeepGIPass::vtkCompositeInputs
 // the effects composited.
 int vtkDeepGIPass::Composite(vtkOpenGLRenderer* renderer, int effects)
 {
+  vtkDeepScreenSpace::ScopedStageTime time(this->GBufferPass->GetStageTimer(), "GI: composite");
   vtkCompositeInputs inputs;
   int composited = this->ActivateCompositeInputs(renderer, effects, inputs);
   if (!this->DrawComposite(renderer, composited, inputs))
@@ -1111,6 +1114,14 @@ void vtkDeepGIPass::DeactivateCompositeInputs(
   }
   gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::RADIANCE);
   gbuffer->DeactivateTexture(renderer, vtkDeepGBufferPass::DEPTH);
+}
+
+//------------------------------------------------------------------------------
+vtkTypeInt64 vtkDeepGIPass::GetTextureBytes()
+{
+  // The effect passes share the G-buffer (counted once).
+  return this->GBufferPass->GetTextureBytes() + this->AmbientObscurancePass->GetTextureBytes() +
+    this->RadiosityPass->GetTextureBytes() + this->ReflectionPass->GetTextureBytes();
 }
 
 //------------------------------------------------------------------------------

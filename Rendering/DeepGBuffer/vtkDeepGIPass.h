@@ -314,6 +314,11 @@ public:
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
+  /// The memory of the textures this pass holds for all renderers, in bytes:
+  /// the G-buffer and every effect pass, i.e. the GPU memory this pass holds (the programs and
+  /// quads aside). Proportional to the layers' pixels; 0 after ReleaseGraphicsResources.
+  vtkTypeInt64 GetTextureBytes();
+
 protected:
   vtkDeepGIPass();
   ~vtkDeepGIPass() override;

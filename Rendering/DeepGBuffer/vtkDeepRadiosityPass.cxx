@@ -126,6 +126,26 @@ struct vtkDeepRadiosityRendererState
     this->Renders.Observe(renderer);
   }
 
+  vtkTypeInt64 TextureBytes() const
+  {
+    vtkTypeInt64 bytes = 0;
+    for (const auto& perLayer : this->Targets)
+    {
+      for (const auto& t : perLayer)
+      {
+        bytes += vtkDeepScreenSpace::TextureBytes(t);
+      }
+    }
+    for (const auto& ping : this->History)
+    {
+      for (const auto& t : ping)
+      {
+        bytes += vtkDeepScreenSpace::TextureBytes(t);
+      }
+    }
+    return bytes;
+  }
+
   void Release(vtkWindow* w)
   {
     for (auto& perLayer : this->Targets)
@@ -422,6 +442,7 @@ void vtkDeepRadiosityPass::RenderOpaque(const vtkRenderState* s)
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   vtkOpenGLState* ostate = window->GetState();
   vtkDeepRadiosityRendererState& state = *in.States.Existing(renderer);
+  vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: composite");
   // The colour is replaced, the framebuffer's alpha kept.
   vtkDeepScreenSpace::ScopedCompositeState compositeState(ostate, GL_ONE, GL_ZERO);
   vtkShaderProgram* program = in.CompositeQuad->Program;
@@ -688,6 +709,7 @@ void vtkDeepRadiosityPass::ComputeBounceInput(
   vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
 {
   vtkInternals& in = *this->Internals;
+  vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: bounce input");
   AttachLayerTextures(in.Framebuffer, state.Targets[BOUNCE]);
   vtkShaderProgram* program = in.BounceQuad->Program;
   frame.Window->GetShaderCache()->ReadyShaderProgram(program);
@@ -714,6 +736,7 @@ void vtkDeepRadiosityPass::ComputeBounceInput(
 void vtkDeepRadiosityPass::Gather(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
 {
   vtkInternals& in = *this->Internals;
+  vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: gather");
   AttachLayerTextures(in.Framebuffer, state.Targets[RAW]);
   vtkShaderProgram* program = in.GatherQuad->Program;
   frame.Window->GetShaderCache()->ReadyShaderProgram(program);
@@ -741,6 +764,7 @@ void vtkDeepRadiosityPass::FilterIrradiance(
   vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
 {
   vtkInternals& in = *this->Internals;
+  vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: blur");
   const int passes[2][3] = { { RAW, BLUR_TEMP, 0 }, { BLUR_TEMP, FILTERED, 1 } };
   vtkShaderProgram* program = in.BlurQuad->Program;
   for (const auto& pass : passes)
@@ -768,6 +792,7 @@ void vtkDeepRadiosityPass::AccumulateIrradiance(
   vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
 {
   vtkInternals& in = *this->Internals;
+  vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: temporal");
   AttachLayerTextures(in.Framebuffer, state.History[frame.Next], &state.Targets[INDIRECT]);
   vtkShaderProgram* program = in.TemporalQuad->Program;
   frame.Window->GetShaderCache()->ReadyShaderProgram(program);
@@ -839,6 +864,12 @@ unsigned int vtkDeepRadiosityPass::GetTextureHandle(vtkRenderer* renderer, int q
   vtkDeepRadiosityRendererState* state = this->Internals->States.Find(renderer);
   vtkTextureObject* texture = state ? state->Output(quantity, layer) : nullptr;
   return texture ? texture->GetHandle() : 0;
+}
+
+//------------------------------------------------------------------------------
+vtkTypeInt64 vtkDeepRadiosityPass::GetTextureBytes()
+{
+  return this->Internals->States.TextureBytes();
 }
 
 //------------------------------------------------------------------------------

@@ -458,6 +458,11 @@ public:
 
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
+  /// The memory of the textures this pass holds for all renderers, in bytes:
+  /// the radiosity targets and history of both layers. Proportional to the layers' pixels; 0 after
+  /// ReleaseGraphicsResources.
+  vtkTypeInt64 GetTextureBytes();
+
 protected:
   vtkDeepRadiosityPass();
   ~vtkDeepRadiosityPass() override;

@@ -136,6 +136,16 @@ struct vtkDeepReflectionRendererState
 
   void Attach(vtkRenderer* renderer) { this->Renderer = renderer; }
 
+  vtkTypeInt64 TextureBytes() const
+  {
+    vtkTypeInt64 bytes = 0;
+    for (const auto& t : this->Targets)
+    {
+      bytes += vtkDeepScreenSpace::TextureBytes(t);
+    }
+    return bytes;
+  }
+
   void Release(vtkWindow* w)
   {
     for (auto& t : this->Targets)
@@ -413,6 +423,7 @@ void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
   if (gbuffer->GetDisplayQuantity() == vtkDeepGBufferPass::RADIANCE && radianceUnit >= 0 &&
     reflectivityUnit >= 0)
   {
+    vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "reflections: composite");
     vtkDeepScreenSpace::ScopedCompositeState compositeState(ostate, GL_ONE, GL_ZERO);
     vtkShaderProgram* program = in.CompositeQuad->Program;
     window->GetShaderCache()->ReadyShaderProgram(program);
@@ -623,6 +634,7 @@ void vtkDeepReflectionPass::TraceRays(
   const vtkTraceFrame& frame, vtkDeepReflectionRendererState& state)
 {
   vtkInternals& in = *this->Internals;
+  vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "reflections: trace");
   vtkOpenGLState* ostate = frame.GL;
   vtkDeepScreenSpace::ScopedStageState stageState(ostate);
   in.Framebuffer->Bind();
@@ -859,6 +871,12 @@ bool vtkDeepReflectionPass::CaptureReflections(vtkImageData* output, vtkRenderer
   AddReflectionFieldData(output->GetFieldData(), *state);
   vtkOpenGLCheckErrorMacro("failed after capturing the reflections");
   return true;
+}
+
+//------------------------------------------------------------------------------
+vtkTypeInt64 vtkDeepReflectionPass::GetTextureBytes()
+{
+  return this->Internals->States.TextureBytes();
 }
 
 //------------------------------------------------------------------------------

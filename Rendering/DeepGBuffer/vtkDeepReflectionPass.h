@@ -241,6 +241,11 @@ public:
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
+  /// The memory of the textures this pass holds for all renderers, in bytes:
+  /// the reflection targets. Proportional to the layers' pixels; 0 after
+  /// ReleaseGraphicsResources.
+  vtkTypeInt64 GetTextureBytes();
+
 protected:
   vtkDeepReflectionPass();
   ~vtkDeepReflectionPass() override;

@@ -80,6 +80,18 @@ void ReleaseQuad(vtkOpenGLQuadHelper*& quad, vtkWindow* window)
 }
 
 //------------------------------------------------------------------------------
+vtkTypeInt64 TextureBytes(const vtkSmartPointer<vtkTextureObject>& texture)
+{
+  if (!texture || !texture->GetHandle())
+  {
+    return 0;
+  }
+  return static_cast<vtkTypeInt64>(texture->GetWidth()) * texture->GetHeight() *
+    std::max(1, static_cast<int>(texture->GetDepth())) * texture->GetComponents() *
+    vtkAbstractArray::GetDataTypeSize(texture->GetVTKDataType());
+}
+
+//------------------------------------------------------------------------------
 bool AllocateTarget(vtkSmartPointer<vtkTextureObject>& texture, vtkOpenGLRenderWindow* window,
   int width, int height, int components)
 {

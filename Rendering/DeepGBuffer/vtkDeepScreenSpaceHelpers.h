@@ -14,6 +14,7 @@
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
 #include "vtkCallbackCommand.h"
+#include "vtkDeepGIStageTimer.h"
 #include "vtkOpenGLState.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
@@ -49,6 +50,9 @@ void ReleaseQuad(vtkOpenGLQuadHelper*& quad, vtkWindow* window);
 /// with 1, 2 or 4 components (R32F, RG32F, RGBA32F).
 bool AllocateTarget(vtkSmartPointer<vtkTextureObject>& texture, vtkOpenGLRenderWindow* window,
   int width, int height, int components);
+
+/// The memory of a texture's level 0, in bytes (0 for null).
+vtkTypeInt64 TextureBytes(const vtkSmartPointer<vtkTextureObject>& texture);
 
 /// Releases a texture and clears the pointer (null is fine).
 void ReleaseTarget(vtkSmartPointer<vtkTextureObject>& texture, vtkWindow* window);
@@ -126,6 +130,33 @@ private:
   vtkOpenGLState::ScopedglEnableDisable DepthTest;
 };
 
+/// Times the enclosing block as `stage` on `timer` (null: nothing timed,
+/// no glFinish), see vtkDeepGIStageTimer.
+class ScopedStageTime
+{
+public:
+  ScopedStageTime(vtkDeepGIStageTimer* timer, const char* stage)
+    : Timer(timer)
+  {
+    if (this->Timer)
+    {
+      this->Timer->StartStage(stage);
+    }
+  }
+  ~ScopedStageTime()
+  {
+    if (this->Timer)
+    {
+      this->Timer->StopStage();
+    }
+  }
+  ScopedStageTime(const ScopedStageTime&) = delete;
+  void operator=(const ScopedStageTime&) = delete;
+
+private:
+  vtkDeepGIStageTimer* Timer;
+};
+
 /**
  * The OpenGL state of a composite into the renderer's framebuffer: blending
  * on, the colour combined as (sourceFactor, destinationFactor) and the
@@ -189,8 +220,8 @@ void SetShadedRegionUniforms(vtkShaderProgram* program, const int region[4]);
  * The per-renderer states of a screen-space pass, so that renderers (or
  * viewports) sharing a pass never read each other's targets or history.
  * State provides Attach(vtkRenderer*) (called once, on creation), a bool
- * HasFrame (the state holds the renderer's last frame) and
- * Release(vtkWindow*).
+ * HasFrame (the state holds the renderer's last frame), Release(vtkWindow*)
+ * and TextureBytes() (the memory of its textures).
  */
 template <typename State>
 class RendererStates
@@ -240,6 +271,17 @@ public:
   }
 
   bool Empty() const { return this->States.empty(); }
+
+  /// The bytes of the textures of every state (State::TextureBytes()).
+  vtkTypeInt64 TextureBytes() const
+  {
+    vtkTypeInt64 bytes = 0;
+    for (const auto& entry : this->States)
+    {
+      bytes += entry.second->TextureBytes();
+    }
+    return bytes;
+  }
 
 private:
   std::map<vtkRenderer*, std::unique_ptr<State>> States;

@@ -91,6 +91,12 @@ void vtkDeepScreenSpacePass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
+vtkDeepGIStageTimer* vtkDeepScreenSpacePass::GetStageTimer() const
+{
+  return this->GBufferPass->GetStageTimer();
+}
+
+//------------------------------------------------------------------------------
 bool vtkDeepScreenSpacePass::GetLayerFrame(
   vtkRenderer* renderer, const char* caller, LayerFrame& frame)
 {

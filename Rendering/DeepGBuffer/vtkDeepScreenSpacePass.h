@@ -25,6 +25,7 @@
 #include "vtkRenderPass.h"
 
 class vtkDeepGBufferPass;
+class vtkDeepGIStageTimer;
 class vtkOpenGLRenderWindow;
 class vtkOpenGLRenderer;
 class vtkOpenGLState;
@@ -122,6 +123,10 @@ protected:
   /// Sets a fraction in [0, 1]: NaN keeps `value` with a warning; values
   /// outside are clamped with a warning; Modified() when it changes.
   void SetFraction(const char* name, double fraction, double& value);
+
+  /// The G-buffer's stage timer (vtkDeepGBufferPass::SetStageTimer), which
+  /// the effects' stages report to; null when none is attached.
+  vtkDeepGIStageTimer* GetStageTimer() const;
 
   vtkDeepGBufferPass* GBufferPass = nullptr;
 
