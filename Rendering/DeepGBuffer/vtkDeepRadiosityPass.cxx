@@ -23,6 +23,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
+#include "vtkTextureUnitManager.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWeakPointer.h"
 #include "vtk_glew.h"
@@ -31,7 +32,9 @@
 #include "vtkDeepRadiosityBounceFS.h"
 #include "vtkDeepRadiosityCompositeFS.h"
 #include "vtkDeepRadiosityFS.h"
+#include "vtkDeepRadiosityReduceFS.h"
 #include "vtkDeepRadiosityTemporalFS.h"
+#include "vtkDeepRadiosityUpsampleFS.h"
 #include "vtkDeepScreenSpaceHelpers.h"
 
 #include <algorithm>
@@ -63,6 +66,15 @@ enum Target
 // The G-buffer quantities the passes read.
 const int GBufferQuantities[] = { vtkDeepGBufferPass::DEPTH, vtkDeepGBufferPass::NORMAL,
   vtkDeepGBufferPass::RADIANCE, vtkDeepGBufferPass::AMBIENT, vtkDeepGBufferPass::ALBEDO };
+
+// Those the stages on a reduced grid read (filters, temporal filter,
+// upsampling), with their formats in the G-buffer (vtkDeepGBufferPass,
+// Table 1), which the reduced copy keeps.
+constexpr int NumberOfReducedQuantities = 3;
+const int ReducedQuantities[NumberOfReducedQuantities] = { vtkDeepGBufferPass::DEPTH,
+  vtkDeepGBufferPass::NORMAL, vtkDeepGBufferPass::ALBEDO };
+const GLenum ReducedFormats[NumberOfReducedQuantities] = { GL_R32F, GL_RG8, GL_RGBA8 };
+const int ReducedBytes[NumberOfReducedQuantities] = { 4, 2, 4 };
 
 }
 
@@ -97,11 +109,21 @@ struct vtkDeepRadiosityRendererState
   vtkSmartPointer<vtkTextureObject> History[2][Layers];
   int HistoryCurrent = 0;
   bool HistoryValid = false;
+  // With a resolution divisor D > 1: the G-buffer quantities at texels D q
+  // (2-slot arrays, ReducedQuantities' order), what the filters, temporal
+  // filter and upsampling read; RAW, BLUR_TEMP, FILTERED and the history
+  // have the reduced size (Width x Height), BOUNCE and INDIRECT the
+  // layers' (LayerWidth x LayerHeight).
+  GLuint Reduced[NumberOfReducedQuantities] = { 0, 0, 0 };
+  GLuint ReducedFramebuffer = 0;
+  int Divisor = 1;
+  int LayerWidth = 0;
+  int LayerHeight = 0;
   double PreviousView[16];
   double PreviousProjection[16];
   vtkDeepScreenSpace::RenderCounter Renders;
   unsigned int FrameIndex = 0; // frames since the history was reset
-  int Width = 0;               // of the G-buffer's layers (frame and guard band)
+  int Width = 0;               // of the gather's grid: the layers (frame and guard band) / Divisor
   int Height = 0;
   int GuardBand = 0;
   int ShadedRegion[4] = { 0, 0, 0, 0 }; // vtkDeepScreenSpace::ShadedRegion
@@ -129,6 +151,12 @@ struct vtkDeepRadiosityRendererState
   vtkTypeInt64 TextureBytes() const
   {
     vtkTypeInt64 bytes = 0;
+    for (int q = 0; q < NumberOfReducedQuantities; ++q)
+    {
+      bytes += this->Reduced[q]
+        ? static_cast<vtkTypeInt64>(ReducedBytes[q]) * Layers * this->Width * this->Height
+        : 0;
+    }
     for (const auto& perLayer : this->Targets)
     {
       for (const auto& t : perLayer)
@@ -162,9 +190,35 @@ struct vtkDeepRadiosityRendererState
         ReleaseTarget(t, w);
       }
     }
+    this->ReleaseReduced();
     this->ResetHistory();
     this->Width = this->Height = this->LayerCount = 0;
     this->HasFrame = false;
+  }
+
+  void ReleaseReduced()
+  {
+    for (GLuint& t : this->Reduced)
+    {
+      if (t)
+      {
+        glDeleteTextures(1, &t);
+        t = 0;
+      }
+    }
+    if (this->ReducedFramebuffer)
+    {
+      glDeleteFramebuffers(1, &this->ReducedFramebuffer);
+      this->ReducedFramebuffer = 0;
+    }
+  }
+
+  // Texel `p` of the layers -> its texel of the gather's grid.
+  size_t GridIndex(size_t p) const
+  {
+    const size_t x = p % this->LayerWidth, y = p / this->LayerWidth;
+    return std::min<size_t>(y / this->Divisor, this->Height - 1) * this->Width +
+      std::min<size_t>(x / this->Divisor, this->Width - 1);
   }
 
   vtkTextureObject* Output(int quantity, int layer)
@@ -189,6 +243,8 @@ public:
   vtkOpenGLQuadHelper* BlurQuad = nullptr;
   vtkOpenGLQuadHelper* TemporalQuad = nullptr;
   vtkOpenGLQuadHelper* CompositeQuad = nullptr;
+  vtkOpenGLQuadHelper* ReduceQuad = nullptr;
+  vtkOpenGLQuadHelper* UpsampleQuad = nullptr;
   bool WarnedUnsupported = false;
 };
 
@@ -210,8 +266,8 @@ vtkDeepRadiosityPass::~vtkDeepRadiosityPass()
     vtkWarningMacro("Destroyed without ReleaseGraphicsResources(); OpenGL objects are leaked "
                     "unless the context was destroyed first.");
   }
-  for (vtkOpenGLQuadHelper* quad :
-    { in.BounceQuad, in.GatherQuad, in.BlurQuad, in.TemporalQuad, in.CompositeQuad })
+  for (vtkOpenGLQuadHelper* quad : { in.BounceQuad, in.GatherQuad, in.BlurQuad, in.TemporalQuad,
+         in.CompositeQuad, in.ReduceQuad, in.UpsampleQuad })
   {
     delete quad;
   }
@@ -241,6 +297,7 @@ void vtkDeepRadiosityPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MipThreshold: " << this->MipThreshold << "\n";
   os << indent << "MinimumMipLevel: " << this->MinimumMipLevel << "\n";
   os << indent << "MaximumMipLevel: " << this->MaximumMipLevel << "\n";
+  os << indent << "ResolutionDivisor: " << this->ResolutionDivisor << "\n";
   os << indent << "Damping: " << this->Damping << "\n";
   os << indent << "TemporalAlpha: " << this->TemporalAlpha << "\n";
   os << indent << "ReprojectionTolerance: " << this->ReprojectionTolerance << "\n";
@@ -365,7 +422,11 @@ void vtkDeepRadiosityPass::SetEnvironmentIrradiance(double r, double g, double b
 //------------------------------------------------------------------------------
 void vtkDeepRadiosityPass::SetPreset(int preset)
 {
-  // Table 2 of the paper.
+  // Table 2 of the paper, and the resolution divisor: HIGH_PERFORMANCE
+  // gathers for a quarter of the texels, at about a third of the
+  // radiosity's time and within 1 % of the error of every texel against the
+  // reference (Documentation/performance.md); on finely detailed meshes the
+  // grid loses per-texel irradiance, so the other presets keep every texel.
   struct Settings
   {
     int Samples;
@@ -373,9 +434,10 @@ void vtkDeepRadiosityPass::SetPreset(int preset)
     bool NormalTest;
     int MinimumMipLevel;
     double GuardBandShaded;
+    int ResolutionDivisor;
   };
-  static const Settings presets[] = { { 13, 9, false, 3, 0.1 }, { 14, 11, true, 2, 0.5 },
-    { 30, 13, true, 0, 0.8 } };
+  static const Settings presets[] = { { 13, 9, false, 3, 0.1, 2 }, { 14, 11, true, 2, 0.5, 1 },
+    { 30, 13, true, 0, 0.8, 1 } };
   if (preset < HIGH_PERFORMANCE || preset > HIGH_QUALITY)
   {
     vtkWarningMacro("Unknown preset " << preset << "; the settings are unchanged.");
@@ -387,6 +449,7 @@ void vtkDeepRadiosityPass::SetPreset(int preset)
   this->UseNormalTest = p.NormalTest;
   this->MinimumMipLevel = p.MinimumMipLevel;
   this->GuardBandShadedFraction = p.GuardBandShaded;
+  this->ResolutionDivisor = p.ResolutionDivisor;
   this->Modified();
 }
 
@@ -478,6 +541,16 @@ struct vtkDeepRadiosityPass::vtkGatherFrame : vtkDeepScreenSpacePass::EffectFram
   int Next = 1;
   float ToPrevious[16];
   float PreviousProjection[16];
+  // The grid of the gather's output: with Divisor > 1, Size, Region,
+  // Projection, ProjXY and ProjT are the reduced grid's and Units the
+  // reduced G-buffer's (filters, temporal filter); the layers' own are kept
+  // here for the bounce input, the gather's taps and the upsampling.
+  int Divisor = 1;
+  int LayerSize[2] = { 0, 0 };
+  int LayerRegion[4] = { 0, 0, 0, 0 };
+  float LayerProjXY[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+  float LayerProjT[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+  int LayerUnits[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES];
 
   int DistanceUnit() const { return this->Units[vtkDeepGBufferPass::DEPTH]; }
   int NormalUnit() const { return this->Units[vtkDeepGBufferPass::NORMAL]; }
@@ -550,6 +623,7 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
   vtkDeepRadiosityRendererState& state = this->Internals->States.Get(frame.Renderer);
   state.HasFrame = false;
   this->ComputeSceneParameters(frame, state);
+  ReduceFrame(frame, this->ResolutionDivisor);
   if (!this->PrepareTargets(frame, state))
   {
     return false;
@@ -557,11 +631,15 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
   vtkDeepGBufferPass* gbuffer = this->GBufferPass;
   for (int q : GBufferQuantities)
   {
-    frame.Units[q] = gbuffer->ActivateTexture(frame.Renderer, q);
+    frame.LayerUnits[q] = frame.Units[q] = gbuffer->ActivateTexture(frame.Renderer, q);
   }
   {
     vtkOpenGLState* ostate = frame.GL;
     vtkDeepScreenSpace::ScopedStageState stageState(ostate);
+    if (frame.Divisor > 1)
+    {
+      this->ReduceLayers(frame, state);
+    }
     this->Internals->Framebuffer->Bind();
     ostate->vtkglViewport(0, 0, frame.Size[0], frame.Size[1]);
     this->ComputeBounceInput(frame, state);
@@ -573,14 +651,22 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
     this->Gather(frame, state);
     this->FilterIrradiance(frame, state);
     this->AccumulateIrradiance(frame, state);
+    if (frame.Divisor > 1)
+    {
+      this->UpsampleIrradiance(frame, state);
+    }
     for (int a = 0; a < 2 * Layers; ++a)
     {
       this->Internals->Framebuffer->RemoveColorAttachment(a);
     }
   }
+  if (frame.Divisor > 1)
+  {
+    UnbindReduced(frame);
+  }
   for (int q : GBufferQuantities)
   {
-    if (frame.Units[q] >= 0)
+    if (frame.LayerUnits[q] >= 0)
     {
       gbuffer->DeactivateTexture(frame.Renderer, q);
     }
@@ -634,10 +720,40 @@ void vtkDeepRadiosityPass::ComputeSceneParameters(
 }
 
 //------------------------------------------------------------------------------
-// The renderer's history (reset on a resize, a new layer count or shaded
-// region, and when this renderer was rendered without this pass since the
-// history's frame), this frame's rotation and MIP range, the targets, the
-// reprojection and the programs.
+// The gather's grid for a resolution divisor D > 1 (see
+// SetResolutionDivisor): ceil(size / D) texels, the shaded region's texels
+// divided by D (rounded outwards), and the projection under which its texel
+// centres stand at the layers' texels D q (ReducedProjection).
+void vtkDeepRadiosityPass::ReduceFrame(vtkGatherFrame& frame, int divisor)
+{
+  frame.Divisor = divisor;
+  std::copy(frame.Size, frame.Size + 2, frame.LayerSize);
+  std::copy(frame.Region, frame.Region + 4, frame.LayerRegion);
+  std::copy(frame.ProjXY, frame.ProjXY + 4, frame.LayerProjXY);
+  std::copy(frame.ProjT, frame.ProjT + 4, frame.LayerProjT);
+  if (divisor <= 1)
+  {
+    return;
+  }
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    frame.Size[axis] = (frame.LayerSize[axis] + divisor - 1) / divisor;
+    frame.Region[axis] = frame.LayerRegion[axis] / divisor;
+    frame.Region[2 + axis] =
+      std::min((frame.LayerRegion[2 + axis] + divisor - 1) / divisor, frame.Size[axis]);
+  }
+  double layerProjection[16];
+  std::copy(frame.Projection, frame.Projection + 16, layerProjection);
+  vtkDeepScreenSpace::ReducedProjection(
+    layerProjection, frame.LayerSize, frame.Size, divisor, frame.Projection);
+  vtkDeepScreenSpace::ProjectionUniforms(frame.Projection, frame.ProjXY, frame.ProjT);
+}
+
+//------------------------------------------------------------------------------
+// The renderer's history (reset on a resize, a new layer count, shaded
+// region or divisor, and when this renderer was rendered without this pass
+// since the history's frame), this frame's rotation and MIP range, the
+// targets, the reprojection and the programs.
 bool vtkDeepRadiosityPass::PrepareTargets(
   vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
 {
@@ -645,7 +761,7 @@ bool vtkDeepRadiosityPass::PrepareTargets(
   vtkOpenGLRenderWindow* window = frame.Window;
   const int width = frame.Size[0], height = frame.Size[1];
   if (!state.Renders.Consecutive() || state.Width != width || state.Height != height ||
-    state.LayerCount != frame.UsedLayers ||
+    state.Divisor != frame.Divisor || state.LayerCount != frame.UsedLayers ||
     !std::equal(frame.Region, frame.Region + 4, state.ShadedRegion))
   {
     state.ResetHistory();
@@ -653,11 +769,14 @@ bool vtkDeepRadiosityPass::PrepareTargets(
   ++state.FrameIndex;
   frame.RotationOffset = this->TemporalAlpha > 0.0 ? RotationOffset(state.FrameIndex) : 0.0;
   bool allocated = true;
-  for (auto& perLayer : state.Targets)
+  for (int target = 0; target < NUMBER_OF_TARGETS; ++target)
   {
-    for (auto& t : perLayer)
+    // BOUNCE, the gather's sources, and INDIRECT, what the composites
+    // read, have every layer texel.
+    const int* size = target == BOUNCE || target == INDIRECT ? frame.LayerSize : frame.Size;
+    for (auto& t : state.Targets[target])
     {
-      allocated = allocated && AllocateTarget(t, window, width, height, 4);
+      allocated = allocated && AllocateTarget(t, window, size[0], size[1], 4);
     }
   }
   for (auto& ping : state.History)
@@ -674,6 +793,9 @@ bool vtkDeepRadiosityPass::PrepareTargets(
   }
   state.Width = width;
   state.Height = height;
+  state.Divisor = frame.Divisor;
+  state.LayerWidth = frame.LayerSize[0];
+  state.LayerHeight = frame.LayerSize[1];
   state.GuardBand = frame.GuardBand;
   std::copy(frame.Region, frame.Region + 4, state.ShadedRegion);
   state.LayerCount = frame.UsedLayers;
@@ -686,20 +808,149 @@ bool vtkDeepRadiosityPass::PrepareTargets(
     ReadyQuad(in.GatherQuad, window, vtkDeepRadiosityFS) &&
     ReadyQuad(in.BlurQuad, window, vtkDeepRadiosityBlurFS) &&
     ReadyQuad(in.TemporalQuad, window, vtkDeepRadiosityTemporalFS) &&
-    ReadyQuad(in.CompositeQuad, window, vtkDeepRadiosityCompositeFS);
+    ReadyQuad(in.CompositeQuad, window, vtkDeepRadiosityCompositeFS) &&
+    (frame.Divisor == 1 ||
+      (ReadyQuad(in.ReduceQuad, window, vtkDeepRadiosityReduceFS) &&
+        ReadyQuad(in.UpsampleQuad, window, vtkDeepRadiosityUpsampleFS)));
   if (!ready)
   {
     vtkErrorMacro("The radiosity shaders failed to compile.");
     return false;
   }
+  if (!this->AllocateReduced(frame, state))
+  {
+    return false;
+  }
   vtkDeepScreenSpace::ReprojectionUniforms(frame.View, frame.Projection, state.HistoryValid,
     state.PreviousView, state.PreviousProjection, frame.ToPrevious, frame.PreviousProjection);
-  frame.MaximumMip = std::min(
-    std::max(this->MaximumMipLevel, this->MinimumMipLevel), CoarsestMipLevel(width, height));
+  frame.MaximumMip = std::min(std::max(this->MaximumMipLevel, this->MinimumMipLevel),
+    CoarsestMipLevel(frame.LayerSize[0], frame.LayerSize[1]));
   frame.MinimumMip = std::min(this->MinimumMipLevel, frame.MaximumMip);
   frame.Previous = state.HistoryCurrent;
   frame.Next = 1 - state.HistoryCurrent;
   return true;
+}
+
+//------------------------------------------------------------------------------
+// The reduced G-buffer's textures and framebuffer (divisor > 1; released
+// otherwise), kept while the reduced size is unchanged.
+bool vtkDeepRadiosityPass::AllocateReduced(
+  vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
+{
+  if (frame.Divisor <= 1)
+  {
+    state.ReleaseReduced();
+    return true;
+  }
+  GLint width = 0, height = 0;
+  if (state.Reduced[0])
+  {
+    glBindTexture(GL_TEXTURE_2D_ARRAY, state.Reduced[0]);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D_ARRAY, 0, GL_TEXTURE_WIDTH, &width);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D_ARRAY, 0, GL_TEXTURE_HEIGHT, &height);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  }
+  if (width == frame.Size[0] && height == frame.Size[1] && state.ReducedFramebuffer)
+  {
+    return true;
+  }
+  state.ReleaseReduced();
+  bool allocated = true;
+  for (int q = 0; q < NumberOfReducedQuantities; ++q)
+  {
+    width = 0;
+    glGenTextures(1, &state.Reduced[q]);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, state.Reduced[q]);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
+    glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, ReducedFormats[q], frame.Size[0], frame.Size[1], Layers);
+    // Whether the storage exists (glGetError may hold an older error).
+    glGetTexLevelParameteriv(GL_TEXTURE_2D_ARRAY, 0, GL_TEXTURE_WIDTH, &width);
+    allocated = allocated && width == frame.Size[0];
+  }
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  glGenFramebuffers(1, &state.ReducedFramebuffer);
+  if (!allocated)
+  {
+    vtkErrorMacro("Could not allocate the reduced G-buffer of the radiosity.");
+    state.ReleaseReduced();
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Step 0 (divisor > 1): the reduced G-buffer, texel q = the layers' texel
+// D q, one draw per layer; the later stages read it instead of the layers.
+void vtkDeepRadiosityPass::ReduceLayers(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
+{
+  vtkInternals& in = *this->Internals;
+  vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: reduce");
+  vtkOpenGLState* ostate = frame.GL;
+  vtkShaderProgram* program = in.ReduceQuad->Program;
+  frame.Window->GetShaderCache()->ReadyShaderProgram(program);
+  const char* names[NumberOfReducedQuantities] = { "deepDistance", "deepNormal", "deepAlbedo" };
+  for (int q = 0; q < NumberOfReducedQuantities; ++q)
+  {
+    program->SetUniformi(names[q], frame.LayerUnits[ReducedQuantities[q]]);
+  }
+  program->SetUniformi("deepDivisor", frame.Divisor);
+  program->SetUniform2i("deepReducedSize", frame.Size);
+  ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, state.ReducedFramebuffer);
+  const GLenum drawBuffers[NumberOfReducedQuantities] = { GL_COLOR_ATTACHMENT0,
+    GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2 };
+  glDrawBuffers(NumberOfReducedQuantities, drawBuffers);
+  ostate->vtkglViewport(0, 0, frame.Size[0], frame.Size[1]);
+  for (int layer = 0; layer < frame.UsedLayers; ++layer)
+  {
+    for (int q = 0; q < NumberOfReducedQuantities; ++q)
+    {
+      glFramebufferTextureLayer(
+        GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + q, state.Reduced[q], 0, layer);
+    }
+    program->SetUniformi("deepLayer", layer);
+    in.ReduceQuad->Render();
+  }
+  // The later stages read the reduced G-buffer.
+  vtkTextureUnitManager* units = frame.Window->GetTextureUnitManager();
+  for (int q = 0; q < NumberOfReducedQuantities; ++q)
+  {
+    const int unit = units->Allocate();
+    ostate->vtkglActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, state.Reduced[q]);
+    frame.Units[ReducedQuantities[q]] = unit;
+  }
+}
+
+//------------------------------------------------------------------------------
+// Frees the texture units of the reduced G-buffer (ReduceLayers).
+void vtkDeepRadiosityPass::UnbindReduced(vtkGatherFrame& frame)
+{
+  vtkTextureUnitManager* units = frame.Window->GetTextureUnitManager();
+  for (int q : GBufferQuantities)
+  {
+    if (frame.Units[q] >= 0 && frame.Units[q] != frame.LayerUnits[q])
+    {
+      frame.GL->vtkglActiveTexture(GL_TEXTURE0 + frame.Units[q]);
+      glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+      units->Free(frame.Units[q]);
+      frame.Units[q] = frame.LayerUnits[q];
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// The distance, normal and projection uniforms of the layers themselves
+// (not the reduced grid's): the bounce input and the gather's taps.
+void vtkDeepRadiosityPass::SetLayersUniforms(vtkShaderProgram* program, const vtkGatherFrame& frame)
+{
+  program->SetUniformi("deepDistance", frame.LayerUnits[vtkDeepGBufferPass::DEPTH]);
+  program->SetUniformi("deepNormal", frame.LayerUnits[vtkDeepGBufferPass::NORMAL]);
+  program->SetUniform4f("deepProjXY", frame.LayerProjXY);
+  program->SetUniform4f("deepProjT", frame.LayerProjT);
 }
 
 //------------------------------------------------------------------------------
@@ -711,13 +962,18 @@ void vtkDeepRadiosityPass::ComputeBounceInput(
   vtkInternals& in = *this->Internals;
   vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: bounce input");
   AttachLayerTextures(in.Framebuffer, state.Targets[BOUNCE]);
+  frame.GL->vtkglViewport(0, 0, frame.LayerSize[0], frame.LayerSize[1]);
   vtkShaderProgram* program = in.BounceQuad->Program;
   frame.Window->GetShaderCache()->ReadyShaderProgram(program);
+  // The history's texels, on the gather's output grid, are the ones shaded.
   vtkDeepScreenSpace::SetShadedRegionUniforms(program, frame.Region);
-  SetLayerUniforms(program, frame, frame.DistanceUnit(), frame.NormalUnit());
-  program->SetUniformi("deepRadiance", frame.Units[vtkDeepGBufferPass::RADIANCE]);
-  program->SetUniformi("deepAmbient", frame.Units[vtkDeepGBufferPass::AMBIENT]);
-  program->SetUniformi("deepAlbedo", frame.Units[vtkDeepGBufferPass::ALBEDO]);
+  const float historySize[2] = { static_cast<float>(frame.Size[0]),
+    static_cast<float>(frame.Size[1]) };
+  program->SetUniform2f("deepHistorySize", historySize);
+  SetLayersUniforms(program, frame);
+  program->SetUniformi("deepRadiance", frame.LayerUnits[vtkDeepGBufferPass::RADIANCE]);
+  program->SetUniformi("deepAmbient", frame.LayerUnits[vtkDeepGBufferPass::AMBIENT]);
+  program->SetUniformi("deepAlbedo", frame.LayerUnits[vtkDeepGBufferPass::ALBEDO]);
   BindLayerTextures(program, "deepHistory", state.History[frame.Previous]);
   program->SetUniformi("deepLayers", frame.UsedLayers);
   program->SetUniformi("deepHasHistory", state.HistoryValid ? 1 : 0);
@@ -729,6 +985,7 @@ void vtkDeepRadiosityPass::ComputeBounceInput(
   program->SetUniformi("deepHasLights", frame.HasLights ? 1 : 0);
   in.BounceQuad->Render();
   UnbindLayerTextures(state.History[frame.Previous]);
+  frame.GL->vtkglViewport(0, 0, frame.Size[0], frame.Size[1]);
 }
 
 //------------------------------------------------------------------------------
@@ -740,7 +997,10 @@ void vtkDeepRadiosityPass::Gather(vtkGatherFrame& frame, vtkDeepRadiosityRendere
   AttachLayerTextures(in.Framebuffer, state.Targets[RAW]);
   vtkShaderProgram* program = in.GatherQuad->Program;
   frame.Window->GetShaderCache()->ReadyShaderProgram(program);
-  SetLayerUniforms(program, frame, frame.DistanceUnit(), frame.NormalUnit());
+  // Receivers on the output grid, taps and sources in the layers.
+  SetLayersUniforms(program, frame);
+  program->SetUniform2i("deepReceiverGrid", frame.Size);
+  program->SetUniformi("deepDivisor", frame.Divisor);
   BindLayerTextures(program, "deepBounce", state.Targets[BOUNCE]);
   program->SetUniformi("deepLayers", frame.UsedLayers);
   program->SetUniformi("deepSamples", this->NumberOfSamples);
@@ -787,13 +1047,15 @@ void vtkDeepRadiosityPass::FilterIrradiance(
 
 //------------------------------------------------------------------------------
 // Step 4, the temporal filter and eq. 6 (with the confidence fallback):
-// FILTERED + History[Previous] -> History[Next], INDIRECT.
+// FILTERED + History[Previous] -> History[Next], INDIRECT (BLUR_TEMP, free
+// by now, on a reduced grid: UpsampleIrradiance fills INDIRECT).
 void vtkDeepRadiosityPass::AccumulateIrradiance(
   vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
 {
   vtkInternals& in = *this->Internals;
   vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: temporal");
-  AttachLayerTextures(in.Framebuffer, state.History[frame.Next], &state.Targets[INDIRECT]);
+  AttachLayerTextures(in.Framebuffer, state.History[frame.Next],
+    &state.Targets[frame.Divisor > 1 ? BLUR_TEMP : INDIRECT]);
   vtkShaderProgram* program = in.TemporalQuad->Program;
   frame.Window->GetShaderCache()->ReadyShaderProgram(program);
   vtkDeepScreenSpace::SetShadedRegionUniforms(program, frame.Region);
@@ -817,6 +1079,49 @@ void vtkDeepRadiosityPass::AccumulateIrradiance(
   in.TemporalQuad->Render();
   UnbindLayerTextures(state.History[frame.Previous]);
   UnbindLayerTextures(state.Targets[FILTERED]);
+}
+
+//------------------------------------------------------------------------------
+// Step 5 (divisor > 1): History[Next] and the reduced (L, c) in BLUR_TEMP ->
+// INDIRECT at every shaded texel of the layers (joint bilateral
+// upsampling, vtkDeepRadiosityUpsampleFS).
+void vtkDeepRadiosityPass::UpsampleIrradiance(
+  vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
+{
+  vtkInternals& in = *this->Internals;
+  vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: upsample");
+  // Only INDIRECT, of the layers' size, may stay attached: a framebuffer
+  // draws into the intersection of its attachments.
+  for (int a = Layers; a < 2 * Layers; ++a)
+  {
+    in.Framebuffer->RemoveColorAttachment(a);
+  }
+  AttachLayerTextures(in.Framebuffer, state.Targets[INDIRECT]);
+  vtkOpenGLState* ostate = frame.GL;
+  ostate->vtkglViewport(0, 0, frame.LayerSize[0], frame.LayerSize[1]);
+  const int* region = frame.LayerRegion;
+  ostate->vtkglScissor(region[0], region[1], region[2] - region[0], region[3] - region[1]);
+  vtkShaderProgram* program = in.UpsampleQuad->Program;
+  frame.Window->GetShaderCache()->ReadyShaderProgram(program);
+  SetLayersUniforms(program, frame);
+  program->SetUniformi("deepAlbedo", frame.LayerUnits[vtkDeepGBufferPass::ALBEDO]);
+  program->SetUniformi("deepReducedNormal", frame.NormalUnit());
+  program->SetUniformf("deepPlaneTolerance", static_cast<float>(this->BlurPlaneTolerance));
+  BindLayerTextures(program, "deepHistory", state.History[frame.Next]);
+  BindLayerTextures(program, "deepReducedIndirect", state.Targets[BLUR_TEMP]);
+  program->SetUniformi("deepDivisor", frame.Divisor);
+  program->SetUniform2i("deepReducedMin", frame.Region);
+  program->SetUniform2i("deepReducedMax", frame.Region + 2);
+  program->SetUniformi("deepLayers", frame.UsedLayers);
+  program->SetUniformi("deepBoost", this->UseColorBoost ? 1 : 0);
+  program->SetUniformi("deepFallback", this->ConfidenceFallback ? 1 : 0);
+  const float environment[3] = { static_cast<float>(this->EffectiveEnvironmentIrradiance[0]),
+    static_cast<float>(this->EffectiveEnvironmentIrradiance[1]),
+    static_cast<float>(this->EffectiveEnvironmentIrradiance[2]) };
+  program->SetUniform3f("deepEnvironment", environment);
+  in.UpsampleQuad->Render();
+  UnbindLayerTextures(state.Targets[BLUR_TEMP]);
+  UnbindLayerTextures(state.History[frame.Next]);
 }
 
 //------------------------------------------------------------------------------
@@ -877,8 +1182,8 @@ void vtkDeepRadiosityPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkInternals& in = *this->Internals;
   in.States.Release(w);
-  for (vtkOpenGLQuadHelper** quad :
-    { &in.BounceQuad, &in.GatherQuad, &in.BlurQuad, &in.TemporalQuad, &in.CompositeQuad })
+  for (vtkOpenGLQuadHelper** quad : { &in.BounceQuad, &in.GatherQuad, &in.BlurQuad,
+         &in.TemporalQuad, &in.CompositeQuad, &in.ReduceQuad, &in.UpsampleQuad })
   {
     vtkDeepScreenSpace::ReleaseQuad(*quad, w);
   }
@@ -953,16 +1258,19 @@ void AddIrradianceFieldData(vtkFieldData* fd, const vtkDeepRadiosityRendererStat
   }
 }
 
-// The arrays of layer j (CaptureIrradiance); 0 where the layer is empty.
+// The arrays of layer j (CaptureIrradiance), one value per texel of the
+// layers (those of a reduced grid repeated over the texels it stands for);
+// 0 where the layer is empty.
 void AddIrradianceArrays(vtkImageData* output, vtkDeepRadiosityRendererState& state,
   const std::vector<float>& distance, int slots, int j)
 {
-  const size_t pixels = static_cast<size_t>(state.Width) * state.Height;
+  const size_t pixels = static_cast<size_t>(state.LayerWidth) * state.LayerHeight;
+  const size_t gridTexels = static_cast<size_t>(state.Width) * state.Height;
   const std::vector<float> irradiance =
-    DownloadRGBA(state.History[state.HistoryCurrent][j], pixels);
+    DownloadRGBA(state.History[state.HistoryCurrent][j], gridTexels);
   const std::vector<float> indirect = DownloadRGBA(state.Targets[INDIRECT][j], pixels);
-  const std::vector<float> filtered = DownloadRGBA(state.Targets[FILTERED][j], pixels);
-  const std::vector<float> raw = DownloadRGBA(state.Targets[RAW][j], pixels);
+  const std::vector<float> filtered = DownloadRGBA(state.Targets[FILTERED][j], gridTexels);
+  const std::vector<float> raw = DownloadRGBA(state.Targets[RAW][j], gridTexels);
   vtkPointData* pd = output->GetPointData();
   const std::string suffix = "_" + std::to_string(j);
   vtkFloatArray* e = AddFloatArray(pd, "Irradiance" + suffix, 3, pixels);
@@ -978,16 +1286,17 @@ void AddIrradianceArrays(vtkImageData* output, vtkDeepRadiosityRendererState& st
   for (size_t p = 0; p < pixels; ++p)
   {
     const bool isValid = j < state.LayerCount && j < slots && distance[j * pixels + p] > 0.0f;
+    const size_t g = state.GridIndex(p);
     valid->SetValue(p, isValid ? 1 : 0);
     for (int k = 0; k < 3; ++k)
     {
-      e->SetTypedComponent(p, k, isValid ? irradiance[4 * p + k] : 0.0f);
+      e->SetTypedComponent(p, k, isValid ? irradiance[4 * g + k] : 0.0f);
       l->SetTypedComponent(p, k, isValid ? indirect[4 * p + k] : 0.0f);
-      re->SetTypedComponent(p, k, isValid ? raw[4 * p + k] : 0.0f);
-      fe->SetTypedComponent(p, k, isValid ? filtered[4 * p + k] : 0.0f);
+      re->SetTypedComponent(p, k, isValid ? raw[4 * g + k] : 0.0f);
+      fe->SetTypedComponent(p, k, isValid ? filtered[4 * g + k] : 0.0f);
     }
-    c->SetValue(p, isValid ? filtered[4 * p + 3] : 0.0f);
-    rc->SetValue(p, isValid ? raw[4 * p + 3] : 0.0f);
+    c->SetValue(p, isValid ? filtered[4 * g + 3] : 0.0f);
+    rc->SetValue(p, isValid ? raw[4 * g + 3] : 0.0f);
   }
 }
 }
@@ -1017,11 +1326,11 @@ bool vtkDeepRadiosityPass::CaptureIrradiance(vtkImageData* output, vtkRenderer* 
   GLint previous2D = 0, previousArray = 0;
   glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous2D);
   glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &previousArray);
-  const size_t pixels = static_cast<size_t>(state->Width) * state->Height;
+  const size_t pixels = static_cast<size_t>(state->LayerWidth) * state->LayerHeight;
   int slots = 1;
   const std::vector<float> distance = DownloadDistance(distanceHandle, pixels, slots);
   output->Initialize();
-  output->SetDimensions(state->Width, state->Height, 1);
+  output->SetDimensions(state->LayerWidth, state->LayerHeight, 1);
   output->SetSpacing(1.0, 1.0, 1.0);
   output->SetOrigin(0.0, 0.0, 0.0);
   for (int j = 0; j < Layers; ++j)

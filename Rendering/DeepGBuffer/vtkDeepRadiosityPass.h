@@ -120,6 +120,7 @@
 #include <memory> // for std::unique_ptr
 
 class vtkImageData;
+class vtkShaderProgram;
 struct vtkDeepRadiosityRendererState;
 class vtkRenderer;
 
@@ -161,13 +162,14 @@ public:
     SOLID_ANGLE = DEEP_ESTIMATOR_SOLID_ANGLE ///< sum B (w.n_X) dOmega_i, each tap's solid angle
   };
 
-  /// Table 2's parameter sets.
+  /// Table 2's parameter sets, with the resolution divisor of each.
   enum Preset
   {
-    HIGH_PERFORMANCE =
-      0, ///< N 13, 9 filter taps, no n_Y test, minimum MIP level 3, 10 % of the guard band shaded
-    BALANCED = 1,    ///< N 14, 11 filter taps, n_Y test, minimum MIP level 2, 50 % (defaults)
-    HIGH_QUALITY = 2 ///< N 30, 13 filter taps, n_Y test, minimum MIP level 0, 80 %
+    HIGH_PERFORMANCE = 0, ///< N 13, 9 filter taps, no n_Y test, minimum MIP level 3, 10 % of the
+                          ///< guard band shaded, divisor 2
+    BALANCED = 1,         ///< N 14, 11 filter taps, n_Y test, minimum MIP level 2, 50 %, divisor 1
+                          ///< (defaults)
+    HIGH_QUALITY = 2      ///< N 30, 13 filter taps, n_Y test, minimum MIP level 0, 80 %, divisor 1
   };
 
   /// The guard band (vtkDeepGBufferPass::SetGuardBand) of the G-buffer this
@@ -318,6 +320,22 @@ public:
 
   ///@{
   /**
+   * The gather's resolution divisor D, 1 or 2: the gather computes E for
+   * the layers' texels D q only (D^2 times fewer receivers; its taps and
+   * their sources, the bounce input, stay the layers'), the filters and the
+   * temporal filter run on that grid (the filter's taps span D times more
+   * layer texels), and a joint bilateral upsampling (depth and normal
+   * weights, vtkDeepRadiosityUpsampleFS) brings E back to every layer
+   * texel, where eq. 6 applies that texel's own albedo. 1 (default) gathers
+   * at every texel, as the paper does; HIGH_PERFORMANCE uses 2 (see
+   * SetPreset and Documentation/performance.md for its cost and error).
+   */
+  vtkSetClampMacro(ResolutionDivisor, int, 1, 2);
+  vtkGetMacro(ResolutionDivisor, int);
+  ///@}
+
+  ///@{
+  /**
    * Damping delta of the propagated bounce (section 3.3), in [0, 1];
    * default 0.5. 0 gives the single bounce every frame. The gathered
    * estimate can exceed the true irradiance by up to 2x (eq. 4 divides by
@@ -399,7 +417,8 @@ public:
   ///@{
   /**
    * Sets NumberOfSamples, FilterTaps, UseNormalTest, MinimumMipLevel and
-   * GuardBandShadedFraction to Table 2's values (see Preset) with one
+   * GuardBandShadedFraction to Table 2's values, and ResolutionDivisor
+   * (see Preset), with one
    * Modified(). An unknown preset is ignored with a warning.
    */
   void SetPreset(int preset);
@@ -485,6 +504,7 @@ protected:
   double MipThreshold = 8.0;
   int MinimumMipLevel = 2;
   int MaximumMipLevel = 5;
+  int ResolutionDivisor = 1;
   double Damping = 0.5;
   double TemporalAlpha = 0.85;
   double ReprojectionTolerance = 0.01;
@@ -507,11 +527,17 @@ private:
   // frame decided from stage to stage).
   struct vtkGatherFrame;
   void ComputeSceneParameters(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
+  static void ReduceFrame(vtkGatherFrame& frame, int divisor);
   bool PrepareTargets(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
+  bool AllocateReduced(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
+  void ReduceLayers(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void ComputeBounceInput(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void Gather(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void FilterIrradiance(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void AccumulateIrradiance(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
+  void UpsampleIrradiance(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
+  static void SetLayersUniforms(vtkShaderProgram* program, const vtkGatherFrame& frame);
+  static void UnbindReduced(vtkGatherFrame& frame);
   void RecordFrame(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
 };
 

@@ -326,6 +326,23 @@ void FrameProjection(
 }
 
 //------------------------------------------------------------------------------
+void ReducedProjection(const double projection[16], const int size[2], const int reducedSize[2],
+  int divisor, double reduced[16])
+{
+  std::copy(projection, projection + 16, reduced);
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    const double n = size[axis];
+    const double k = divisor * static_cast<double>(reducedSize[axis]) / n;
+    const double c = k + (1.0 - divisor) / n - 1.0;
+    for (int col = 0; col < 4; ++col)
+    {
+      reduced[4 * axis + col] = (projection[4 * axis + col] - c * projection[12 + col]) / k;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 void SetShadedRegionUniforms(vtkShaderProgram* program, const int region[4])
 {
   if (program->IsUniformUsed("deepShadedMin"))

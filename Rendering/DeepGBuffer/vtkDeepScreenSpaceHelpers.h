@@ -212,6 +212,19 @@ void ShadedRegion(const int size[2], int guardBand, double shadedFraction, int r
 void FrameProjection(
   const double layerProjection[16], const int size[2], int guardBand, double frame[16]);
 
+/**
+ * The projection (row-major) under which the texel centres of a grid
+ * reduced `divisor` times per axis, of `reducedSize` texels, reconstruct the
+ * positions of layer texels divisor * q of layers of `size` texels: with
+ * NDC_t = k NDC_r + c per axis (k = divisor reducedSize / size,
+ * c = k + (1 - divisor) / size - 1), clip rows x and y become
+ * (row - c row_w) / k. Exact, so stages that reconstruct positions from the
+ * reduced grid's texel centres (deepPositionFromDistance, deepReproject)
+ * work unchanged on it.
+ */
+void ReducedProjection(const double projection[16], const int size[2], const int reducedSize[2],
+  int divisor, double reduced[16]);
+
 /// Sets the deepShadedMin and deepShadedMax uniforms of
 /// vtkDeepScreenSpaceCommon.glsl on `program` where it uses them.
 void SetShadedRegionUniforms(vtkShaderProgram* program, const int region[4]);

@@ -12,7 +12,9 @@
 // depth difference) of the reprojected surface (its plane extrapolated to
 // the previous texel's centre, deepExpectedPreviousDistance); 0 where
 // neither does or there is no history (the first frame gives the single
-// bounce).
+// bounce). The history may be on a reduced grid (vtkDeepRadiosityPass::
+// SetResolutionDivisor): deepPrevProjection and deepHistorySize are the
+// grid's, so the reprojection lands on its texels.
 //=========================================================================
 
 in vec2 texCoord;
@@ -28,6 +30,7 @@ uniform int deepLayers;           // 1 or 2
 uniform int deepHasHistory;
 uniform mat4 deepToPrevious;
 uniform mat4 deepPrevProjection;
+uniform vec2 deepHistorySize;     // texels of the history
 uniform float deepTolerance;      // world units
 uniform float deepDamping;        // delta
 uniform int deepBoost;            // eq. 7 on/off
@@ -59,13 +62,13 @@ vec3 bounceInput(ivec2 pixel, vec2 size, int layer)
   vec3 X = deepPositionFromDistance(vec2(pixel) + 0.5, size, d);
   ivec2 texel;
   float dr;
-  if (!deepReproject(X, deepToPrevious, deepPrevProjection, size, texel, dr))
+  if (!deepReproject(X, deepToPrevious, deepPrevProjection, deepHistorySize, texel, dr))
   {
     return direct;
   }
   vec3 n = deepDecodeOct16(texelFetch(deepNormal, ivec3(pixel, layer), 0).rg);
-  float expected =
-    deepExpectedPreviousDistance(X, n, deepToPrevious, deepPrevProjection, texel, size);
+  float expected = deepExpectedPreviousDistance(
+    X, n, deepToPrevious, deepPrevProjection, texel, deepHistorySize);
   vec4 h0 = texelFetch(deepHistory0, texel, 0);
   vec4 h1 = texelFetch(deepHistory1, texel, 0);
   float e0 = h0.a > 0.0 ? abs(h0.a - expected) : 1e30;

@@ -15,7 +15,10 @@
 // cosine of +-0.005). Of the passing candidates the tap uses the one with
 // the larger contribution |B (w.n_X)| (the paper's supplementary shader
 // does the same); a tap with no passing candidate is rejected. M = 0 gives
-// E = 0. Taps outside the image are rejected.
+// E = 0. Taps outside the image are rejected. With a resolution divisor D
+// (vtkDeepRadiosityPass::SetResolutionDivisor) the output is a grid D times
+// coarser whose texel q gathers for the layers' texel D q: the taps and
+// their sources stay those of the layers.
 //
 // deepEstimator (vtkDeepRadiosityPass::Estimator) chooses the sum:
 //   0 ACCEPTED_TAPS: eq. 4 as printed, 2 pi / M sum B (w.n_X);
@@ -47,6 +50,8 @@ uniform int deepNormalTest;        // the n_Y test of eq. 5
 uniform float deepCosineEpsilon;
 uniform float deepRotationOffset;  // radians added to phi (temporal)
 uniform int deepEstimator;         // 0 accepted taps, 1 all taps, 2 solid angle
+uniform ivec2 deepReceiverGrid;    // texels of the output grid
+uniform int deepDivisor;           // D: output texel q gathers for layer texel D q
 
 //VTK::DeepGBuffer::Common
 
@@ -58,7 +63,8 @@ void main()
 {
   vec2 size = vec2(textureSize(deepDistance, 0).xy);
   ivec2 isize = ivec2(size);
-  ivec2 pixel = min(ivec2(texCoord * size), isize - 1);
+  ivec2 receiver = min(ivec2(texCoord * vec2(deepReceiverGrid)), deepReceiverGrid - 1);
+  ivec2 pixel = min(receiver * deepDivisor, isize - 1);
   float d0 = texelFetch(deepDistance, ivec3(pixel, 0), 0).r;
   gl_FragData[0] = vec4(0.0);
   gl_FragData[1] = vec4(0.0);
@@ -79,7 +85,7 @@ void main()
   }
   float r2 = deepRadius * deepRadius;
   float rp = deepScreenRadius(deepRadius, d0, size);
-  float phi = deepSpiralRotation(pixel) + deepRotationOffset;
+  float phi = deepSpiralRotation(receiver) + deepRotationOffset;
 
   vec3 sum[2] = vec3[2](vec3(0.0), vec3(0.0));
   float used[2] = float[2](0.0, 0.0);

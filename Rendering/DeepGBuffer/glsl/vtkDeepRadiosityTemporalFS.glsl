@@ -78,13 +78,8 @@ void filterLayer(ivec2 pixel, vec2 size, int layer, out vec4 history, out vec4 i
   E = min(E, vec3(deepIrradianceLimit));
   history = vec4(E, d);
   vec3 rho = texelFetch(deepAlbedo, ivec3(pixel, layer), 0).rgb;
-  vec3 L = deepReflectance(rho, deepBoost != 0) * E / deepPi;
-  float c = clamp(now.a, 0.0, 1.0);
-  if (deepFallback != 0)
-  {
-    L = c * L + (1.0 - c) * rho * deepEnvironment / deepPi;
-  }
-  indirect = vec4(L, c);
+  indirect =
+    deepOutgoingIndirect(rho, E, now.a, deepBoost != 0, deepFallback != 0, deepEnvironment);
 }
 
 void main()

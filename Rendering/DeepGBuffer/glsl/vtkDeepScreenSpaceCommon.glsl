@@ -156,6 +156,21 @@ vec3 deepReflectance(vec3 rho, bool useBoost)
   return hi > 0.0 ? rho * ((hi - lo) / hi) : vec3(0.0);
 }
 
+// (L, c): the outgoing indirect radiance L = rho boost(rho) E / pi (eq. 6)
+// of a surface of albedo rho receiving E with confidence c, blended with the
+// environment fallback c L + (1 - c) rho E_env / pi when `fallback` is on
+// (section 3.2, Figure 9).
+vec4 deepOutgoingIndirect(vec3 rho, vec3 E, float c, bool boost, bool fallback, vec3 environment)
+{
+  c = clamp(c, 0.0, 1.0);
+  vec3 L = deepReflectance(rho, boost) * E / deepPi;
+  if (fallback)
+  {
+    L = c * L + (1.0 - c) * rho * environment / deepPi;
+  }
+  return vec4(L, c);
+}
+
 // Camera-space point at distance d on the ray through `ndc` of a camera
 // with projection m (GLSL column-major: m[c][r] = P_rc).
 vec3 deepRayPoint(vec2 ndc, float d, mat4 m)

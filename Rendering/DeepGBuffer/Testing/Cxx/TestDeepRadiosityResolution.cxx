@@ -1,0 +1,171 @@
+// vtkDeepRadiosityPass with a resolution divisor (the gather's receivers on
+// a grid of every D-th texel, joint bilateral upsampling to every texel),
+// against the same pass at every texel, single bounce (Damping 0,
+// TemporalAlpha 0), on a lit red wall and white floor with a white box in
+// front (two layers), in a window of odd size (161 x 121, so that the grid
+// does not divide the layers):
+// - D = 2: the outgoing indirect radiance of layer 0 keeps the light: its
+//   total is within 5 % of D = 1's, and its RMSE is below 15 % of the mean
+//   of D = 1's lit pixels;
+// - every layer-0 pixel that D = 1 lights (L.r > 0.01) is lit at D = 2 (the
+//   upsampling fills every texel of the frame, the last row and column of
+//   the odd-sized layers included);
+// - no light crosses the box's silhouettes: at all but 1 % of the pixels
+//   next to one (a neighbour's depth differs by more than 10 %) L at D = 2
+//   lies within 0.02 of the range of D = 1's L over the 5 x 5 pixels
+//   around (smoothing a steep gradient is allowed, values from the other
+//   side are not);
+// - the radiosity's textures at D = 2 take less than half those at D = 1
+//   (GetTextureBytes); switching the divisor back to 1 gives D = 1's
+//   image exactly (the history restarts).
+
+#include "DeepRadiosityTest.h"
+
+#include <cmath>
+
+using namespace DeepRadiosityTest;
+
+namespace
+{
+constexpr int W = 161, H = 121;
+
+void BoxCornerScene(vtkRenderer* r)
+{
+  RedWallScene(r);
+  const double center[3] = { 1.6, 0.5, 0.6 }, size[3] = { 0.6, 1.0, 0.6 };
+  Diffuse(AddBox(r, center, size), 1, 1, 1);
+}
+
+vtkSmartPointer<vtkDeepRadiosityPass> MakePass(int divisor)
+{
+  auto pass = vtkSmartPointer<vtkDeepRadiosityPass>::New();
+  pass->SetDamping(0.0);
+  pass->SetTemporalAlpha(0.0);
+  pass->SetResolutionDivisor(divisor);
+  return pass;
+}
+
+struct Capture
+{
+  Frame F;
+  long long Bytes = 0;
+};
+
+bool Render(int divisor, Capture& c)
+{
+  auto pass = MakePass(divisor);
+  const bool ok = RenderFrames(BoxCornerScene, pass, 2, c.F, W, H);
+  c.Bytes = pass->GetTextureBytes();
+  pass->ReleaseGraphicsResources(c.F.Window);
+  return ok;
+}
+
+double Red(Frame& f, int i, int j)
+{
+  return At(f.Radiosity, "IndirectRadiance_0", i, j, 0);
+}
+
+// Whether `value` lies within 0.02 of the range of `f`'s values over the
+// 5 x 5 pixels around (i, j): upsampling may smooth a steep gradient, but
+// light taken from across a silhouette (a leak) falls outside.
+bool WithinNeighbourhood(Frame& f, int i, int j, double value)
+{
+  double low = 1e30, high = -1e30;
+  for (int dj = -2; dj <= 2; ++dj)
+  {
+    for (int di = -2; di <= 2; ++di)
+    {
+      const int x = std::min(std::max(i + di, 0), W - 1), y = std::min(std::max(j + dj, 0), H - 1);
+      low = std::min(low, Red(f, x, y));
+      high = std::max(high, Red(f, x, y));
+    }
+  }
+  return value >= low - 0.02 && value <= high + 0.02;
+}
+
+void CompareWithEveryTexel(Frame& full, Frame& reduced, int divisor)
+{
+  double total = 0.0, reducedTotal = 0.0, squared = 0.0, litSum = 0.0;
+  long valid = 0, lit = 0, unlit = 0, edges = 0, leaks = 0;
+  for (int j = 0; j < H; ++j)
+  {
+    for (int i = 0; i < W; ++i)
+    {
+      if (At(full.Radiosity, "Valid_0", i, j) == 0)
+      {
+        continue;
+      }
+      const double a = Red(full, i, j), b = Red(reduced, i, j);
+      ++valid;
+      total += a;
+      reducedTotal += b;
+      squared += (a - b) * (a - b);
+      if (a > 0.01)
+      {
+        ++lit;
+        litSum += a;
+        unlit += b > 0.0 ? 0 : 1;
+      }
+      // A silhouette of the box: a neighbour's distance differs by > 10 %.
+      const double d = At(full.Layers, "Depth_0", i, j);
+      bool edge = false;
+      for (int k = 0; k < 4 && i > 0 && j > 0 && i < W - 1 && j < H - 1; ++k)
+      {
+        const int di = (k == 0) - (k == 1), dj = (k == 2) - (k == 3);
+        const double dn = At(full.Layers, "Depth_0", i + di, j + dj);
+        edge = edge || std::abs(dn - d) > 0.1 * d;
+      }
+      edges += edge ? 1 : 0;
+      leaks += edge && !WithinNeighbourhood(full, i, j, b) ? 1 : 0;
+    }
+  }
+  const double rmse = std::sqrt(squared / std::max(1L, valid));
+  const double litMean = litSum / std::max(1L, lit);
+  std::printf("D = %d: total L.r %.3f (every texel %.3f), RMSE %.4f (lit mean %.4f), %ld of %ld "
+              "lit pixels unlit, %ld of %ld silhouette pixels outside the range around them\n",
+    divisor, reducedTotal, total, rmse, litMean, unlit, lit, leaks, edges);
+  const std::string d = " (D = " + std::to_string(divisor) + ")";
+  Check(std::abs(reducedTotal - total) <= 0.05 * total, "total indirect light within 5 %" + d);
+  Check(rmse < 0.15 * litMean, "RMSE below 15 % of the lit mean" + d);
+  Check(lit > 1000 && unlit == 0, "every lit pixel lit" + d);
+  Check(edges > 50 && leaks <= edges / 100, "no light across silhouettes" + d);
+}
+}
+
+int TestDeepRadiosityResolution(int, char*[])
+{
+  Capture full, half;
+  if (!Render(1, full) || !Render(2, half))
+  {
+    return EXIT_FAILURE;
+  }
+  CompareWithEveryTexel(full.F, half.F, 2);
+  std::printf("texture bytes: D = 1 %lld, D = 2 %lld\n", full.Bytes, half.Bytes);
+  Check(half.Bytes > 0 && 2 * half.Bytes < full.Bytes, "D = 2 holds less than half the memory");
+
+  // One pass switched from 2 to 1: the image of a pass at every texel.
+  auto pass = MakePass(2);
+  Frame again;
+  if (RenderFrames(BoxCornerScene, pass, 2, again, W, H))
+  {
+    pass->SetResolutionDivisor(1);
+    again.Window->Render();
+    again.Window->Render();
+    vtkNew<vtkImageData> capture;
+    pass->CaptureIrradiance(capture, again.Renderer);
+    double worst = 0.0;
+    for (int j = 0; j < H; ++j)
+    {
+      for (int i = 0; i < W; ++i)
+      {
+        worst =
+          std::max(worst, std::abs(At(capture, "IndirectRadiance_0", i, j) - Red(full.F, i, j)));
+      }
+    }
+    std::printf("divisor 2 then 1: largest |L - L at every texel| %.3g\n", worst);
+    Check(worst < 1e-6, "back to every texel gives its image");
+    pass->ReleaseGraphicsResources(again.Window);
+  }
+  std::printf("%d check(s) failed\n", CheckFailures());
+  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
