@@ -636,6 +636,26 @@ public:
 private:
   bool& Flag;
 };
+
+// The radiosity's temporal filter off for a scope (restored after, also
+// when an observer throws).
+class ScopedStillRadiosity
+{
+public:
+  explicit ScopedStillRadiosity(vtkDeepRadiosityPass* pass)
+    : Pass(pass)
+    , Alpha(pass->GetTemporalAlpha())
+  {
+    this->Pass->SetTemporalAlpha(0.0);
+  }
+  ~ScopedStillRadiosity() { this->Pass->SetTemporalAlpha(this->Alpha); }
+  ScopedStillRadiosity(const ScopedStillRadiosity&) = delete;
+  void operator=(const ScopedStillRadiosity&) = delete;
+
+private:
+  vtkDeepRadiosityPass* Pass;
+  double Alpha;
+};
 } // anonymous namespace
 
 //------------------------------------------------------------------------------
@@ -687,9 +707,14 @@ int vtkDeepGIPass::Converge(vtkRenderer* renderer, int maximumFrames, double tol
   vtkNew<vtkUnsignedCharArray> previous;
   vtkNew<vtkUnsignedCharArray> current;
   bool havePrevious = false;
-  // Both restored also when an observer throws.
+  // All restored also when an observer throws.
   ScopedFlag converging(this->Internals->Converging);
   ScopedInterruptCatcher interrupt;
+  // At a still camera the temporal filter has nothing to follow: without it
+  // (and with it the spiral's rotation fixed) each frame is the previous
+  // bounce plus one, exactly, and the image converges geometrically instead
+  // of at the filter's pace (Documentation/performance.md).
+  ScopedStillRadiosity still(this->RadiosityPass);
   int k = 0;
   while (k < maximumFrames)
   {

@@ -86,14 +86,12 @@
  *
  * Still images: radiosity adds one bounce per frame and filters over time
  * (section 3.3), so a single frame shows one bounce. Converge(renderer, n)
- * renders n frames at a fixed camera and fires vtkCommand::ProgressEvent
- * (call data: double progress in [0, 1]) after each. On the demo scene
- * (320 x 240) the mean distance to the converged image is 0.6-0.7/255
- * after the first frame and 0.1-0.15/255 after 20 with the radiosity's
- * default estimator (with the paper's eq. 4 it stays above 1/255 for 16
- * frames); the per-frame change then stays at a floor of 0.05-0.07/255
- * (the rotating taps of the temporal filter). See Documentation/gi.md and
- * Examples/Python/deepgi_convergence.py.
+ * renders n frames at a fixed camera, with the radiosity's temporal filter
+ * off (TemporalAlpha 0 while it runs, which also fixes the spiral's
+ * rotation): each frame then adds exactly one bounce, so the image
+ * converges geometrically, and fires vtkCommand::ProgressEvent (call
+ * data: double progress in [0, 1]) after each. See Documentation/gi.md,
+ * Documentation/performance.md and Examples/Python/deepgi_convergence.py.
  *
  * Converge stops between two frames when asked to, the way VTK's
  * rendering is aborted: the render window's AbortRender flag set (by a
@@ -256,7 +254,8 @@ public:
 
   /**
    * Renders `renderer`'s window `frames` times without moving the camera,
-   * so that the radiosity bounces and the temporal filters settle, and
+   * so that the radiosity bounces settle (the radiosity's temporal filter
+   * is off meanwhile: TemporalAlpha 0, restored afterwards), and
    * fires vtkCommand::ProgressEvent with a double progress (k / frames)
    * after frame k. The renderer should use this pass, directly or through
    * wrapping passes such as vtkOpenGLFXAAPass, vtkSSAAPass or
@@ -297,11 +296,9 @@ public:
    * none was measured) and GetLastConvergenceReached() whether the
    * tolerance was met.
    *
-   * The change of an exponential temporal filter falls slowly: on the
-   * demo scene (640 x 480, BALANCED) it is 0.11/255 after frame 2 and
-   * reaches a floor of about 0.06/255 (the rotating taps) after 10 frames,
-   * so a tolerance of 0.07/255 stops after 9 frames, 0.22/255 on average
-   * from the image after 24 (deepgi-render's default; Documentation/gi.md).
+   * Without the temporal filter the change falls geometrically with the
+   * bounces (deepgi-render's default tolerance 0.07/255 stops after 2-3
+   * frames on the benchmark scenes; Documentation/performance.md).
    */
   int Converge(vtkRenderer* renderer, int maximumFrames, double tolerance);
   vtkGetMacro(LastConvergenceChange, double);
