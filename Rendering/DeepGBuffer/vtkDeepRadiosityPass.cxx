@@ -227,9 +227,19 @@ struct vtkDeepRadiosityRendererState
     {
       return nullptr;
     }
-    return quantity == vtkDeepRadiosityPass::IRRADIANCE ? this->History[this->HistoryCurrent][layer]
-      : quantity == vtkDeepRadiosityPass::INDIRECT_RADIANCE ? this->Targets[INDIRECT][layer]
-                                                            : nullptr;
+    if (quantity == vtkDeepRadiosityPass::IRRADIANCE)
+    {
+      return this->History[this->HistoryCurrent][layer];
+    }
+    return quantity == vtkDeepRadiosityPass::INDIRECT_RADIANCE ? this->Indirect(layer) : nullptr;
+  }
+
+  // L of a layer: INDIRECT, except layer 1 on a reduced grid, which stays
+  // there (BLUR_TEMP, see UpsampleIrradiance).
+  vtkTextureObject* Indirect(int layer)
+  {
+    return layer > 0 && this->Divisor > 1 ? this->Targets[BLUR_TEMP][layer]
+                                          : this->Targets[INDIRECT][layer];
   }
 };
 
@@ -772,10 +782,17 @@ bool vtkDeepRadiosityPass::PrepareTargets(
   for (int target = 0; target < NUMBER_OF_TARGETS; ++target)
   {
     // BOUNCE, the gather's sources, and INDIRECT, what the composites
-    // read, have every layer texel.
+    // read, have every layer texel; on a reduced grid only layer 0's
+    // INDIRECT exists.
     const int* size = target == BOUNCE || target == INDIRECT ? frame.LayerSize : frame.Size;
-    for (auto& t : state.Targets[target])
+    for (int layer = 0; layer < Layers; ++layer)
     {
+      vtkSmartPointer<vtkTextureObject>& t = state.Targets[target][layer];
+      if (target == INDIRECT && layer > 0 && frame.Divisor > 1)
+      {
+        ReleaseTarget(t, window);
+        continue;
+      }
       allocated = allocated && AllocateTarget(t, window, size[0], size[1], 4);
     }
   }
@@ -1082,21 +1099,23 @@ void vtkDeepRadiosityPass::AccumulateIrradiance(
 }
 
 //------------------------------------------------------------------------------
-// Step 5 (divisor > 1): History[Next] and the reduced (L, c) in BLUR_TEMP ->
-// INDIRECT at every shaded texel of the layers (joint bilateral
-// upsampling, vtkDeepRadiosityUpsampleFS).
+// Step 5 (divisor > 1): History[Next] and the reduced (L, c) in BLUR_TEMP of
+// layer 0 -> INDIRECT of layer 0 at every shaded texel of the layers (joint
+// bilateral upsampling, vtkDeepRadiosityUpsampleFS). Layer 1's outgoing
+// radiance, composited nowhere, stays on the grid (BLUR_TEMP).
 void vtkDeepRadiosityPass::UpsampleIrradiance(
   vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
 {
   vtkInternals& in = *this->Internals;
   vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: upsample");
-  // Only INDIRECT, of the layers' size, may stay attached: a framebuffer
-  // draws into the intersection of its attachments.
-  for (int a = Layers; a < 2 * Layers; ++a)
+  // Only INDIRECT of layer 0, of the layers' size, may stay attached: a
+  // framebuffer draws into the intersection of its attachments.
+  for (int a = 1; a < 2 * Layers; ++a)
   {
     in.Framebuffer->RemoveColorAttachment(a);
   }
-  AttachLayerTextures(in.Framebuffer, state.Targets[INDIRECT]);
+  in.Framebuffer->AddColorAttachment(0, state.Targets[INDIRECT][0]);
+  in.Framebuffer->ActivateDrawBuffers(1);
   vtkOpenGLState* ostate = frame.GL;
   ostate->vtkglViewport(0, 0, frame.LayerSize[0], frame.LayerSize[1]);
   const int* region = frame.LayerRegion;
@@ -1107,12 +1126,15 @@ void vtkDeepRadiosityPass::UpsampleIrradiance(
   program->SetUniformi("deepAlbedo", frame.LayerUnits[vtkDeepGBufferPass::ALBEDO]);
   program->SetUniformi("deepReducedNormal", frame.NormalUnit());
   program->SetUniformf("deepPlaneTolerance", static_cast<float>(this->BlurPlaneTolerance));
-  BindLayerTextures(program, "deepHistory", state.History[frame.Next]);
-  BindLayerTextures(program, "deepReducedIndirect", state.Targets[BLUR_TEMP]);
+  vtkTextureObject* history = state.History[frame.Next][0];
+  vtkTextureObject* reducedIndirect = state.Targets[BLUR_TEMP][0];
+  history->Activate();
+  reducedIndirect->Activate();
+  program->SetUniformi("deepHistory0", history->GetTextureUnit());
+  program->SetUniformi("deepReducedIndirect0", reducedIndirect->GetTextureUnit());
   program->SetUniformi("deepDivisor", frame.Divisor);
   program->SetUniform2i("deepReducedMin", frame.Region);
   program->SetUniform2i("deepReducedMax", frame.Region + 2);
-  program->SetUniformi("deepLayers", frame.UsedLayers);
   program->SetUniformi("deepBoost", this->UseColorBoost ? 1 : 0);
   program->SetUniformi("deepFallback", this->ConfidenceFallback ? 1 : 0);
   const float environment[3] = { static_cast<float>(this->EffectiveEnvironmentIrradiance[0]),
@@ -1120,8 +1142,8 @@ void vtkDeepRadiosityPass::UpsampleIrradiance(
     static_cast<float>(this->EffectiveEnvironmentIrradiance[2]) };
   program->SetUniform3f("deepEnvironment", environment);
   in.UpsampleQuad->Render();
-  UnbindLayerTextures(state.Targets[BLUR_TEMP]);
-  UnbindLayerTextures(state.History[frame.Next]);
+  reducedIndirect->Deactivate();
+  history->Deactivate();
 }
 
 //------------------------------------------------------------------------------
@@ -1268,7 +1290,10 @@ void AddIrradianceArrays(vtkImageData* output, vtkDeepRadiosityRendererState& st
   const size_t gridTexels = static_cast<size_t>(state.Width) * state.Height;
   const std::vector<float> irradiance =
     DownloadRGBA(state.History[state.HistoryCurrent][j], gridTexels);
-  const std::vector<float> indirect = DownloadRGBA(state.Targets[INDIRECT][j], pixels);
+  // On a reduced grid layer 1's L is the grid's (Indirect).
+  const bool gridIndirect = j > 0 && state.Divisor > 1;
+  const std::vector<float> indirect =
+    DownloadRGBA(state.Indirect(j), gridIndirect ? gridTexels : pixels);
   const std::vector<float> filtered = DownloadRGBA(state.Targets[FILTERED][j], gridTexels);
   const std::vector<float> raw = DownloadRGBA(state.Targets[RAW][j], gridTexels);
   vtkPointData* pd = output->GetPointData();
@@ -1291,7 +1316,7 @@ void AddIrradianceArrays(vtkImageData* output, vtkDeepRadiosityRendererState& st
     for (int k = 0; k < 3; ++k)
     {
       e->SetTypedComponent(p, k, isValid ? irradiance[4 * g + k] : 0.0f);
-      l->SetTypedComponent(p, k, isValid ? indirect[4 * p + k] : 0.0f);
+      l->SetTypedComponent(p, k, isValid ? indirect[4 * (gridIndirect ? g : p) + k] : 0.0f);
       re->SetTypedComponent(p, k, isValid ? raw[4 * g + k] : 0.0f);
       fe->SetTypedComponent(p, k, isValid ? filtered[4 * g + k] : 0.0f);
     }

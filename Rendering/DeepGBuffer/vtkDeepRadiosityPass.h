@@ -435,6 +435,10 @@ public:
    * `layer` (0 or 1) of the last frame rendered for `renderer` to a free
    * texture unit and returns it (-1 if there is none). Release it with
    * DeactivateTexture. GetTextureHandle gives the OpenGL name (0 if none).
+   * With a ResolutionDivisor of 2, IRRADIANCE of both layers and
+   * INDIRECT_RADIANCE of layer 1 have the gather's grid size (half the
+   * layers' per axis, rounded up); INDIRECT_RADIANCE of layer 0 has the
+   * layers' size.
    */
   int ActivateTexture(vtkRenderer* renderer, int quantity, int layer);
   void DeactivateTexture(vtkRenderer* renderer, int quantity, int layer);
