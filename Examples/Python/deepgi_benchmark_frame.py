@@ -74,6 +74,8 @@ from vtkmodules.vtkRenderingCore import vtkActor, vtkCamera, vtkPolyDataMapper, 
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass, vtkSSAOPass
 
 import vtkdeepgi
+# The image benchmark's scene loading and default actors, shared.
+from deepgi_benchmark_image import load_shared_scene, use_default_properties
 
 SCENES = ("bunny-floor", "bunny-floor-1m", "headsq")
 PRESETS = ("HIGH_PERFORMANCE", "BALANCED", "HIGH_QUALITY")
@@ -173,15 +175,8 @@ def populate(renderer, scene, data):
     loader = vtkdeepgi.vtkDeepGBufferSceneLoader()
     if scene in ("bunny-floor", "bunny-floor-1m"):
         ok, name = loader.Load(data + "/meshes/bunny.ply"), scene
-    elif scene == "headsq":
-        ok, name = loader.LoadVolume(data + "/volumes/headsq/quarter", 500.0), scene
-        loader.SetViewDirection(0.0, -1.0, 0.0)
-        loader.SetViewUp(0.0, 0.0, -1.0)
-    elif scene[0] == "mesh":
-        ok, name = loader.Load(scene[1]), os.path.basename(scene[1])
     else:
-        ok = loader.LoadVolume(scene[1], scene[2])
-        name = "%s iso %g" % (os.path.basename(scene[1]), scene[2])
+        ok, name = load_shared_scene(loader, scene, data)
     if not ok:
         sys.exit("deepgi_benchmark_frame.py: cannot load %s" % name)
     loader.Populate(renderer)
@@ -201,15 +196,6 @@ def actors(renderer):
     collection = renderer.GetActors()
     collection.InitTraversal()
     return [collection.GetNextActor() for _ in range(collection.GetNumberOfItems())]
-
-
-def use_default_properties(renderer):
-    for actor in actors(renderer):
-        prop = actor.GetProperty()
-        prop.SetColor(1.0, 1.0, 1.0)
-        prop.SetAmbient(0.0)
-        prop.SetDiffuse(1.0)
-        prop.SetSpecular(0.0)
 
 
 def count_triangles(renderer):

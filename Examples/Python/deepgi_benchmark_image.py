@@ -91,6 +91,18 @@ def parse_arguments():
     return args
 
 
+def load_shared_scene(loader, scene, data):
+    """The scenes every benchmark has: the CT head's skin ("headsq"), a
+    ("mesh", path) and a ("volume", path, iso). Returns (loaded, name)."""
+    if scene == "headsq":
+        loader.SetViewDirection(0.0, -1.0, 0.0)
+        loader.SetViewUp(0.0, 0.0, -1.0)
+        return loader.LoadVolume(data + "/volumes/headsq/quarter", 500.0), scene
+    if scene[0] == "mesh":
+        return loader.Load(scene[1]), os.path.basename(scene[1])
+    return loader.LoadVolume(scene[1], scene[2]), "%s iso %g" % (os.path.basename(scene[1]), scene[2])
+
+
 def populate(renderer, scene, data):
     """Fills the renderer; returns the scene's display name, and an object to keep."""
     if scene == "demo":
@@ -104,15 +116,8 @@ def populate(renderer, scene, data):
         ok, name = loader.Load(data + "/scenes/cornell-lucy/CornellBox-Lucy.obj"), scene
     elif scene == "dragon":
         ok, name = loader.Load(data + "/meshes/dragon.ply"), scene
-    elif scene == "headsq":
-        ok, name = loader.LoadVolume(data + "/volumes/headsq/quarter", 500.0), scene
-        loader.SetViewDirection(0.0, -1.0, 0.0)
-        loader.SetViewUp(0.0, 0.0, -1.0)
-    elif scene[0] == "mesh":
-        ok, name = loader.Load(scene[1]), os.path.basename(scene[1])
     else:
-        ok = loader.LoadVolume(scene[1], scene[2])
-        name = "%s iso %g" % (os.path.basename(scene[1]), scene[2])
+        ok, name = load_shared_scene(loader, scene, data)
     if not ok:
         sys.exit("deepgi_benchmark_image.py: cannot load %s" % (name if ok is not None else scene))
     loader.Populate(renderer)
