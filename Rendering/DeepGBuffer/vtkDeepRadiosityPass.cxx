@@ -971,6 +971,19 @@ void vtkDeepRadiosityPass::SetLayersUniforms(vtkShaderProgram* program, const vt
 }
 
 //------------------------------------------------------------------------------
+// The uniforms of eq. 6's outgoing radiance (deepOutgoingIndirect): the
+// boost, the confidence fallback and the environment's irradiance.
+void vtkDeepRadiosityPass::SetOutgoingUniforms(vtkShaderProgram* program)
+{
+  program->SetUniformi("deepBoost", this->UseColorBoost ? 1 : 0);
+  program->SetUniformi("deepFallback", this->ConfidenceFallback ? 1 : 0);
+  const float environment[3] = { static_cast<float>(this->EffectiveEnvironmentIrradiance[0]),
+    static_cast<float>(this->EffectiveEnvironmentIrradiance[1]),
+    static_cast<float>(this->EffectiveEnvironmentIrradiance[2]) };
+  program->SetUniform3f("deepEnvironment", environment);
+}
+
+//------------------------------------------------------------------------------
 // Step 1, bounce input B = direct + delta L_ind,t-1 (section 3.3), over the
 // whole layers: the guard band's surfaces are sources for the gather.
 void vtkDeepRadiosityPass::ComputeBounceInput(
@@ -1086,12 +1099,7 @@ void vtkDeepRadiosityPass::AccumulateIrradiance(
   program->SetUniformMatrix4x4("deepPrevProjection", frame.PreviousProjection);
   program->SetUniformf("deepTolerance", static_cast<float>(frame.Tolerance));
   program->SetUniformf("deepAlpha", static_cast<float>(this->TemporalAlpha));
-  program->SetUniformi("deepBoost", this->UseColorBoost ? 1 : 0);
-  program->SetUniformi("deepFallback", this->ConfidenceFallback ? 1 : 0);
-  const float environment[3] = { static_cast<float>(this->EffectiveEnvironmentIrradiance[0]),
-    static_cast<float>(this->EffectiveEnvironmentIrradiance[1]),
-    static_cast<float>(this->EffectiveEnvironmentIrradiance[2]) };
-  program->SetUniform3f("deepEnvironment", environment);
+  this->SetOutgoingUniforms(program);
   program->SetUniformf("deepIrradianceLimit", static_cast<float>(IRRADIANCE_LIMIT));
   in.TemporalQuad->Render();
   UnbindLayerTextures(state.History[frame.Previous]);
@@ -1135,12 +1143,7 @@ void vtkDeepRadiosityPass::UpsampleIrradiance(
   program->SetUniformi("deepDivisor", frame.Divisor);
   program->SetUniform2i("deepReducedMin", frame.Region);
   program->SetUniform2i("deepReducedMax", frame.Region + 2);
-  program->SetUniformi("deepBoost", this->UseColorBoost ? 1 : 0);
-  program->SetUniformi("deepFallback", this->ConfidenceFallback ? 1 : 0);
-  const float environment[3] = { static_cast<float>(this->EffectiveEnvironmentIrradiance[0]),
-    static_cast<float>(this->EffectiveEnvironmentIrradiance[1]),
-    static_cast<float>(this->EffectiveEnvironmentIrradiance[2]) };
-  program->SetUniform3f("deepEnvironment", environment);
+  this->SetOutgoingUniforms(program);
   in.UpsampleQuad->Render();
   reducedIndirect->Deactivate();
   history->Deactivate();

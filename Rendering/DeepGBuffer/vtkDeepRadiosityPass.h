@@ -541,6 +541,7 @@ private:
   void AccumulateIrradiance(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void UpsampleIrradiance(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   static void SetLayersUniforms(vtkShaderProgram* program, const vtkGatherFrame& frame);
+  void SetOutgoingUniforms(vtkShaderProgram* program);
   static void UnbindReduced(vtkGatherFrame& frame);
   void RecordFrame(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
 };
