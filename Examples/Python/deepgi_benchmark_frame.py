@@ -71,10 +71,10 @@ from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 from vtkmodules.vtkFiltersModeling import vtkLoopSubdivisionFilter
 from vtkmodules.vtkFiltersSources import vtkPlaneSource
 from vtkmodules.vtkRenderingCore import vtkActor, vtkCamera, vtkPolyDataMapper, vtkRenderer
-from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass, vtkSSAOPass
 
 import vtkdeepgi
-# The image benchmark's scene loading and default actors, shared.
+# The image benchmark's scenes, default actors and vtkSSAOPass, shared.
+import deepgi_benchmark_image
 from deepgi_benchmark_image import load_shared_scene, use_default_properties
 
 SCENES = ("bunny-floor", "bunny-floor-1m", "headsq")
@@ -230,13 +230,8 @@ class Method:
 
 
 def make_ssao(kernel, radius):
-    ssao = vtkSSAOPass()
-    ssao.SetDelegatePass(vtkRenderStepsPass())
-    ssao.SetKernelSize(kernel)
-    ssao.SetRadius(radius)
-    ssao.SetBias(0.02 * radius)
-    ssao.SetBlur(True)
-    return Method("vtkSSAOPass K%d" % kernel, ssao)
+    # The image benchmark's vtkSSAOPass settings.
+    return Method("vtkSSAOPass K%d" % kernel, deepgi_benchmark_image.make_ssao(kernel, radius)())
 
 
 def make_gbuffer(name, layers, oracle=None):

@@ -116,6 +116,7 @@ struct vtkDeepRadiosityRendererState
   // layers' (LayerWidth x LayerHeight).
   GLuint Reduced[NumberOfReducedQuantities] = { 0, 0, 0 };
   GLuint ReducedFramebuffer = 0;
+  int ReducedSize[2] = { 0, 0 }; // of the reduced G-buffer's textures
   int Divisor = 1;
   int LayerWidth = 0;
   int LayerHeight = 0;
@@ -211,6 +212,7 @@ struct vtkDeepRadiosityRendererState
       glDeleteFramebuffers(1, &this->ReducedFramebuffer);
       this->ReducedFramebuffer = 0;
     }
+    this->ReducedSize[0] = this->ReducedSize[1] = 0;
   }
 
   // Texel `p` of the layers -> its texel of the gather's grid.
@@ -333,6 +335,23 @@ void vtkDeepRadiosityPass::SetRadius(double radius)
 {
   this->SetManualLength(
     "Radius", radius, this->Radius, this->AutomaticRadius, false, " (no indirect light)");
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepRadiosityPass::SetResolutionDivisor(int divisor)
+{
+  if (divisor < 1 || divisor > 2)
+  {
+    const int clamped = divisor < 1 ? 1 : 2;
+    vtkWarningMacro(
+      "ResolutionDivisor " << divisor << " is outside 1..2; using " << clamped << ".");
+    divisor = clamped;
+  }
+  if (divisor != this->ResolutionDivisor)
+  {
+    this->ResolutionDivisor = divisor;
+    this->Modified();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -859,15 +878,7 @@ bool vtkDeepRadiosityPass::AllocateReduced(
     state.ReleaseReduced();
     return true;
   }
-  GLint width = 0, height = 0;
-  if (state.Reduced[0])
-  {
-    glBindTexture(GL_TEXTURE_2D_ARRAY, state.Reduced[0]);
-    glGetTexLevelParameteriv(GL_TEXTURE_2D_ARRAY, 0, GL_TEXTURE_WIDTH, &width);
-    glGetTexLevelParameteriv(GL_TEXTURE_2D_ARRAY, 0, GL_TEXTURE_HEIGHT, &height);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-  }
-  if (width == frame.Size[0] && height == frame.Size[1] && state.ReducedFramebuffer)
+  if (state.ReducedFramebuffer && std::equal(frame.Size, frame.Size + 2, state.ReducedSize))
   {
     return true;
   }
@@ -875,7 +886,7 @@ bool vtkDeepRadiosityPass::AllocateReduced(
   bool allocated = true;
   for (int q = 0; q < NumberOfReducedQuantities; ++q)
   {
-    width = 0;
+    GLint width = 0;
     glGenTextures(1, &state.Reduced[q]);
     glBindTexture(GL_TEXTURE_2D_ARRAY, state.Reduced[q]);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -896,6 +907,7 @@ bool vtkDeepRadiosityPass::AllocateReduced(
     state.ReleaseReduced();
     return false;
   }
+  std::copy(frame.Size, frame.Size + 2, state.ReducedSize);
   return true;
 }
 

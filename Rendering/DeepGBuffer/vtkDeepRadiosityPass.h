@@ -324,13 +324,14 @@ public:
    * the layers' texels D q only (D^2 times fewer receivers; its taps and
    * their sources, the bounce input, stay the layers'), the filters and the
    * temporal filter run on that grid (the filter's taps span D times more
-   * layer texels), and a joint bilateral upsampling (depth and normal
-   * weights, vtkDeepRadiosityUpsampleFS) brings E back to every layer
-   * texel, where eq. 6 applies that texel's own albedo. 1 (default) gathers
-   * at every texel, as the paper does; HIGH_PERFORMANCE uses 2 (see
-   * SetPreset and Documentation/performance.md for its cost and error).
+   * layer texels), and a joint bilateral upsampling (plane and normal
+   * weights, vtkDeepRadiosityUpsampleFS) brings E back to layer 0's texels,
+   * where eq. 6 applies each texel's own albedo. 1 (default) gathers at
+   * every texel, as the paper does; HIGH_PERFORMANCE uses 2 (see SetPreset
+   * and Documentation/performance.md for its cost and error). Other values
+   * are clamped with a warning.
    */
-  vtkSetClampMacro(ResolutionDivisor, int, 1, 2);
+  void SetResolutionDivisor(int divisor);
   vtkGetMacro(ResolutionDivisor, int);
   ///@}
 

@@ -17,7 +17,8 @@
 //   side are not);
 // - the radiosity's textures at D = 2 take less than half those at D = 1
 //   (GetTextureBytes); switching the divisor back to 1 gives D = 1's
-//   image exactly (the history restarts).
+//   image exactly (the history restarts);
+// - divisors outside 1..2 are clamped with a warning.
 
 #include "DeepRadiosityTest.h"
 
@@ -166,6 +167,14 @@ int TestDeepRadiosityResolution(int, char*[])
     Check(worst < 1e-6, "back to every texel gives its image");
     pass->ReleaseGraphicsResources(again.Window);
   }
+  // Bad input: clamped to 1..2 with one warning each.
+  auto clamped = MakePass(1);
+  EventCounter warnings(clamped, vtkCommand::WarningEvent);
+  clamped->SetResolutionDivisor(7);
+  const int high = clamped->GetResolutionDivisor();
+  clamped->SetResolutionDivisor(-3);
+  Check(high == 2 && clamped->GetResolutionDivisor() == 1 && warnings.Count == 2,
+    "divisors outside 1..2 clamped with a warning");
   std::printf("%d check(s) failed\n", CheckFailures());
   return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
