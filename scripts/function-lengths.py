@@ -18,7 +18,7 @@ import re
 import sys
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-LIBRARY = ["Core", "Scenes", "IO", "Reference", "Rendering"]
+LIBRARY = ["Core", "Scenes", "IO", "Reference", "Rendering", "ParaView"]
 NOT_FUNCTIONS = re.compile(r"^\s*(namespace|class|struct|enum|union|extern)\b")
 
 

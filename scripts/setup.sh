@@ -9,6 +9,14 @@
 #   in DEEPGI_CMAKE_ARGS); later runs just call ninja, which re-runs CMake
 #   itself when a CMakeLists.txt changed.
 #
+# - With --paraview (scripts/test.sh passes it), also what the ParaView
+#   plugin and its tests need: Debian's ParaView 5.11 (paraview-dev, without
+#   its recommended packages, which would remove libvtk9-dev) and MPI's
+#   mpiexec; python3-paraview, which conflicts with python3-vtk9 (both ship
+#   `vtkmodules`), is not installed but unpacked into
+#   <build>/python3-paraview, the Python that pvbatch is given there
+#   (PYTHONPATH=<build>/python3-paraview/usr/lib/python3/dist-packages).
+#
 # Everything this script prints goes to stderr, so that the stdout of
 # scripts/run.sh is the main job's alone.
 set -euo pipefail
@@ -16,6 +24,13 @@ exec 1>&2
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${DEEPGI_BUILD_DIR:-$repo/build}"
+with_paraview=0
+if [[ "${1:-}" == "--paraview" ]]; then
+  with_paraview=1
+elif [[ $# -gt 0 ]]; then
+  echo "usage: $0 [--paraview]"
+  exit 2
+fi
 
 # libvtk9-dev pulls in what Debian's VTK CMake package needs to configure
 # (MPI, GLEW, X11, Qt, Java, ... are Depends of libvtk9-dev), so they are not
@@ -29,6 +44,9 @@ packages=(
   libegl-dev libegl-mesa0 libgl1-mesa-dri  # EGL backend: headers, Mesa's EGL, llvmpipe
   xvfb xauth                          # X11 backend without a display (scripts/with-display.sh)
 )
+if ((with_paraview)); then
+  packages+=(paraview-dev openmpi-bin)  # the ParaView plugin (ParaView/), pvbatch under mpiexec
+fi
 
 log() { echo "setup.sh: $*"; }
 
@@ -69,6 +87,28 @@ if command -v dpkg-query >/dev/null 2>&1 && command -v apt-get >/dev/null 2>&1; 
   fi
 else
   log "no dpkg/apt here: make sure the equivalents of these are installed: ${packages[*]}"
+fi
+
+# unpack_paraview_python DIR: python3-paraview's files under DIR, once.
+unpack_paraview_python() {
+  local dir="$1"
+  if [[ -f "$dir/usr/lib/python3/dist-packages/paraview/simple.py" ]]; then
+    return
+  fi
+  log "unpacking python3-paraview into $dir"
+  local download
+  download="$(mktemp -d)"
+  chmod 755 "$download" # apt-get download runs as the _apt user when it can
+  (cd "$download" && apt-get download -q python3-paraview)
+  rm -rf "$dir.partial"
+  dpkg-deb -x "$download"/python3-paraview_*.deb "$dir.partial"
+  rm -rf "$download" "$dir"
+  mv "$dir.partial" "$dir"
+}
+
+if ((with_paraview)); then
+  mkdir -p "$build"
+  unpack_paraview_python "$build/python3-paraview"
 fi
 
 # Configure once; ninja re-runs CMake when needed.

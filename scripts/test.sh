@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# test.sh: install and build what is needed (scripts/setup.sh), then run the
+# test.sh: install and build what is needed (scripts/setup.sh --paraview:
+# the project and what the ParaView plugin's tests need), then run the
 # whole test suite with CTest, under a private Xvfb when there is no DISPLAY
 # (scripts/with-display.sh; the EGL tests remove DISPLAY themselves). Extra
 # arguments go to ctest (e.g. -R Headless, -L DeepGI). The exit status is
@@ -9,7 +10,7 @@ set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${DEEPGI_BUILD_DIR:-$repo/build}"
 
-bash "$repo/scripts/setup.sh"
+bash "$repo/scripts/setup.sh" --paraview
 
 # Per-test time limit in seconds: llvmpipe on 2 cores is slow, but a hung
 # test must not stall the run.

@@ -1,0 +1,105 @@
+/**
+ * @class vtkPVDeepGIRenderView
+ * @brief ParaView's render view with deep G-buffer global illumination.
+ *
+ * A vtkPVRenderView whose renderer draws through vtkDeepGIPass when
+ * UseDeepGI is on: the pass is handed to ParaView's synchronized renderers
+ * as their render pass (the slot ParaView's ray tracing uses), so ParaView's
+ * own camera pass, FXAA and tone mapping wrap it as they wrap the default
+ * pass. ParaView's SSAO is switched off while the deep GI is on (both would
+ * occlude the ambient term).
+ *
+ * The properties map one to one onto vtkDeepGIPass (Documentation/paraview.md
+ * lists them beside their pvpython names):
+ * - UseDeepGI: on/off (off: ParaView's own default pass, nothing of the deep
+ *   G-buffer runs);
+ * - Preset: vtkDeepGIPass::Preset;
+ * - AmbientObscurance, Radiosity, Reflections: the effect switches;
+ * - ObscuranceRadius, RadiosityRadius: the gather radii as fractions of the
+ *   visible props' bounding-box diagonal (the passes' AutomaticRadiusFraction);
+ * - ConvergeStills, ConvergeMaximumFrames, ConvergeTolerance: still renders
+ *   (screenshots, pvbatch, the GUI after interaction) first run
+ *   vtkDeepGIPass::Converge, so the radiosity's bounces settle; interactive
+ *   renders are single frames.
+ */
+#ifndef vtkPVDeepGIRenderView_h
+#define vtkPVDeepGIRenderView_h
+
+#include "vtkDeepGIParaViewViewModule.h" // for export macro
+#include "vtkNew.h"                      // for vtkNew
+#include "vtkPVRenderView.h"
+
+#include <string> // for std::string
+
+class vtkDeepGIPass;
+
+class VTKDEEPGIPARAVIEWVIEW_EXPORT vtkPVDeepGIRenderView : public vtkPVRenderView
+{
+public:
+  static vtkPVDeepGIRenderView* New();
+  vtkTypeMacro(vtkPVDeepGIRenderView, vtkPVRenderView);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Deep GI on or off (default on).
+  vtkSetMacro(UseDeepGI, bool);
+  vtkGetMacro(UseDeepGI, bool);
+  ///@}
+
+  ///@{
+  /// The pass's settings (see the class description).
+  void SetPreset(int preset);
+  int GetPreset();
+  void SetAmbientObscurance(bool on);
+  void SetRadiosity(bool on);
+  void SetReflections(bool on);
+  void SetObscuranceRadius(double fraction);
+  void SetRadiosityRadius(double fraction);
+  ///@}
+
+  ///@{
+  /// Still renders converge first (default on, at most 16 frames, tolerance
+  /// 0.07/255 of the full scale, deepgi-render's default).
+  vtkSetMacro(ConvergeStills, bool);
+  vtkGetMacro(ConvergeStills, bool);
+  vtkSetClampMacro(ConvergeMaximumFrames, int, 1, 1000);
+  vtkGetMacro(ConvergeMaximumFrames, int);
+  vtkSetClampMacro(ConvergeTolerance, double, 0.0, 1.0);
+  vtkGetMacro(ConvergeTolerance, double);
+  ///@}
+
+  /// The composite pass itself, for settings the properties do not reach.
+  vtkDeepGIPass* GetDeepGIPass();
+
+  /// The effects of the last frame (vtkDeepGIPass::GetEffectsAsString;
+  /// "NONE" while UseDeepGI is off): the information property
+  /// DeepGILastFrameEffects.
+  const char* GetLastFrameEffectsAsString();
+
+protected:
+  vtkPVDeepGIRenderView();
+  ~vtkPVDeepGIRenderView() override;
+
+  /// Puts the pass into (or takes it out of) the synchronized renderers'
+  /// pass chain before every render, and converges still renders.
+  void AboutToRenderOnLocalProcess(bool interactive) override;
+
+private:
+  vtkPVDeepGIRenderView(const vtkPVDeepGIRenderView&) = delete;
+  void operator=(const vtkPVDeepGIRenderView&) = delete;
+
+  void InstallPass();
+  void ConvergeStill();
+
+  vtkNew<vtkDeepGIPass> GIPass;
+  bool UseDeepGI = true;
+  bool PassInstalled = false;
+  bool ConvergeStills = true;
+  bool Converging = false;
+  bool WarnedConvergeWithProcesses = false;
+  int ConvergeMaximumFrames = 16;
+  double ConvergeTolerance = 0.07 / 255.0;
+  std::string LastFrameEffects;
+};
+
+#endif

@@ -1,0 +1,64 @@
+"""The DeepGI view under `mpiexec -n N pvbatch`: every rank holds part of
+the data, the view renders with the GI and IceT's compositing, and the run
+ends (RunRanks.cmake bounds its time).
+
+    mpiexec -n N pvbatch CheckDeepGIRanks.py PLUGIN OUTPUT_DIR N
+
+What it checks: N ranks run; the sphere is split across them (its
+ProcessId array spans 0..N-1); the composited still shows the scene with the
+GI's effects on. Each rank computes the effects on its own part of the data
+before IceT composites the colours, so the image is not yet the one-rank
+image (Documentation/paraview.md, "Several ranks"). A failed check aborts
+the run (MPI_Abort, a non-zero exit status).
+"""
+import os
+import sys
+
+from paraview import servermanager
+from paraview.simple import (CreateView, LoadPlugin, Plane, ProcessIdScalars, SaveScreenshot,
+                             Show, Sphere)
+
+PLUGIN, OUTPUT, RANKS = sys.argv[1], sys.argv[2], int(sys.argv[3])
+failures = []
+
+
+def check(condition, what):
+    print("%s: %s" % ("ok" if condition else "FAILED", what))
+    if not condition:
+        failures.append(what)
+
+
+os.makedirs(OUTPUT, exist_ok=True)
+LoadPlugin(PLUGIN, remote=False, ns=globals())
+processes = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+check(processes == RANKS, "%d ranks run pvbatch" % processes)
+
+sphere = ProcessIdScalars(Input=Sphere(Center=[0.0, 0.0, 5.0], Radius=5.0,
+                                       ThetaResolution=48, PhiResolution=48))
+plane = Plane(Origin=[-20.0, -20.0, 0.0], Point1=[20.0, -20.0, 0.0], Point2=[-20.0, 20.0, 0.0],
+              XResolution=16, YResolution=16)
+sphere.UpdatePipeline()
+owners = sphere.GetPointDataInformation().GetArray("ProcessId").GetRange()
+check(owners == (0.0, RANKS - 1.0), "the sphere is split over ranks %g..%g" % owners)
+
+view = CreateView("DeepGIRenderView")
+view.ViewSize = [200, 150]
+view.OrientationAxesVisibility = 0
+view.CameraPosition = [30.0, -40.0, 30.0]
+view.CameraFocalPoint = [0.0, 0.0, 3.0]
+view.CameraViewUp = [0.0, 0.0, 1.0]
+Show(sphere, view).ColorArrayName = ["POINTS", ""]
+Show(plane, view)
+path = os.path.join(OUTPUT, "ranks-%d.png" % RANKS)
+SaveScreenshot(path, view, ImageResolution=[200, 150], TransparentBackground=0)
+view.UpdatePropertyInformation()
+effects = view.GetProperty("DeepGILastFrameEffects").GetElement(0)
+check("RADIOSITY" in effects, "the frame ran %s" % effects)
+check(os.path.getsize(path) > 1000, "the composited still was written (%s)" % path)
+print("%d failure(s)" % len(failures))
+# pvbatch ends its MPI ranks itself after the script: sys.exit would leave
+# them unfinalized, and an exception on rank 0 would leave the others
+# waiting. A failure aborts every rank.
+if failures:
+    from mpi4py import MPI
+    MPI.COMM_WORLD.Abort(1)

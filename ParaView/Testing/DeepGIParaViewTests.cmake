@@ -1,0 +1,67 @@
+# The ParaView plugin's tests, registered by the main project
+# (Testing/CMakeLists.txt) when DEEPGI_ENABLE_PARAVIEW is on. They need
+# Debian's ParaView 5.11 and the unpacked python3-paraview that
+# `scripts/setup.sh --paraview` provides (scripts/test.sh runs it).
+#
+# - deepgi-paraview-plugin: builds the plugin (ParaView/) from scratch in
+#   <build>/paraview-plugin against ParaView's VTK 9.2 (the fixture of the
+#   others);
+# - deepgi-paraview-shader-tokens: the VTK shader text the G-buffer relies on
+#   exists in ParaView's VTK;
+# - deepgi-paraview-view: pvbatch loads the plugin; the view's properties,
+#   set from Python, change the image as documented
+#   (CheckDeepGIRenderView.py);
+# - deepgi-paraview-two-ranks: `mpiexec -n 2 pvbatch` renders with the
+#   view and ends within a bounded time.
+
+set(DEEPGI_PARAVIEW_PYTHON_ROOT "${CMAKE_BINARY_DIR}/python3-paraview")
+set(_plugin_build "${CMAKE_BINARY_DIR}/paraview-plugin")
+set(_plugin "${_plugin_build}/lib/paraview-5.11/plugins/DeepGI/DeepGI.so")
+set(_testing "${CMAKE_SOURCE_DIR}/ParaView/Testing")
+find_program(DEEPGI_PVBATCH NAMES pvbatch)
+
+add_test(NAME deepgi-paraview-plugin
+  COMMAND "${CMAKE_COMMAND}"
+    "-DSOURCE=${CMAKE_SOURCE_DIR}/ParaView"
+    "-DBINARY=${_plugin_build}"
+    "-DGENERATOR=${CMAKE_GENERATOR}"
+    "-DPYTHON_ROOT=${DEEPGI_PARAVIEW_PYTHON_ROOT}"
+    -P "${_testing}/BuildPlugin.cmake")
+set_tests_properties(deepgi-paraview-plugin PROPERTIES
+  FIXTURES_SETUP DeepGIParaViewPlugin
+  LABELS "DeepGI;ParaView")
+
+add_test(NAME deepgi-paraview-shader-tokens
+  COMMAND "${_plugin_build}/bin/DeepGIParaViewShaderTokens")
+set_tests_properties(deepgi-paraview-shader-tokens PROPERTIES
+  FIXTURES_REQUIRED DeepGIParaViewPlugin
+  LABELS "DeepGI;ParaView")
+
+# pvbatch's Python: ParaView's modules from the unpacked python3-paraview
+# (first on the path, before python3-vtk9's `vtkmodules`).
+set(_pvbatch_environment
+  "PYTHONPATH=${DEEPGI_PARAVIEW_PYTHON_ROOT}/usr/lib/python3/dist-packages")
+
+add_test(NAME deepgi-paraview-view
+  COMMAND "${DEEPGI_PVBATCH}" "${_testing}/CheckDeepGIRenderView.py" "${_plugin}"
+    "${CMAKE_CURRENT_BINARY_DIR}/ParaViewView")
+set_tests_properties(deepgi-paraview-view PROPERTIES
+  FIXTURES_REQUIRED DeepGIParaViewPlugin
+  ENVIRONMENT "${_pvbatch_environment}"
+  FAIL_REGULAR_EXPRESSION "ERR\\||Traceback"
+  LABELS "DeepGI;ParaView")
+
+add_test(NAME deepgi-paraview-two-ranks
+  COMMAND "${CMAKE_COMMAND}"
+    "-DMPIEXEC=${MPIEXEC_EXECUTABLE}"
+    "-DPVBATCH=${DEEPGI_PVBATCH}"
+    "-DSCRIPT=${_testing}/CheckDeepGIRanks.py"
+    "-DPLUGIN=${_plugin}"
+    "-DOUTPUT=${CMAKE_CURRENT_BINARY_DIR}/ParaViewRanks"
+    -DRANKS=2
+    -DTIMEOUT=240
+    -P "${_testing}/RunRanks.cmake")
+set_tests_properties(deepgi-paraview-two-ranks PROPERTIES
+  FIXTURES_REQUIRED DeepGIParaViewPlugin
+  ENVIRONMENT "${_pvbatch_environment}"
+  LABELS "DeepGI;ParaView")
