@@ -9,7 +9,7 @@ namespaces, classes, structs, enums and unions are not functions.
     python3 scripts/function-lengths.py [--most N] [--over N] [PATH ...]
 
 PATH: files or folders (default: the library's modules, Core, Scenes,
-IO, Reference and Rendering, without their tests). --over N exits with
+IO, Reference, Rendering and ParaView, without their tests). --over N exits with
 status 1 when a function is longer than N lines.
 """
 import argparse

@@ -170,6 +170,12 @@ view.Exposure = 2.0
 toned = capture(view, "tone-mapping")
 check(mean_change(toned, gi) > 2.0 * LEVEL, "UseToneMapping: a different image")
 view.UseToneMapping = 0
+view.OrientationAxesVisibility = 1
+axes = capture(view, "orientation-axes")
+check(0.0 < changed_fraction(axes, gi) < 0.05 and "RADIOSITY" in effects(view),
+      "OrientationAxesVisibility: the axes drawn over the GI image (%.2f %% of the pixels)"
+      % (100 * changed_fraction(axes, gi)))
+view.OrientationAxesVisibility = 0
 
 # A volume and a slice beside the surfaces.
 wavelet = Wavelet(WholeExtent=[8, 16, -4, 4, 0, 8])

@@ -11,6 +11,8 @@
 # - deepgi-paraview-view: pvbatch loads the plugin; the view's properties,
 #   set from Python, change the image as documented
 #   (CheckDeepGIRenderView.py);
+# - deepgi-paraview-example: the pvpython example of
+#   Documentation/paraview.md runs;
 # - deepgi-paraview-two-ranks: `mpiexec -n 2 pvbatch` renders with the
 #   view and ends within a bounded time.
 
@@ -48,6 +50,16 @@ add_test(NAME deepgi-paraview-view
 set_tests_properties(deepgi-paraview-view PROPERTIES
   FIXTURES_REQUIRED DeepGIParaViewPlugin
   ENVIRONMENT "${_pvbatch_environment}"
+  FAIL_REGULAR_EXPRESSION "ERR\\||Traceback"
+  LABELS "DeepGI;ParaView")
+
+add_test(NAME deepgi-paraview-example
+  COMMAND "${DEEPGI_PVBATCH}" "${CMAKE_SOURCE_DIR}/ParaView/Examples/deepgi_pvpython.py"
+    "${_plugin}" "${DEEPGI_DATA_DIR}/meshes/bunny.ply" "${CMAKE_CURRENT_BINARY_DIR}")
+set_tests_properties(deepgi-paraview-example PROPERTIES
+  FIXTURES_REQUIRED DeepGIParaViewPlugin
+  ENVIRONMENT "${_pvbatch_environment}"
+  PASS_REGULAR_EXPRESSION "effects: [A-Z_|]*RADIOSITY"
   FAIL_REGULAR_EXPRESSION "ERR\\||Traceback"
   LABELS "DeepGI;ParaView")
 
