@@ -1,4 +1,5 @@
-# Configures and builds the ParaView plugin (ParaView/) from scratch:
+# Configures, builds and installs the ParaView plugin (ParaView/) from
+# scratch; the install prefix is <BINARY>/install:
 #   cmake -DSOURCE=... -DBINARY=... -DGENERATOR=... -DPYTHON_ROOT=... -P BuildPlugin.cmake
 file(REMOVE_RECURSE "${BINARY}")
 execute_process(COMMAND "${CMAKE_COMMAND}" -S "${SOURCE}" -B "${BINARY}" -G "${GENERATOR}"
@@ -11,4 +12,9 @@ endif ()
 execute_process(COMMAND "${CMAKE_COMMAND}" --build "${BINARY}" RESULT_VARIABLE result)
 if (result)
   message(FATAL_ERROR "building the ParaView plugin failed")
+endif ()
+execute_process(COMMAND "${CMAKE_COMMAND}" --install "${BINARY}" --prefix "${BINARY}/install"
+  RESULT_VARIABLE result)
+if (result)
+  message(FATAL_ERROR "installing the ParaView plugin failed")
 endif ()

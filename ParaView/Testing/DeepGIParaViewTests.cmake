@@ -4,8 +4,9 @@
 # `scripts/setup.sh --paraview` provides (scripts/test.sh runs it).
 #
 # - deepgi-paraview-plugin: builds the plugin (ParaView/) from scratch in
-#   <build>/paraview-plugin against ParaView's VTK 9.2 (the fixture of the
-#   others);
+#   <build>/paraview-plugin against ParaView's VTK 9.2 and installs it into
+#   <build>/paraview-plugin/install (the fixture of the others, which load
+#   the installed plugin);
 # - deepgi-paraview-shader-tokens: the VTK shader text the G-buffer relies on
 #   exists in ParaView's VTK;
 # - deepgi-paraview-view: pvbatch loads the plugin; the view's properties,
@@ -18,7 +19,7 @@
 
 set(DEEPGI_PARAVIEW_PYTHON_ROOT "${CMAKE_BINARY_DIR}/python3-paraview")
 set(_plugin_build "${CMAKE_BINARY_DIR}/paraview-plugin")
-set(_plugin "${_plugin_build}/lib/paraview-5.11/plugins/DeepGI/DeepGI.so")
+set(_plugin "${_plugin_build}/install/lib/paraview-5.11/plugins/DeepGI/DeepGI.so")
 set(_testing "${CMAKE_SOURCE_DIR}/ParaView/Testing")
 find_program(DEEPGI_PVBATCH NAMES pvbatch)
 
