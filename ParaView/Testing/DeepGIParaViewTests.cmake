@@ -12,6 +12,9 @@
 # - deepgi-paraview-view: pvbatch loads the plugin; the view's properties,
 #   set from Python, change the image as documented
 #   (CheckDeepGIRenderView.py);
+# - deepgi-paraview-gui: ParaView's GUI (Qt, under the suite's X display)
+#   loads the plugin and renders its view in the main window's layout
+#   (CheckDeepGIGui.py);
 # - deepgi-paraview-example: the pvpython example of
 #   Documentation/paraview.md runs;
 # - deepgi-paraview-two-ranks: `mpiexec -n 2 pvbatch` renders with the
@@ -52,6 +55,16 @@ set_tests_properties(deepgi-paraview-view PROPERTIES
   FIXTURES_REQUIRED DeepGIParaViewPlugin
   ENVIRONMENT "${_pvbatch_environment}"
   FAIL_REGULAR_EXPRESSION "ERR\\||Traceback"
+  LABELS "DeepGI;ParaView")
+
+find_program(DEEPGI_PARAVIEW_GUI NAMES paraview)
+add_test(NAME deepgi-paraview-gui
+  COMMAND "${DEEPGI_PARAVIEW_GUI}" --dr "--script=${_testing}/CheckDeepGIGui.py" --exit)
+set_tests_properties(deepgi-paraview-gui PROPERTIES
+  FIXTURES_REQUIRED DeepGIParaViewPlugin
+  ENVIRONMENT "${_pvbatch_environment};DEEPGI_PARAVIEW_PLUGIN=${_plugin}"
+  PASS_REGULAR_EXPRESSION "DeepGI GUI: all checks passed"
+  FAIL_REGULAR_EXPRESSION "ERR\\||Traceback|FAILED"
   LABELS "DeepGI;ParaView")
 
 add_test(NAME deepgi-paraview-example
