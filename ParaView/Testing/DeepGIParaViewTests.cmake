@@ -43,6 +43,9 @@ set_tests_properties(deepgi-paraview-shader-tokens PROPERTIES
   FIXTURES_REQUIRED DeepGIParaViewPlugin
   LABELS "DeepGI;ParaView")
 
+# The one-rank tests fail on any error or warning that VTK or ParaView
+# prints (their loguru lines "ERR|" and "WARN|"), besides their own checks.
+#
 # pvbatch's Python: ParaView's modules from the unpacked python3-paraview
 # (first on the path, before python3-vtk9's `vtkmodules`).
 set(_pvbatch_environment
@@ -54,7 +57,7 @@ add_test(NAME deepgi-paraview-view
 set_tests_properties(deepgi-paraview-view PROPERTIES
   FIXTURES_REQUIRED DeepGIParaViewPlugin
   ENVIRONMENT "${_pvbatch_environment}"
-  FAIL_REGULAR_EXPRESSION "ERR\\||Traceback"
+  FAIL_REGULAR_EXPRESSION "ERR\\||WARN\\||Traceback"
   LABELS "DeepGI;ParaView")
 
 find_program(DEEPGI_PARAVIEW_GUI NAMES paraview)
@@ -64,7 +67,7 @@ set_tests_properties(deepgi-paraview-gui PROPERTIES
   FIXTURES_REQUIRED DeepGIParaViewPlugin
   ENVIRONMENT "${_pvbatch_environment};DEEPGI_PARAVIEW_PLUGIN=${_plugin}"
   PASS_REGULAR_EXPRESSION "DeepGI GUI: all checks passed"
-  FAIL_REGULAR_EXPRESSION "ERR\\||Traceback|FAILED"
+  FAIL_REGULAR_EXPRESSION "ERR\\||WARN\\||Traceback|FAILED"
   LABELS "DeepGI;ParaView")
 
 add_test(NAME deepgi-paraview-example
@@ -74,7 +77,7 @@ set_tests_properties(deepgi-paraview-example PROPERTIES
   FIXTURES_REQUIRED DeepGIParaViewPlugin
   ENVIRONMENT "${_pvbatch_environment}"
   PASS_REGULAR_EXPRESSION "effects: [A-Z_|]*RADIOSITY"
-  FAIL_REGULAR_EXPRESSION "ERR\\||Traceback"
+  FAIL_REGULAR_EXPRESSION "ERR\\||WARN\\||Traceback"
   LABELS "DeepGI;ParaView")
 
 add_test(NAME deepgi-paraview-two-ranks
