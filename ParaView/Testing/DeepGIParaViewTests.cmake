@@ -17,8 +17,10 @@
 #   (CheckDeepGIGui.py);
 # - deepgi-paraview-example: the pvpython example of
 #   Documentation/paraview.md runs;
-# - deepgi-paraview-two-ranks: `mpiexec -n 2 pvbatch` renders with the
-#   view and ends within a bounded time.
+# - deepgi-paraview-ranks-1, -2, -4: `mpiexec -n N pvbatch` renders a scene
+#   split across the ranks with the view (CheckDeepGIRanks.py), each run
+#   ending within a bounded time; deepgi-paraview-ranks-equal: the three
+#   stills are equal within 1/255 (CompareRanks.py).
 
 set(DEEPGI_PARAVIEW_PYTHON_ROOT "${CMAKE_BINARY_DIR}/python3-paraview")
 set(_plugin_build "${CMAKE_BINARY_DIR}/paraview-plugin")
@@ -43,7 +45,7 @@ set_tests_properties(deepgi-paraview-shader-tokens PROPERTIES
   FIXTURES_REQUIRED DeepGIParaViewPlugin
   LABELS "DeepGI;ParaView")
 
-# The one-rank tests fail on any error or warning that VTK or ParaView
+# The pvbatch tests fail on any error or warning that VTK or ParaView
 # prints (their loguru lines "ERR|" and "WARN|"), besides their own checks.
 #
 # pvbatch's Python: ParaView's modules from the unpacked python3-paraview
@@ -80,17 +82,29 @@ set_tests_properties(deepgi-paraview-example PROPERTIES
   FAIL_REGULAR_EXPRESSION "ERR\\||WARN\\||Traceback"
   LABELS "DeepGI;ParaView")
 
-add_test(NAME deepgi-paraview-two-ranks
-  COMMAND "${CMAKE_COMMAND}"
-    "-DMPIEXEC=${MPIEXEC_EXECUTABLE}"
-    "-DPVBATCH=${DEEPGI_PVBATCH}"
-    "-DSCRIPT=${_testing}/CheckDeepGIRanks.py"
-    "-DPLUGIN=${_plugin}"
-    "-DOUTPUT=${CMAKE_CURRENT_BINARY_DIR}/ParaViewRanks"
-    -DRANKS=2
-    -DTIMEOUT=240
-    -P "${_testing}/RunRanks.cmake")
-set_tests_properties(deepgi-paraview-two-ranks PROPERTIES
-  FIXTURES_REQUIRED DeepGIParaViewPlugin
-  ENVIRONMENT "${_pvbatch_environment}"
+# The same still on 1, 2 and 4 ranks (4 oversubscribe the cores), each run
+# bounded in time, then compared.
+foreach (ranks IN ITEMS 1 2 4)
+  add_test(NAME deepgi-paraview-ranks-${ranks}
+    COMMAND "${CMAKE_COMMAND}"
+      "-DMPIEXEC=${MPIEXEC_EXECUTABLE}"
+      "-DPVBATCH=${DEEPGI_PVBATCH}"
+      "-DSCRIPT=${_testing}/CheckDeepGIRanks.py"
+      "-DPLUGIN=${_plugin}"
+      "-DOUTPUT=${CMAKE_CURRENT_BINARY_DIR}/ParaViewRanks"
+      -DRANKS=${ranks}
+      -DTIMEOUT=240
+      -P "${_testing}/RunRanks.cmake")
+  set_tests_properties(deepgi-paraview-ranks-${ranks} PROPERTIES
+    FIXTURES_REQUIRED DeepGIParaViewPlugin
+    FIXTURES_SETUP DeepGIParaViewRanks
+    ENVIRONMENT "${_pvbatch_environment}"
+    FAIL_REGULAR_EXPRESSION "ERR\\||WARN\\||Traceback"
+    LABELS "DeepGI;ParaView")
+endforeach ()
+add_test(NAME deepgi-paraview-ranks-equal
+  COMMAND "${DEEPGI_VTK_PYTHON}" "${_testing}/CompareRanks.py"
+    "${CMAKE_CURRENT_BINARY_DIR}/ParaViewRanks" 2 4)
+set_tests_properties(deepgi-paraview-ranks-equal PROPERTIES
+  FIXTURES_REQUIRED DeepGIParaViewRanks
   LABELS "DeepGI;ParaView")

@@ -469,7 +469,7 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
     return false;
   }
   const double radius = this->AutomaticRadius
-    ? this->AutomaticRadiusFraction * vtkDeepScreenSpace::VisiblePropDiagonal(frame.Renderer)
+    ? this->AutomaticRadiusFraction * vtkDeepScreenSpace::SceneDiagonal(frame.Renderer)
     : this->Radius;
   this->EffectiveRadius = radius;
   vtkDeepAmbientObscuranceRendererState& state = this->Internals->States.Get(frame.Renderer);

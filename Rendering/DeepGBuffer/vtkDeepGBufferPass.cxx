@@ -4,6 +4,7 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkDeepGBufferLayerExchange.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -316,6 +317,7 @@ enum WarningSlot
   WARN_SEPARATION_EXCEEDS_SCENE,
   WARN_FRAMEBUFFER_INCOMPLETE,
   WARN_GUARD_BAND_LIMITED,
+  WARN_LAYER_EXCHANGE_FAILED,
   NUMBER_OF_WARNINGS
 };
 
@@ -413,9 +415,11 @@ vtkDeepGBufferPass::~vtkDeepGBufferPass()
   this->SetVolumetricPass(nullptr);
   this->SetOverlayPass(nullptr);
   this->SetShadowMapPass(nullptr);
+  this->SetLayerExchange(nullptr);
 }
 
 vtkCxxSetObjectMacro(vtkDeepGBufferPass, TranslucentPass, vtkRenderPass);
+vtkCxxSetObjectMacro(vtkDeepGBufferPass, LayerExchange, vtkDeepGBufferLayerExchange);
 vtkCxxSetObjectMacro(vtkDeepGBufferPass, VolumetricPass, vtkRenderPass);
 vtkCxxSetObjectMacro(vtkDeepGBufferPass, OverlayPass, vtkRenderPass);
 vtkCxxSetObjectMacro(vtkDeepGBufferPass, ShadowMapPass, vtkShadowMapPass);
@@ -1060,6 +1064,53 @@ void CopyDistanceLayer(vtkDeepGBufferRendererState& state, int from, int to)
     state.HistoryTexture, GL_TEXTURE_2D_ARRAY, 0, 0, 0, to, state.Width, state.Height, 1);
 }
 
+// Bytes per pixel of quantity q as it is read back and uploaded (its format
+// and type, e.g. 12 for AMBIENT's R11F_G11F_B10F read as three floats).
+int QuantityTransferBytes(int q)
+{
+  const int components = QuantityFormats[q] == GL_RGBA ? 4
+    : QuantityFormats[q] == GL_RGB                     ? 3
+    : QuantityFormats[q] == GL_RG                      ? 2
+                                                       : 1;
+  const int componentBytes = QuantityTypes[q] == GL_UNSIGNED_BYTE ? 1
+    : QuantityTypes[q] == GL_HALF_FLOAT                           ? 2
+                                                                  : 4;
+  return components * componentBytes;
+}
+
+// Copies one quantity's plane (`bytes` per pixel) into the interleaved
+// per-pixel records at `offset` (toInterleaved), or back out of them.
+void InterleavePlane(std::vector<unsigned char>& plane, int bytes,
+  std::vector<unsigned char>& interleaved, int offset, int stride, bool toInterleaved)
+{
+  const size_t pixels = plane.size() / bytes;
+  for (size_t p = 0; p < pixels; ++p)
+  {
+    unsigned char* record = interleaved.data() + p * stride + offset;
+    unsigned char* texel = plane.data() + p * bytes;
+    if (toInterleaved)
+    {
+      std::copy(texel, texel + bytes, record);
+    }
+    else
+    {
+      std::copy(record, record + bytes, texel);
+    }
+  }
+}
+
+// Writes layer `layer` of an array texture. The active unit's binding is
+// restored: while layers are drawn it holds the oracle's history.
+void UploadLayer(
+  GLuint texture, int layer, int width, int height, GLenum format, GLenum type, const void* data)
+{
+  GLint bound = 0;
+  glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &bound);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, texture);
+  glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, layer, width, height, 1, format, type, data);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(bound));
+}
+
 // Clears every layer of every quantity (distance 0 marks an empty pixel)
 // and the depth.
 void ClearLayers(vtkDeepGBufferRendererState& state, vtkOpenGLState* ostate)
@@ -1341,7 +1392,10 @@ void vtkDeepGBufferPass::BakeShadowMaps(vtkLayerFrame& frame)
 void vtkDeepGBufferPass::ChooseLayout(vtkLayerFrame& frame)
 {
   vtkInternals& in = *this->Internals;
-  frame.Oracle = this->Oracle;
+  // Composited layers are peeled one submission each: layer k + 1 is
+  // tested against the composited layer k, which no single-pass oracle
+  // (built from this process's history) knows.
+  frame.Oracle = this->LayerExchange ? DEPTH_PEEL : this->Oracle;
   frame.Layers = this->NumberOfLayers;
   if ((frame.Oracle == PREDICT || frame.Oracle == DELAY) && frame.Layers > 2)
   {
@@ -1361,7 +1415,7 @@ void vtkDeepGBufferPass::ChooseLayout(vtkLayerFrame& frame)
   frame.Slots = frame.Layers + frame.OracleSlots;
   frame.SinglePass = frame.Layers > 1 && frame.Oracle != DEPTH_PEEL;
 
-  const double diagonal = vtkDeepScreenSpace::VisiblePropDiagonal(frame.Renderer);
+  const double diagonal = vtkDeepScreenSpace::SceneDiagonal(frame.Renderer);
   frame.MinimumSeparation = this->AutomaticMinimumSeparation
     ? this->AutomaticSeparationFraction * diagonal
     : this->MinimumSeparation;
@@ -1591,7 +1645,7 @@ bool vtkDeepGBufferPass::PeelLayers(vtkLayerFrame& frame, int allOracleMask)
   vtkInternals& in = *this->Internals;
   vtkDeepGBufferRendererState& state = *frame.RendererState;
   const bool peelRouted = !frame.RoutedDone && !frame.RoutedProps.empty();
-  if (!peelRouted && frame.OtherProps.empty())
+  if (!peelRouted && frame.OtherProps.empty() && !this->LayerExchange)
   {
     return false;
   }
@@ -1617,8 +1671,74 @@ bool vtkDeepGBufferPass::PeelLayers(vtkLayerFrame& frame, int allOracleMask)
       DrawOpaque(frame.OtherProps, frame.Renderer);
     }
     ++frame.GeometryPasses;
+    if (this->LayerExchange)
+    {
+      this->ExchangeLayer(frame, j);
+    }
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+// Distributed rendering: replaces layer j of every quantity and of the depth
+// by its composite across the processes (see vtkDeepGBufferLayerExchange).
+// The layer is read back through its framebuffer, interleaved per pixel for
+// the exchange, and written back into the array textures.
+void vtkDeepGBufferPass::ExchangeLayer(vtkLayerFrame& frame, int j)
+{
+  vtkDeepGBufferRendererState& state = *frame.RendererState;
+  const vtkIdType pixels = static_cast<vtkIdType>(state.Width) * state.Height;
+  std::vector<int> quantities;
+  int bytesPerPixel = 0;
+  for (int q = 0; q < NUMBER_OF_QUANTITIES; ++q)
+  {
+    if (state.Textures[q])
+    {
+      quantities.push_back(q);
+      bytesPerPixel += QuantityTransferBytes(q);
+    }
+  }
+  std::vector<float> depth(pixels);
+  std::vector<unsigned char> attributes(pixels * bytesPerPixel);
+  std::vector<unsigned char> plane;
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  frame.GL->vtkglBindFramebuffer(GL_FRAMEBUFFER, state.LayerFramebuffers[j]);
+  glReadPixels(0, 0, state.Width, state.Height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  int offset = 0;
+  for (int q : quantities)
+  {
+    const int bytes = QuantityTransferBytes(q);
+    plane.resize(pixels * bytes);
+    glReadBuffer(GL_COLOR_ATTACHMENT0 + q);
+    glReadPixels(
+      0, 0, state.Width, state.Height, QuantityFormats[q], QuantityTypes[q], plane.data());
+    InterleavePlane(plane, bytes, attributes, offset, bytesPerPixel, true);
+    offset += bytes;
+  }
+  if (!this->LayerExchange->CompositeLayer(pixels, depth, attributes, bytesPerPixel))
+  {
+    this->Internals->WarnOnce(this, WARN_LAYER_EXCHANGE_FAILED,
+      "The layer exchange failed; this process keeps its own layers.");
+  }
+  else
+  {
+    UploadLayer(
+      state.DepthTexture, j, state.Width, state.Height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    offset = 0;
+    for (int q : quantities)
+    {
+      const int bytes = QuantityTransferBytes(q);
+      plane.resize(pixels * bytes);
+      InterleavePlane(plane, bytes, attributes, offset, bytesPerPixel, false);
+      UploadLayer(state.Textures[q], j, state.Width, state.Height, QuantityFormats[q],
+        QuantityTypes[q], plane.data());
+      offset += bytes;
+    }
+  }
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
 }
 
 //------------------------------------------------------------------------------

@@ -64,6 +64,7 @@
 
 #include <memory> // for std::unique_ptr
 
+class vtkDeepGBufferLayerExchange;
 class vtkDeepGIStageTimer;
 class vtkImageData;
 class vtkInformationIntegerKey;
@@ -433,6 +434,20 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Distributed rendering: with an exchange set, the layers are drawn one
+   * geometry pass each (the oracle is DEPTH_PEEL whatever Oracle says) and
+   * each layer, once drawn, is composited across the processes by the
+   * exchange before the next layer is peeled against it (see
+   * vtkDeepGBufferLayerExchange). Every layer is exchanged, also on a
+   * process with nothing to draw. Null (default): each process's layers
+   * are its own.
+   */
+  void SetLayerExchange(vtkDeepGBufferLayerExchange* exchange);
+  vtkGetObjectMacro(LayerExchange, vtkDeepGBufferLayerExchange);
+  ///@}
+
+  ///@{
   /// The steps drawn after the opaque layers. Defaults: vtkTranslucentPass,
   /// vtkVolumetricPass, vtkOverlayPass. Set to null to skip a step.
   void SetTranslucentPass(vtkRenderPass* pass);
@@ -491,6 +506,7 @@ protected:
   void ApplyFXAA(vtkOpenGLRenderer* renderer);
   vtkShadowMapPass* ShadowMapPass = nullptr;
   vtkDeepGIStageTimer* StageTimer = nullptr;
+  vtkDeepGBufferLayerExchange* LayerExchange = nullptr;
 
 private:
   vtkDeepGBufferPass(const vtkDeepGBufferPass&) = delete;
@@ -513,6 +529,7 @@ private:
   void DrawLayersWithShadows(vtkLayerFrame& frame);
   void DrawLayers(vtkLayerFrame& frame);
   bool PeelLayers(vtkLayerFrame& frame, int allOracleMask);
+  void ExchangeLayer(vtkLayerFrame& frame, int layer);
   void RecordFrame(const vtkLayerFrame& frame);
 };
 

@@ -4,14 +4,12 @@
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
 #include "vtkCamera.h"
-#include "vtkCameraPass.h"
 #include "vtkCommand.h"
 #include "vtkDataSet.h"
 #include "vtkDeepAmbientObscurancePass.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDeepRadiosityPass.h"
 #include "vtkDeepReflectionPass.h"
-#include "vtkImageProcessingPass.h"
 #include "vtkMapper.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -23,12 +21,9 @@
 #include "vtkOpenGLState.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
-#include "vtkRenderPassCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
-#include "vtkSSAAPass.h"
-#include "vtkSequencePass.h"
 #include "vtkShaderProgram.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWeakPointer.h"
@@ -232,6 +227,7 @@ public:
   vtkOpenGLQuadHelper* CompositeQuads[2 * MultiplyVariant] = {};
   vtkOpenGLQuadHelper* CoverageQuad = nullptr;
   bool Converging = false;
+  unsigned long long RenderedFrames = 0; // calls of Render, for Converge
   bool WarnedUnsupported = false;
   // The effects wanted in the frame being rendered (set by Render).
   int Wanted = 0;
@@ -531,47 +527,6 @@ double MeanAbsoluteChange(vtkUnsignedCharArray* a, vtkUnsignedCharArray* b)
 //------------------------------------------------------------------------------
 namespace
 {
-// Whether `pass` is `target` or wraps it: the delegates of image
-// processing passes (vtkOpenGLFXAAPass, vtkToneMappingPass, ...),
-// vtkSSAAPass and vtkCameraPass, and the passes of a vtkSequencePass.
-bool PassUses(vtkRenderPass* pass, vtkRenderPass* target, int depth = 0)
-{
-  if (!pass || depth > 32) // depth: a guard against cycles
-  {
-    return false;
-  }
-  if (pass == target)
-  {
-    return true;
-  }
-  if (auto* processing = vtkImageProcessingPass::SafeDownCast(pass))
-  {
-    return PassUses(processing->GetDelegatePass(), target, depth + 1);
-  }
-  if (auto* ssaa = vtkSSAAPass::SafeDownCast(pass))
-  {
-    return PassUses(ssaa->GetDelegatePass(), target, depth + 1);
-  }
-  if (auto* camera = vtkCameraPass::SafeDownCast(pass))
-  {
-    return PassUses(camera->GetDelegatePass(), target, depth + 1);
-  }
-  auto* sequence = vtkSequencePass::SafeDownCast(pass);
-  if (sequence && sequence->GetPasses())
-  {
-    vtkCollectionSimpleIterator it;
-    sequence->GetPasses()->InitTraversal(it);
-    while (vtkRenderPass* step = sequence->GetPasses()->GetNextRenderPass(it))
-    {
-      if (PassUses(step, target, depth + 1))
-      {
-        return true;
-      }
-    }
-  }
-  return false;
-}
-
 // SIGINT while converging: caught into a flag; when the scope ends the
 // previous action is restored and, if SIGINT arrived, raised again for it
 // (Python's handler then raises KeyboardInterrupt). A SIGINT that is
@@ -684,11 +639,6 @@ bool vtkDeepGIPass::CheckConvergeArguments(
                                            << maximumFrames << " frames).");
     tolerance = 0.0;
   }
-  if (!PassUses(renderer->GetPass(), this))
-  {
-    vtkWarningMacro("Converge: the renderer does not use this pass (call SetPass first); the "
-                    "frames are rendered without converging anything.");
-  }
   return true;
 }
 
@@ -718,8 +668,17 @@ int vtkDeepGIPass::Converge(vtkRenderer* renderer, int maximumFrames, double tol
   int k = 0;
   while (k < maximumFrames)
   {
+    const unsigned long long renderedBefore = this->Internals->RenderedFrames;
     window->Render();
     ++k;
+    // Whether the renderer uses this pass is seen, not searched for: the
+    // wrappers around it (FXAA, SSAA, tone mapping, ParaView's camera and
+    // IceT passes, ...) need not be known.
+    if (k == 1 && this->Internals->RenderedFrames == renderedBefore)
+    {
+      vtkWarningMacro("Converge: the renderer's frame did not use this pass (call SetPass "
+                      "first); the frames are rendered without converging anything.");
+    }
     bool done = false;
     if (measure && ReadViewportColour(renderer, current))
     {
@@ -782,6 +741,7 @@ bool vtkDeepGIPass::AcceptWindow(vtkRenderer* renderer)
 void vtkDeepGIPass::Render(const vtkRenderState* s)
 {
   vtkInternals& in = *this->Internals;
+  ++in.RenderedFrames;
   this->NumberOfRenderedProps = 0;
   vtkRenderer* renderer = s->GetRenderer();
   if (!this->AcceptWindow(renderer))

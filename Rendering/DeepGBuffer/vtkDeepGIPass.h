@@ -258,13 +258,12 @@ public:
    * is off meanwhile: TemporalAlpha 0, restored afterwards), and
    * fires vtkCommand::ProgressEvent with a double progress (k / frames)
    * after frame k. The renderer should use this pass, directly or through
-   * wrapping passes such as vtkOpenGLFXAAPass, vtkSSAAPass or
-   * vtkToneMappingPass (a warning otherwise; the frames are rendered
-   * anyway). Interval probes of the layer count are not started while
-   * converging (they would reset the radiosity history). Returns the
-   * number of frames rendered (0 with a warning for a null renderer, a
-   * renderer without a window or frames < 1; frames above
-   * MAXIMUM_CONVERGE_FRAMES are clamped with a warning).
+   * any wrapping passes (vtkOpenGLFXAAPass, vtkSSAAPass, vtkToneMappingPass,
+   * ParaView's camera and IceT compositing passes, ...): a warning when the
+   * first frame did not render this pass (the frames are rendered anyway). Interval probes of the
+   * layer count are not started while converging (they would reset the radiosity history). Returns
+   * the number of frames rendered (0 with a warning for a null renderer, a renderer without a
+   * window or frames < 1; frames above MAXIMUM_CONVERGE_FRAMES are clamped with a warning).
    *
    * Interruption: after each frame and its ProgressEvent, Converge stops
    * when the render window's AbortRender flag is set (an observer calls

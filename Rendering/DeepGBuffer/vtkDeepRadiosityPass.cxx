@@ -712,7 +712,7 @@ void vtkDeepRadiosityPass::ComputeSceneParameters(
   vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
 {
   vtkRenderer* renderer = frame.Renderer;
-  const double diagonal = vtkDeepScreenSpace::VisiblePropDiagonal(renderer);
+  const double diagonal = vtkDeepScreenSpace::SceneDiagonal(renderer);
   frame.Radius = this->AutomaticRadius ? this->AutomaticRadiusFraction * diagonal : this->Radius;
   this->EffectiveRadius = frame.Radius;
   if (this->AutomaticRadius && !(diagonal > 0.0) && !state.WarnedEmpty)

@@ -518,7 +518,7 @@ bool vtkDeepReflectionPass::UpdateReflections(const vtkRenderState* s)
 // How far rays march and how thick a layer's surface is taken to be.
 void vtkDeepReflectionPass::ComputeRayLimits(vtkTraceFrame& frame)
 {
-  const double diagonal = vtkDeepScreenSpace::VisiblePropDiagonal(frame.Renderer);
+  const double diagonal = vtkDeepScreenSpace::SceneDiagonal(frame.Renderer);
   frame.MaximumDistance = this->AutomaticMaximumDistance
     ? this->AutomaticDistanceFraction * diagonal
     : this->MaximumDistance;

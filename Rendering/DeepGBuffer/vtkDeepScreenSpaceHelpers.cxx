@@ -2,9 +2,12 @@
 
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkDeepGIKeys.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationDoubleVectorKey.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -178,10 +181,18 @@ void AddCameraFieldData(vtkFieldData* fd, const double view[16], const double pr
 }
 
 //------------------------------------------------------------------------------
-double VisiblePropDiagonal(vtkRenderer* renderer)
+double SceneDiagonal(vtkRenderer* renderer)
 {
   double bounds[6];
-  renderer->ComputeVisiblePropBounds(bounds);
+  vtkInformation* information = renderer->GetInformation();
+  if (information && information->Has(vtkDeepGIKeys::SCENE_BOUNDS()))
+  {
+    information->Get(vtkDeepGIKeys::SCENE_BOUNDS(), bounds);
+  }
+  else
+  {
+    renderer->ComputeVisiblePropBounds(bounds);
+  }
   if (!vtkMath::AreBoundsInitialized(bounds))
   {
     return 0.0;

@@ -178,9 +178,11 @@ private:
   vtkOpenGLState::ScopedglBlendFuncSeparate BlendFunc;
 };
 
-/// Diagonal of the bounds of the renderer's visible props, 0 when empty or
-/// not finite: the scene size the automatic radii are fractions of.
-double VisiblePropDiagonal(vtkRenderer* renderer);
+/// The scene size every automatic length is a fraction of: the diagonal of
+/// vtkDeepGIKeys::SCENE_BOUNDS when the renderer's information has them (a
+/// renderer that draws part of a distributed scene), else of the bounds of
+/// the renderer's visible props; 0 when empty or not finite.
+double SceneDiagonal(vtkRenderer* renderer);
 
 /// The deepProjXY and deepProjT uniforms of vtkDeepScreenSpaceCommon.glsl
 /// from a row-major projection matrix.

@@ -1,10 +1,15 @@
 #include "vtkPVDeepGIRenderView.h"
 
 #include "vtkDeepAmbientObscurancePass.h"
+#include "vtkDeepGBufferPass.h"
+#include "vtkDeepGIKeys.h"
 #include "vtkDeepGIPass.h"
 #include "vtkDeepRadiosityPass.h"
+#include "vtkInformation.h"
+#include "vtkInformationDoubleVectorKey.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
+#include "vtkPVDeepGILayerExchange.h"
 #include "vtkPVSynchronizedRenderer.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -84,13 +89,21 @@ const char* vtkPVDeepGIRenderView::GetLastFrameEffectsAsString()
 }
 
 //------------------------------------------------------------------------------
+vtkTypeInt64 vtkPVDeepGIRenderView::GetLayerExchangeBytes()
+{
+  return this->LayerExchange->GetBytesSent();
+}
+
+//------------------------------------------------------------------------------
 void vtkPVDeepGIRenderView::AboutToRenderOnLocalProcess(bool interactive)
 {
   this->Superclass::AboutToRenderOnLocalProcess(interactive);
   this->InstallPass();
+  this->LayerExchange->ResetBytesSent();
+  const bool distributed = this->ConfigureDistribution();
   if (!interactive && this->UseDeepGI && this->ConvergeStills && !this->Converging)
   {
-    this->ConvergeStill();
+    this->ConvergeStill(distributed);
   }
 }
 
@@ -114,26 +127,45 @@ void vtkPVDeepGIRenderView::InstallPass()
 }
 
 //------------------------------------------------------------------------------
-// Converge renders the window itself, before vtkPVRenderView::Render draws
-// the final frame. The tolerance test reads back this process's image, so
-// with several processes the ranks could stop after different numbers of
-// frames and leave IceT's compositing waiting: there the still is rendered
-// as one frame, with one warning per view.
-void vtkPVDeepGIRenderView::ConvergeStill()
+// What a distributed render needs (see the class description); returns
+// whether this render is one. The scene's size comes from ParaView's
+// geometry bounds on one process too, so that one process and several
+// use the same lengths.
+bool vtkPVDeepGIRenderView::ConfigureDistribution()
 {
-  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  if (controller && controller->GetNumberOfProcesses() > 1)
+  vtkInformation* information = this->GetRenderer()->GetInformation();
+  if (this->GeometryBounds.IsValid())
   {
-    if (!this->WarnedConvergeWithProcesses)
-    {
-      vtkWarningMacro("ConvergeStills is not available with "
-        << controller->GetNumberOfProcesses() << " processes yet; stills show single frames.");
-      this->WarnedConvergeWithProcesses = true;
-    }
-    return;
+    double bounds[6];
+    this->GeometryBounds.GetBounds(bounds);
+    information->Set(vtkDeepGIKeys::SCENE_BOUNDS(), bounds, 6);
   }
+  else
+  {
+    information->Remove(vtkDeepGIKeys::SCENE_BOUNDS());
+  }
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const bool distributed = this->UseDeepGI && controller &&
+    controller->GetNumberOfProcesses() > 1 && this->SynchronizedRenderers->GetEnabled();
+  this->GIPass->GetGBufferPass()->SetLayerExchange(
+    distributed ? this->LayerExchange.Get() : nullptr);
+  this->GIPass->SetAdaptiveLayers(!distributed);
+  if (distributed)
+  {
+    this->SynchronizedRenderers->SetRenderEmptyImages(true);
+  }
+  return distributed;
+}
+
+//------------------------------------------------------------------------------
+// Converge renders the window itself, before vtkPVRenderView::Render draws
+// the final frame. Distributed, the frame count must be the same on every
+// process: the tolerance is not tested (tolerance 0).
+void vtkPVDeepGIRenderView::ConvergeStill(bool distributed)
+{
   this->Converging = true;
-  this->GIPass->Converge(this->GetRenderer(), this->ConvergeMaximumFrames, this->ConvergeTolerance);
+  this->GIPass->Converge(
+    this->GetRenderer(), this->ConvergeMaximumFrames, distributed ? 0.0 : this->ConvergeTolerance);
   this->Converging = false;
 }
 

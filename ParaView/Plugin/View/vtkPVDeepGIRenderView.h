@@ -21,6 +21,19 @@
  *   (screenshots, pvbatch, the GUI after interaction) first run
  *   vtkDeepGIPass::Converge, so the radiosity's bounces settle; interactive
  *   renders are single frames.
+ *
+ * Distributed rendering (several processes, ParaView's parallel rendering
+ * on): the G-buffer's layers are composited across the processes before the
+ * effects run (vtkPVDeepGILayerExchange, a distributed depth peel), every
+ * automatic length is a fraction of the whole scene's size (ParaView's
+ * global geometry bounds, vtkDeepGIKeys::SCENE_BOUNDS), every process
+ * renders two layers (the adaptive layer count is per process) and renders
+ * even with no data of its own (the exchange is collective). Every process
+ * then shades the same layers, so IceT's compositing of their images
+ * changes nothing, and the image is the one a single process would render.
+ * A still then renders exactly ConvergeMaximumFrames frames: the tolerance
+ * test reads back each process's window, which the processes cannot be
+ * relied on to agree about.
  */
 #ifndef vtkPVDeepGIRenderView_h
 #define vtkPVDeepGIRenderView_h
@@ -32,6 +45,7 @@
 #include <string> // for std::string
 
 class vtkDeepGIPass;
+class vtkPVDeepGILayerExchange;
 
 class VTKDEEPGIPARAVIEWVIEW_EXPORT vtkPVDeepGIRenderView : public vtkPVRenderView
 {
@@ -76,6 +90,11 @@ public:
   /// DeepGILastFrameEffects.
   const char* GetLastFrameEffectsAsString();
 
+  /// Bytes this process sent to composite the G-buffer's layers during the
+  /// last render (its converging frames included; 0 on one process): the
+  /// information property DeepGILayerExchangeBytes.
+  vtkTypeInt64 GetLayerExchangeBytes();
+
 protected:
   vtkPVDeepGIRenderView();
   ~vtkPVDeepGIRenderView() override;
@@ -89,14 +108,15 @@ private:
   void operator=(const vtkPVDeepGIRenderView&) = delete;
 
   void InstallPass();
-  void ConvergeStill();
+  bool ConfigureDistribution();
+  void ConvergeStill(bool distributed);
 
   vtkNew<vtkDeepGIPass> GIPass;
+  vtkNew<vtkPVDeepGILayerExchange> LayerExchange;
   bool UseDeepGI = true;
   bool PassInstalled = false;
   bool ConvergeStills = true;
   bool Converging = false;
-  bool WarnedConvergeWithProcesses = false;
   int ConvergeMaximumFrames = 16;
   double ConvergeTolerance = 0.07 / 255.0;
   std::string LastFrameEffects;

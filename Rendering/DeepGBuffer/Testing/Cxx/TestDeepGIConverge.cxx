@@ -13,8 +13,9 @@
 //    SIGINT once.
 // 4. An exception thrown by an observer leaves Converge; the SIGINT handler
 //    is restored and a later Converge renders all its frames.
-// 5. Wrapped by vtkOpenGLFXAAPass, vtkSSAAPass and vtkToneMappingPass, the
-//    pass converges: no warning that the renderer does not use it, the
+// 5. Wrapped by vtkOpenGLFXAAPass, vtkSSAAPass, vtkToneMappingPass or a
+//    render pass of the test's own that only calls it (as ParaView's
+//    compositing passes do), the pass converges: no warning that the renderer does not use it, the
 //    change is measured and the tolerance met before the frame cap, and
 //    the GI effects ran. A renderer without the pass still gets that
 //    warning.
@@ -22,6 +23,7 @@
 #include "DeepRadiosityTest.h"
 
 #include "vtkDeepGIPass.h"
+#include "vtkObjectFactory.h"
 #include "vtkOpenGLFXAAPass.h"
 #include "vtkSSAAPass.h"
 #include "vtkToneMappingPass.h"
@@ -216,6 +218,25 @@ void CheckInterrupt()
   std::signal(SIGINT, previous);
 }
 
+// A render pass that only calls another one, unknown to vtkDeepGIPass.
+class DelegatingPass : public vtkRenderPass
+{
+public:
+  static DelegatingPass* New();
+  vtkTypeMacro(DelegatingPass, vtkRenderPass);
+  void Render(const vtkRenderState* s) override
+  {
+    this->Delegate->Render(s);
+    this->NumberOfRenderedProps = this->Delegate->GetNumberOfRenderedProps();
+  }
+  void ReleaseGraphicsResources(vtkWindow* w) override
+  {
+    this->Delegate->ReleaseGraphicsResources(w);
+  }
+  vtkSmartPointer<vtkRenderPass> Delegate;
+};
+vtkStandardNewMacro(DelegatingPass);
+
 // Converge through a wrapping pass made by `wrap` around the GI pass.
 using Wrap = std::function<vtkSmartPointer<vtkRenderPass>(vtkDeepGIPass*)>;
 void CheckWrapped(const char* name, const Wrap& wrap)
@@ -263,6 +284,15 @@ void CheckWrappers()
       toneMapping->SetToneMappingType(vtkToneMappingPass::GenericFilmic);
       toneMapping->SetDelegatePass(gi);
       return toneMapping;
+    });
+  // A wrapper the pass knows nothing about (as ParaView's IceT compositing
+  // pass is): seen to render the pass, no warning.
+  CheckWrapped("a delegating vtkRenderPass subclass",
+    [](vtkDeepGIPass* gi)
+    {
+      auto delegating = vtkSmartPointer<DelegatingPass>::New();
+      delegating->Delegate = gi;
+      return delegating;
     });
   // A renderer that does not use the pass still gets the warning.
   Scene scene;
