@@ -14,6 +14,7 @@
 #include "vtkDeepGISceneFileChecks.h"
 #include "vtkDeepGISceneLegacyVTK.h"
 #include "vtkDeepGISceneNrrd.h"
+#include "vtkDeepGISceneOBJ.h"
 #include "vtkDeepGISceneText.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
@@ -47,19 +48,13 @@
 #include "vtkXMLPolyDataReader.h"
 
 #include <vtksys/Directory.hxx>
-#include <vtksys/FStream.hxx>
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
-#include <array>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <functional>
-#include <map>
 #include <new>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -71,9 +66,6 @@ vtkStandardNewMacro(vtkDeepGBufferSceneLoader);
 namespace
 {
 using vtkDeepGISceneText::Lower;
-using vtkDeepGISceneText::ParseInteger;
-using vtkDeepGISceneText::Trim;
-using vtkDeepGISceneText::Words;
 
 // The lighting coefficients of every actor made here (VTK's Ambient and
 // Diffuse); the scene polydata carries the diffuse one as field data.
@@ -185,165 +177,6 @@ bool IsRegularFile(const std::string& path)
 {
   return vtkDeepGISceneFileChecks::IsRegularFile(path);
 }
-
-// Reads the logical lines of an OBJ or MTL file: comments ('#' to the end of
-// the line) and surrounding white space removed, backslash continuations
-// joined (a lone "\\" joins nothing). `lineNumber` is the number of the
-// line's first physical line. Lines (joined or not) longer than
-// MaximumLineBytes end the file with TooLong set.
-class LogicalLineReader
-{
-public:
-  explicit LogicalLineReader(std::istream& in)
-    : In(in)
-  {
-  }
-  bool Next(std::string& line, int& lineNumber)
-  {
-    line.clear();
-    std::string physical;
-    bool any = false;
-    const size_t limit = vtkDeepGISceneFileChecks::MaximumLineBytes;
-    while (vtkDeepGISceneFileChecks::ReadLine(this->In, physical, limit, this->TooLong))
-    {
-      ++this->Physical;
-      if (!any)
-      {
-        lineNumber = this->Physical;
-      }
-      any = true;
-      const size_t hash = physical.find('#');
-      if (hash != std::string::npos)
-      {
-        physical.erase(hash);
-      }
-      physical = Trim(physical);
-      const bool continued = !physical.empty() && physical.back() == '\\';
-      if (continued)
-      {
-        physical.pop_back();
-      }
-      line += (line.empty() || physical.empty() ? "" : " ") + physical;
-      if (line.size() > limit)
-      {
-        this->TooLong = true;
-        return false;
-      }
-      if (!continued)
-      {
-        line = Trim(line);
-        return true;
-      }
-    }
-    line = Trim(line);
-    return any && !this->TooLong;
-  }
-  bool TooLong = false;
-
-private:
-  std::istream& In;
-  int Physical = 0;
-};
-
-// The rest of a logical line after its first word ("usemtl red" -> "red").
-std::string Rest(const std::string& line)
-{
-  const size_t end = line.find_first_of(" \t");
-  return end == std::string::npos ? std::string() : Trim(line.substr(end));
-}
-
-// Parses a whole word as a number.
-bool ParseDouble(const std::string& word, double& value)
-{
-  if (word.empty())
-  {
-    return false;
-  }
-  char* end = nullptr;
-  value = std::strtod(word.c_str(), &end);
-  return end == word.c_str() + word.size();
-}
-
-// Resolves a 1-based OBJ index (negative: relative to the `count` elements
-// defined so far, -1 the last one) to a 0-based index. Returns -1 for 0,
-// malformed indices and relative ones before the first element. Positive
-// indices are not checked against `count` here (OBJ allows references to
-// elements defined further down), only against the final count.
-long long ResolveObjIndex(const std::string& word, long long count)
-{
-  long long i = 0;
-  if (!ParseInteger(word, i) || i == 0)
-  {
-    return -1;
-  }
-  if (i > 0)
-  {
-    return i - 1;
-  }
-  return count + i >= 0 ? count + i : -1;
-}
-
-// The diffuse colours (Kd) and emitted radiances (Ke) of the materials of an
-// MTL file. Materials without a usable Kd (Ke) get none.
-bool ReadMaterialColors(const std::string& path, std::map<std::string, std::array<double, 3>>& kd,
-  std::map<std::string, std::array<double, 3>>& ke, std::set<std::string>& materials)
-{
-  std::uint64_t bytes = 0;
-  vtksys::ifstream in(path.c_str());
-  if (!vtkDeepGISceneFileChecks::RegularFileSize(path, bytes) ||
-    bytes > vtkDeepGISceneFileChecks::MaximumTextFileBytes || !in)
-  {
-    return false;
-  }
-  LogicalLineReader reader(in);
-  std::string line, current;
-  int lineNumber = 0;
-  while (reader.Next(line, lineNumber))
-  {
-    const std::vector<std::string> words = Words(line);
-    if (words.empty())
-    {
-      continue;
-    }
-    if (words[0] == "newmtl")
-    {
-      current = Rest(line);
-      materials.insert(current);
-    }
-    else if ((words[0] == "Kd" || words[0] == "Ke") && !current.empty())
-    {
-      // "Kd r g b", or "Kd r" for a grey; not "Kd spectral ..." or "Kd xyz ...".
-      double rgb[3] = { 0.0, 0.0, 0.0 };
-      bool ok = false;
-      if (words.size() == 4)
-      {
-        ok = ParseDouble(words[1], rgb[0]) && ParseDouble(words[2], rgb[1]) &&
-          ParseDouble(words[3], rgb[2]);
-      }
-      else if (words.size() == 2 && ParseDouble(words[1], rgb[0]))
-      {
-        rgb[1] = rgb[2] = rgb[0];
-        ok = true;
-      }
-      if (ok && std::isfinite(rgb[0]) && std::isfinite(rgb[1]) && std::isfinite(rgb[2]))
-      {
-        (words[0] == "Kd" ? kd : ke)[current] = { rgb[0], rgb[1], rgb[2] };
-      }
-    }
-  }
-  return !reader.TooLong;
-}
-
-// The faces of one material of an OBJ file, as 0-based indices into the
-// file's vertices and normals (-1: no normal).
-struct ObjGroup
-{
-  std::string Material;
-  std::vector<size_t> FaceStarts{ 0 }; // face f is corners FaceStarts[f] to FaceStarts[f + 1]
-  std::vector<int> FaceLines;
-  std::vector<long long> Vertices;
-  std::vector<long long> Normals;
-};
 
 // Marks the points with a NaN or infinite coordinate; returns how many.
 vtkIdType MarkNonFinitePoints(vtkPoints* points, std::vector<char>& nonFinite)
@@ -727,354 +560,38 @@ bool vtkDeepGBufferSceneLoader::LoadMeshUnguarded(const char* fileName)
 //------------------------------------------------------------------------------
 bool vtkDeepGBufferSceneLoader::LoadOBJ(const char* fileName)
 {
-  // The OBJ file is parsed here rather than by vtkOBJImporter, whose VTK 9.1
-  // parser resolves relative (negative) vertex indices against a
-  // function-static vertex count that is never reset: from the second OBJ
-  // file a process imports on, "f -4 -3 -2 -1" points past the vertices
-  // (out-of-bounds reads, garbage or empty parts). Neither the importer nor
-  // vtkOBJReader checks indices against the vertex count at all.
+  // The project's own parser, not vtkOBJImporter or vtkOBJReader (see
+  // vtkDeepGISceneOBJ.h). It hands its messages back, so that they are this
+  // loader's like those of every other format.
   const std::string path = fileName;
-  const std::string dir = vtksys::SystemTools::GetFilenamePath(path);
+  vtkDeepGISceneOBJ::Scene obj;
+  const std::string error = vtkDeepGISceneOBJ::Read(path, obj);
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
+    return false;
+  }
+  for (const std::string& warning : obj.Warnings)
+  {
+    vtkWarningMacro(<< warning);
+  }
+
+  // One part per material group that PrepareMesh keeps.
   const std::string base = vtksys::SystemTools::GetFilenameName(path);
-  auto inDir = [&](const std::string& name)
-  { return (dir.empty() || vtksys::SystemTools::FileIsFullPath(name)) ? name : dir + "/" + name; };
-
-  vtksys::ifstream in(path.c_str());
-  if (!in)
-  {
-    vtkErrorMacro("Cannot open OBJ " << path);
-    return false;
-  }
-
-  // Geometry: vertices, normals and each material's faces, in the order the
-  // materials are first used (faces before any usemtl: material "").
-  std::vector<float> vertices; // x, y, z
-  std::vector<float> normals;  // x, y, z
-  std::vector<ObjGroup> groups;
-  std::map<std::string, size_t> groupOfMaterial;
-  size_t current = 0;
-  auto useMaterial = [&](const std::string& material)
-  {
-    auto it = groupOfMaterial.find(material);
-    if (it == groupOfMaterial.end())
-    {
-      it = groupOfMaterial.emplace(material, groups.size()).first;
-      groups.emplace_back();
-      groups.back().Material = material;
-    }
-    current = it->second;
-  };
-  useMaterial("");
-  std::vector<std::string> libraries;
-  long long malformedFaces = 0;
-  int firstMalformedLine = 0;
-  {
-    LogicalLineReader reader(in);
-    std::string line;
-    int lineNumber = 0;
-    std::vector<std::string> parts;
-    while (reader.Next(line, lineNumber))
-    {
-      const std::vector<std::string> words = Words(line);
-      if (words.empty())
-      {
-        continue;
-      }
-      const std::string& command = words[0];
-      if (command == "v" || command == "vn")
-      {
-        // "v x y z [w | r g b]", "vn x y z".
-        double xyz[3];
-        if (words.size() < 4 || !ParseDouble(words[1], xyz[0]) || !ParseDouble(words[2], xyz[1]) ||
-          !ParseDouble(words[3], xyz[2]))
-        {
-          vtkErrorMacro(
-            "Cannot read OBJ " << path << ": malformed '" << command << "' at line " << lineNumber);
-          return false;
-        }
-        std::vector<float>& target = command == "v" ? vertices : normals;
-        target.insert(target.end(),
-          { static_cast<float>(xyz[0]), static_cast<float>(xyz[1]), static_cast<float>(xyz[2]) });
-      }
-      else if (command == "f")
-      {
-        // "f v v v ...", each corner v, v/t, v/t/n or v//n.
-        ObjGroup& group = groups[current];
-        const long long vertexCount = static_cast<long long>(vertices.size() / 3);
-        const long long normalCount = static_cast<long long>(normals.size() / 3);
-        bool ok = words.size() >= 4;
-        for (size_t w = 1; ok && w < words.size(); ++w)
-        {
-          parts.clear();
-          size_t start = 0;
-          for (size_t slash; (slash = words[w].find('/', start)) != std::string::npos;
-               start = slash + 1)
-          {
-            parts.push_back(words[w].substr(start, slash - start));
-          }
-          parts.push_back(words[w].substr(start));
-          const long long v = ResolveObjIndex(parts[0], vertexCount);
-          long long n = -1;
-          if (parts.size() > 3 || v < 0)
-          {
-            ok = false;
-          }
-          else if (parts.size() == 3 && !parts[2].empty())
-          {
-            // An unusable normal index costs the normal, not the face.
-            n = ResolveObjIndex(parts[2], normalCount);
-          }
-          group.Vertices.push_back(v);
-          group.Normals.push_back(n);
-        }
-        if (ok)
-        {
-          group.FaceStarts.push_back(group.Vertices.size());
-          group.FaceLines.push_back(lineNumber);
-        }
-        else
-        {
-          group.Vertices.resize(group.FaceStarts.back());
-          group.Normals.resize(group.FaceStarts.back());
-          firstMalformedLine = malformedFaces++ ? firstMalformedLine : lineNumber;
-        }
-      }
-      else if (command == "usemtl")
-      {
-        useMaterial(Rest(line));
-      }
-      else if (command == "mtllib")
-      {
-        libraries.push_back(Rest(line));
-      }
-      // vt, p, l, g, o, s and the rest play no part in the surfaces.
-    }
-    if (reader.TooLong)
-    {
-      vtkErrorMacro("Cannot read OBJ " << path << ": line " << lineNumber << " is longer than "
-                                       << vtkDeepGISceneFileChecks::MaximumLineBytes << " bytes");
-      return false;
-    }
-  }
-
-  // Faces whose corners index vertices that the file does not define are
-  // skipped (positive indices may point forward, so this waits for the end).
-  const long long vertexCount = static_cast<long long>(vertices.size() / 3);
-  const long long normalCount = static_cast<long long>(normals.size() / 3);
-  long long outOfRangeFaces = 0;
-  int firstOutOfRangeLine = 0;
-  long long faceCount = 0;
-  for (ObjGroup& group : groups)
-  {
-    ObjGroup kept;
-    kept.Material = group.Material;
-    const size_t faces = group.FaceLines.size();
-    for (size_t f = 0; f < faces; ++f)
-    {
-      const size_t b = group.FaceStarts[f], e = group.FaceStarts[f + 1];
-      bool ok = true;
-      for (size_t c = b; c < e; ++c)
-      {
-        ok = ok && group.Vertices[c] < vertexCount;
-      }
-      if (!ok)
-      {
-        firstOutOfRangeLine = outOfRangeFaces++ ? firstOutOfRangeLine : group.FaceLines[f];
-        continue;
-      }
-      for (size_t c = b; c < e; ++c)
-      {
-        kept.Vertices.push_back(group.Vertices[c]);
-        kept.Normals.push_back(group.Normals[c] < normalCount ? group.Normals[c] : -1);
-      }
-      kept.FaceStarts.push_back(kept.Vertices.size());
-      kept.FaceLines.push_back(group.FaceLines[f]);
-    }
-    faceCount += static_cast<long long>(kept.FaceLines.size());
-    group = std::move(kept);
-  }
-  if (malformedFaces || outOfRangeFaces)
-  {
-    std::ostringstream message;
-    message << "OBJ " << path << ": skipped";
-    if (outOfRangeFaces)
-    {
-      message << " " << outOfRangeFaces << " face(s) with vertex indices outside the "
-              << vertexCount << " vertices (first at line " << firstOutOfRangeLine << ")";
-    }
-    if (malformedFaces)
-    {
-      message << (outOfRangeFaces ? " and" : "") << " " << malformedFaces
-              << " malformed face(s) (fewer than 3 corners, index 0, a relative index before "
-                 "the first vertex or not a number; first at line "
-              << firstMalformedLine << ")";
-    }
-    if (faceCount > 0)
-    {
-      vtkWarningMacro(<< message.str());
-    }
-    else
-    {
-      vtkErrorMacro(<< message.str() << ", leaving no faces");
-      return false;
-    }
-  }
-  if (faceCount == 0)
-  {
-    vtkErrorMacro("" << path << " has no polygons (empty mesh, or points/lines only)");
-    return false;
-  }
-
-  // Materials: the OBJ's own mtllib, else NAME.obj.mtl or NAME.mtl next to it.
-  std::string mtl;
-  for (const std::string& library : libraries)
-  {
-    std::vector<std::string> candidates = { library };
-    const std::vector<std::string> names = Words(library); // "mtllib a.mtl b.mtl"
-    if (names.size() > 1)
-    {
-      candidates.insert(candidates.end(), names.begin(), names.end());
-    }
-    for (const std::string& candidate : candidates)
-    {
-      if (mtl.empty() && IsRegularFile(inDir(candidate)))
-      {
-        mtl = inDir(candidate);
-      }
-      else if (vtksys::SystemTools::FileExists(inDir(candidate)) &&
-        !IsRegularFile(inDir(candidate)))
-      {
-        vtkWarningMacro("OBJ " << path << ": mtllib " << candidate
-                               << " is not a regular file (a device or directory?); ignored");
-      }
-    }
-  }
-  if (mtl.empty())
-  {
-    for (const std::string& candidate :
-      { path + ".mtl", inDir(vtksys::SystemTools::GetFilenameWithoutLastExtension(base) + ".mtl") })
-    {
-      if (IsRegularFile(candidate))
-      {
-        mtl = candidate;
-        break;
-      }
-    }
-  }
-  std::map<std::string, std::array<double, 3>> kd, ke;
-  std::set<std::string> materials;
-  if (!mtl.empty() && !ReadMaterialColors(mtl, kd, ke, materials))
-  {
-    vtkWarningMacro("Cannot read the materials " << mtl << " of " << path
-                                                 << " (larger than 64 MiB or a line longer than "
-                                                    "1 MiB); the parts get the default colour");
-    mtl.clear();
-  }
-  if (mtl.empty())
-  {
-    // Geometry only: one part in DefaultColor.
-    for (size_t g = 1; g < groups.size(); ++g)
-    {
-      ObjGroup& all = groups[0];
-      const size_t offset = all.Vertices.size();
-      for (size_t f = 1; f < groups[g].FaceStarts.size(); ++f)
-      {
-        all.FaceStarts.push_back(offset + groups[g].FaceStarts[f]);
-      }
-      all.FaceLines.insert(
-        all.FaceLines.end(), groups[g].FaceLines.begin(), groups[g].FaceLines.end());
-      all.Vertices.insert(all.Vertices.end(), groups[g].Vertices.begin(), groups[g].Vertices.end());
-      all.Normals.insert(all.Normals.end(), groups[g].Normals.begin(), groups[g].Normals.end());
-    }
-    groups.resize(1);
-  }
-
-  // One part per material with faces. Points are the material's own vertices
-  // (vertex and normal pairs where every corner has a normal), never merged:
-  // coincident vertices and faces stay as they are in the file.
   std::vector<Part> parts;
-  std::vector<std::string> unknownMaterials;
-  for (const ObjGroup& group : groups)
+  std::string unknownMaterials;
+  for (const vtkDeepGISceneOBJ::Group& group : obj.Groups)
   {
-    if (group.FaceLines.empty())
-    {
-      continue;
-    }
-    bool withNormals = true;
-    for (long long n : group.Normals)
-    {
-      const float* normal = n >= 0 ? &normals[3 * n] : nullptr;
-      withNormals = withNormals && normal && std::isfinite(normal[0]) && std::isfinite(normal[1]) &&
-        std::isfinite(normal[2]) && (normal[0] != 0.0f || normal[1] != 0.0f || normal[2] != 0.0f);
-      if (!withNormals)
-      {
-        break;
-      }
-    }
-    std::unordered_map<unsigned long long, vtkIdType> pointOf;
-    vtkNew<vtkPoints> points;
-    vtkNew<vtkFloatArray> pointNormals;
-    pointNormals->SetName("Normals");
-    pointNormals->SetNumberOfComponents(3);
-    vtkNew<vtkCellArray> polys;
-    std::vector<vtkIdType> ids;
-    for (size_t f = 0; f + 1 < group.FaceStarts.size(); ++f)
-    {
-      ids.clear();
-      for (size_t c = group.FaceStarts[f]; c < group.FaceStarts[f + 1]; ++c)
-      {
-        const long long v = group.Vertices[c];
-        const long long n = withNormals ? group.Normals[c] : -1;
-        const unsigned long long key =
-          (static_cast<unsigned long long>(v) << 32) ^ static_cast<unsigned long long>(n + 1);
-        auto inserted = pointOf.emplace(key, points->GetNumberOfPoints());
-        if (inserted.second)
-        {
-          points->InsertNextPoint(&vertices[3 * v]);
-          if (withNormals)
-          {
-            double normal[3] = { normals[3 * n], normals[3 * n + 1], normals[3 * n + 2] };
-            vtkMath::Normalize(normal);
-            pointNormals->InsertNextTuple(normal);
-          }
-        }
-        ids.push_back(inserted.first->second);
-      }
-      polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-    }
-    vtkNew<vtkPolyData> input;
-    input->SetPoints(points);
-    input->SetPolys(polys);
-    if (withNormals)
-    {
-      input->GetPointData()->SetNormals(pointNormals);
-    }
-
     Part part;
     part.Name = group.Material.empty() ? base : base + ":" + group.Material;
-    std::copy(this->DefaultColor, this->DefaultColor + 3, part.Color);
-    if (!mtl.empty() && !group.Material.empty())
+    const double* color = group.HasColor ? group.Color : this->DefaultColor;
+    std::copy(color, color + 3, part.Color);
+    std::copy(group.Emission, group.Emission + 3, part.Emission);
+    if (group.Unknown)
     {
-      auto color = kd.find(group.Material);
-      if (color != kd.end())
-      {
-        std::copy(color->second.begin(), color->second.end(), part.Color);
-      }
-      else if (!materials.count(group.Material))
-      {
-        unknownMaterials.push_back(group.Material);
-      }
-      auto emission = ke.find(group.Material);
-      if (emission != ke.end())
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          // Negative radiance is meaningless; such a Ke emits nothing.
-          part.Emission[c] = std::max(0.0, emission->second[c]);
-        }
-      }
+      unknownMaterials += (unknownMaterials.empty() ? "" : ", ") + group.Material;
     }
-    part.PolyData = this->PrepareMesh(input, (path + " " + part.Name).c_str());
+    part.PolyData = this->PrepareMesh(group.PolyData, (path + " " + part.Name).c_str());
     if (part.PolyData)
     {
       parts.push_back(part);
@@ -1086,13 +603,8 @@ bool vtkDeepGBufferSceneLoader::LoadOBJ(const char* fileName)
   }
   if (!unknownMaterials.empty())
   {
-    std::string list;
-    for (const std::string& m : unknownMaterials)
-    {
-      list += (list.empty() ? "" : ", ") + m;
-    }
-    vtkWarningMacro("OBJ " << path << " uses materials missing from " << mtl << " (" << list
-                           << "); they get the default colour");
+    vtkWarningMacro("OBJ " << path << " uses materials missing from " << obj.MaterialFile << " ("
+                           << unknownMaterials << "); they get the default colour");
   }
   for (const Part& part : parts)
   {

@@ -17,10 +17,10 @@
  *   included, must be in the file (a truncated PLY crashes vtkPLYReader); a
  *   binary STL must hold the triangles its header declares. Warnings of
  *   these readers count as errors (they mean lost data);
- * - .obj: read by this class's own parser (VTK 9.1's vtkOBJImporter
- *   resolves relative indices such as "f -4 -3 -2 -1" against a vertex count
- *   left over from the previous OBJ file of the process, and neither it nor
- *   vtkOBJReader checks indices). With an MTL file (the file's `mtllib`,
+ * - .obj: read by the project's own parser (vtkDeepGISceneOBJ.h: VTK 9.1's
+ *   vtkOBJImporter resolves relative indices such as "f -4 -3 -2 -1" against
+ *   a vertex count left over from the previous OBJ file of the process, and
+ *   neither it nor vtkOBJReader checks indices). With an MTL file (the file's `mtllib`,
  *   else NAME.obj.mtl or NAME.mtl next to it): one part per material, in the
  *   order of first `usemtl`, coloured with the material's Kd (DefaultColor
  *   for faces without a material, materials without Kd or missing from the

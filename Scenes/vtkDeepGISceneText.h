@@ -1,6 +1,6 @@
-// vtkDeepGISceneText.h: the text helpers the scene readers share (the OBJ/MTL
-// parser of vtkDeepGBufferSceneLoader and vtkDeepGISceneNrrd). Private to
-// DeepGI::Scenes; not installed.
+// vtkDeepGISceneText.h: the text helpers the scene readers share
+// (vtkDeepGISceneOBJ and vtkDeepGISceneNrrd). Private to DeepGI::Scenes; not
+// installed.
 #ifndef vtkDeepGISceneText_h
 #define vtkDeepGISceneText_h
 
