@@ -439,17 +439,68 @@ void vtkDeepGIReferenceObscurance::FinishPixel(
 }
 
 //------------------------------------------------------------------------------
+// Layer `Layer` of a capture: its per-pixel arrays (owned by the capture) and
+// the matrices that take its pixels back to world space.
+struct vtkDeepGIReferenceObscurance::CaptureLayer
+{
+  int Dimensions[3] = { 0, 0, 0 };
+  vtkIdType Pixels = 0;
+  vtkDataArray* Depth = nullptr;
+  vtkDataArray* Normal = nullptr;
+  vtkDataArray* Valid = nullptr;      // optional
+  vtkNew<vtkMatrix4x4> View;          // world to camera
+  vtkNew<vtkMatrix4x4> CameraToWorld; // inverse view
+  vtkNew<vtkMatrix4x4> NDCToCamera;   // inverse projection
+};
+
+// Per-thread scratch of the Monte Carlo estimate of one pixel: running sums
+// of the sample values and of their squares, then mean and standard error.
+struct vtkDeepGIReferenceObscurance::PixelEstimate
+{
+  explicit PixelEstimate(int components)
+    : Sum(components)
+    , Sum2(components)
+    , Values(components)
+    , Mean(components)
+    , Error(components)
+  {
+  }
+  std::vector<double> Sum, Sum2, Values, Mean, Error;
+};
+
+//------------------------------------------------------------------------------
 bool vtkDeepGIReferenceObscurance::Compute(vtkImageData* capture)
 {
   const auto start = std::chrono::steady_clock::now();
+  this->ResetResults();
+  CaptureLayer layer;
+  if (!this->CheckParameters() || !this->CheckInputs(capture) ||
+    !this->ReadCapture(capture, layer) || !this->BuildScene() || !this->PrepareCompute(capture))
+  {
+    return false;
+  }
+  vtkUnsignedCharArray* valid = this->PrepareOutput(capture, layer.Pixels);
+  const int spp = this->GetNumberOfSamplesPerPixel();
+  this->EstimateRows(layer, spp, valid);
+  this->GatherStatistics(valid, spp);
+  this->ComputeTime =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// An empty output and zero statistics, so that a failed Compute() leaves no
+// stale results behind.
+void vtkDeepGIReferenceObscurance::ResetResults()
+{
   this->Output->Initialize();
   this->MeanStandardError = this->MaximumStandardError = 0.0;
   this->NumberOfValidPixels = this->NumberOfRays = 0;
   this->ComputeTime = 0.0;
-  if (!this->CheckParameters())
-  {
-    return false;
-  }
+}
+
+bool vtkDeepGIReferenceObscurance::CheckInputs(vtkImageData* capture)
+{
   if (!capture)
   {
     vtkErrorMacro("No capture.");
@@ -460,146 +511,200 @@ bool vtkDeepGIReferenceObscurance::Compute(vtkImageData* capture)
     vtkErrorMacro("No scene: call SetScene() first.");
     return false;
   }
-  int dims[3];
-  capture->GetDimensions(dims);
-  const vtkIdType pixels = capture->GetNumberOfPoints();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Finds the arrays of layer `Layer` and the camera matrices; false (after an
+// error) when the capture lacks them.
+bool vtkDeepGIReferenceObscurance::ReadCapture(vtkImageData* capture, CaptureLayer& layer)
+{
+  capture->GetDimensions(layer.Dimensions);
+  layer.Pixels = capture->GetNumberOfPoints();
+  const vtkIdType pixels = layer.Pixels;
   const std::string suffix = "_" + std::to_string(this->Layer);
-  vtkDataArray* depth = capture->GetPointData()->GetArray(("Depth" + suffix).c_str());
-  vtkDataArray* normal = capture->GetPointData()->GetArray(("Normal" + suffix).c_str());
-  vtkDataArray* valid = capture->GetPointData()->GetArray(("Valid" + suffix).c_str());
-  vtkDataArray* view = capture->GetFieldData()->GetArray("ViewMatrix");
-  vtkDataArray* projection = capture->GetFieldData()->GetArray("ProjectionMatrix");
-  if (pixels <= 0 || dims[2] != 1 || !depth || !normal || normal->GetNumberOfComponents() != 3 ||
-    depth->GetNumberOfTuples() != pixels || normal->GetNumberOfTuples() != pixels ||
-    (valid && valid->GetNumberOfTuples() != pixels))
+  vtkPointData* pd = capture->GetPointData();
+  layer.Depth = pd->GetArray(("Depth" + suffix).c_str());
+  layer.Normal = pd->GetArray(("Normal" + suffix).c_str());
+  layer.Valid = pd->GetArray(("Valid" + suffix).c_str());
+  if (pixels <= 0 || layer.Dimensions[2] != 1 || !layer.Depth || !layer.Normal ||
+    layer.Normal->GetNumberOfComponents() != 3 || layer.Depth->GetNumberOfTuples() != pixels ||
+    layer.Normal->GetNumberOfTuples() != pixels ||
+    (layer.Valid && layer.Valid->GetNumberOfTuples() != pixels))
   {
     vtkErrorMacro("The capture has no 2D layer " << this->Layer << " (arrays Depth" << suffix
                                                  << ", Normal" << suffix << ").");
     return false;
   }
+  vtkDataArray* view = capture->GetFieldData()->GetArray("ViewMatrix");
+  vtkDataArray* projection = capture->GetFieldData()->GetArray("ProjectionMatrix");
   if (!view || !projection || view->GetNumberOfValues() < 16 ||
     projection->GetNumberOfValues() < 16)
   {
     vtkErrorMacro("The capture has no ViewMatrix/ProjectionMatrix field data.");
     return false;
   }
-  if (!this->BuildScene() || !this->PrepareCompute(capture))
-  {
-    return false;
-  }
-
   // Camera to world (inverse view) and NDC to camera (inverse projection).
-  vtkNew<vtkMatrix4x4> viewMatrix, projectionMatrix, cameraToWorld, ndcToCamera;
+  vtkNew<vtkMatrix4x4> projectionMatrix;
   for (int k = 0; k < 16; ++k)
   {
-    viewMatrix->SetElement(k / 4, k % 4, view->GetComponent(0, k));
+    layer.View->SetElement(k / 4, k % 4, view->GetComponent(0, k));
     projectionMatrix->SetElement(k / 4, k % 4, projection->GetComponent(0, k));
   }
-  vtkMatrix4x4::Invert(viewMatrix, cameraToWorld);
-  vtkMatrix4x4::Invert(projectionMatrix, ndcToCamera);
+  vtkMatrix4x4::Invert(layer.View, layer.CameraToWorld);
+  vtkMatrix4x4::Invert(projectionMatrix, layer.NDCToCamera);
+  return true;
+}
 
-  this->Output->SetDimensions(dims);
+//------------------------------------------------------------------------------
+// The output on the capture's grid: the subclass's arrays plus "Valid",
+// which is returned.
+vtkUnsignedCharArray* vtkDeepGIReferenceObscurance::PrepareOutput(
+  vtkImageData* capture, vtkIdType pixels)
+{
+  this->Output->SetDimensions(capture->GetDimensions());
   this->Output->SetSpacing(capture->GetSpacing());
   this->Output->SetOrigin(capture->GetOrigin());
   this->AllocateOutput(this->Output, pixels);
-  vtkNew<vtkUnsignedCharArray> validOut;
-  validOut->SetName("Valid");
-  validOut->SetNumberOfTuples(pixels);
-  this->Output->GetPointData()->AddArray(validOut);
+  vtkNew<vtkUnsignedCharArray> valid;
+  valid->SetName("Valid");
+  valid->SetNumberOfTuples(pixels);
+  this->Output->GetPointData()->AddArray(valid);
+  return valid;
+}
 
-  const int width = dims[0];
-  const int height = dims[1];
-  const int spp = this->GetNumberOfSamplesPerPixel();
+//------------------------------------------------------------------------------
+// Every pixel of the layer, rows in parallel. The random numbers of a sample
+// depend only on (Seed, pixel, sample, dimension), so the result does not
+// depend on how vtkSMPTools splits the rows.
+void vtkDeepGIReferenceObscurance::EstimateRows(
+  const CaptureLayer& layer, int spp, vtkUnsignedCharArray* valid)
+{
+  const int width = layer.Dimensions[0];
   const int components = this->GetNumberOfSampleComponents();
   const double tmax = this->GetMaximumRayDistance();
-
-  vtkSMPTools::For(0, height,
+  vtkSMPTools::For(0, layer.Dimensions[1],
     [&](vtkIdType rowBegin, vtkIdType rowEnd)
     {
-      std::vector<double> sum(components), sum2(components), values(components), mean(components),
-        error(components);
+      PixelEstimate estimate(components);
       for (vtkIdType row = rowBegin; row < rowEnd; ++row)
       {
         for (int col = 0; col < width; ++col)
         {
           const vtkIdType pixel = row * width + col;
-          const double distance = depth->GetComponent(pixel, 0);
-          double n[3] = { normal->GetComponent(pixel, 0), normal->GetComponent(pixel, 1),
-            normal->GetComponent(pixel, 2) };
-          const bool isValid = (!valid || valid->GetComponent(pixel, 0) != 0) &&
-            std::isfinite(distance) && distance > 0.0 && std::isfinite(n[0]) &&
-            std::isfinite(n[1]) && std::isfinite(n[2]) && vtkMath::Norm(n) > 0.5;
-          validOut->SetValue(pixel, isValid ? 1 : 0);
+          SurfacePoint x;
+          const bool isValid = this->ReconstructSurface(layer, row, col, x);
+          valid->SetValue(pixel, isValid ? 1 : 0);
           if (!isValid)
           {
             this->FinishPixel(this->Output, pixel, nullptr, nullptr);
             continue;
           }
-          // The pixel's viewing ray in camera space: unproject the NDC points
-          // at the near and far planes, then pick the point with z = -depth.
-          const double ndcX = (col + 0.5) / width * 2.0 - 1.0;
-          const double ndcY = (row + 0.5) / height * 2.0 - 1.0;
-          double a[4] = { ndcX, ndcY, -1.0, 1.0 }, b[4] = { ndcX, ndcY, 1.0, 1.0 };
-          ndcToCamera->MultiplyPoint(a, a);
-          ndcToCamera->MultiplyPoint(b, b);
-          for (int c = 0; c < 3; ++c)
-          {
-            a[c] /= a[3];
-            b[c] /= b[3];
-          }
-          const double s = (-distance - a[2]) / (b[2] - a[2]);
-          double camera[4] = { a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1]), -distance, 1.0 };
-          double world[4];
-          cameraToWorld->MultiplyPoint(camera, world);
-          SurfacePoint x;
-          x.Pixel = pixel;
-          for (int c = 0; c < 3; ++c)
-          {
-            x.Position[c] = world[c] / world[3];
-            // Normals go from camera to world with the transpose of the view
-            // matrix's 3x3 (inverse transpose of camera-to-world).
-            x.Normal[c] = viewMatrix->GetElement(0, c) * n[0] +
-              viewMatrix->GetElement(1, c) * n[1] + viewMatrix->GetElement(2, c) * n[2];
-          }
-          vtkMath::Normalize(x.Normal);
-          const double offset = this->GetRayOffset(x.Position);
-          for (int c = 0; c < 3; ++c)
-          {
-            x.Origin[c] = x.Position[c] + offset * x.Normal[c];
-          }
-          std::fill(sum.begin(), sum.end(), 0.0);
-          std::fill(sum2.begin(), sum2.end(), 0.0);
-          for (int i = 0; i < spp; ++i)
-          {
-            double w[3];
-            CosineDirection(x.Normal, this->Random(pixel, i, 0), this->Random(pixel, i, 1), w);
-            HitRecord hit;
-            this->TraceRay(x.Origin, w, tmax, hit);
-            this->EvaluateSample(x, w, hit, i, values.data());
-            for (int c = 0; c < components; ++c)
-            {
-              sum[c] += values[c];
-              sum2[c] += values[c] * values[c];
-            }
-          }
-          for (int c = 0; c < components; ++c)
-          {
-            mean[c] = sum[c] / spp;
-            const double variance =
-              spp > 1 ? std::max(0.0, (sum2[c] - sum[c] * mean[c]) / (spp - 1)) : 0.0;
-            error[c] = std::sqrt(variance / spp);
-          }
-          this->FinishPixel(this->Output, pixel, mean.data(), error.data());
+          this->EstimatePixel(x, spp, tmax, estimate);
+          this->FinishPixel(this->Output, pixel, estimate.Mean.data(), estimate.Error.data());
         }
       }
     });
+}
 
-  // Statistics, serially (deterministic order).
+//------------------------------------------------------------------------------
+// X, n and the ray origin of pixel (col, row) from the layer's depth and
+// camera-space normal; false for pixels without a usable surface.
+bool vtkDeepGIReferenceObscurance::ReconstructSurface(
+  const CaptureLayer& layer, vtkIdType row, int col, SurfacePoint& x) const
+{
+  const int width = layer.Dimensions[0];
+  const int height = layer.Dimensions[1];
+  const vtkIdType pixel = row * width + col;
+  const double distance = layer.Depth->GetComponent(pixel, 0);
+  double n[3] = { layer.Normal->GetComponent(pixel, 0), layer.Normal->GetComponent(pixel, 1),
+    layer.Normal->GetComponent(pixel, 2) };
+  const bool isValid = (!layer.Valid || layer.Valid->GetComponent(pixel, 0) != 0) &&
+    std::isfinite(distance) && distance > 0.0 && std::isfinite(n[0]) && std::isfinite(n[1]) &&
+    std::isfinite(n[2]) && vtkMath::Norm(n) > 0.5;
+  if (!isValid)
+  {
+    return false;
+  }
+  // The pixel's viewing ray in camera space: unproject the NDC points at the
+  // near and far planes, then pick the point with z = -depth.
+  const double ndcX = (col + 0.5) / width * 2.0 - 1.0;
+  const double ndcY = (row + 0.5) / height * 2.0 - 1.0;
+  double a[4] = { ndcX, ndcY, -1.0, 1.0 }, b[4] = { ndcX, ndcY, 1.0, 1.0 };
+  layer.NDCToCamera->MultiplyPoint(a, a);
+  layer.NDCToCamera->MultiplyPoint(b, b);
+  for (int c = 0; c < 3; ++c)
+  {
+    a[c] /= a[3];
+    b[c] /= b[3];
+  }
+  const double s = (-distance - a[2]) / (b[2] - a[2]);
+  double camera[4] = { a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1]), -distance, 1.0 };
+  double world[4];
+  layer.CameraToWorld->MultiplyPoint(camera, world);
+  x.Pixel = pixel;
+  for (int c = 0; c < 3; ++c)
+  {
+    x.Position[c] = world[c] / world[3];
+    // Normals go from camera to world with the transpose of the view
+    // matrix's 3x3 (inverse transpose of camera-to-world).
+    x.Normal[c] = layer.View->GetElement(0, c) * n[0] + layer.View->GetElement(1, c) * n[1] +
+      layer.View->GetElement(2, c) * n[2];
+  }
+  vtkMath::Normalize(x.Normal);
+  const double offset = this->GetRayOffset(x.Position);
+  for (int c = 0; c < 3; ++c)
+  {
+    x.Origin[c] = x.Position[c] + offset * x.Normal[c];
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Monte Carlo estimate at X of A = (1 / pi) integral O(w) dw (eq. 2 on the
+// first hit, see the header): spp directions with density cos / pi, each
+// traced once and weighted by EvaluateSample; the mean and the standard
+// error (sample standard deviation / sqrt(spp)) go to `estimate`.
+void vtkDeepGIReferenceObscurance::EstimatePixel(
+  const SurfacePoint& x, int spp, double tmax, PixelEstimate& estimate) const
+{
+  const int components = static_cast<int>(estimate.Sum.size());
+  std::fill(estimate.Sum.begin(), estimate.Sum.end(), 0.0);
+  std::fill(estimate.Sum2.begin(), estimate.Sum2.end(), 0.0);
+  for (int i = 0; i < spp; ++i)
+  {
+    double w[3];
+    CosineDirection(x.Normal, this->Random(x.Pixel, i, 0), this->Random(x.Pixel, i, 1), w);
+    HitRecord hit;
+    this->TraceRay(x.Origin, w, tmax, hit);
+    this->EvaluateSample(x, w, hit, i, estimate.Values.data());
+    for (int c = 0; c < components; ++c)
+    {
+      estimate.Sum[c] += estimate.Values[c];
+      estimate.Sum2[c] += estimate.Values[c] * estimate.Values[c];
+    }
+  }
+  for (int c = 0; c < components; ++c)
+  {
+    const double mean = estimate.Sum[c] / spp;
+    const double variance =
+      spp > 1 ? std::max(0.0, (estimate.Sum2[c] - estimate.Sum[c] * mean) / (spp - 1)) : 0.0;
+    estimate.Mean[c] = mean;
+    estimate.Error[c] = std::sqrt(variance / spp);
+  }
+}
+
+//------------------------------------------------------------------------------
+// Noise and ray counts over the valid pixels, serially so that the sums are
+// taken in a deterministic order.
+void vtkDeepGIReferenceObscurance::GatherStatistics(vtkUnsignedCharArray* valid, int spp)
+{
   vtkDataArray* se = this->Output->GetPointData()->GetArray(this->GetStandardErrorArrayName());
+  const vtkIdType pixels = valid->GetNumberOfTuples();
   double total = 0.0;
   for (vtkIdType p = 0; p < pixels; ++p)
   {
-    if (validOut->GetValue(p))
+    if (valid->GetValue(p))
     {
       ++this->NumberOfValidPixels;
       double e = 0.0;
@@ -613,9 +718,6 @@ bool vtkDeepGIReferenceObscurance::Compute(vtkImageData* capture)
   }
   this->MeanStandardError = this->NumberOfValidPixels ? total / this->NumberOfValidPixels : 0.0;
   this->NumberOfRays = this->NumberOfValidPixels * static_cast<vtkIdType>(spp);
-  this->ComputeTime =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return true;
 }
 
 //------------------------------------------------------------------------------

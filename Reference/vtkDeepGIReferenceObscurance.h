@@ -109,6 +109,7 @@
 
 class vtkImageData;
 class vtkPolyData;
+class vtkUnsignedCharArray;
 
 class VTKDEEPGIREFERENCE_EXPORT vtkDeepGIReferenceObscurance : public vtkObject
 {
@@ -335,6 +336,18 @@ private:
   void operator=(const vtkDeepGIReferenceObscurance&) = delete;
 
   bool BuildScene();
+
+  // The stages of Compute().
+  struct CaptureLayer;
+  struct PixelEstimate;
+  void ResetResults();
+  bool CheckInputs(vtkImageData* capture);
+  bool ReadCapture(vtkImageData* capture, CaptureLayer& layer);
+  vtkUnsignedCharArray* PrepareOutput(vtkImageData* capture, vtkIdType pixels);
+  void EstimateRows(const CaptureLayer& layer, int spp, vtkUnsignedCharArray* valid);
+  bool ReconstructSurface(const CaptureLayer& layer, vtkIdType row, int col, SurfacePoint& x) const;
+  void EstimatePixel(const SurfacePoint& x, int spp, double tmax, PixelEstimate& estimate) const;
+  void GatherStatistics(vtkUnsignedCharArray* valid, int spp);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

@@ -245,110 +245,117 @@ EGLDisplay OpenDisplay(
   return dpy;
 }
 
+// The devices of the EGL device platform; an empty list, with the reason in
+// `log`, when that platform is missing or reports none.
+std::vector<EGLDeviceEXT> ListDevices(std::ostringstream& log)
+{
+  const EGLClientExtensions& ext = EGLClientExtensions::Get();
+  if (!ext.Device)
+  {
+    log << "  EGL device platform: EGL_EXT_platform_device / eglQueryDevicesEXT not available\n";
+  }
+  std::vector<EGLDeviceEXT> devices = QueryDevices();
+  if (ext.Device && devices.empty())
+  {
+    log << "  EGL device platform: eglQueryDevicesEXT reports no device\n";
+  }
+  return devices;
+}
+
+// Opens device i; on success `description` names it with its extensions.
+EGLDisplay OpenDevice(const std::vector<EGLDeviceEXT>& devices, int i, std::string& description,
+  std::ostringstream& log)
+{
+  std::ostringstream what;
+  what << "EGL device " << i;
+  std::string devExt = DeviceExtensions(devices[i]);
+  if (!devExt.empty())
+  {
+    what << " (" << devExt << ")";
+  }
+  EGLDisplay dpy = OpenDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], what.str(), log);
+  if (dpy != EGL_NO_DISPLAY)
+  {
+    description = what.str();
+  }
+  return dpy;
+}
+
+// The first device, in enumeration order, that is (software = true) or is
+// not (software = false) a software renderer and opens.
+EGLDisplay OpenFirstDevice(const std::vector<EGLDeviceEXT>& devices, bool software,
+  std::string& description, std::ostringstream& log)
+{
+  for (int i = 0; i < static_cast<int>(devices.size()); ++i)
+  {
+    if (IsSoftwareDevice(devices[i]) == software)
+    {
+      EGLDisplay dpy = OpenDevice(devices, i, description, log);
+      if (dpy != EGL_NO_DISPLAY)
+      {
+        return dpy;
+      }
+    }
+  }
+  return EGL_NO_DISPLAY;
+}
+
+// Mesa's surfaceless platform (no device, no window system).
+EGLDisplay OpenSurfaceless(std::string& description, std::ostringstream& log)
+{
+  if (!EGLClientExtensions::Get().Surfaceless)
+  {
+    log << "  Mesa surfaceless platform: EGL_MESA_platform_surfaceless not available\n";
+    return EGL_NO_DISPLAY;
+  }
+  EGLDisplay dpy = OpenDisplay(
+    EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, "Mesa surfaceless platform", log);
+  if (dpy != EGL_NO_DISPLAY)
+  {
+    description = "Mesa surfaceless platform";
+  }
+  return dpy;
+}
+
 // Choose and initialise a display following the platform policy documented
 // in the header. `description` says what was chosen; `log` collects why the
 // other candidates failed.
 EGLDisplay ChooseDisplay(
   int platform, int deviceIndex, std::string& description, std::ostringstream& log)
 {
-  const EGLClientExtensions& ext = EGLClientExtensions::Get();
   const bool wantDevice = platform == vtkDeepGIEGLRenderWindow::PLATFORM_DEVICE ||
     platform == vtkDeepGIEGLRenderWindow::PLATFORM_AUTO;
   const bool wantSurfaceless = platform == vtkDeepGIEGLRenderWindow::PLATFORM_SURFACELESS ||
     platform == vtkDeepGIEGLRenderWindow::PLATFORM_AUTO;
-
-  std::vector<EGLDeviceEXT> devices;
-  if (wantDevice)
-  {
-    if (!ext.Device)
-    {
-      log << "  EGL device platform: EGL_EXT_platform_device / eglQueryDevicesEXT not available\n";
-    }
-    devices = QueryDevices();
-    if (ext.Device && devices.empty())
-    {
-      log << "  EGL device platform: eglQueryDevicesEXT reports no device\n";
-    }
-  }
-
-  auto tryDevice = [&](int i) -> EGLDisplay
-  {
-    std::ostringstream what;
-    what << "EGL device " << i;
-    std::string devExt = DeviceExtensions(devices[i]);
-    if (!devExt.empty())
-    {
-      what << " (" << devExt << ")";
-    }
-    EGLDisplay dpy = OpenDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], what.str(), log);
-    if (dpy != EGL_NO_DISPLAY)
-    {
-      description = what.str();
-    }
-    return dpy;
-  };
+  const std::vector<EGLDeviceEXT> devices =
+    wantDevice ? ListDevices(log) : std::vector<EGLDeviceEXT>();
 
   // An explicit device index wins for AUTO and DEVICE.
   if (wantDevice && deviceIndex >= 0)
   {
     if (deviceIndex < static_cast<int>(devices.size()))
     {
-      return tryDevice(deviceIndex);
+      return OpenDevice(devices, deviceIndex, description, log);
     }
     log << "  EGL device " << deviceIndex << ": only " << devices.size() << " device(s) found\n";
     return EGL_NO_DISPLAY;
   }
-
+  EGLDisplay dpy = EGL_NO_DISPLAY;
   // Hardware devices first (a GPU server's NVIDIA device, a DRM render node).
   if (wantDevice)
   {
-    for (int i = 0; i < static_cast<int>(devices.size()); ++i)
-    {
-      if (!IsSoftwareDevice(devices[i]))
-      {
-        EGLDisplay dpy = tryDevice(i);
-        if (dpy != EGL_NO_DISPLAY)
-        {
-          return dpy;
-        }
-      }
-    }
+    dpy = OpenFirstDevice(devices, false, description, log);
   }
-
-  if (wantSurfaceless)
+  if (dpy == EGL_NO_DISPLAY && wantSurfaceless)
   {
-    if (ext.Surfaceless)
-    {
-      EGLDisplay dpy = OpenDisplay(
-        EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, "Mesa surfaceless platform", log);
-      if (dpy != EGL_NO_DISPLAY)
-      {
-        description = "Mesa surfaceless platform";
-        return dpy;
-      }
-    }
-    else
-    {
-      log << "  Mesa surfaceless platform: EGL_MESA_platform_surfaceless not available\n";
-    }
+    dpy = OpenSurfaceless(description, log);
   }
-
   // Last resort: software devices (Mesa's llvmpipe device).
-  if (wantDevice)
+  if (dpy == EGL_NO_DISPLAY && wantDevice)
   {
-    for (int i = 0; i < static_cast<int>(devices.size()); ++i)
-    {
-      if (IsSoftwareDevice(devices[i]))
-      {
-        EGLDisplay dpy = tryDevice(i);
-        if (dpy != EGL_NO_DISPLAY)
-        {
-          return dpy;
-        }
-      }
-    }
+    dpy = OpenFirstDevice(devices, true, description, log);
   }
-  return EGL_NO_DISPLAY;
+  return dpy;
 }
 
 // libglvnd allows one window-system API's context to be current per thread:
@@ -461,6 +468,61 @@ EGLContext CreateCoreContext(
     log << " " << v[0] << "." << v[1] << " core: " << EGLErrorString() << ";";
   }
   return EGL_NO_CONTEXT;
+}
+
+// A GL function as GLEW loaded it (nullptr when it did not).
+struct GLEntryPoint
+{
+  const char* Name;
+  void* Pointer;
+};
+
+// The entry points VTK's OpenGL2 backend and this project's passes call
+// through GLEW. GLEW's pointers are only set by glewInit(), so the table is
+// read when called, not at load time.
+std::vector<GLEntryPoint> GLEntryPoints()
+{
+#define DEEPGI_ENTRY(fn)                                                                           \
+  {                                                                                                \
+#fn, reinterpret_cast < void*>(fn)                                                             \
+  }
+  return {
+    DEEPGI_ENTRY(glGetStringi),
+    DEEPGI_ENTRY(glGenFramebuffers),
+    DEEPGI_ENTRY(glBindFramebuffer),
+    DEEPGI_ENTRY(glFramebufferTexture2D),
+    DEEPGI_ENTRY(glFramebufferTexture),
+    DEEPGI_ENTRY(glFramebufferRenderbuffer),
+    DEEPGI_ENTRY(glCheckFramebufferStatus),
+    DEEPGI_ENTRY(glBlitFramebuffer),
+    DEEPGI_ENTRY(glDeleteFramebuffers),
+    DEEPGI_ENTRY(glGenRenderbuffers),
+    DEEPGI_ENTRY(glRenderbufferStorageMultisample),
+    DEEPGI_ENTRY(glDrawBuffers),
+    DEEPGI_ENTRY(glGenVertexArrays),
+    DEEPGI_ENTRY(glBindVertexArray),
+    DEEPGI_ENTRY(glGenBuffers),
+    DEEPGI_ENTRY(glBindBuffer),
+    DEEPGI_ENTRY(glBufferData),
+    DEEPGI_ENTRY(glMapBufferRange),
+    DEEPGI_ENTRY(glVertexAttribPointer),
+    DEEPGI_ENTRY(glEnableVertexAttribArray),
+    DEEPGI_ENTRY(glCreateShader),
+    DEEPGI_ENTRY(glShaderSource),
+    DEEPGI_ENTRY(glCompileShader),
+    DEEPGI_ENTRY(glCreateProgram),
+    DEEPGI_ENTRY(glLinkProgram),
+    DEEPGI_ENTRY(glUseProgram),
+    DEEPGI_ENTRY(glGetUniformLocation),
+    DEEPGI_ENTRY(glUniformMatrix4fv),
+    DEEPGI_ENTRY(glActiveTexture),
+    DEEPGI_ENTRY(glTexImage3D),
+    DEEPGI_ENTRY(glTexImage2DMultisample),
+    DEEPGI_ENTRY(glGenerateMipmap),
+    DEEPGI_ENTRY(glBlendFuncSeparate),
+    DEEPGI_ENTRY(glGenQueries),
+  };
+#undef DEEPGI_ENTRY
 }
 } // namespace
 
@@ -692,134 +754,112 @@ void vtkDeepGIEGLRenderWindow::OpenGLInitContext()
   if (!this->Initialized)
   {
     this->GlewInitValid = false;
-    if (!this->HasContext())
+    if (!this->MakeContextCurrentForInit() || !this->LoadOpenGL() || !this->CheckEntryPoints())
     {
-      vtkErrorMacro("OpenGLInitContext: this window has no EGL context yet");
       return;
     }
-    this->MakeCurrent();
-    if (!this->IsCurrent())
-    {
-      vtkErrorMacro("OpenGLInitContext: the EGL context could not be made current");
-      return;
-    }
-
-    // Debian's libGLEW is the GLX build: glewInit() first loads the core and
-    // extension GL entry points for the current context (through
-    // glXGetProcAddressARB, which libglvnd answers without an X connection
-    // with the same dispatch stubs as eglGetProcAddress), and only then asks
-    // GLX for its own extensions. With an EGL context no GLX display is
-    // current, so that last step returns GLEW_ERROR_NO_GLX_DISPLAY after the
-    // GL part succeeded. That code, and only that code, is expected here; the
-    // checks below verify that the GL part really is usable.
-    const GLenum result = glewInit();
-    if (result == GLEW_ERROR_NO_GLX_DISPLAY)
-    {
-      vtkDebugMacro("glewInit: GLX extensions skipped (EGL context, no GLX display)");
-    }
-    else if (result != GLEW_OK)
-    {
-      vtkErrorMacro("GLEW could not load OpenGL for the EGL context: " << GLEWErrorName(result));
-      return;
-    }
-
-    if (!GLEW_VERSION_3_2)
-    {
-      const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
-      vtkErrorMacro("OpenGL 3.2 or later is required; the EGL context provides "
-        << (version ? version : "no version string"));
-      return;
-    }
-
-    // The entry points VTK's OpenGL2 backend and this project's passes call
-    // through GLEW. Each must be loaded, and EGL must know it too.
-    struct EntryPoint
-    {
-      const char* Name;
-      void* Pointer;
-    };
-#define DEEPGI_ENTRY(fn)                                                                           \
-  {                                                                                                \
-#fn, reinterpret_cast < void*>(fn)                                                             \
-  }
-    const EntryPoint entries[] = {
-      DEEPGI_ENTRY(glGetStringi),
-      DEEPGI_ENTRY(glGenFramebuffers),
-      DEEPGI_ENTRY(glBindFramebuffer),
-      DEEPGI_ENTRY(glFramebufferTexture2D),
-      DEEPGI_ENTRY(glFramebufferTexture),
-      DEEPGI_ENTRY(glFramebufferRenderbuffer),
-      DEEPGI_ENTRY(glCheckFramebufferStatus),
-      DEEPGI_ENTRY(glBlitFramebuffer),
-      DEEPGI_ENTRY(glDeleteFramebuffers),
-      DEEPGI_ENTRY(glGenRenderbuffers),
-      DEEPGI_ENTRY(glRenderbufferStorageMultisample),
-      DEEPGI_ENTRY(glDrawBuffers),
-      DEEPGI_ENTRY(glGenVertexArrays),
-      DEEPGI_ENTRY(glBindVertexArray),
-      DEEPGI_ENTRY(glGenBuffers),
-      DEEPGI_ENTRY(glBindBuffer),
-      DEEPGI_ENTRY(glBufferData),
-      DEEPGI_ENTRY(glMapBufferRange),
-      DEEPGI_ENTRY(glVertexAttribPointer),
-      DEEPGI_ENTRY(glEnableVertexAttribArray),
-      DEEPGI_ENTRY(glCreateShader),
-      DEEPGI_ENTRY(glShaderSource),
-      DEEPGI_ENTRY(glCompileShader),
-      DEEPGI_ENTRY(glCreateProgram),
-      DEEPGI_ENTRY(glLinkProgram),
-      DEEPGI_ENTRY(glUseProgram),
-      DEEPGI_ENTRY(glGetUniformLocation),
-      DEEPGI_ENTRY(glUniformMatrix4fv),
-      DEEPGI_ENTRY(glActiveTexture),
-      DEEPGI_ENTRY(glTexImage3D),
-      DEEPGI_ENTRY(glTexImage2DMultisample),
-      DEEPGI_ENTRY(glGenerateMipmap),
-      DEEPGI_ENTRY(glBlendFuncSeparate),
-      DEEPGI_ENTRY(glGenQueries),
-    };
-#undef DEEPGI_ENTRY
-    std::ostringstream missing;
-    int differing = 0;
-    for (const EntryPoint& e : entries)
-    {
-      void* fromEGL = reinterpret_cast<void*>(eglGetProcAddress(e.Name));
-      if (!e.Pointer || !fromEGL)
-      {
-        missing << " " << e.Name << (e.Pointer ? "" : "[GLEW]") << (fromEGL ? "" : "[EGL]");
-      }
-      else if (e.Pointer != fromEGL)
-      {
-        ++differing;
-      }
-    }
-    if (!missing.str().empty())
-    {
-      vtkErrorMacro("OpenGL entry points did not resolve for the EGL context:" << missing.str());
-      return;
-    }
-    if (differing)
-    {
-      // Not an error: without libglvnd the loaders may hand out different
-      // (equally valid) addresses.
-      vtkDebugMacro(<< differing << " GL entry points differ between GLEW and eglGetProcAddress");
-    }
-
     this->GlewInitValid = true;
     this->Initialized = true;
-
-    // What vtkOpenGLRenderWindow::OpenGLInitContext does after glewInit.
-    GLfloat lineWidthRange[2] = { 1.0f, 1.0f };
-    this->MaximumHardwareLineWidth = 1.0f;
-    glGetFloatv(this->LineSmoothing ? GL_SMOOTH_LINE_WIDTH_RANGE : GL_ALIASED_LINE_WIDTH_RANGE,
-      lineWidthRange);
-    if (glGetError() == GL_NO_ERROR)
-    {
-      this->MaximumHardwareLineWidth = lineWidthRange[1];
-    }
+    this->QueryLineWidthRange();
   }
   // With Initialized set this only stamps the context creation time.
   this->Superclass::OpenGLInitContext();
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGIEGLRenderWindow::MakeContextCurrentForInit()
+{
+  if (!this->HasContext())
+  {
+    vtkErrorMacro("OpenGLInitContext: this window has no EGL context yet");
+    return false;
+  }
+  this->MakeCurrent();
+  if (!this->IsCurrent())
+  {
+    vtkErrorMacro("OpenGLInitContext: the EGL context could not be made current");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// GLEW's entry points for the current EGL context, and OpenGL 3.2 at least.
+bool vtkDeepGIEGLRenderWindow::LoadOpenGL()
+{
+  // Debian's libGLEW is the GLX build: glewInit() first loads the core and
+  // extension GL entry points for the current context (through
+  // glXGetProcAddressARB, which libglvnd answers without an X connection
+  // with the same dispatch stubs as eglGetProcAddress), and only then asks
+  // GLX for its own extensions. With an EGL context no GLX display is
+  // current, so that last step returns GLEW_ERROR_NO_GLX_DISPLAY after the
+  // GL part succeeded. That code, and only that code, is expected here;
+  // CheckEntryPoints() verifies that the GL part really is usable.
+  const GLenum result = glewInit();
+  if (result == GLEW_ERROR_NO_GLX_DISPLAY)
+  {
+    vtkDebugMacro("glewInit: GLX extensions skipped (EGL context, no GLX display)");
+  }
+  else if (result != GLEW_OK)
+  {
+    vtkErrorMacro("GLEW could not load OpenGL for the EGL context: " << GLEWErrorName(result));
+    return false;
+  }
+  if (!GLEW_VERSION_3_2)
+  {
+    const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    vtkErrorMacro("OpenGL 3.2 or later is required; the EGL context provides "
+      << (version ? version : "no version string"));
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Every entry point of GLEntryPoints() must be loaded by GLEW and known to
+// EGL; a missing one is an error, differing addresses are only noted.
+bool vtkDeepGIEGLRenderWindow::CheckEntryPoints()
+{
+  std::ostringstream missing;
+  int differing = 0;
+  for (const GLEntryPoint& e : GLEntryPoints())
+  {
+    void* fromEGL = reinterpret_cast<void*>(eglGetProcAddress(e.Name));
+    if (!e.Pointer || !fromEGL)
+    {
+      missing << " " << e.Name << (e.Pointer ? "" : "[GLEW]") << (fromEGL ? "" : "[EGL]");
+    }
+    else if (e.Pointer != fromEGL)
+    {
+      ++differing;
+    }
+  }
+  if (!missing.str().empty())
+  {
+    vtkErrorMacro("OpenGL entry points did not resolve for the EGL context:" << missing.str());
+    return false;
+  }
+  if (differing)
+  {
+    // Not an error: without libglvnd the loaders may hand out different
+    // (equally valid) addresses.
+    vtkDebugMacro(<< differing << " GL entry points differ between GLEW and eglGetProcAddress");
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// What vtkOpenGLRenderWindow::OpenGLInitContext does after glewInit.
+void vtkDeepGIEGLRenderWindow::QueryLineWidthRange()
+{
+  GLfloat lineWidthRange[2] = { 1.0f, 1.0f };
+  this->MaximumHardwareLineWidth = 1.0f;
+  glGetFloatv(
+    this->LineSmoothing ? GL_SMOOTH_LINE_WIDTH_RANGE : GL_ALIASED_LINE_WIDTH_RANGE, lineWidthRange);
+  if (glGetError() == GL_NO_ERROR)
+  {
+    this->MaximumHardwareLineWidth = lineWidthRange[1];
+  }
 }
 
 //------------------------------------------------------------------------------

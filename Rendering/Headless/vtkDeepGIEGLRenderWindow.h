@@ -184,6 +184,12 @@ private:
   bool OpenDisplay(std::string& description);
   bool InitializeContext(const std::string& description);
   bool FailContext(const std::string& description, const std::string& what);
+
+  // The stages of OpenGLInitContext.
+  bool MakeContextCurrentForInit();
+  bool LoadOpenGL();
+  bool CheckEntryPoints();
+  void QueryLineWidthRange();
 };
 
 #endif
