@@ -1,9 +1,10 @@
-"""The deep GI view's still is the same on 1, 2 and 4 MPI ranks: compares
-the images CheckDeepGIRanks.py wrote (ranks-N.png) with the one-rank image.
-Each must equal it within 1/255 in every channel of every pixel; the
-largest difference and the share of pixels that differ at all are printed.
+"""The deep GI view's still is the same on 1, 2 and 4 MPI ranks and through
+a client connected to pvserver: compares the images CheckDeepGIRanks.py
+wrote (NAME.png) with the one-rank pvbatch image (ranks-1.png). Each must
+equal it within 1/255 in every channel of every pixel; the largest
+difference and the share of pixels that differ at all are printed.
 
-    /usr/bin/python3 CompareRanks.py DIR 2 4
+    /usr/bin/python3 CompareRanks.py DIR ranks-2 ranks-4 client-server-2
 """
 import os
 import sys
@@ -25,18 +26,18 @@ def read(path):
 directory = sys.argv[1]
 one = read(os.path.join(directory, "ranks-1.png")).astype(int)
 failures = 0
-for ranks in sys.argv[2:]:
-    other = read(os.path.join(directory, "ranks-%s.png" % ranks)).astype(int)
+for name in sys.argv[2:]:
+    other = read(os.path.join(directory, name + ".png")).astype(int)
     if other.shape != one.shape:
-        print("FAILED: %s ranks: %s pixels against %s" % (ranks, other.shape, one.shape))
+        print("FAILED: %s: %s pixels against %s" % (name, other.shape, one.shape))
         failures += 1
         continue
     difference = numpy.abs(other - one)
     largest = int(difference.max())
     differing = float((difference.max(axis=2) > 0).mean())
     ok = largest <= 1
-    print("%s: %s ranks against 1: largest difference %d/255, %.3f %% of the pixels differ"
-          % ("ok" if ok else "FAILED", ranks, largest, 100.0 * differing))
+    print("%s: %s against ranks-1: largest difference %d/255, %.3f %% of the pixels differ"
+          % ("ok" if ok else "FAILED", name, largest, 100.0 * differing))
     failures += 0 if ok else 1
 print("%d failure(s)" % failures)
 sys.exit(1 if failures else 0)

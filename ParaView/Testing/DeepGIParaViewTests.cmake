@@ -19,8 +19,10 @@
 #   Documentation/paraview.md runs;
 # - deepgi-paraview-ranks-1, -2, -4: `mpiexec -n N pvbatch` renders a scene
 #   split across the ranks with the view (CheckDeepGIRanks.py), each run
-#   ending within a bounded time; deepgi-paraview-ranks-equal: the three
-#   stills are equal within 1/255 (CompareRanks.py).
+#   ending within a bounded time; deepgi-paraview-client-server-2: the same
+#   scene from a client connected to pvserver on 2 ranks
+#   (RunClientServer.sh); deepgi-paraview-ranks-equal: the four stills are
+#   equal within 1/255 (CompareRanks.py).
 
 set(DEEPGI_PARAVIEW_PYTHON_ROOT "${CMAKE_BINARY_DIR}/python3-paraview")
 set(_plugin_build "${CMAKE_BINARY_DIR}/paraview-plugin")
@@ -102,9 +104,20 @@ foreach (ranks IN ITEMS 1 2 4)
     FAIL_REGULAR_EXPRESSION "ERR\\||WARN\\||Traceback"
     LABELS "DeepGI;ParaView")
 endforeach ()
+# ParaView's client-server mode: a client (Python with ParaView's modules)
+# connected to pvserver on 2 ranks.
+add_test(NAME deepgi-paraview-client-server-2
+  COMMAND "${_testing}/RunClientServer.sh" "${MPIEXEC_EXECUTABLE}" 2 240
+    "${_testing}/CheckDeepGIRanks.py" "${_plugin}" "${CMAKE_CURRENT_BINARY_DIR}/ParaViewRanks" 2)
+set_tests_properties(deepgi-paraview-client-server-2 PROPERTIES
+  FIXTURES_REQUIRED DeepGIParaViewPlugin
+  FIXTURES_SETUP DeepGIParaViewRanks
+  ENVIRONMENT "${_pvbatch_environment}"
+  FAIL_REGULAR_EXPRESSION "ERR\\||WARN\\||Traceback"
+  LABELS "DeepGI;ParaView")
 add_test(NAME deepgi-paraview-ranks-equal
   COMMAND "${DEEPGI_VTK_PYTHON}" "${_testing}/CompareRanks.py"
-    "${CMAKE_CURRENT_BINARY_DIR}/ParaViewRanks" 2 4)
+    "${CMAKE_CURRENT_BINARY_DIR}/ParaViewRanks" ranks-2 ranks-4 client-server-2)
 set_tests_properties(deepgi-paraview-ranks-equal PROPERTIES
   FIXTURES_REQUIRED DeepGIParaViewRanks
   LABELS "DeepGI;ParaView")
