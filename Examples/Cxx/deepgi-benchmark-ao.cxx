@@ -163,13 +163,13 @@ constexpr double BorderFraction = 0.1;
 bool ParseMethod(const std::string& spec, Method& m)
 {
   const char* const presetNames[] = { "low", "medium", "high" };
-  for (int preset = vtkDeepAmbientObscurancePass::PRESET_LOW;
-       preset <= vtkDeepAmbientObscurancePass::PRESET_HIGH; ++preset)
+  for (int preset = vtkDeepAmbientObscurancePass::HIGH_PERFORMANCE;
+       preset <= vtkDeepAmbientObscurancePass::HIGH_QUALITY; ++preset)
   {
     if (spec == presetNames[preset])
     {
       vtkNew<vtkDeepAmbientObscurancePass> settings;
-      settings->SetQualityPreset(preset);
+      settings->SetPreset(preset);
       m = { std::string("ours 2 layers, preset ") + presetNames[preset], "", 1,
         settings->GetNumberOfSamples(), 2, settings->GetBlurRadius(), preset };
       return true;
@@ -680,7 +680,7 @@ int main(int argc, char* argv[])
         ao->SetRadius(r);
         if (m.Preset >= 0)
         {
-          ao->SetQualityPreset(m.Preset);
+          ao->SetPreset(m.Preset);
         }
         else
         {

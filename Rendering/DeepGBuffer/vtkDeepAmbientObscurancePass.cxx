@@ -315,7 +315,7 @@ void vtkDeepAmbientObscurancePass::SetNumberOfSamples(int samples)
 }
 
 //------------------------------------------------------------------------------
-void vtkDeepAmbientObscurancePass::SetQualityPreset(int preset)
+void vtkDeepAmbientObscurancePass::SetPreset(int preset)
 {
   struct Settings
   {
@@ -325,9 +325,9 @@ void vtkDeepAmbientObscurancePass::SetQualityPreset(int preset)
     int MaximumMipLevel;
   };
   static const Settings presets[] = { { 8, 2, 4.0, 5 }, { 16, 4, 8.0, 5 }, { 32, 6, 16.0, 5 } };
-  if (preset < PRESET_LOW || preset > PRESET_HIGH)
+  if (preset < HIGH_PERFORMANCE || preset > HIGH_QUALITY)
   {
-    vtkWarningMacro("Unknown quality preset " << preset << "; the settings are unchanged.");
+    vtkWarningMacro("Unknown preset " << preset << "; the settings are unchanged.");
     return;
   }
   const Settings& p = presets[preset];
@@ -336,6 +336,22 @@ void vtkDeepAmbientObscurancePass::SetQualityPreset(int preset)
   this->MipThreshold = p.MipThreshold;
   this->MaximumMipLevel = p.MaximumMipLevel;
   this->Modified();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkDeepAmbientObscurancePass::GetPresetAsString(int preset)
+{
+  switch (preset)
+  {
+    case HIGH_PERFORMANCE:
+      return "HIGH_PERFORMANCE";
+    case BALANCED:
+      return "BALANCED";
+    case HIGH_QUALITY:
+      return "HIGH_QUALITY";
+    default:
+      return "UNKNOWN";
+  }
 }
 
 using vtkDeepScreenSpace::AllocateTarget;

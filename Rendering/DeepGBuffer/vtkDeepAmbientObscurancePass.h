@@ -365,26 +365,42 @@ public:
   vtkGetMacro(EffectiveComposition, int);
   ///@}
 
-  /// Quality presets, from low cost to high quality.
-  enum QualityPreset
+  /// Presets, from low cost to high quality (the names of
+  /// vtkDeepRadiosityPass's and vtkDeepGIPass's presets, whose
+  /// HIGH_PERFORMANCE, BALANCED and HIGH_QUALITY use these).
+  enum Preset
   {
-    PRESET_LOW = 0,    ///< N 8, BlurRadius 2, MipThreshold 4, MaximumMipLevel 5
-    PRESET_MEDIUM = 1, ///< N 16, BlurRadius 4, MipThreshold 8, MaximumMipLevel 5 (the defaults)
-    PRESET_HIGH = 2    ///< N 32, BlurRadius 6, MipThreshold 16, MaximumMipLevel 5
+    HIGH_PERFORMANCE = 0, ///< N 8, BlurRadius 2, MipThreshold 4, MaximumMipLevel 5
+    BALANCED = 1,         ///< N 16, BlurRadius 4, MipThreshold 8, MaximumMipLevel 5 (the defaults)
+    HIGH_QUALITY = 2,     ///< N 32, BlurRadius 6, MipThreshold 16, MaximumMipLevel 5
+    /// @deprecated the names of an earlier release (removed in the next one)
+    PRESET_LOW = HIGH_PERFORMANCE,
+    PRESET_MEDIUM = BALANCED,
+    PRESET_HIGH = HIGH_QUALITY
   };
 
   ///@{
   /**
    * Sets NumberOfSamples, BlurRadius, MipThreshold and MaximumMipLevel to a
-   * preset's values (see QualityPreset) with one Modified(). Fewer taps, a
+   * preset's values (see Preset) with one Modified(). Fewer taps, a
    * narrower filter and coarser MIP levels (a smaller threshold q) cost
    * less; the other parameters keep their values. An unknown preset is
    * ignored with a warning.
    */
-  void SetQualityPreset(int preset);
-  void SetQualityToLow() { this->SetQualityPreset(PRESET_LOW); }
-  void SetQualityToMedium() { this->SetQualityPreset(PRESET_MEDIUM); }
-  void SetQualityToHigh() { this->SetQualityPreset(PRESET_HIGH); }
+  void SetPreset(int preset);
+  void SetPresetToHighPerformance() { this->SetPreset(HIGH_PERFORMANCE); }
+  void SetPresetToBalanced() { this->SetPreset(BALANCED); }
+  void SetPresetToHighQuality() { this->SetPreset(HIGH_QUALITY); }
+  static const char* GetPresetAsString(int preset);
+  ///@}
+
+  ///@{
+  /// @deprecated The names of an earlier release (removed in the next one):
+  /// SetPreset and SetPresetTo....
+  void SetQualityPreset(int preset) { this->SetPreset(preset); }
+  void SetQualityToLow() { this->SetPreset(HIGH_PERFORMANCE); }
+  void SetQualityToMedium() { this->SetPreset(BALANCED); }
+  void SetQualityToHigh() { this->SetPreset(HIGH_QUALITY); }
   ///@}
 
   /**

@@ -324,17 +324,17 @@ void vtkDeepGIPass::SetPreset(int preset)
     int ReflectionSteps;
     int Refinements;
   };
-  static const Settings presets[] = { { vtkDeepAmbientObscurancePass::PRESET_LOW,
+  static const Settings presets[] = { { vtkDeepAmbientObscurancePass::HIGH_PERFORMANCE,
                                         vtkDeepRadiosityPass::HIGH_PERFORMANCE, 32, 2 },
-    { vtkDeepAmbientObscurancePass::PRESET_MEDIUM, vtkDeepRadiosityPass::BALANCED, 64, 4 },
-    { vtkDeepAmbientObscurancePass::PRESET_HIGH, vtkDeepRadiosityPass::HIGH_QUALITY, 128, 6 } };
+    { vtkDeepAmbientObscurancePass::BALANCED, vtkDeepRadiosityPass::BALANCED, 64, 4 },
+    { vtkDeepAmbientObscurancePass::HIGH_QUALITY, vtkDeepRadiosityPass::HIGH_QUALITY, 128, 6 } };
   if (preset < HIGH_PERFORMANCE || preset > HIGH_QUALITY)
   {
     vtkWarningMacro("Unknown preset " << preset << "; the settings are unchanged.");
     return;
   }
   const Settings& p = presets[preset];
-  this->AmbientObscurancePass->SetQualityPreset(p.AOQuality);
+  this->AmbientObscurancePass->SetPreset(p.AOQuality);
   this->RadiosityPass->SetPreset(p.RadiosityPreset);
   this->ReflectionPass->SetNumberOfSteps(p.ReflectionSteps);
   this->ReflectionPass->SetRefinementSteps(p.Refinements);

@@ -302,7 +302,7 @@ void vtkDeepRadiosityPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseNormalTest: " << (this->UseNormalTest ? "On" : "Off") << "\n";
   os << indent << "Estimator: " << GetEstimatorAsString(this->Estimator) << "\n";
   os << indent << "UseColorBoost: " << (this->UseColorBoost ? "On" : "Off") << "\n";
-  os << indent << "FilterTaps: " << this->FilterTaps << "\n";
+  os << indent << "BlurRadius: " << this->BlurRadius << "\n";
   os << indent << "GuardBandShadedFraction: " << this->GuardBandShadedFraction << "\n";
   os << indent << "BlurPlaneTolerance: " << this->BlurPlaneTolerance << "\n";
   os << indent << "BlurNormalPower: " << this->BlurNormalPower << "\n";
@@ -459,14 +459,14 @@ void vtkDeepRadiosityPass::SetPreset(int preset)
   struct Settings
   {
     int Samples;
-    int FilterTaps;
+    int BlurRadius;
     bool NormalTest;
     int MinimumMipLevel;
     double GuardBandShaded;
     int ResolutionDivisor;
   };
-  static const Settings presets[] = { { 13, 9, false, 3, 0.1, 2 }, { 14, 11, true, 2, 0.5, 1 },
-    { 30, 13, true, 0, 0.8, 1 } };
+  static const Settings presets[] = { { 13, 4, false, 3, 0.1, 2 }, { 14, 5, true, 2, 0.5, 1 },
+    { 30, 6, true, 0, 0.8, 1 } };
   if (preset < HIGH_PERFORMANCE || preset > HIGH_QUALITY)
   {
     vtkWarningMacro("Unknown preset " << preset << "; the settings are unchanged.");
@@ -474,12 +474,18 @@ void vtkDeepRadiosityPass::SetPreset(int preset)
   }
   const Settings& p = presets[preset];
   this->NumberOfSamples = p.Samples;
-  this->FilterTaps = p.FilterTaps;
+  this->BlurRadius = p.BlurRadius;
   this->UseNormalTest = p.NormalTest;
   this->MinimumMipLevel = p.MinimumMipLevel;
   this->GuardBandShadedFraction = p.GuardBandShaded;
   this->ResolutionDivisor = p.ResolutionDivisor;
   this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepRadiosityPass::SetFilterTaps(int taps)
+{
+  this->SetBlurRadius((std::min(std::max(taps, 1), 33) - 1) / 2);
 }
 
 //------------------------------------------------------------------------------
@@ -1079,7 +1085,7 @@ void vtkDeepRadiosityPass::FilterIrradiance(
     program->SetUniformi("deepLayers", frame.UsedLayers);
     const int axis[2] = { pass[2] == 0 ? 1 : 0, pass[2] == 0 ? 0 : 1 };
     program->SetUniform2i("deepAxis", axis);
-    program->SetUniformi("deepBlurRadius", (this->FilterTaps - 1) / 2);
+    program->SetUniformi("deepBlurRadius", this->BlurRadius);
     program->SetUniformf("deepPlaneTolerance", static_cast<float>(this->BlurPlaneTolerance));
     program->SetUniformf("deepNormalPower", static_cast<float>(this->BlurNormalPower));
     in.BlurQuad->Render();

@@ -65,7 +65,7 @@
  * unavailable, and when the renderer was rendered without this pass.
  *
  * Reconstruction: a separable bilateral filter of E and the confidence
- * (FilterTaps taps in each direction, Gaussian sigma = (FilterTaps - 1) / 4,
+ * (BlurRadius taps on each side in each direction, Gaussian sigma = BlurRadius / 2,
  * times the plane and normal weights of vtkDeepAmbientObscurancePass), per
  * layer, before the temporal filter.
  *
@@ -270,18 +270,28 @@ public:
 
   ///@{
   /**
-   * Reconstruction filter taps per direction of the separable bilateral
-   * filter (Table 2: 9, 11, 13), 1 to 33; an even count is rounded down to
-   * the odd count below it. 1 disables the filter. Default 11. Plane
-   * tolerance (fraction of the centre's distance, default 0.02) and normal
-   * weight exponent (default 8) as in vtkDeepAmbientObscurancePass.
+   * Bilateral reconstruction: taps on each side of each separable pass, 0
+   * to 16 (Table 2's 9, 11 and 13 taps are radii 4, 5 and 6); 0 disables
+   * the filter. Default 5. Plane tolerance (fraction of the centre's
+   * distance, default 0.02) and normal weight exponent (default 8) as in
+   * vtkDeepAmbientObscurancePass.
    */
-  vtkSetClampMacro(FilterTaps, int, 1, 33);
-  vtkGetMacro(FilterTaps, int);
+  vtkSetClampMacro(BlurRadius, int, 0, 16);
+  vtkGetMacro(BlurRadius, int);
   vtkDeepGISetClampMacro(BlurPlaneTolerance, double, 1e-6, 1.0);
   vtkGetMacro(BlurPlaneTolerance, double);
   vtkDeepGISetClampMacro(BlurNormalPower, double, 0.0, 128.0);
   vtkGetMacro(BlurNormalPower, double);
+  ///@}
+
+  ///@{
+  /**
+   * @deprecated The filter's taps per direction, 2 BlurRadius + 1 (the name
+   * of an earlier release; removed in the next one). SetFilterTaps(t) sets
+   * BlurRadius (t - 1) / 2 (t clamped to 1..33).
+   */
+  void SetFilterTaps(int taps);
+  int GetFilterTaps() { return 2 * this->BlurRadius + 1; }
   ///@}
 
   ///@{
@@ -417,7 +427,7 @@ public:
 
   ///@{
   /**
-   * Sets NumberOfSamples, FilterTaps, UseNormalTest, MinimumMipLevel and
+   * Sets NumberOfSamples, BlurRadius, UseNormalTest, MinimumMipLevel and
    * GuardBandShadedFraction to Table 2's values, and ResolutionDivisor
    * (see Preset), with one
    * Modified(). An unknown preset is ignored with a warning.
@@ -502,7 +512,7 @@ protected:
   bool UseNormalTest = true;
   int Estimator = SOLID_ANGLE;
   bool UseColorBoost = false;
-  int FilterTaps = 11;
+  int BlurRadius = 5;
   double GuardBandShadedFraction = 0.5;
   double BlurPlaneTolerance = 0.02;
   double BlurNormalPower = 8.0;

@@ -112,13 +112,13 @@ int TestDeepAmbientObscuranceTau(int, char*[])
     int Preset, Samples, Blur;
     double Threshold;
     int Levels;
-  } presets[] = { { vtkDeepAmbientObscurancePass::PRESET_LOW, 8, 2, 4.0, 5 },
-    { vtkDeepAmbientObscurancePass::PRESET_MEDIUM, 16, 4, 8.0, 5 },
-    { vtkDeepAmbientObscurancePass::PRESET_HIGH, 32, 6, 16.0, 5 } };
+  } presets[] = { { vtkDeepAmbientObscurancePass::HIGH_PERFORMANCE, 8, 2, 4.0, 5 },
+    { vtkDeepAmbientObscurancePass::BALANCED, 16, 4, 8.0, 5 },
+    { vtkDeepAmbientObscurancePass::HIGH_QUALITY, 32, 6, 16.0, 5 } };
   for (const auto& p : presets)
   {
     const vtkMTimeType before = pass->GetMTime();
-    pass->SetQualityPreset(p.Preset);
+    pass->SetPreset(p.Preset);
     if (pass->GetNumberOfSamples() != p.Samples || pass->GetBlurRadius() != p.Blur ||
       pass->GetMipThreshold() != p.Threshold || pass->GetMaximumMipLevel() != p.Levels ||
       pass->GetMTime() <= before)
@@ -128,12 +128,21 @@ int TestDeepAmbientObscuranceTau(int, char*[])
     }
   }
   const int warningsBeforeUnknown = warnings;
-  pass->SetQualityPreset(7);
+  pass->SetPreset(7);
   if (warnings != warningsBeforeUnknown + 1 || pass->GetNumberOfSamples() != 32)
   {
     std::printf("an unknown preset must warn and change nothing\n");
     ++failures;
   }
+  // The deprecated names of an earlier release still work.
+  pass->SetQualityToLow();
+  if (pass->GetNumberOfSamples() != 8 ||
+    vtkDeepAmbientObscurancePass::PRESET_HIGH != vtkDeepAmbientObscurancePass::HIGH_QUALITY)
+  {
+    std::printf("the deprecated preset names must still set the presets\n");
+    ++failures;
+  }
+  pass->SetPresetToBalanced();
   std::ostringstream printed;
   pass->Print(printed);
   for (const char* name : { "GBufferPass", "Radius", "AutomaticRadius", "AutomaticRadiusFraction",

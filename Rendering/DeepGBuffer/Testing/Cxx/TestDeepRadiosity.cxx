@@ -655,32 +655,38 @@ void TestPresets()
   vtkNew<vtkDeepRadiosityPass> pass;
   struct Expected
   {
-    int Preset, Samples, Taps;
+    int Preset, Samples, BlurRadius;
     bool Test;
     int Mip, Divisor;
   };
-  const Expected table[] = { { vtkDeepRadiosityPass::HIGH_PERFORMANCE, 13, 9, false, 3, 2 },
-    { vtkDeepRadiosityPass::BALANCED, 14, 11, true, 2, 1 },
-    { vtkDeepRadiosityPass::HIGH_QUALITY, 30, 13, true, 0, 1 } };
-  Check(pass->GetNumberOfSamples() == 14 && pass->GetFilterTaps() == 11 &&
+  const Expected table[] = { { vtkDeepRadiosityPass::HIGH_PERFORMANCE, 13, 4, false, 3, 2 },
+    { vtkDeepRadiosityPass::BALANCED, 14, 5, true, 2, 1 },
+    { vtkDeepRadiosityPass::HIGH_QUALITY, 30, 6, true, 0, 1 } };
+  Check(pass->GetNumberOfSamples() == 14 && pass->GetBlurRadius() == 5 &&
       pass->GetUseNormalTest() && pass->GetMinimumMipLevel() == 2 &&
       pass->GetResolutionDivisor() == 1,
     "defaults are BALANCED");
   for (const Expected& e : table)
   {
     pass->SetPreset(e.Preset);
-    Check(pass->GetNumberOfSamples() == e.Samples && pass->GetFilterTaps() == e.Taps &&
+    Check(pass->GetNumberOfSamples() == e.Samples && pass->GetBlurRadius() == e.BlurRadius &&
         pass->GetUseNormalTest() == e.Test && pass->GetMinimumMipLevel() == e.Mip &&
         pass->GetResolutionDivisor() == e.Divisor,
       std::string("preset ") + vtkDeepRadiosityPass::GetPresetAsString(e.Preset));
   }
+  // The deprecated FilterTaps: taps per direction, 2 BlurRadius + 1.
+  pass->SetFilterTaps(9);
+  Check(pass->GetBlurRadius() == 4 && pass->GetFilterTaps() == 9,
+    "FilterTaps 9 (deprecated) is BlurRadius 4");
+  pass->SetFilterTaps(100);
+  Check(pass->GetBlurRadius() == 16, "FilterTaps is clamped to 33 taps");
   EventCounter warnings(pass, vtkCommand::WarningEvent);
   pass->SetPreset(7);
   Check(warnings.Count == 1 && pass->GetNumberOfSamples() == 30, "unknown preset ignored");
   std::ostringstream os;
   pass->Print(os);
   for (const char* name : { "Radius", "AutomaticRadius", "AutomaticRadiusFraction",
-         "EffectiveRadius", "NumberOfSamples", "UseNormalTest", "UseColorBoost", "FilterTaps",
+         "EffectiveRadius", "NumberOfSamples", "UseNormalTest", "UseColorBoost", "BlurRadius",
          "BlurPlaneTolerance", "BlurNormalPower", "MipThreshold", "MinimumMipLevel",
          "MaximumMipLevel", "ResolutionDivisor", "Damping", "TemporalAlpha",
          "ReprojectionTolerance", "AutomaticReprojectionTolerance", "AutomaticReprojectionFraction",

@@ -171,7 +171,7 @@ void TestParameters()
     { "no filter, MIP 0..0",
       [](vtkDeepRadiosityPass* p)
       {
-        p->SetFilterTaps(1);
+        p->SetBlurRadius(0);
         p->SetMinimumMipLevel(0);
         p->SetMaximumMipLevel(0);
       } },
