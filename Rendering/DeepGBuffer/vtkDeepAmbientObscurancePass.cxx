@@ -341,17 +341,9 @@ void vtkDeepAmbientObscurancePass::SetPreset(int preset)
 //------------------------------------------------------------------------------
 const char* vtkDeepAmbientObscurancePass::GetPresetAsString(int preset)
 {
-  switch (preset)
-  {
-    case HIGH_PERFORMANCE:
-      return "HIGH_PERFORMANCE";
-    case BALANCED:
-      return "BALANCED";
-    case HIGH_QUALITY:
-      return "HIGH_QUALITY";
-    default:
-      return "UNKNOWN";
-  }
+  static_assert(HIGH_PERFORMANCE == 0 && BALANCED == 1 && HIGH_QUALITY == 2,
+    "the presets of the deep passes share their values");
+  return vtkDeepScreenSpace::PresetName(preset);
 }
 
 using vtkDeepScreenSpace::AllocateTarget;

@@ -491,17 +491,9 @@ void vtkDeepRadiosityPass::SetFilterTaps(int taps)
 //------------------------------------------------------------------------------
 const char* vtkDeepRadiosityPass::GetPresetAsString(int preset)
 {
-  switch (preset)
-  {
-    case HIGH_PERFORMANCE:
-      return "HIGH_PERFORMANCE";
-    case BALANCED:
-      return "BALANCED";
-    case HIGH_QUALITY:
-      return "HIGH_QUALITY";
-    default:
-      return "UNKNOWN";
-  }
+  static_assert(HIGH_PERFORMANCE == 0 && BALANCED == 1 && HIGH_QUALITY == 2,
+    "the presets of the deep passes share their values");
+  return vtkDeepScreenSpace::PresetName(preset);
 }
 
 //------------------------------------------------------------------------------

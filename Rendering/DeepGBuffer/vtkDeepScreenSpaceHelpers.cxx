@@ -181,6 +181,13 @@ void AddCameraFieldData(vtkFieldData* fd, const double view[16], const double pr
 }
 
 //------------------------------------------------------------------------------
+const char* PresetName(int preset)
+{
+  static const char* const names[] = { "HIGH_PERFORMANCE", "BALANCED", "HIGH_QUALITY" };
+  return preset >= 0 && preset < 3 ? names[preset] : "UNKNOWN";
+}
+
+//------------------------------------------------------------------------------
 double SceneDiagonal(vtkRenderer* renderer)
 {
   double bounds[6];

@@ -178,6 +178,11 @@ private:
   vtkOpenGLState::ScopedglBlendFuncSeparate BlendFunc;
 };
 
+/// The name of a preset of the deep passes, whose Preset enums share the
+/// values HIGH_PERFORMANCE 0, BALANCED 1 and HIGH_QUALITY 2; "UNKNOWN" for
+/// any other value.
+const char* PresetName(int preset);
+
 /// The scene size every automatic length is a fraction of: the diagonal of
 /// vtkDeepGIKeys::SCENE_BOUNDS when the renderer's information has them (a
 /// renderer that draws part of a distributed scene), else of the bounds of

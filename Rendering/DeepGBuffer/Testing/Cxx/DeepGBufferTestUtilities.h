@@ -321,6 +321,37 @@ struct EventCounter
   }
 };
 
+// Whether two images hold the same point-data arrays with bit-identical
+// values (e.g. two vtkDeepGBufferPass::CaptureLayers images); the first
+// difference is printed.
+inline bool SameArrays(vtkImageData* a, vtkImageData* b)
+{
+  vtkPointData* pa = a->GetPointData();
+  vtkPointData* pb = b->GetPointData();
+  if (pa->GetNumberOfArrays() != pb->GetNumberOfArrays() || pa->GetNumberOfArrays() == 0)
+  {
+    return false;
+  }
+  for (int k = 0; k < pa->GetNumberOfArrays(); ++k)
+  {
+    vtkDataArray* x = pa->GetArray(k);
+    vtkDataArray* y = pb->GetArray(x->GetName());
+    if (!y || x->GetNumberOfValues() != y->GetNumberOfValues())
+    {
+      return false;
+    }
+    for (vtkIdType v = 0; v < x->GetNumberOfValues(); ++v)
+    {
+      if (x->GetVariantValue(v) != y->GetVariantValue(v))
+      {
+        std::printf("  %s differs at value %lld\n", x->GetName(), static_cast<long long>(v));
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 // Largest per-channel difference (0..255) between two RGB images.
 inline double MaximumColorDifference(vtkImageData* a, vtkImageData* b)
 {

@@ -91,34 +91,6 @@ void RenderOnce(vtkRenderWindow* window, vtkRenderer* renderer, vtkDeepGIPass* g
   gi->ReleaseGraphicsResources(window);
 }
 
-bool SameArrays(vtkImageData* a, vtkImageData* b)
-{
-  vtkPointData* pa = a->GetPointData();
-  vtkPointData* pb = b->GetPointData();
-  if (pa->GetNumberOfArrays() != pb->GetNumberOfArrays() || pa->GetNumberOfArrays() == 0)
-  {
-    return false;
-  }
-  for (int i = 0; i < pa->GetNumberOfArrays(); ++i)
-  {
-    vtkDataArray* x = pa->GetArray(i);
-    vtkDataArray* y = pb->GetArray(x->GetName());
-    if (!y || x->GetNumberOfValues() != y->GetNumberOfValues())
-    {
-      return false;
-    }
-    for (vtkIdType v = 0; v < x->GetNumberOfValues(); ++v)
-    {
-      if (x->GetVariantValue(v) != y->GetVariantValue(v))
-      {
-        std::printf("  %s differs at value %lld\n", x->GetName(), static_cast<long long>(v));
-        return false;
-      }
-    }
-  }
-  return true;
-}
-
 void CheckIdentityExchange(vtkRenderWindow* window, vtkRenderer* renderer)
 {
   Frame plain, exchanged;

@@ -174,34 +174,6 @@ FloorStats Classify(vtkImageData* layers, int layer)
   return st;
 }
 
-bool SameArrays(vtkImageData* a, vtkImageData* b)
-{
-  vtkPointData* pa = a->GetPointData();
-  vtkPointData* pb = b->GetPointData();
-  if (pa->GetNumberOfArrays() != pb->GetNumberOfArrays() || pa->GetNumberOfArrays() == 0)
-  {
-    return false;
-  }
-  for (int k = 0; k < pa->GetNumberOfArrays(); ++k)
-  {
-    vtkDataArray* x = pa->GetArray(k);
-    vtkDataArray* y = pb->GetArray(x->GetName());
-    if (!y || x->GetNumberOfValues() != y->GetNumberOfValues())
-    {
-      return false;
-    }
-    for (vtkIdType v = 0; v < x->GetNumberOfValues(); ++v)
-    {
-      if (x->GetVariantValue(v) != y->GetVariantValue(v))
-      {
-        std::printf("  %s differs at value %lld\n", x->GetName(), static_cast<long long>(v));
-        return false;
-      }
-    }
-  }
-  return true;
-}
-
 // Renders `frames` frames of the G-buffer alone (with the spot light or
 // VTK's headlight); `between` runs before the last two frames (to change the
 // shadow pass). Releases the pass's and `shadows`' resources.

@@ -75,30 +75,6 @@ Summary Summarize(vtkDeepReflectionPass* pass, vtkRenderer* renderer, vtkImageDa
   return s;
 }
 
-bool SameArrays(vtkImageData* a, vtkImageData* b)
-{
-  for (const char* name :
-    { "ReflectedRadiance", "HitLayer", "HitDistance", "Reflectivity", "Valid" })
-  {
-    vtkDataArray* x = a->GetPointData()->GetArray(name);
-    vtkDataArray* y = b->GetPointData()->GetArray(name);
-    if (!x || !y || x->GetNumberOfTuples() != y->GetNumberOfTuples())
-    {
-      return false;
-    }
-    for (vtkIdType t = 0; t < x->GetNumberOfTuples(); ++t)
-    {
-      for (int c = 0; c < x->GetNumberOfComponents(); ++c)
-      {
-        if (x->GetComponent(t, c) != y->GetComponent(t, c))
-        {
-          return false;
-        }
-      }
-    }
-  }
-  return true;
-}
 }
 
 int TestDeepReflectionRobustness(int, char*[])
