@@ -15,7 +15,7 @@
 # - deepgi-paraview-gui: ParaView's GUI (Qt, under the suite's X display)
 #   loads the plugin and renders its view in the main window's layout
 #   (CheckDeepGIGui.py);
-# - deepgi-paraview-example: the pvpython example of
+# - deepgi-paraview-example: the Python example of
 #   Documentation/paraview.md runs;
 # - deepgi-paraview-ranks-1, -2, -4: `mpiexec -n N pvbatch` renders a scene
 #   split across the ranks with the view (CheckDeepGIRanks.py), each run
@@ -75,7 +75,7 @@ set_tests_properties(deepgi-paraview-gui PROPERTIES
   LABELS "DeepGI;ParaView")
 
 add_test(NAME deepgi-paraview-example
-  COMMAND "${DEEPGI_PVBATCH}" "${CMAKE_SOURCE_DIR}/ParaView/Examples/deepgi_pvpython.py"
+  COMMAND "${DEEPGI_PVBATCH}" "${CMAKE_SOURCE_DIR}/ParaView/Examples/deepgi_paraview.py"
     "${_plugin}" "${DEEPGI_DATA_DIR}/meshes/bunny.ply" "${CMAKE_CURRENT_BINARY_DIR}")
 set_tests_properties(deepgi-paraview-example PROPERTIES
   FIXTURES_REQUIRED DeepGIParaViewPlugin

@@ -16,7 +16,9 @@
  * - Preset: vtkDeepGIPass::Preset;
  * - AmbientObscurance, Radiosity, Reflections: the effect switches;
  * - ObscuranceRadius, RadiosityRadius: the gather radii as fractions of the
- *   visible props' bounding-box diagonal (the passes' AutomaticRadiusFraction);
+ *   diagonal of the view's geometry bounds (the passes'
+ *   AutomaticRadiusFraction, with vtkDeepGIKeys::SCENE_BOUNDS set to
+ *   ParaView's bounds of the visible data);
  * - ConvergeStills, ConvergeMaximumFrames, ConvergeTolerance: still renders
  *   (screenshots, pvbatch, the GUI after interaction) first run
  *   vtkDeepGIPass::Converge, so the radiosity's bounces settle; interactive

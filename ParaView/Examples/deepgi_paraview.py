@@ -2,12 +2,12 @@
 "Render View (Deep GI)", saved with the GI off and on.
 
     PYTHONPATH=build/python3-paraview/usr/lib/python3/dist-packages \
-      pvbatch ParaView/Examples/deepgi_pvpython.py PLUGIN MESH OUTPUT_DIR
+      pvbatch ParaView/Examples/deepgi_paraview.py PLUGIN MESH OUTPUT_DIR
 
 PLUGIN: the plugin library (build/paraview-plugin/install/lib/
 paraview-5.11/plugins/DeepGI/DeepGI.so after `bash scripts/test.sh`); MESH: a
 mesh ParaView reads (Testing/Data/meshes/bunny.ply). Writes plain.png and
-deep-gi.png into OUTPUT_DIR. pvpython runs it the same way.
+deep-gi.png into OUTPUT_DIR.
 """
 import os
 import sys
