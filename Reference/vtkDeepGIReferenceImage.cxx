@@ -1,4 +1,5 @@
 #include "vtkDeepGIReferenceImage.h"
+#include "vtkDeepGICaptureNames.h"
 
 #include "vtkActor.h"
 #include "vtkAppendPolyData.h"
@@ -139,15 +140,17 @@ bool vtkDeepGIReferenceImage::CheckCapture(vtkImageData* capture)
     return false;
   }
   vtkPointData* pd = capture->GetPointData();
-  for (const char* name : { "Radiance_0", "Ambient_0", "Albedo_0" })
+  for (const std::string& name : { vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Radiance, 0),
+         vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Ambient, 0),
+         vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Albedo, 0) })
   {
-    if (!pd->GetArray(name))
+    if (!pd->GetArray(name.c_str()))
     {
       vtkErrorMacro("The capture has no " << name << " array.");
       return false;
     }
   }
-  if (pd->GetArray("Reflectivity_0"))
+  if (pd->GetArray(vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Reflectivity, 0).c_str()))
   {
     vtkErrorMacro("Mirror reflections are not part of the reference image; "
                   "capture without reflecting props.");
@@ -176,24 +179,26 @@ vtkSmartPointer<vtkFloatArray> NewOutputArray(const char* name, int components, 
 void vtkDeepGIReferenceImage::Compose(vtkImageData* capture)
 {
   vtkPointData* in = capture->GetPointData();
-  vtkDataArray* radiance = in->GetArray("Radiance_0");
-  vtkDataArray* ambient = in->GetArray("Ambient_0");
+  vtkDataArray* radiance =
+    in->GetArray(vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Radiance, 0).c_str());
+  vtkDataArray* ambient =
+    in->GetArray(vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Ambient, 0).c_str());
   vtkPointData* obscurance = this->Obscurance->GetOutput()->GetPointData();
   vtkPointData* irradiance = this->Irradiance->GetOutput()->GetPointData();
-  vtkDataArray* av = obscurance->GetArray("AmbientVisibility");
+  vtkDataArray* av = obscurance->GetArray(vtkDeepGICaptureNames::AmbientVisibility);
   vtkDataArray* avError = obscurance->GetArray("StandardError");
-  vtkDataArray* indirect = irradiance->GetArray("IndirectRadiance");
+  vtkDataArray* indirect = irradiance->GetArray(vtkDeepGICaptureNames::IndirectRadiance);
   vtkDataArray* indirectError = irradiance->GetArray("IndirectRadianceStandardError");
-  vtkDataArray* valid = irradiance->GetArray("Valid");
+  vtkDataArray* valid = irradiance->GetArray(vtkDeepGICaptureNames::Valid);
 
   const vtkIdType pixels = capture->GetNumberOfPoints();
   this->Output->SetDimensions(capture->GetDimensions());
-  auto colour = NewOutputArray("Radiance", 3, pixels);
+  auto colour = NewOutputArray(vtkDeepGICaptureNames::Radiance, 3, pixels);
   auto error = NewOutputArray("RadianceStandardError", 3, pixels);
-  auto visibility = NewOutputArray("AmbientVisibility", 1, pixels);
-  auto indirectOut = NewOutputArray("IndirectRadiance", 3, pixels);
+  auto visibility = NewOutputArray(vtkDeepGICaptureNames::AmbientVisibility, 1, pixels);
+  auto indirectOut = NewOutputArray(vtkDeepGICaptureNames::IndirectRadiance, 3, pixels);
   vtkNew<vtkUnsignedCharArray> validOut;
-  validOut->SetName("Valid");
+  validOut->SetName(vtkDeepGICaptureNames::Valid);
   validOut->SetNumberOfTuples(pixels);
   validOut->Fill(0);
 

@@ -1,4 +1,5 @@
 #include "vtkDeepGIReferenceIrradiance.h"
+#include "vtkDeepGICaptureNames.h"
 
 #include "vtkCamera.h"
 #include "vtkCellData.h"
@@ -420,8 +421,9 @@ bool vtkDeepGIReferenceIrradiance::PrepareCompute(vtkImageData* capture)
 
   // The camera (Compute() validated the matrices): the eye is
   // the inverse view matrix's translation, the view direction its -z axis.
-  vtkDataArray* view = capture->GetFieldData()->GetArray("ViewMatrix");
-  vtkDataArray* projection = capture->GetFieldData()->GetArray("ProjectionMatrix");
+  vtkDataArray* view = capture->GetFieldData()->GetArray(vtkDeepGICaptureNames::ViewMatrix);
+  vtkDataArray* projection =
+    capture->GetFieldData()->GetArray(vtkDeepGICaptureNames::ProjectionMatrix);
   vtkNew<vtkMatrix4x4> viewMatrix, cameraToWorld;
   for (int k = 0; k < 16; ++k)
   {
@@ -444,7 +446,7 @@ bool vtkDeepGIReferenceIrradiance::PrepareCompute(vtkImageData* capture)
   }
 
   // rho_X for the reflected radiance.
-  const std::string name = "Albedo_" + std::to_string(this->Layer);
+  const std::string name = vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Albedo, this->Layer);
   d.CaptureAlbedo = capture->GetPointData()->GetArray(name.c_str());
   if (d.CaptureAlbedo &&
     (d.CaptureAlbedo->GetNumberOfComponents() < 3 ||
@@ -824,7 +826,7 @@ void vtkDeepGIReferenceIrradiance::AllocateOutput(vtkImageData* output, vtkIdTyp
   }
   d.Irradiance = add("IndirectIrradiance");
   d.IrradianceError = add("IndirectIrradianceStandardError");
-  d.Radiance = d.CaptureAlbedo ? add("IndirectRadiance") : nullptr;
+  d.Radiance = d.CaptureAlbedo ? add(vtkDeepGICaptureNames::IndirectRadiance) : nullptr;
   d.RadianceError = d.CaptureAlbedo ? add("IndirectRadianceStandardError") : nullptr;
 }
 

@@ -1,4 +1,5 @@
 #include "vtkDeepGIReferenceObscurance.h"
+#include "vtkDeepGICaptureNames.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -409,7 +410,7 @@ void vtkDeepGIReferenceObscurance::EvaluateSample(
 //------------------------------------------------------------------------------
 void vtkDeepGIReferenceObscurance::AllocateOutput(vtkImageData* output, vtkIdType pixels)
 {
-  const char* names[] = { "AmbientVisibility", "Obscurance", "StandardError" };
+  const char* names[] = { vtkDeepGICaptureNames::AmbientVisibility, "Obscurance", "StandardError" };
   for (const char* name : names)
   {
     vtkNew<vtkFloatArray> array;
@@ -423,7 +424,7 @@ void vtkDeepGIReferenceObscurance::FinishPixel(
   vtkImageData* output, vtkIdType pixel, const double* mean, const double* standardError)
 {
   vtkPointData* pd = output->GetPointData();
-  auto av = vtkFloatArray::SafeDownCast(pd->GetArray("AmbientVisibility"));
+  auto av = vtkFloatArray::SafeDownCast(pd->GetArray(vtkDeepGICaptureNames::AmbientVisibility));
   auto ao = vtkFloatArray::SafeDownCast(pd->GetArray("Obscurance"));
   auto se = vtkFloatArray::SafeDownCast(pd->GetArray("StandardError"));
   if (!mean)
@@ -524,9 +525,9 @@ bool vtkDeepGIReferenceObscurance::ReadCapture(vtkImageData* capture, CaptureLay
   const vtkIdType pixels = layer.Pixels;
   const std::string suffix = "_" + std::to_string(this->Layer);
   vtkPointData* pd = capture->GetPointData();
-  layer.Depth = pd->GetArray(("Depth" + suffix).c_str());
-  layer.Normal = pd->GetArray(("Normal" + suffix).c_str());
-  layer.Valid = pd->GetArray(("Valid" + suffix).c_str());
+  layer.Depth = pd->GetArray((vtkDeepGICaptureNames::Depth + suffix).c_str());
+  layer.Normal = pd->GetArray((vtkDeepGICaptureNames::Normal + suffix).c_str());
+  layer.Valid = pd->GetArray((vtkDeepGICaptureNames::Valid + suffix).c_str());
   if (pixels <= 0 || layer.Dimensions[2] != 1 || !layer.Depth || !layer.Normal ||
     layer.Normal->GetNumberOfComponents() != 3 || layer.Depth->GetNumberOfTuples() != pixels ||
     layer.Normal->GetNumberOfTuples() != pixels ||
@@ -536,8 +537,9 @@ bool vtkDeepGIReferenceObscurance::ReadCapture(vtkImageData* capture, CaptureLay
                                                  << ", Normal" << suffix << ").");
     return false;
   }
-  vtkDataArray* view = capture->GetFieldData()->GetArray("ViewMatrix");
-  vtkDataArray* projection = capture->GetFieldData()->GetArray("ProjectionMatrix");
+  vtkDataArray* view = capture->GetFieldData()->GetArray(vtkDeepGICaptureNames::ViewMatrix);
+  vtkDataArray* projection =
+    capture->GetFieldData()->GetArray(vtkDeepGICaptureNames::ProjectionMatrix);
   if (!view || !projection || view->GetNumberOfValues() < 16 ||
     projection->GetNumberOfValues() < 16)
   {
@@ -567,7 +569,7 @@ vtkUnsignedCharArray* vtkDeepGIReferenceObscurance::PrepareOutput(
   this->Output->SetOrigin(capture->GetOrigin());
   this->AllocateOutput(this->Output, pixels);
   vtkNew<vtkUnsignedCharArray> valid;
-  valid->SetName("Valid");
+  valid->SetName(vtkDeepGICaptureNames::Valid);
   valid->SetNumberOfTuples(pixels);
   this->Output->GetPointData()->AddArray(valid);
   return valid;

@@ -1,4 +1,5 @@
 #include "vtkDeepGIReferenceReflection.h"
+#include "vtkDeepGICaptureNames.h"
 
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -39,8 +40,9 @@ bool vtkDeepGIReferenceReflection::PrepareCompute(vtkImageData* capture)
 {
   // Compute() validated the matrices: the eye is the inverse view matrix's
   // translation, the view direction its -z axis.
-  vtkDataArray* view = capture->GetFieldData()->GetArray("ViewMatrix");
-  vtkDataArray* projection = capture->GetFieldData()->GetArray("ProjectionMatrix");
+  vtkDataArray* view = capture->GetFieldData()->GetArray(vtkDeepGICaptureNames::ViewMatrix);
+  vtkDataArray* projection =
+    capture->GetFieldData()->GetArray(vtkDeepGICaptureNames::ProjectionMatrix);
   vtkNew<vtkMatrix4x4> viewMatrix, cameraToWorld;
   for (int k = 0; k < 16; ++k)
   {
@@ -116,8 +118,8 @@ void vtkDeepGIReferenceReflection::AllocateOutput(vtkImageData* output, vtkIdTyp
   {
     const char* Name;
     int Components;
-  } const arrays[] = { { "HitDistance", 1 }, { "HitPosition", 3 }, { "MirrorDirection", 3 },
-    { "StandardError", 1 } };
+  } const arrays[] = { { vtkDeepGICaptureNames::HitDistance, 1 }, { "HitPosition", 3 },
+    { "MirrorDirection", 3 }, { "StandardError", 1 } };
   for (const auto& a : arrays)
   {
     vtkNew<vtkFloatArray> array;
@@ -135,7 +137,7 @@ void vtkDeepGIReferenceReflection::FinishPixel(
   const double zero[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
   const double* v = mean ? mean : zero;
   vtkUnsignedCharArray::SafeDownCast(pd->GetArray("Hit"))->SetValue(pixel, v[0] > 0.5 ? 1 : 0);
-  pd->GetArray("HitDistance")->SetTuple1(pixel, v[1]);
+  pd->GetArray(vtkDeepGICaptureNames::HitDistance)->SetTuple1(pixel, v[1]);
   pd->GetArray("HitPosition")->SetTuple(pixel, v + 2);
   pd->GetArray("MirrorDirection")->SetTuple(pixel, v + 5);
   pd->GetArray("StandardError")->SetTuple1(pixel, 0.0);

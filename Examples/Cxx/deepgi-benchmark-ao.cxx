@@ -39,6 +39,7 @@
 #include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDeepGBufferSceneLoader.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIReferenceObscurance.h"
 #include "vtkDeepGIRenderWindowFactory.h"
 #include "vtkDeepRadiosityPass.h"
@@ -743,8 +744,10 @@ int main(int argc, char* argv[])
     std::vector<unsigned char> mask(np, 0), layer1(np, 0), border(np, 0);
     const int borderWidth = static_cast<int>(std::lround(BorderFraction * h));
     long nBorder = 0;
-    vtkDataArray* valid0 = capture->GetPointData()->GetArray("Valid_0");
-    vtkDataArray* valid1 = capture->GetPointData()->GetArray("Valid_1");
+    vtkDataArray* valid0 = capture->GetPointData()->GetArray(
+      vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0).c_str());
+    vtkDataArray* valid1 = capture->GetPointData()->GetArray(
+      vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 1).c_str());
     long nValid = 0, nExcluded = 0, nLayer1 = 0;
     for (size_t i = 0; i < np; ++i)
     {
@@ -790,7 +793,8 @@ int main(int argc, char* argv[])
     const double refSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - refStart).count();
     std::vector<float> ref(np, 1.0f);
-    vtkDataArray* refAV = reference->GetOutput()->GetPointData()->GetArray("AmbientVisibility");
+    vtkDataArray* refAV =
+      reference->GetOutput()->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility);
     for (size_t i = 0; i < np; ++i)
     {
       ref[i] = static_cast<float>(refAV->GetComponent(i, 0));
@@ -824,7 +828,8 @@ int main(int argc, char* argv[])
         auto* ao = vtkDeepAmbientObscurancePass::SafeDownCast(passes[k]);
         if (ao->CaptureAmbientVisibility(captured, renderer))
         {
-          vtkDataArray* cav = captured->GetPointData()->GetArray("AmbientVisibility");
+          vtkDataArray* cav =
+            captured->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility);
           double diff = 0;
           for (size_t i = 0; i < np; ++i)
           {

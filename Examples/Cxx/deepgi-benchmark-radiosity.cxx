@@ -49,6 +49,7 @@
 #include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDeepGBufferSceneLoader.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIReferenceIrradiance.h"
 #include "vtkDeepGIRenderWindowFactory.h"
 #include "vtkDeepRadiosityPass.h"
@@ -622,8 +623,10 @@ int main(int argc, char* argv[])
     }
     const int w = options.AccuracyWidth, h = options.AccuracyHeight;
     const size_t np = static_cast<size_t>(w) * h;
-    const std::vector<float> valid0 = Scalar(capture, "Valid_0");
-    const std::vector<float> valid1 = Scalar(capture, "Valid_1");
+    const std::vector<float> valid0 =
+      Scalar(capture, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0).c_str());
+    const std::vector<float> valid1 =
+      Scalar(capture, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 1).c_str());
     std::vector<unsigned char> mask(np, 0), layer1(np, 0), border(np, 0);
     long nValid = 0, nLayer1 = 0;
     const int borderWidth = static_cast<int>(std::lround(BorderFraction * h));
@@ -696,10 +699,14 @@ int main(int argc, char* argv[])
     for (size_t k = 0; k < methods.size(); ++k)
     {
       vtkImageData* c = captures[k];
-      const std::vector<float> e = Luminance(c, "Irradiance_0");
-      const std::vector<float> conf = Scalar(c, "Confidence_0");
-      const std::vector<float> raw = Luminance(c, "RawIrradiance_0");
-      const std::vector<float> rawConf = Scalar(c, "RawConfidence_0");
+      const std::vector<float> e =
+        Luminance(c, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 0).c_str());
+      const std::vector<float> conf =
+        Scalar(c, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Confidence, 0).c_str());
+      const std::vector<float> raw =
+        Luminance(c, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::RawIrradiance, 0).c_str());
+      const std::vector<float> rawConf =
+        Scalar(c, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::RawConfidence, 0).c_str());
       std::vector<float> eN(np), rawN(np), error(np);
       for (size_t i = 0; i < np; ++i)
       {
@@ -763,7 +770,8 @@ int main(int argc, char* argv[])
           vtkNew<vtkImageData> c;
           ok = pass->CaptureIrradiance(c, renderer);
           before.swap(last);
-          last = Luminance(c, "Irradiance_0");
+          last = Luminance(
+            c, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 0).c_str());
           if (f > 1)
           {
             double d2 = 0, sum = 0;

@@ -32,6 +32,7 @@
 #include "vtkDataArray.h"
 #include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferPass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIReferenceReflection.h"
 #include "vtkDeepGIRenderWindowFactory.h"
 #include "vtkDeepRadiosityPass.h"
@@ -312,12 +313,12 @@ int main(int argc, char* argv[])
       r.FrameMs = Median(ms);
       vtkPointData* ss = reflections->GetPointData();
       vtkPointData* truth = reference->GetOutput()->GetPointData();
-      vtkDataArray* traced = ss->GetArray("Valid");
-      vtkDataArray* hitLayer = ss->GetArray("HitLayer");
-      vtkDataArray* hitDistance = ss->GetArray("HitDistance");
-      vtkDataArray* refValid = truth->GetArray("Valid");
+      vtkDataArray* traced = ss->GetArray(vtkDeepGICaptureNames::Valid);
+      vtkDataArray* hitLayer = ss->GetArray(vtkDeepGICaptureNames::HitLayer);
+      vtkDataArray* hitDistance = ss->GetArray(vtkDeepGICaptureNames::HitDistance);
+      vtkDataArray* refValid = truth->GetArray(vtkDeepGICaptureNames::Valid);
       vtkDataArray* refHit = truth->GetArray("Hit");
-      vtkDataArray* refDistance = truth->GetArray("HitDistance");
+      vtkDataArray* refDistance = truth->GetArray(vtkDeepGICaptureNames::HitDistance);
       for (vtkIdType p = 0; p < traced->GetNumberOfTuples(); ++p)
       {
         if (!(traced->GetComponent(p, 0) > 0) || !(refValid->GetComponent(p, 0) > 0))

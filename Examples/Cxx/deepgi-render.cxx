@@ -13,6 +13,7 @@
 #include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDeepGBufferSceneLoader.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIPass.h"
 #include "vtkDeepGIRenderWindowFactory.h"
 #include "vtkDeepRadiosityPass.h"
@@ -618,12 +619,16 @@ vtkSmartPointer<vtkImageData> CompareFigure(
   if ((ran & vtkDeepGIPass::AMBIENT_OBSCURANCE) &&
     pass->GetAmbientObscurancePass()->CaptureAmbientVisibility(capture, renderer))
   {
-    visibility = Fig::Panel(capture, "AmbientVisibility", "Valid", Fig::Mapping::Grey);
+    visibility = Fig::Panel(capture, vtkDeepGICaptureNames::AmbientVisibility,
+      vtkDeepGICaptureNames::Valid, Fig::Mapping::Grey);
   }
   if ((ran & vtkDeepGIPass::RADIOSITY) &&
     pass->GetRadiosityPass()->CaptureIrradiance(capture, renderer))
   {
-    indirect = Fig::Panel(capture, "IndirectRadiance_0", "Valid_0", Fig::Mapping::Exposure, &scale);
+    indirect = Fig::Panel(capture,
+      vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0).c_str(),
+      vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0).c_str(), Fig::Mapping::Exposure,
+      &scale);
   }
   auto plainPanel = vtkSmartPointer<vtkImageData>::New();
   plainPanel->DeepCopy(plain);
@@ -662,16 +667,17 @@ vtkSmartPointer<vtkImageData> GBufferSheet(vtkDeepGBufferPass* pass, vtkRenderer
     const char* Array;
     const char* Label;
     Fig::Mapping Mapping;
-  } quantities[] = { { "Radiance_", "radiance", Fig::Mapping::Colour },
-    { "Depth_", "depth", Fig::Mapping::Depth }, { "Normal_", "normal", Fig::Mapping::Normal },
-    { "Albedo_", "albedo", Fig::Mapping::Colour } };
+  } quantities[] = { { vtkDeepGICaptureNames::Radiance, "radiance", Fig::Mapping::Colour },
+    { vtkDeepGICaptureNames::Depth, "depth", Fig::Mapping::Depth },
+    { vtkDeepGICaptureNames::Normal, "normal", Fig::Mapping::Normal },
+    { vtkDeepGICaptureNames::Albedo, "albedo", Fig::Mapping::Colour } };
   std::vector<vtkSmartPointer<vtkImageData>> panels;
   for (int j = 0; j < pass->GetEffectiveNumberOfLayers(); ++j)
   {
-    const std::string valid = "Valid_" + std::to_string(j);
+    const std::string valid = vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, j);
     for (const auto& q : quantities)
     {
-      const std::string name = q.Array + std::to_string(j);
+      const std::string name = vtkDeepGICaptureNames::Layer(q.Array, j);
       auto panel = Fig::Panel(layers, name.c_str(), valid.c_str(), q.Mapping);
       if (!panel)
       {

@@ -4,6 +4,7 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkDeepGBufferPass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -264,7 +265,7 @@ const char* vtkDeepAmbientObscurancePass::GetCompositionAsString(int composition
 //------------------------------------------------------------------------------
 void vtkDeepAmbientObscurancePass::SetRadius(double radius)
 {
-  this->SetManualLength("Radius", radius, this->Radius, this->AutomaticRadius);
+  vtkDeepSetManualLengthMacro(Radius, radius, false, "");
 }
 
 //------------------------------------------------------------------------------
@@ -854,13 +855,13 @@ bool vtkDeepAmbientObscurancePass::CaptureDistancePyramid(
   for (int j = 0; j < std::min(layers, static_cast<int>(depth)); ++j)
   {
     vtkNew<vtkFloatArray> array;
-    array->SetName(("Distance_" + std::to_string(j)).c_str());
+    array->SetName((vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Distance, j)).c_str());
     array->SetNumberOfTuples(pixels);
     std::copy(values.begin() + j * pixels, values.begin() + (j + 1) * pixels, array->GetPointer(0));
     output->GetPointData()->AddArray(array);
   }
   vtkNew<vtkIntArray> count;
-  count->SetName("NumberOfMipLevels");
+  count->SetName(vtkDeepGICaptureNames::NumberOfMipLevels);
   count->InsertNextValue(levels);
   output->GetFieldData()->AddArray(count);
   vtkOpenGLCheckErrorMacro("failed after capturing the distance pyramid");
@@ -948,11 +949,11 @@ bool vtkDeepAmbientObscurancePass::CaptureAmbientVisibility(
   output->SetOrigin(0.0, 0.0, 0.0);
   vtkNew<vtkFloatArray> av, rawAV;
   vtkNew<vtkUnsignedCharArray> valid;
-  av->SetName("AmbientVisibility");
+  av->SetName(vtkDeepGICaptureNames::AmbientVisibility);
   av->SetNumberOfTuples(pixels);
-  rawAV->SetName("RawAmbientVisibility");
+  rawAV->SetName(vtkDeepGICaptureNames::RawAmbientVisibility);
   rawAV->SetNumberOfTuples(pixels);
-  valid->SetName("Valid");
+  valid->SetName(vtkDeepGICaptureNames::Valid);
   valid->SetNumberOfTuples(pixels);
   for (size_t p = 0; p < pixels; ++p)
   {
@@ -966,10 +967,10 @@ bool vtkDeepAmbientObscurancePass::CaptureAmbientVisibility(
   output->GetPointData()->AddArray(valid);
   vtkDeepScreenSpace::CropGuardBand(output, state->GuardBand);
   vtkNew<vtkDoubleArray> radius;
-  radius->SetName("Radius");
+  radius->SetName(vtkDeepGICaptureNames::Radius);
   radius->InsertNextValue(state->Radius);
   vtkNew<vtkIntArray> samples;
-  samples->SetName("NumberOfSamples");
+  samples->SetName(vtkDeepGICaptureNames::NumberOfSamples);
   samples->InsertNextValue(state->NumberOfSamples);
   output->GetFieldData()->AddArray(radius);
   output->GetFieldData()->AddArray(samples);

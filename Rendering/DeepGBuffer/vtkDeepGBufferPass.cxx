@@ -1,5 +1,6 @@
 #include "vtkDeepGBufferPass.h"
 
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIKeys.h"
 
 #include "vtkActor.h"
@@ -2168,15 +2169,16 @@ vtkSmartPointer<vtkFloatArray> NewLayerArray(
 // The point-data arrays of layer j (CaptureLayers); 0 where it is empty.
 void AddLayerArrays(vtkPointData* pd, const LayerDownload& d, int j, size_t pixels)
 {
-  auto radiance = NewLayerArray("Radiance", j, 4, pixels);
-  auto albedo = NewLayerArray("Albedo", j, 3, pixels);
-  auto normal = NewLayerArray("Normal", j, 3, pixels);
-  auto ambient = NewLayerArray("Ambient", j, 3, pixels);
-  auto depth = NewLayerArray("Depth", j, 1, pixels);
-  auto reflectivity =
-    d.Reflectivity.empty() ? nullptr : NewLayerArray("Reflectivity", j, 3, pixels);
+  auto radiance = NewLayerArray(vtkDeepGICaptureNames::Radiance, j, 4, pixels);
+  auto albedo = NewLayerArray(vtkDeepGICaptureNames::Albedo, j, 3, pixels);
+  auto normal = NewLayerArray(vtkDeepGICaptureNames::Normal, j, 3, pixels);
+  auto ambient = NewLayerArray(vtkDeepGICaptureNames::Ambient, j, 3, pixels);
+  auto depth = NewLayerArray(vtkDeepGICaptureNames::Depth, j, 1, pixels);
+  auto reflectivity = d.Reflectivity.empty()
+    ? nullptr
+    : NewLayerArray(vtkDeepGICaptureNames::Reflectivity, j, 3, pixels);
   vtkNew<vtkUnsignedCharArray> valid;
-  valid->SetName(("Valid_" + std::to_string(j)).c_str());
+  valid->SetName((vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, j)).c_str());
   valid->SetNumberOfTuples(static_cast<vtkIdType>(pixels));
   for (size_t p = 0; p < pixels; ++p)
   {
@@ -2221,13 +2223,13 @@ void AddLayerArrays(vtkPointData* pd, const LayerDownload& d, int j, size_t pixe
 void AddFrameFieldData(vtkImageData* output, const vtkDeepGBufferRendererState& state)
 {
   vtkNew<vtkDoubleArray> separation;
-  separation->SetName("MinimumSeparation");
+  separation->SetName(vtkDeepGICaptureNames::MinimumSeparation);
   separation->InsertNextValue(state.MinimumSeparation);
   vtkNew<vtkIntArray> layerCount;
-  layerCount->SetName("NumberOfLayers");
+  layerCount->SetName(vtkDeepGICaptureNames::NumberOfLayers);
   layerCount->InsertNextValue(state.RenderedLayers);
   vtkNew<vtkStringArray> oracleName;
-  oracleName->SetName("Oracle");
+  oracleName->SetName(vtkDeepGICaptureNames::Oracle);
   oracleName->InsertNextValue(vtkDeepGBufferPass::GetOracleAsString(state.Oracle));
   output->GetFieldData()->AddArray(separation);
   output->GetFieldData()->AddArray(layerCount);

@@ -1,4 +1,5 @@
 #include "vtkDeepRadiosityPass.h"
+#include "vtkDeepGICaptureNames.h"
 
 #include "vtkDeepGBufferPass.h"
 #include "vtkDoubleArray.h"
@@ -333,8 +334,7 @@ void vtkDeepRadiosityPass::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 void vtkDeepRadiosityPass::SetRadius(double radius)
 {
-  this->SetManualLength(
-    "Radius", radius, this->Radius, this->AutomaticRadius, false, " (no indirect light)");
+  vtkDeepSetManualLengthMacro(Radius, radius, false, " (no indirect light)");
 }
 
 //------------------------------------------------------------------------------
@@ -418,8 +418,7 @@ void vtkDeepRadiosityPass::SetTemporalAlpha(double alpha)
 //------------------------------------------------------------------------------
 void vtkDeepRadiosityPass::SetReprojectionTolerance(double tolerance)
 {
-  this->SetManualLength("ReprojectionTolerance", tolerance, this->ReprojectionTolerance,
-    this->AutomaticReprojectionTolerance);
+  vtkDeepSetManualLengthMacro(ReprojectionTolerance, tolerance, false, "");
 }
 
 //------------------------------------------------------------------------------
@@ -1278,13 +1277,13 @@ void AddIrradianceFieldData(vtkFieldData* fd, const vtkDeepRadiosityRendererStat
     }
     fd->AddArray(array);
   };
-  addDoubles("Radius", { state.Radius });
-  addDoubles("ReprojectionTolerance", { state.Tolerance });
-  addDoubles(
-    "EnvironmentIrradiance", { state.Environment[0], state.Environment[1], state.Environment[2] });
-  for (auto value : { std::make_pair("NumberOfSamples", state.NumberOfSamples),
-         std::make_pair("NumberOfLayers", state.LayerCount),
-         std::make_pair("Frames", static_cast<int>(state.FrameIndex)) })
+  addDoubles(vtkDeepGICaptureNames::Radius, { state.Radius });
+  addDoubles(vtkDeepGICaptureNames::ReprojectionTolerance, { state.Tolerance });
+  addDoubles(vtkDeepGICaptureNames::EnvironmentIrradiance,
+    { state.Environment[0], state.Environment[1], state.Environment[2] });
+  for (auto value : { std::make_pair(vtkDeepGICaptureNames::NumberOfSamples, state.NumberOfSamples),
+         std::make_pair(vtkDeepGICaptureNames::NumberOfLayers, state.LayerCount),
+         std::make_pair(vtkDeepGICaptureNames::Frames, static_cast<int>(state.FrameIndex)) })
   {
     vtkNew<vtkIntArray> array;
     array->SetName(value.first);
@@ -1311,14 +1310,15 @@ void AddIrradianceArrays(vtkImageData* output, vtkDeepRadiosityRendererState& st
   const std::vector<float> raw = DownloadRGBA(state.Targets[RAW][j], gridTexels);
   vtkPointData* pd = output->GetPointData();
   const std::string suffix = "_" + std::to_string(j);
-  vtkFloatArray* e = AddFloatArray(pd, "Irradiance" + suffix, 3, pixels);
-  vtkFloatArray* l = AddFloatArray(pd, "IndirectRadiance" + suffix, 3, pixels);
-  vtkFloatArray* c = AddFloatArray(pd, "Confidence" + suffix, 1, pixels);
-  vtkFloatArray* fe = AddFloatArray(pd, "FilteredIrradiance" + suffix, 3, pixels);
-  vtkFloatArray* re = AddFloatArray(pd, "RawIrradiance" + suffix, 3, pixels);
-  vtkFloatArray* rc = AddFloatArray(pd, "RawConfidence" + suffix, 1, pixels);
+  vtkFloatArray* e = AddFloatArray(pd, vtkDeepGICaptureNames::Irradiance + suffix, 3, pixels);
+  vtkFloatArray* l = AddFloatArray(pd, vtkDeepGICaptureNames::IndirectRadiance + suffix, 3, pixels);
+  vtkFloatArray* c = AddFloatArray(pd, vtkDeepGICaptureNames::Confidence + suffix, 1, pixels);
+  vtkFloatArray* fe =
+    AddFloatArray(pd, vtkDeepGICaptureNames::FilteredIrradiance + suffix, 3, pixels);
+  vtkFloatArray* re = AddFloatArray(pd, vtkDeepGICaptureNames::RawIrradiance + suffix, 3, pixels);
+  vtkFloatArray* rc = AddFloatArray(pd, vtkDeepGICaptureNames::RawConfidence + suffix, 1, pixels);
   vtkNew<vtkUnsignedCharArray> valid;
-  valid->SetName(("Valid" + suffix).c_str());
+  valid->SetName((vtkDeepGICaptureNames::Valid + suffix).c_str());
   valid->SetNumberOfTuples(pixels);
   pd->AddArray(valid);
   for (size_t p = 0; p < pixels; ++p)

@@ -1,4 +1,5 @@
 #include "vtkDeepReflectionPass.h"
+#include "vtkDeepGICaptureNames.h"
 
 #include "vtkActor.h"
 #include "vtkAssemblyNode.h"
@@ -241,13 +242,13 @@ void vtkDeepReflectionPass::PrintSelf(ostream& os, vtkIndent indent)
 void vtkDeepReflectionPass::SetMaximumDistance(double distance)
 {
   // +inf is allowed: the ray is still cut where it leaves the view frustum.
-  this->SetManualLength("MaximumDistance", distance, this->MaximumDistance,
-    this->AutomaticMaximumDistance, true, " (reflections show the environment only)");
+  vtkDeepSetManualLengthMacro(
+    MaximumDistance, distance, true, " (reflections show the environment only)");
 }
 
 void vtkDeepReflectionPass::SetThickness(double thickness)
 {
-  this->SetManualLength("Thickness", thickness, this->Thickness, this->AutomaticThickness);
+  vtkDeepSetManualLengthMacro(Thickness, thickness, false, "");
 }
 
 void vtkDeepReflectionPass::SetNumberOfSteps(int steps)
@@ -778,17 +779,17 @@ void AddReflectionArrays(vtkPointData* pd, const ReflectionDownload& d, size_t p
 {
   vtkNew<vtkFloatArray> radiance, layer, distance, reflectance;
   vtkNew<vtkUnsignedCharArray> valid;
-  radiance->SetName("ReflectedRadiance");
+  radiance->SetName(vtkDeepGICaptureNames::ReflectedRadiance);
   radiance->SetNumberOfComponents(3);
   radiance->SetNumberOfTuples(pixels);
-  layer->SetName("HitLayer");
+  layer->SetName(vtkDeepGICaptureNames::HitLayer);
   layer->SetNumberOfTuples(pixels);
-  distance->SetName("HitDistance");
+  distance->SetName(vtkDeepGICaptureNames::HitDistance);
   distance->SetNumberOfTuples(pixels);
-  reflectance->SetName("Reflectivity");
+  reflectance->SetName(vtkDeepGICaptureNames::Reflectivity);
   reflectance->SetNumberOfComponents(3);
   reflectance->SetNumberOfTuples(pixels);
-  valid->SetName("Valid");
+  valid->SetName(vtkDeepGICaptureNames::Valid);
   valid->SetNumberOfTuples(pixels);
   for (size_t p = 0; p < pixels; ++p)
   {
@@ -811,8 +812,8 @@ void AddReflectionArrays(vtkPointData* pd, const ReflectionDownload& d, size_t p
 
 void AddReflectionFieldData(vtkFieldData* fd, const vtkDeepReflectionRendererState& state)
 {
-  for (auto value : { std::make_pair("MaximumDistance", state.MaximumDistance),
-         std::make_pair("Thickness", state.Thickness) })
+  for (auto value : { std::make_pair(vtkDeepGICaptureNames::MaximumDistance, state.MaximumDistance),
+         std::make_pair(vtkDeepGICaptureNames::Thickness, state.Thickness) })
   {
     vtkNew<vtkDoubleArray> array;
     array->SetName(value.first);
@@ -820,7 +821,7 @@ void AddReflectionFieldData(vtkFieldData* fd, const vtkDeepReflectionRendererSta
     fd->AddArray(array);
   }
   vtkNew<vtkIntArray> traced;
-  traced->SetName("Traced");
+  traced->SetName(vtkDeepGICaptureNames::Traced);
   traced->InsertNextValue(state.Traced ? 1 : 0);
   fd->AddArray(traced);
   vtkDeepScreenSpace::AddCameraFieldData(fd, state.View, state.FrameProjection);

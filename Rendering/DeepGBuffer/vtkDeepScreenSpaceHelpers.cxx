@@ -1,4 +1,5 @@
 #include "vtkDeepScreenSpaceHelpers.h"
+#include "vtkDeepGICaptureNames.h"
 
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
@@ -169,8 +170,8 @@ ScopedCompositeState::ScopedCompositeState(
 //------------------------------------------------------------------------------
 void AddCameraFieldData(vtkFieldData* fd, const double view[16], const double projection[16])
 {
-  for (auto matrix :
-    { std::make_pair("ViewMatrix", view), std::make_pair("ProjectionMatrix", projection) })
+  for (auto matrix : { std::make_pair(vtkDeepGICaptureNames::ViewMatrix, view),
+         std::make_pair(vtkDeepGICaptureNames::ProjectionMatrix, projection) })
   {
     vtkNew<vtkDoubleArray> values;
     values->SetName(matrix.first);

@@ -69,6 +69,15 @@ protected:
   void SetManualLength(const char* name, double length, double& value, bool& automatic,
     bool allowInfinity = false, const char* atZero = "");
 
+/**
+ * this->SetManualLength for property `property` of a subclass: the warnings
+ * name the property as it is spelled in C++ (#property), its value is
+ * this->property and its automatic mode this->Automatic<property>.
+ */
+#define vtkDeepSetManualLengthMacro(property, length, allowInfinity, atZero)                       \
+  this->SetManualLength(                                                                           \
+    #property, length, this->property, this->Automatic##property, allowInfinity, atZero)
+
   /// The layers of a renderer's last G-buffer frame, as the subclasses read them.
   struct LayerFrame
   {

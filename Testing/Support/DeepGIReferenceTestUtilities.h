@@ -7,6 +7,7 @@
 #define DeepGIReferenceTestUtilities_h
 
 #include "vtkCommand.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -61,20 +62,23 @@ struct Layer0Capture
     this->Image->SetDimensions(w, h, 1);
     const vtkIdType n = static_cast<vtkIdType>(w) * h;
     vtkPointData* pd = this->Image->GetPointData();
-    for (auto array : { std::make_pair(this->Depth.GetPointer(), "Depth_0"),
-           std::make_pair(this->Normal.GetPointer(), "Normal_0"),
-           std::make_pair(this->Albedo.GetPointer(), "Albedo_0") })
+    for (auto array : { std::make_pair(this->Depth.GetPointer(),
+                          vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Depth, 0)),
+           std::make_pair(this->Normal.GetPointer(),
+             vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Normal, 0)),
+           std::make_pair(this->Albedo.GetPointer(),
+             vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Albedo, 0)) })
     {
-      array.first->SetName(array.second);
+      array.first->SetName(array.second.c_str());
       array.first->SetNumberOfComponents(array.first == this->Depth ? 1 : 3);
       array.first->SetNumberOfTuples(n);
       pd->AddArray(array.first);
     }
-    this->Valid->SetName("Valid_0");
+    this->Valid->SetName(vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0).c_str());
     this->Valid->SetNumberOfTuples(n);
     pd->AddArray(this->Valid);
-    for (auto m :
-      { std::make_pair("ViewMatrix", view), std::make_pair("ProjectionMatrix", projection) })
+    for (auto m : { std::make_pair(vtkDeepGICaptureNames::ViewMatrix, view),
+           std::make_pair(vtkDeepGICaptureNames::ProjectionMatrix, projection) })
     {
       vtkNew<vtkDoubleArray> values;
       values->SetName(m.first);

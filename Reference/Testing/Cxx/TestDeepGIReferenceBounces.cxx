@@ -42,6 +42,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIReferenceIrradiance.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -301,7 +302,8 @@ void CompareExact(
 bool SameOutput(vtkImageData* a, vtkImageData* b)
 {
   for (const char* name : { "IndirectIrradiance", "IndirectIrradianceStandardError",
-         "IndirectRadiance", "IndirectRadianceStandardError", "Valid" })
+         vtkDeepGICaptureNames::IndirectRadiance, "IndirectRadianceStandardError",
+         vtkDeepGICaptureNames::Valid })
   {
     vtkDataArray* x = a->GetPointData()->GetArray(name);
     vtkDataArray* y = b->GetPointData()->GetArray(name);

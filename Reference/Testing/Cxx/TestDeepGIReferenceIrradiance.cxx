@@ -30,6 +30,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIReferenceIrradiance.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -323,7 +324,7 @@ int TestDeepGIReferenceIrradiance(int, char*[])
   // IndirectRadiance = rho_X E / pi.
   {
     vtkFloatArray* e = Array(reference, "IndirectIrradiance");
-    vtkFloatArray* l = Array(reference, "IndirectRadiance");
+    vtkFloatArray* l = Array(reference, vtkDeepGICaptureNames::IndirectRadiance);
     double maxError = l ? 0 : 1;
     for (vtkIdType p = 0; l && p < e->GetNumberOfTuples(); ++p)
     {
@@ -664,9 +665,10 @@ int TestDeepGIReferenceIrradiance(int, char*[])
     Check(bad->GetDiffuseCoefficient() == 1.0, "DiffuseCoefficient clamped");
     vtkNew<vtkImageData> noAlbedo;
     noAlbedo->DeepCopy(squareCapture);
-    noAlbedo->GetPointData()->RemoveArray("Albedo_0");
+    noAlbedo->GetPointData()->RemoveArray(
+      vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Albedo, 0).c_str());
     Check(bad->Compute(noAlbedo) && events->Warnings == 6 &&
-        !bad->GetOutput()->GetPointData()->GetArray("IndirectRadiance"),
+        !bad->GetOutput()->GetPointData()->GetArray(vtkDeepGICaptureNames::IndirectRadiance),
       "no Albedo_0: warnings, no IndirectRadiance");
     Check(!bad->Compute(nullptr) && events->Errors == 4, "null capture: error");
   }

@@ -20,6 +20,7 @@
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIReferenceObscurance.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -149,12 +150,12 @@ vtkSmartPointer<vtkImageData> MakeCapture(const Setup& s, int w, int h, double c
   capture->SetDimensions(w, h, 1);
   vtkNew<vtkFloatArray> depth, normal;
   vtkNew<vtkUnsignedCharArray> valid;
-  depth->SetName("Depth_0");
+  depth->SetName(vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Depth, 0).c_str());
   depth->SetNumberOfTuples(w * h);
-  normal->SetName("Normal_0");
+  normal->SetName(vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Normal, 0).c_str());
   normal->SetNumberOfComponents(3);
   normal->SetNumberOfTuples(w * h);
-  valid->SetName("Valid_0");
+  valid->SetName(vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0).c_str());
   valid->SetNumberOfTuples(w * h);
   if (positions)
   {
@@ -207,8 +208,8 @@ vtkSmartPointer<vtkImageData> MakeCapture(const Setup& s, int w, int h, double c
   capture->GetPointData()->AddArray(depth);
   capture->GetPointData()->AddArray(normal);
   capture->GetPointData()->AddArray(valid);
-  for (auto m :
-    { std::make_pair("ViewMatrix", view), std::make_pair("ProjectionMatrix", projection) })
+  for (auto m : { std::make_pair(vtkDeepGICaptureNames::ViewMatrix, view),
+         std::make_pair(vtkDeepGICaptureNames::ProjectionMatrix, projection) })
   {
     vtkNew<vtkDoubleArray> values;
     values->SetName(m.first);
@@ -266,10 +267,10 @@ vtkFloatArray* Array(vtkDeepGIReferenceObscurance* reference, const char* name)
 double CompareExact(vtkDeepGIReferenceObscurance* reference,
   const std::function<double(vtkIdType)>& exact, const char* what)
 {
-  vtkFloatArray* av = Array(reference, "AmbientVisibility");
+  vtkFloatArray* av = Array(reference, vtkDeepGICaptureNames::AmbientVisibility);
   vtkFloatArray* se = Array(reference, "StandardError");
-  auto valid =
-    vtkUnsignedCharArray::SafeDownCast(reference->GetOutput()->GetPointData()->GetArray("Valid"));
+  auto valid = vtkUnsignedCharArray::SafeDownCast(
+    reference->GetOutput()->GetPointData()->GetArray(vtkDeepGICaptureNames::Valid));
   double sumDiff = 0.0, sumVar = 0.0, maxZ = 0.0, maxDiff = 0.0;
   int n = 0, bad = 0;
   for (vtkIdType p = 0; p < av->GetNumberOfTuples(); ++p)
@@ -306,7 +307,7 @@ double CompareExact(vtkDeepGIReferenceObscurance* reference,
 
 bool SameArrays(vtkDeepGIReferenceObscurance* a, vtkImageData* b)
 {
-  for (const char* name : { "AmbientVisibility", "StandardError" })
+  for (const char* name : { vtkDeepGICaptureNames::AmbientVisibility, "StandardError" })
   {
     vtkFloatArray* x = Array(a, name);
     auto y = vtkFloatArray::SafeDownCast(b->GetPointData()->GetArray(name));
@@ -334,7 +335,7 @@ int TestDeepGIReferenceObscurance(int, char*[])
     reference->SetSamplesPerPixel(256);
     auto capture = MakeCapture(s, 16, 16, 0, 0, 3);
     CHECK(reference->Compute(capture), "plane: Compute failed");
-    vtkFloatArray* av = Array(reference, "AmbientVisibility");
+    vtkFloatArray* av = Array(reference, vtkDeepGICaptureNames::AmbientVisibility);
     int notOne = 0;
     for (vtkIdType p = 0; p < av->GetNumberOfTuples(); ++p)
     {
@@ -401,9 +402,10 @@ int TestDeepGIReferenceObscurance(int, char*[])
     other->SetSamplesPerPixel(1024);
     other->SetSeed(2);
     CHECK(other->Compute(wallCapture), "seed 2: Compute failed");
-    vtkFloatArray* a = Array(other, "AmbientVisibility");
+    vtkFloatArray* a = Array(other, vtkDeepGICaptureNames::AmbientVisibility);
     vtkFloatArray* ae = Array(other, "StandardError");
-    auto b = vtkFloatArray::SafeDownCast(wallResult->GetPointData()->GetArray("AmbientVisibility"));
+    auto b = vtkFloatArray::SafeDownCast(
+      wallResult->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility));
     auto be = vtkFloatArray::SafeDownCast(wallResult->GetPointData()->GetArray("StandardError"));
     int bad = 0, n = 0, identical = 0;
     double sumDiff = 0, sumVar = 0, maxZ = 0;
@@ -465,8 +467,9 @@ int TestDeepGIReferenceObscurance(int, char*[])
     CompareExact(
       s, [&](vtkIdType p) { return 1.0 - WallObscurance(wallPositions[p][0] - wall.WallX, r); },
       what.c_str());
-    vtkFloatArray* a = Array(s, "AmbientVisibility");
-    auto b = vtkFloatArray::SafeDownCast(wallResult->GetPointData()->GetArray("AmbientVisibility"));
+    vtkFloatArray* a = Array(s, vtkDeepGICaptureNames::AmbientVisibility);
+    auto b = vtkFloatArray::SafeDownCast(
+      wallResult->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility));
     double maxDiff = 0;
     for (vtkIdType p = 0; p < a->GetNumberOfTuples(); ++p)
     {
@@ -490,7 +493,7 @@ int TestDeepGIReferenceObscurance(int, char*[])
     CHECK(!bad->Compute(empty) && errors->Errors == 3, "empty capture accepted");
     vtkNew<vtkImageData> noMatrices;
     noMatrices->DeepCopy(wallCapture);
-    noMatrices->GetFieldData()->RemoveArray("ViewMatrix");
+    noMatrices->GetFieldData()->RemoveArray(vtkDeepGICaptureNames::ViewMatrix);
     CHECK(!bad->Compute(noMatrices) && errors->Errors == 4, "capture without matrices accepted");
     bad->SetRadius(std::numeric_limits<double>::quiet_NaN());
     CHECK(!bad->Compute(wallCapture) && errors->Errors == 5, "NaN radius accepted");

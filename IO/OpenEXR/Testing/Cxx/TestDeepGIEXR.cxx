@@ -19,6 +19,7 @@
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIEXRReader.h"
 #include "vtkDeepGIEXRWriter.h"
 #include "vtkDeepGIReferenceObscurance.h"
@@ -74,19 +75,22 @@ vtkSmartPointer<vtkImageData> MakeImage(int w, int h, bool halfRange)
   const vtkIdType n = static_cast<vtkIdType>(w) * h;
   struct Spec
   {
-    const char* Name;
+    std::string Name;
     int Components;
     int Type;
   };
-  const Spec specs[] = { { "Radiance_0", 4, VTK_FLOAT }, { "Depth_0", 1, VTK_FLOAT },
+  const Spec specs[] = { { vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Radiance, 0), 4,
+                           VTK_FLOAT },
+    { vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Depth, 0), 1, VTK_FLOAT },
     { "RGB", 3, VTK_FLOAT }, { "Many", 6, VTK_FLOAT }, { "Pair", 2, VTK_FLOAT },
-    { "Normal_0", 3, VTK_DOUBLE }, { "Valid_0", 1, VTK_UNSIGNED_CHAR } };
+    { vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Normal, 0), 3, VTK_DOUBLE },
+    { vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0), 1, VTK_UNSIGNED_CHAR } };
   int index = 0;
   for (const Spec& spec : specs)
   {
     vtkSmartPointer<vtkDataArray> array =
       vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(spec.Type));
-    array->SetName(spec.Name);
+    array->SetName(spec.Name.c_str());
     array->SetNumberOfComponents(spec.Components);
     array->SetNumberOfTuples(n);
     for (vtkIdType t = 0; t < n; ++t)
@@ -102,7 +106,8 @@ vtkSmartPointer<vtkImageData> MakeImage(int w, int h, bool halfRange)
   }
   if (!halfRange)
   {
-    auto radiance = vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray("Radiance_0"));
+    auto radiance = vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray(
+      vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Radiance, 0).c_str()));
     radiance->SetTypedComponent(0, 0, std::numeric_limits<float>::infinity());
     radiance->SetTypedComponent(1, 1, -0.0f);
     radiance->SetTypedComponent(2, 2, std::numeric_limits<float>::denorm_min());
@@ -205,16 +210,16 @@ vtkSmartPointer<vtkImageData> MakeCapture(int w, int h)
     const std::string s = "_" + std::to_string(layer);
     vtkNew<vtkFloatArray> radiance, albedo, normal, depth, ambient;
     vtkNew<vtkUnsignedCharArray> valid;
-    radiance->SetName(("Radiance" + s).c_str());
+    radiance->SetName((vtkDeepGICaptureNames::Radiance + s).c_str());
     radiance->SetNumberOfComponents(4);
-    albedo->SetName(("Albedo" + s).c_str());
+    albedo->SetName((vtkDeepGICaptureNames::Albedo + s).c_str());
     albedo->SetNumberOfComponents(3);
-    normal->SetName(("Normal" + s).c_str());
+    normal->SetName((vtkDeepGICaptureNames::Normal + s).c_str());
     normal->SetNumberOfComponents(3);
-    ambient->SetName(("Ambient" + s).c_str());
+    ambient->SetName((vtkDeepGICaptureNames::Ambient + s).c_str());
     ambient->SetNumberOfComponents(3);
-    depth->SetName(("Depth" + s).c_str());
-    valid->SetName(("Valid" + s).c_str());
+    depth->SetName((vtkDeepGICaptureNames::Depth + s).c_str());
+    valid->SetName((vtkDeepGICaptureNames::Valid + s).c_str());
     for (vtkFloatArray* a :
       { radiance.Get(), albedo.Get(), normal.Get(), depth.Get(), ambient.Get() })
     {
@@ -244,19 +249,19 @@ vtkSmartPointer<vtkImageData> MakeCapture(int w, int h)
     capture->GetPointData()->AddArray(valid);
   }
   vtkNew<vtkDoubleArray> separation;
-  separation->SetName("MinimumSeparation");
+  separation->SetName(vtkDeepGICaptureNames::MinimumSeparation);
   separation->InsertNextValue(0.123456789012345);
   vtkNew<vtkIntArray> layers;
-  layers->SetName("NumberOfLayers");
+  layers->SetName(vtkDeepGICaptureNames::NumberOfLayers);
   layers->InsertNextValue(2);
   vtkNew<vtkStringArray> oracle;
-  oracle->SetName("Oracle");
+  oracle->SetName(vtkDeepGICaptureNames::Oracle);
   oracle->InsertNextValue("REPROJECT");
   capture->GetFieldData()->AddArray(separation);
   capture->GetFieldData()->AddArray(layers);
   capture->GetFieldData()->AddArray(oracle);
-  for (auto m :
-    { std::make_pair("ViewMatrix", view), std::make_pair("ProjectionMatrix", projection) })
+  for (auto m : { std::make_pair(vtkDeepGICaptureNames::ViewMatrix, view),
+         std::make_pair(vtkDeepGICaptureNames::ProjectionMatrix, projection) })
   {
     vtkNew<vtkDoubleArray> values;
     values->SetName(m.first);
@@ -315,7 +320,8 @@ int TestDeepGIEXR(int argc, char* argv[])
     frameBuffer.insert("Depth_0.Y", Imf::Slice::Make(Imf::FLOAT, depth.data(), window));
     file.setFrameBuffer(frameBuffer);
     file.readPixels(window.min.y, window.max.y);
-    auto d = vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray("Depth_0"));
+    auto d = vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray(
+      vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Depth, 0).c_str()));
     bool flipped = true;
     for (int x = 0; x < w; ++x)
     {
@@ -425,14 +431,16 @@ int TestDeepGIEXR(int argc, char* argv[])
     auto read = Read(captureFile);
     CompareImages(capture, read, false, "capture round trip");
     vtkFieldData* fd = read->GetFieldData();
-    auto separation = vtkDoubleArray::SafeDownCast(fd->GetArray("MinimumSeparation"));
-    auto layers = vtkIntArray::SafeDownCast(fd->GetArray("NumberOfLayers"));
-    auto oracle = vtkStringArray::SafeDownCast(fd->GetAbstractArray("Oracle"));
+    auto separation =
+      vtkDoubleArray::SafeDownCast(fd->GetArray(vtkDeepGICaptureNames::MinimumSeparation));
+    auto layers = vtkIntArray::SafeDownCast(fd->GetArray(vtkDeepGICaptureNames::NumberOfLayers));
+    auto oracle = vtkStringArray::SafeDownCast(fd->GetAbstractArray(vtkDeepGICaptureNames::Oracle));
     Check(separation && separation->GetValue(0) == 0.123456789012345,
       "capture: MinimumSeparation (double) exact");
     Check(layers && layers->GetValue(0) == 2, "capture: NumberOfLayers (int)");
     Check(oracle && oracle->GetValue(0) == "REPROJECT", "capture: Oracle (string)");
-    for (const char* name : { "ViewMatrix", "ProjectionMatrix" })
+    for (const char* name :
+      { vtkDeepGICaptureNames::ViewMatrix, vtkDeepGICaptureNames::ProjectionMatrix })
     {
       vtkDataArray* a = capture->GetFieldData()->GetArray(name);
       vtkDataArray* b = fd->GetArray(name);

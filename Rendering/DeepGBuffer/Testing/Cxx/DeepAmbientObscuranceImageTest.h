@@ -19,6 +19,7 @@
 
 #include "vtkCamera.h"
 #include "vtkDeepAmbientObscurancePass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkImageActor.h"
 #include "vtkImageProperty.h"
 #include "vtkRegressionTestImage.h"
@@ -40,7 +41,7 @@ inline void AVToGrey(vtkImageData* av, vtkImageData* grey)
 {
   grey->SetDimensions(av->GetDimensions());
   grey->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
-  vtkDataArray* a = av->GetPointData()->GetArray("AmbientVisibility");
+  vtkDataArray* a = av->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility);
   unsigned char* out = static_cast<unsigned char*>(grey->GetScalarPointer());
   for (vtkIdType p = 0; p < a->GetNumberOfTuples(); ++p)
   {
@@ -112,10 +113,10 @@ inline int RunAOImageTest(int argc, char* argv[], const std::function<bool(vtkRe
     return EXIT_FAILURE;
   }
 
-  vtkDataArray* a = av->GetPointData()->GetArray("AmbientVisibility");
-  vtkDataArray* raw = av->GetPointData()->GetArray("RawAmbientVisibility");
-  vtkDataArray* valid = av->GetPointData()->GetArray("Valid");
-  vtkDataArray* before = shown->GetPointData()->GetArray("AmbientVisibility");
+  vtkDataArray* a = av->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility);
+  vtkDataArray* raw = av->GetPointData()->GetArray(vtkDeepGICaptureNames::RawAmbientVisibility);
+  vtkDataArray* valid = av->GetPointData()->GetArray(vtkDeepGICaptureNames::Valid);
+  vtkDataArray* before = shown->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility);
   long surface = 0, unoccluded = 0, dark = 0, outOfRange = 0, emptyNotOne = 0;
   double sum = 0.0, changed = 0.0;
   for (vtkIdType p = 0; p < a->GetNumberOfTuples(); ++p)

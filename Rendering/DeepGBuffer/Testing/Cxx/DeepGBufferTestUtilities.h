@@ -10,6 +10,7 @@
 #include "vtkCubeSource.h"
 #include "vtkDataArray.h"
 #include "vtkDeepGBufferPass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIRenderWindowFactory.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -163,15 +164,15 @@ inline bool CameraPosition(vtkImageData* layers, int layer, double i, double j, 
 {
   const int* dims = layers->GetDimensions();
   const int ii = static_cast<int>(std::floor(i)), jj = static_cast<int>(std::floor(j));
-  const double d =
-    Layer(layers, "Depth", layer)->GetTuple1(static_cast<vtkIdType>(jj) * dims[0] + ii);
+  const double d = Layer(layers, vtkDeepGICaptureNames::Depth, layer)
+                     ->GetTuple1(static_cast<vtkIdType>(jj) * dims[0] + ii);
   if (!(d > 0.0))
   {
     return false;
   }
-  const double* P =
-    vtkDoubleArray::SafeDownCast(layers->GetFieldData()->GetArray("ProjectionMatrix"))
-      ->GetPointer(0);
+  const double* P = vtkDoubleArray::SafeDownCast(
+    layers->GetFieldData()->GetArray(vtkDeepGICaptureNames::ProjectionMatrix))
+                      ->GetPointer(0);
   const double ndc[2] = { (ii + 0.5) / dims[0] * 2.0 - 1.0, (jj + 0.5) / dims[1] * 2.0 - 1.0 };
   const double z = -d, w = P[14] * z + P[15];
   out[0] = (ndc[0] * w - P[2] * z - P[3]) / P[0];
@@ -190,8 +191,9 @@ inline bool WorldPosition(vtkImageData* layers, int layer, int i, int j, double 
     return false;
   }
   vtkNew<vtkMatrix4x4> view;
-  view->DeepCopy(
-    vtkDoubleArray::SafeDownCast(layers->GetFieldData()->GetArray("ViewMatrix"))->GetPointer(0));
+  view->DeepCopy(vtkDoubleArray::SafeDownCast(
+    layers->GetFieldData()->GetArray(vtkDeepGICaptureNames::ViewMatrix))
+                   ->GetPointer(0));
   view->Invert();
   double out[4];
   view->MultiplyPoint(c, out);
@@ -215,10 +217,10 @@ inline SeparationReport CheckSeparation(
   vtkImageData* image, int layer, double dz, double relativeTolerance)
 {
   SeparationReport report;
-  vtkDataArray* front = Layer(image, "Depth", layer - 1);
-  vtkDataArray* back = Layer(image, "Depth", layer);
-  vtkDataArray* frontValid = Layer(image, "Valid", layer - 1);
-  vtkDataArray* backValid = Layer(image, "Valid", layer);
+  vtkDataArray* front = Layer(image, vtkDeepGICaptureNames::Depth, layer - 1);
+  vtkDataArray* back = Layer(image, vtkDeepGICaptureNames::Depth, layer);
+  vtkDataArray* frontValid = Layer(image, vtkDeepGICaptureNames::Valid, layer - 1);
+  vtkDataArray* backValid = Layer(image, vtkDeepGICaptureNames::Valid, layer);
   for (vtkIdType p = 0; p < back->GetNumberOfTuples(); ++p)
   {
     if (backValid->GetTuple1(p) == 0)
@@ -261,11 +263,11 @@ inline LayerDifference CompareLayer(vtkImageData* a, vtkImageData* b, int layer,
   double relativeTolerance, std::vector<unsigned char>* different = nullptr, double dz = -1.0)
 {
   LayerDifference d;
-  vtkDataArray* da = Layer(a, "Depth", layer);
-  vtkDataArray* db = Layer(b, "Depth", layer);
-  vtkDataArray* va = Layer(a, "Valid", layer);
-  vtkDataArray* vb = Layer(b, "Valid", layer);
-  vtkDataArray* front = layer > 0 ? Layer(b, "Depth", layer - 1) : nullptr;
+  vtkDataArray* da = Layer(a, vtkDeepGICaptureNames::Depth, layer);
+  vtkDataArray* db = Layer(b, vtkDeepGICaptureNames::Depth, layer);
+  vtkDataArray* va = Layer(a, vtkDeepGICaptureNames::Valid, layer);
+  vtkDataArray* vb = Layer(b, vtkDeepGICaptureNames::Valid, layer);
+  vtkDataArray* front = layer > 0 ? Layer(b, vtkDeepGICaptureNames::Depth, layer - 1) : nullptr;
   if (different)
   {
     different->assign(da->GetNumberOfTuples(), 0);

@@ -6,6 +6,7 @@
 #include "DeepGBufferTestUtilities.h"
 
 #include "vtkDataArray.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkMatrix4x4.h"
@@ -64,8 +65,10 @@ struct Camera
 
   explicit Camera(vtkImageData* capture)
   {
-    capture->GetFieldData()->GetArray("ViewMatrix")->GetTuple(0, this->View);
-    capture->GetFieldData()->GetArray("ProjectionMatrix")->GetTuple(0, this->Projection);
+    capture->GetFieldData()->GetArray(vtkDeepGICaptureNames::ViewMatrix)->GetTuple(0, this->View);
+    capture->GetFieldData()
+      ->GetArray(vtkDeepGICaptureNames::ProjectionMatrix)
+      ->GetTuple(0, this->Projection);
     vtkMatrix4x4::Invert(this->View, this->InverseView);
     int dims[3];
     capture->GetDimensions(dims);

@@ -37,6 +37,7 @@
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
 #include "vtkDeepAmbientObscurancePass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkMath.h"
@@ -104,11 +105,12 @@ double ReferenceAV(vtkImageData* layers, int i, int j, int layerCount, int n, do
   {
     return 1.0;
   }
-  const double* P =
-    vtkDoubleArray::SafeDownCast(layers->GetFieldData()->GetArray("ProjectionMatrix"))
-      ->GetPointer(0);
+  const double* P = vtkDoubleArray::SafeDownCast(
+    layers->GetFieldData()->GetArray(vtkDeepGICaptureNames::ProjectionMatrix))
+                      ->GetPointer(0);
   double nX[3];
-  Layer(layers, "Normal", 0)->GetTuple(static_cast<vtkIdType>(j) * Width + i, nX);
+  Layer(layers, vtkDeepGICaptureNames::Normal, 0)
+    ->GetTuple(static_cast<vtkIdType>(j) * Width + i, nX);
   const double w = P[14] * X[2] + P[15];
   const double rp = radius * P[5] * 0.5 * Height / w;
   const double ign = 52.9829189 * std::fmod(0.06711056 * i + 0.00583715 * j, 1.0);
@@ -223,7 +225,7 @@ void TestCornerSolidAngle()
       if (t < radius)
       {
         const int b = std::min(bins - 1, static_cast<int>(t / radius * bins));
-        sum[b] += Value(r.AO, "AmbientVisibility", i, j);
+        sum[b] += Value(r.AO, vtkDeepGICaptureNames::AmbientVisibility, i, j);
         exact[b] += 1.0 - FloorBesideWallObscurance(t / radius);
         ++count[b];
       }
@@ -267,13 +269,13 @@ void TestPlane(bool parallel)
   {
     for (int i = 0; i < Width; ++i)
     {
-      if (Value(r.AO, "Valid", i, j) == 0)
+      if (Value(r.AO, vtkDeepGICaptureNames::Valid, i, j) == 0)
       {
         continue;
       }
       ++valid;
-      worst = std::max(worst, 1.0 - Value(r.AO, "RawAmbientVisibility", i, j));
-      worst = std::max(worst, 1.0 - Value(r.AO, "AmbientVisibility", i, j));
+      worst = std::max(worst, 1.0 - Value(r.AO, vtkDeepGICaptureNames::RawAmbientVisibility, i, j));
+      worst = std::max(worst, 1.0 - Value(r.AO, vtkDeepGICaptureNames::AmbientVisibility, i, j));
     }
   }
   std::printf("plane (%s): %ld valid pixels, max 1 - AV = %.2e\n",
@@ -295,24 +297,26 @@ void TestCorner()
   // CPU reference of the raw AV.
   long compared = 0, mismatched = 0;
   double meanDifference = 0.0, maxDifference = 0.0;
-  const int layerCount = r.Layers->GetFieldData()->GetArray("NumberOfLayers")->GetTuple1(0);
+  const int layerCount =
+    r.Layers->GetFieldData()->GetArray(vtkDeepGICaptureNames::NumberOfLayers)->GetTuple1(0);
   vtkNew<vtkImageData> pyramid;
   Check(pass->CaptureDistancePyramid(0, pyramid, r.Renderer), "capture the distance pyramid");
-  const int levels =
-    static_cast<int>(pyramid->GetFieldData()->GetArray("NumberOfMipLevels")->GetTuple1(0));
+  const int levels = static_cast<int>(
+    pyramid->GetFieldData()->GetArray(vtkDeepGICaptureNames::NumberOfMipLevels)->GetTuple1(0));
   std::printf("corner: %d pyramid levels\n", levels);
   for (int j = 0; j < Height; ++j)
   {
     for (int i = 0; i < Width; ++i)
     {
-      if (Value(r.AO, "Valid", i, j) == 0)
+      if (Value(r.AO, vtkDeepGICaptureNames::Valid, i, j) == 0)
       {
         continue;
       }
       const double reference = ReferenceAV(r.Layers, i, j, layerCount, pass->GetNumberOfSamples(),
         radius, pass->GetBias() * radius, pass->GetEpsilon() * radius * radius,
         pass->GetMipThreshold(), levels);
-      const double d = std::abs(reference - Value(r.AO, "RawAmbientVisibility", i, j));
+      const double d =
+        std::abs(reference - Value(r.AO, vtkDeepGICaptureNames::RawAmbientVisibility, i, j));
       ++compared;
       mismatched += d > 2e-3 ? 1 : 0;
       meanDifference += d;
@@ -344,17 +348,19 @@ void TestCorner()
       if (t < radius)
       {
         const int b = std::min(bins - 1, static_cast<int>(t / radius * bins));
-        sum[b] += Value(r.AO, "AmbientVisibility", i, j);
+        sum[b] += Value(r.AO, vtkDeepGICaptureNames::AmbientVisibility, i, j);
         ++count[b];
       }
       if (t > 1.02 * radius)
       {
-        farWorstRaw = std::max(farWorstRaw, 1.0 - Value(r.AO, "RawAmbientVisibility", i, j));
+        farWorstRaw = std::max(
+          farWorstRaw, 1.0 - Value(r.AO, vtkDeepGICaptureNames::RawAmbientVisibility, i, j));
       }
       if (t > 1.5 * radius)
       {
         ++far;
-        farWorstFiltered = std::max(farWorstFiltered, 1.0 - Value(r.AO, "AmbientVisibility", i, j));
+        farWorstFiltered = std::max(
+          farWorstFiltered, 1.0 - Value(r.AO, vtkDeepGICaptureNames::AmbientVisibility, i, j));
       }
     }
   }
@@ -400,7 +406,8 @@ void TestCorner()
   vtkDataArray* b = rgbPlain->GetPointData()->GetScalars();
   for (vtkIdType p = 0; p < a->GetNumberOfTuples(); ++p)
   {
-    const double av = r.AO->GetPointData()->GetArray("AmbientVisibility")->GetTuple1(p);
+    const double av =
+      r.AO->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility)->GetTuple1(p);
     for (int c = 0; c < 3; ++c)
     {
       worstColor =
@@ -437,7 +444,10 @@ void TestNoBleed()
     return;
   }
   auto depth = [&](int i, int j)
-  { return Layer(r.Layers, "Depth", 0)->GetTuple1(static_cast<vtkIdType>(j) * Width + i); };
+  {
+    return Layer(r.Layers, vtkDeepGICaptureNames::Depth, 0)
+      ->GetTuple1(static_cast<vtkIdType>(j) * Width + i);
+  };
   auto onQuad = [&](int i, int j) { return depth(i, j) < 9.85; };
   double quadWorst = 0.0, worstEscape = 0.0, nearPlaneMax = 0.0;
   long planeChecked = 0, quadPixels = 0;
@@ -448,8 +458,10 @@ void TestNoBleed()
       if (onQuad(i, j))
       {
         ++quadPixels;
-        quadWorst = std::max(quadWorst, 1.0 - Value(r.AO, "AmbientVisibility", i, j));
-        quadWorst = std::max(quadWorst, 1.0 - Value(r.AO, "RawAmbientVisibility", i, j));
+        quadWorst =
+          std::max(quadWorst, 1.0 - Value(r.AO, vtkDeepGICaptureNames::AmbientVisibility, i, j));
+        quadWorst =
+          std::max(quadWorst, 1.0 - Value(r.AO, vtkDeepGICaptureNames::RawAmbientVisibility, i, j));
         continue;
       }
       // Plane pixels within 2 px of the silhouette.
@@ -472,13 +484,14 @@ void TestNoBleed()
         {
           if (!onQuad(i + di, j + dj))
           {
-            const double v = Value(r.AO, "RawAmbientVisibility", i + di, j + dj);
+            const double v =
+              Value(r.AO, vtkDeepGICaptureNames::RawAmbientVisibility, i + di, j + dj);
             lo = std::min(lo, v);
             hi = std::max(hi, v);
           }
         }
       }
-      const double f = Value(r.AO, "AmbientVisibility", i, j);
+      const double f = Value(r.AO, vtkDeepGICaptureNames::AmbientVisibility, i, j);
       worstEscape = std::max(worstEscape, std::max(lo - f, f - hi));
       nearPlaneMax = std::max(nearPlaneMax, hi);
       ++planeChecked;
@@ -520,12 +533,12 @@ void TestSecondLayer()
   {
     for (int i = 0; i < Width; ++i)
     {
-      if (Value(a.AO, "Valid", i, j) == 0)
+      if (Value(a.AO, vtkDeepGICaptureNames::Valid, i, j) == 0)
       {
         continue;
       }
-      const double d =
-        Value(a.AO, "RawAmbientVisibility", i, j) - Value(b.AO, "RawAmbientVisibility", i, j);
+      const double d = Value(a.AO, vtkDeepGICaptureNames::RawAmbientVisibility, i, j) -
+        Value(b.AO, vtkDeepGICaptureNames::RawAmbientVisibility, i, j);
       higher += d > 1e-5 ? 1 : 0;
       worstHigher = std::max(worstHigher, d);
       lower += d < -0.02 ? 1 : 0;
@@ -571,8 +584,8 @@ void TestSampleCountsAndRelease()
   vtkNew<vtkImageData> again;
   Check(pass->CaptureAmbientVisibility(again, r.Renderer), "capture after release and render");
   double worst = 0.0;
-  vtkDataArray* x = r.AO->GetPointData()->GetArray("AmbientVisibility");
-  vtkDataArray* y = again->GetPointData()->GetArray("AmbientVisibility");
+  vtkDataArray* x = r.AO->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility);
+  vtkDataArray* y = again->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility);
   for (vtkIdType p = 0; y && p < x->GetNumberOfTuples(); ++p)
   {
     worst = std::max(worst, std::abs(x->GetTuple1(p) - y->GetTuple1(p)));

@@ -15,6 +15,7 @@
 
 #include "vtkCamera.h"
 #include "vtkDeepAmbientObscurancePass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
 
@@ -82,10 +83,10 @@ CompositeResult Run(double ambient, int composition)
   Check(pass->GetGBufferPass()->CaptureLayers(layers, renderer), "capture layers");
   Check(AllFinite(ao), "AV finite");
   ReadWindow(window, rgb, nullptr);
-  vtkDataArray* av = ao->GetPointData()->GetArray("AmbientVisibility");
-  vtkDataArray* ok = ao->GetPointData()->GetArray("Valid");
-  vtkDataArray* radiance = Layer(layers, "Radiance", 0);
-  vtkDataArray* amb = Layer(layers, "Ambient", 0);
+  vtkDataArray* av = ao->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility);
+  vtkDataArray* ok = ao->GetPointData()->GetArray(vtkDeepGICaptureNames::Valid);
+  vtkDataArray* radiance = Layer(layers, vtkDeepGICaptureNames::Radiance, 0);
+  vtkDataArray* amb = Layer(layers, vtkDeepGICaptureNames::Ambient, 0);
   vtkDataArray* image = rgb->GetPointData()->GetScalars();
   double background = 0.0;
   const double bg[3] = { 0.1, 0.2, 0.3 };

@@ -14,6 +14,7 @@
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
 #include "vtkDeepAmbientObscurancePass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
 
@@ -117,7 +118,8 @@ bool FiniteAndInRange(Frame& f, bool layers = true)
   {
     return false;
   }
-  for (const char* name : { "AmbientVisibility", "RawAmbientVisibility" })
+  for (const char* name :
+    { vtkDeepGICaptureNames::AmbientVisibility, vtkDeepGICaptureNames::RawAmbientVisibility })
   {
     vtkDataArray* a = Array(f.AO, name);
     for (vtkIdType p = 0; p < a->GetNumberOfTuples(); ++p)
@@ -145,8 +147,8 @@ Difference CompareAV(vtkImageData* a, vtkImageData* b, const char* name, double 
   Difference d;
   vtkDataArray* x = Array(a, name);
   vtkDataArray* y = Array(b, name);
-  vtkDataArray* vx = Array(a, "Valid");
-  vtkDataArray* vy = Array(b, "Valid");
+  vtkDataArray* vx = Array(a, vtkDeepGICaptureNames::Valid);
+  vtkDataArray* vy = Array(b, vtkDeepGICaptureNames::Valid);
   for (vtkIdType p = 0; p < x->GetNumberOfTuples(); ++p)
   {
     if ((vx->GetTuple1(p) != 0) != (vy->GetTuple1(p) != 0))
@@ -183,10 +185,10 @@ void CompareScaledLayers(Frame& a, Frame& b, double s, const char* what, long al
   double worst = 0.0;
   for (int layer = 0; layer < 2; ++layer)
   {
-    vtkDataArray* da = Layer(a.Layers, "Depth", layer);
-    vtkDataArray* db = Layer(b.Layers, "Depth", layer);
-    vtkDataArray* va = Layer(a.Layers, "Valid", layer);
-    vtkDataArray* vb = Layer(b.Layers, "Valid", layer);
+    vtkDataArray* da = Layer(a.Layers, vtkDeepGICaptureNames::Depth, layer);
+    vtkDataArray* db = Layer(b.Layers, vtkDeepGICaptureNames::Depth, layer);
+    vtkDataArray* va = Layer(a.Layers, vtkDeepGICaptureNames::Valid, layer);
+    vtkDataArray* vb = Layer(b.Layers, vtkDeepGICaptureNames::Valid, layer);
     for (vtkIdType p = 0; p < da->GetNumberOfTuples(); ++p)
     {
       if ((va->GetTuple1(p) != 0) != (vb->GetTuple1(p) != 0))
@@ -248,7 +250,8 @@ void TestScale(Frame& reference)
     // r_p in pixels), so AV must be the same up to float rounding: taps that
     // land on a texel border may pick the neighbour, and silhouette pixels
     // may flip. Bounds: mean 2e-3, 99 % of pixels within 0.02, max 0.3.
-    for (const char* name : { "RawAmbientVisibility", "AmbientVisibility" })
+    for (const char* name :
+      { vtkDeepGICaptureNames::RawAmbientVisibility, vtkDeepGICaptureNames::AmbientVisibility })
     {
       Difference d = CompareAV(f.AO, reference.AO, name, 0.02);
       PrintDifference(what, name, d, 0.02);
@@ -323,7 +326,8 @@ void TestClippingRange(Frame& reference)
     // units at d = 8, so where wall and floor meet (and at the box's foot)
     // a few pixels may show the other surface. Bounds: mean 3e-3, 98 % of
     // pixels within 0.02 of the reference range's AV.
-    for (const char* name : { "RawAmbientVisibility", "AmbientVisibility" })
+    for (const char* name :
+      { vtkDeepGICaptureNames::RawAmbientVisibility, vtkDeepGICaptureNames::AmbientVisibility })
     {
       Difference d = CompareAV(f.AO, reference.AO, name, 0.02);
       PrintDifference(what, name, d, 0.02);
@@ -382,8 +386,9 @@ double WorstUnoccluded(Frame& f, long& valid)
 {
   double worst = 0.0;
   valid = 0;
-  vtkDataArray* v = Array(f.AO, "Valid");
-  for (const char* name : { "RawAmbientVisibility", "AmbientVisibility" })
+  vtkDataArray* v = Array(f.AO, vtkDeepGICaptureNames::Valid);
+  for (const char* name :
+    { vtkDeepGICaptureNames::RawAmbientVisibility, vtkDeepGICaptureNames::AmbientVisibility })
   {
     vtkDataArray* a = Array(f.AO, name);
     for (vtkIdType p = 0; p < a->GetNumberOfTuples(); ++p)
@@ -494,8 +499,8 @@ void TestSampleCounts(Frame& reference)
   {
     double sum = 0.0;
     long n = 0;
-    vtkDataArray* a = Array(reference.AO, "RawAmbientVisibility");
-    vtkDataArray* v = Array(reference.AO, "Valid");
+    vtkDataArray* a = Array(reference.AO, vtkDeepGICaptureNames::RawAmbientVisibility);
+    vtkDataArray* v = Array(reference.AO, vtkDeepGICaptureNames::Valid);
     for (vtkIdType p = 0; p < a->GetNumberOfTuples(); ++p)
     {
       if (v->GetTuple1(p) != 0)
@@ -515,8 +520,8 @@ void TestSampleCounts(Frame& reference)
     RenderAO(CornerBox(1.0), pass, f);
     double sum = 0.0;
     long count = 0;
-    vtkDataArray* a = Array(f.AO, "RawAmbientVisibility");
-    vtkDataArray* v = Array(f.AO, "Valid");
+    vtkDataArray* a = Array(f.AO, vtkDeepGICaptureNames::RawAmbientVisibility);
+    vtkDataArray* v = Array(f.AO, vtkDeepGICaptureNames::Valid);
     for (vtkIdType p = 0; p < a->GetNumberOfTuples(); ++p)
     {
       if (v->GetTuple1(p) != 0)
@@ -526,8 +531,8 @@ void TestSampleCounts(Frame& reference)
       }
     }
     const double mean = sum / std::max(count, 1L);
-    const double fieldN = f.AO->GetFieldData()->GetArray("NumberOfSamples")
-      ? f.AO->GetFieldData()->GetArray("NumberOfSamples")->GetTuple1(0)
+    const double fieldN = f.AO->GetFieldData()->GetArray(vtkDeepGICaptureNames::NumberOfSamples)
+      ? f.AO->GetFieldData()->GetArray(vtkDeepGICaptureNames::NumberOfSamples)->GetTuple1(0)
       : -1;
     std::printf(" N = %d: used %d (capture says %g), %d warning(s), mean raw AV %.4f (N = 16: "
                 "%.4f)\n",

@@ -20,6 +20,7 @@
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
 #include "vtkDeepAmbientObscurancePass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkFieldData.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
@@ -89,23 +90,23 @@ void TestPyramidContents()
   Frame f = Render(pass, w, h);
   vtkNew<vtkImageData> layers;
   Check(pass->GetGBufferPass()->CaptureLayers(layers, f.Renderer), "capture layers");
-  const int layerCount =
-    static_cast<int>(layers->GetFieldData()->GetArray("NumberOfLayers")->GetTuple1(0));
+  const int layerCount = static_cast<int>(
+    layers->GetFieldData()->GetArray(vtkDeepGICaptureNames::NumberOfLayers)->GetTuple1(0));
   vtkNew<vtkImageData> level0;
   if (!pass->CaptureDistancePyramid(0, level0, f.Renderer))
   {
     Check(false, "capture level 0");
     return;
   }
-  const int levels =
-    static_cast<int>(level0->GetFieldData()->GetArray("NumberOfMipLevels")->GetTuple1(0));
+  const int levels = static_cast<int>(
+    level0->GetFieldData()->GetArray(vtkDeepGICaptureNames::NumberOfMipLevels)->GetTuple1(0));
   std::printf("pyramid: %d x %d, %d layers, %d levels\n", w, h, layerCount, levels);
   Check(levels == 6, "levels = min(5, floor(log2(101))) + 1 = 6");
   Check(layerCount >= 2, "two layers");
   long compared = 0, mismatched = 0, nonEmpty = 0;
   for (int j = 0; j < layerCount; ++j)
   {
-    vtkDataArray* reference = Layer(layers, "Depth", j);
+    vtkDataArray* reference = Layer(layers, vtkDeepGICaptureNames::Depth, j);
     for (int m = 0; m < levels; ++m)
     {
       vtkNew<vtkImageData> level;
@@ -117,7 +118,7 @@ void TestPyramidContents()
       int dims[3];
       level->GetDimensions(dims);
       Check(dims[0] == std::max(1, w >> m) && dims[1] == std::max(1, h >> m), "level size");
-      vtkDataArray* values = Layer(level, "Distance", j);
+      vtkDataArray* values = Layer(level, vtkDeepGICaptureNames::Distance, j);
       if (!values)
       {
         Check(false, "level has the layer");
@@ -171,8 +172,8 @@ std::vector<float> CornerAV(int maximumMipLevel, std::vector<unsigned char>& val
     return out;
   }
   Check(AllFinite(ao), "AV finite");
-  vtkDataArray* av = ao->GetPointData()->GetArray("AmbientVisibility");
-  vtkDataArray* v = ao->GetPointData()->GetArray("Valid");
+  vtkDataArray* av = ao->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility);
+  vtkDataArray* v = ao->GetPointData()->GetArray(vtkDeepGICaptureNames::Valid);
   valid.resize(av->GetNumberOfTuples());
   for (vtkIdType p = 0; p < av->GetNumberOfTuples(); ++p)
   {

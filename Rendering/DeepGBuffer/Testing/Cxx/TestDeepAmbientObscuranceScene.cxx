@@ -25,6 +25,7 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkDeepAmbientObscurancePass.h"
 #include "vtkDeepGBufferPass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkFlyingEdges3D.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlaneSource.h"
@@ -263,7 +264,7 @@ int TestDeepAmbientObscuranceScene(int, char*[])
 
   // Pixels of the opaque quad: its albedo in layer 0 of the left renderer.
   Check(pass->GetGBufferPass()->CaptureLayers(layers, left), "capture left layers");
-  vtkDataArray* albedo = Layer(layers, "Albedo", 0);
+  vtkDataArray* albedo = Layer(layers, vtkDeepGICaptureNames::Albedo, 0);
   std::vector<bool> masked(static_cast<size_t>(2 * ViewportSize * ViewportSize), false);
   long quadPixels = 0;
   for (int y = 0; y < ViewportSize; ++y)
@@ -282,16 +283,18 @@ int TestDeepAmbientObscuranceScene(int, char*[])
 
   auto leftAlone = RenderAlone([](vtkRenderer* r) { BuildVolumeScene(r, nullptr); });
   auto rightAlone = RenderAlone([](vtkRenderer* r) { BuildCornerScene(r, nullptr); });
-  const double leftDifference = MaximumDifference(leftAV, leftAlone, "AmbientVisibility");
-  const double rightDifference = MaximumDifference(rightAV, rightAlone, "AmbientVisibility");
+  const double leftDifference =
+    MaximumDifference(leftAV, leftAlone, vtkDeepGICaptureNames::AmbientVisibility);
+  const double rightDifference =
+    MaximumDifference(rightAV, rightAlone, vtkDeepGICaptureNames::AmbientVisibility);
   std::printf("AV vs the same opaque props alone: left %.2g, right %.2g; minimum AV left %.3f, "
               "right %.3f\n",
-    leftDifference, rightDifference, MinimumValue(leftAV, "AmbientVisibility"),
-    MinimumValue(rightAV, "AmbientVisibility"));
+    leftDifference, rightDifference, MinimumValue(leftAV, vtkDeepGICaptureNames::AmbientVisibility),
+    MinimumValue(rightAV, vtkDeepGICaptureNames::AmbientVisibility));
   Check(leftDifference <= 1e-4, "left AV equals the iso-surface's AV alone");
   Check(rightDifference <= 1e-4, "right AV equals the corner's AV alone");
-  Check(MinimumValue(leftAV, "AmbientVisibility") < 0.8 &&
-      MinimumValue(rightAV, "AmbientVisibility") < 0.8,
+  Check(MinimumValue(leftAV, vtkDeepGICaptureNames::AmbientVisibility) < 0.8 &&
+      MinimumValue(rightAV, vtkDeepGICaptureNames::AmbientVisibility) < 0.8,
     "both renderers show obscurance");
 
   const long viewportPixels = ViewportSize * ViewportSize;

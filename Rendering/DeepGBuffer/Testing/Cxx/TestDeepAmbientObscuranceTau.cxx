@@ -11,6 +11,7 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkDeepAmbientObscurancePass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkNew.h"
 
 #include <cstdio>
@@ -145,9 +146,10 @@ int TestDeepAmbientObscuranceTau(int, char*[])
   pass->SetPresetToBalanced();
   std::ostringstream printed;
   pass->Print(printed);
-  for (const char* name : { "GBufferPass", "Radius", "AutomaticRadius", "AutomaticRadiusFraction",
-         "EffectiveRadius", "Bias", "Epsilon", "Intensity", "NumberOfSamples", "UseSecondLayer",
-         "BlurRadius", "BlurPlaneTolerance", "BlurNormalPower", "Composition" })
+  for (const char* name :
+    { "GBufferPass", vtkDeepGICaptureNames::Radius, "AutomaticRadius", "AutomaticRadiusFraction",
+      "EffectiveRadius", "Bias", "Epsilon", "Intensity", vtkDeepGICaptureNames::NumberOfSamples,
+      "UseSecondLayer", "BlurRadius", "BlurPlaneTolerance", "BlurNormalPower", "Composition" })
   {
     if (printed.str().find(std::string(name) + ":") == std::string::npos)
     {

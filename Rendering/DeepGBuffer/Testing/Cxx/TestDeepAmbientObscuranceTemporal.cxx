@@ -22,6 +22,7 @@
 #include "vtkCubeSource.h"
 #include "vtkDeepAmbientObscurancePass.h"
 #include "vtkDeepGBufferPass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkFieldData.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPlaneSource.h"
@@ -104,8 +105,8 @@ bool Capture(vtkDeepAmbientObscurancePass* pass, Frame& f, vtkImageData* av)
 // first frame after a reset).
 bool EqualsRaw(vtkImageData* av)
 {
-  vtkDataArray* a = Array(av, "AmbientVisibility");
-  vtkDataArray* r = Array(av, "RawAmbientVisibility");
+  vtkDataArray* a = Array(av, vtkDeepGICaptureNames::AmbientVisibility);
+  vtkDataArray* r = Array(av, vtkDeepGICaptureNames::RawAmbientVisibility);
   for (vtkIdType p = 0; p < a->GetNumberOfTuples(); ++p)
   {
     if (a->GetTuple1(p) != r->GetTuple1(p))
@@ -118,9 +119,9 @@ bool EqualsRaw(vtkImageData* av)
 
 double MeanAbsoluteError(vtkImageData* a, vtkImageData* reference)
 {
-  vtkDataArray* x = Array(a, "AmbientVisibility");
-  vtkDataArray* y = Array(reference, "AmbientVisibility");
-  vtkDataArray* valid = Array(reference, "Valid");
+  vtkDataArray* x = Array(a, vtkDeepGICaptureNames::AmbientVisibility);
+  vtkDataArray* y = Array(reference, vtkDeepGICaptureNames::AmbientVisibility);
+  vtkDataArray* valid = Array(reference, vtkDeepGICaptureNames::Valid);
   double sum = 0.0;
   long n = 0;
   for (vtkIdType p = 0; p < x->GetNumberOfTuples(); ++p)
@@ -159,7 +160,8 @@ void TestOffIsIdentical()
   if (Capture(a, fa, avA) && Capture(b, fb, avB))
   {
     bool same = true;
-    for (const char* name : { "AmbientVisibility", "RawAmbientVisibility" })
+    for (const char* name :
+      { vtkDeepGICaptureNames::AmbientVisibility, vtkDeepGICaptureNames::RawAmbientVisibility })
     {
       vtkDataArray* x = Array(avA, name);
       vtkDataArray* y = Array(avB, name);
@@ -265,11 +267,13 @@ void TestMovingCamera()
       return;
     }
     pass->GetGBufferPass()->GetLayerCamera(f.Renderer, now.View, now.Projection);
-    vtkDataArray* a = Array(av, "AmbientVisibility");
-    vtkDataArray* raw = Array(av, "RawAmbientVisibility");
-    vtkDataArray* d = Array(distance, "Distance_0");
-    vtkDataArray* pa = Array(previousAV, "AmbientVisibility");
-    vtkDataArray* pd = Array(previousDistance, "Distance_0");
+    vtkDataArray* a = Array(av, vtkDeepGICaptureNames::AmbientVisibility);
+    vtkDataArray* raw = Array(av, vtkDeepGICaptureNames::RawAmbientVisibility);
+    vtkDataArray* d =
+      Array(distance, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Distance, 0).c_str());
+    vtkDataArray* pa = Array(previousAV, vtkDeepGICaptureNames::AmbientVisibility);
+    vtkDataArray* pd = Array(
+      previousDistance, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Distance, 0).c_str());
     // Current camera -> previous camera.
     vtkNew<vtkMatrix4x4> inverse, toPrevious;
     inverse->DeepCopy(now.View);

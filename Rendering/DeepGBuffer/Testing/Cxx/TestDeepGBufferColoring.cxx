@@ -15,6 +15,7 @@
 
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLookupTable.h"
@@ -58,7 +59,7 @@ std::array<double, 3> AlbedoAt(vtkRenderer* renderer, vtkImageData* capture, dou
   capture->GetDimensions(dims);
   const vtkIdType pixel =
     static_cast<vtkIdType>(display[1]) * dims[0] + static_cast<vtkIdType>(display[0]);
-  vtkDataArray* albedo = Layer(capture, "Albedo", 0);
+  vtkDataArray* albedo = Layer(capture, vtkDeepGICaptureNames::Albedo, 0);
   return { albedo->GetComponent(pixel, 0), albedo->GetComponent(pixel, 1),
     albedo->GetComponent(pixel, 2) };
 }
@@ -189,8 +190,8 @@ int TestDeepGBufferColoring(int, char*[])
     renderer->GetDisplayPoint(display);
     const vtkIdType pixel =
       static_cast<vtkIdType>(display[1]) * 300 + static_cast<vtkIdType>(display[0]);
-    vtkDataArray* ambient = Layer(capture, "Ambient", 0);
-    vtkDataArray* radiance = Layer(capture, "Radiance", 0);
+    vtkDataArray* ambient = Layer(capture, vtkDeepGICaptureNames::Ambient, 0);
+    vtkDataArray* radiance = Layer(capture, vtkDeepGICaptureNames::Radiance, 0);
     const double expected[3] = { 0.2, 0.1, 0.05 };
     double error = 0.0, leastDirect = 1.0;
     for (int c = 0; c < 3; ++c)

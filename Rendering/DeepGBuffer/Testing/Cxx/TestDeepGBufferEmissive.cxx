@@ -17,6 +17,7 @@
 
 #include "DeepRadiosityTest.h"
 
+#include "vtkDeepGICaptureNames.h"
 #include "vtkInformation.h"
 #include "vtkInformationIntegerKey.h"
 
@@ -75,13 +76,18 @@ int TestDeepGBufferEmissive(int, char*[])
         {
           if (onFloor)
           {
-            floorMean[c] += At(f.Radiosity, "IndirectRadiance_0", i, j, c);
+            floorMean[c] += At(f.Radiosity,
+              vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0), i, j, c);
           }
           if (onPanel)
           {
             panelDirect[c] +=
-              At(f.Layers, "Radiance_0", i, j, c) - At(f.Layers, "Ambient_0", i, j, c);
-            panelAmbient[c] += At(f.Layers, "Ambient_0", i, j, c);
+              At(f.Layers, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Radiance, 0), i, j,
+                c) -
+              At(
+                f.Layers, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Ambient, 0), i, j, c);
+            panelAmbient[c] += At(
+              f.Layers, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Ambient, 0), i, j, c);
           }
         }
         floor += onFloor ? 1 : 0;
@@ -106,12 +112,15 @@ int TestDeepGBufferEmissive(int, char*[])
   std::printf("without the key: panel direct (%.4f, %.4f, %.4f) ambient (%.4f, %.4f, %.4f), "
               "largest L_ind %.3g\n",
     panelDirect[0], panelDirect[1], panelDirect[2], panelAmbient[0], panelAmbient[1],
-    panelAmbient[2], Maximum(f.Radiosity, "IndirectRadiance_0"));
+    panelAmbient[2],
+    Maximum(f.Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0)));
   Check(std::abs(panelAmbient[0] - 1.0) < 1e-2 && std::abs(panelAmbient[1] - 0.5) < 1e-2 &&
       std::abs(panelAmbient[2] - 0.25) < 1e-2 && std::abs(panelDirect[0]) < 1e-2,
     "without the key the panel's colour is AMBIENT, its direct radiance 0");
-  Check(Maximum(f.Radiosity, "IndirectRadiance_0") == 0.0 &&
-      Maximum(f.Radiosity, "IndirectRadiance_1") == 0.0,
+  Check(Maximum(f.Radiosity,
+          vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0)) == 0.0 &&
+      Maximum(f.Radiosity,
+        vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 1)) == 0.0,
     "without the key nothing is gathered: L_ind exactly 0");
 
   vtkNew<vtkInformation> keys;
@@ -156,8 +165,11 @@ int TestDeepGBufferEmissive(int, char*[])
       }
       for (int c = 0; c < 3; ++c)
       {
-        backDirect[c] += At(f.Layers, "Radiance_0", i, j, c) - At(f.Layers, "Ambient_0", i, j, c);
-        backAmbient[c] += At(f.Layers, "Ambient_0", i, j, c);
+        backDirect[c] +=
+          At(f.Layers, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Radiance, 0), i, j, c) -
+          At(f.Layers, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Ambient, 0), i, j, c);
+        backAmbient[c] +=
+          At(f.Layers, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Ambient, 0), i, j, c);
       }
       ++back;
     }

@@ -22,6 +22,7 @@
 
 #include "vtkDeepAmbientObscurancePass.h"
 #include "vtkDeepGBufferLayerExchange.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIKeys.h"
 #include "vtkDeepGIPass.h"
 #include "vtkInformation.h"
@@ -152,7 +153,7 @@ void CheckEmptiedLayer(vtkRenderWindow* window, vtkRenderer* renderer)
   exchange->EmptyLayerZero = true;
   gi->GetGBufferPass()->SetLayerExchange(exchange);
   RenderOnce(window, renderer, gi, frame);
-  vtkDataArray* valid = Layer(frame.Layers, "Valid", 0);
+  vtkDataArray* valid = Layer(frame.Layers, vtkDeepGICaptureNames::Valid, 0);
   double validTexels = 0.0;
   for (vtkIdType p = 0; valid && p < valid->GetNumberOfTuples(); ++p)
   {

@@ -16,6 +16,7 @@
 #include "vtkCamera.h"
 #include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferSceneLoader.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkFloatArray.h"
 #include "vtkLight.h"
 
@@ -157,9 +158,9 @@ bool CheckScene(const SceneBuilder& build, const char* name, double dz)
 // Pixels of layer 1 that repeat layer 0's surface (depth within 1e-4).
 long DuplicatePixels(vtkImageData* capture)
 {
-  vtkDataArray* d0 = Layer(capture, "Depth", 0);
-  vtkDataArray* d1 = Layer(capture, "Depth", 1);
-  vtkDataArray* v1 = Layer(capture, "Valid", 1);
+  vtkDataArray* d0 = Layer(capture, vtkDeepGICaptureNames::Depth, 0);
+  vtkDataArray* d1 = Layer(capture, vtkDeepGICaptureNames::Depth, 1);
+  vtkDataArray* v1 = Layer(capture, vtkDeepGICaptureNames::Valid, 1);
   long count = 0;
   for (vtkIdType p = 0; p < d1->GetNumberOfTuples(); ++p)
   {

@@ -18,6 +18,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkDeepGBufferDemoScene.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkSphereSource.h"
 
@@ -44,8 +45,8 @@ constexpr double MinimumReprojectSilhouetteShare = 0.6;
 // depth jump larger than dz between neighbours, or the edge of the geometry.
 std::vector<unsigned char> SilhouetteMask(vtkImageData* capture, double dz, int radius)
 {
-  vtkDataArray* depth = Layer(capture, "Depth", 0);
-  vtkDataArray* valid = Layer(capture, "Valid", 0);
+  vtkDataArray* depth = Layer(capture, vtkDeepGICaptureNames::Depth, 0);
+  vtkDataArray* valid = Layer(capture, vtkDeepGICaptureNames::Valid, 0);
   std::vector<unsigned char> edge(Width * Height, 0), near(Width * Height, 0);
   for (int y = 0; y < Height; ++y)
   {

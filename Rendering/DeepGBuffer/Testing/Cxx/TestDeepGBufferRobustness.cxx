@@ -12,6 +12,7 @@
 #include "DeepGBufferTestUtilities.h"
 
 #include "vtkCamera.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkLineSource.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
@@ -54,7 +55,7 @@ void AddSphereAndWall(vtkRenderer* renderer, bool normals = true)
 
 long ValidCount(vtkImageData* capture, int layer)
 {
-  vtkDataArray* valid = Layer(capture, "Valid", layer);
+  vtkDataArray* valid = Layer(capture, vtkDeepGICaptureNames::Valid, layer);
   long n = 0;
   for (vtkIdType p = 0; valid && p < valid->GetNumberOfTuples(); ++p)
   {
@@ -144,8 +145,9 @@ void TestLayerCounts()
       pass->DeepLayerBackfaceCullingOff(); // the sphere's far side makes layer 2
       auto capture = RenderAndCapture(
         pass, [](vtkRenderer* r) { AddSphereAndWall(r); }, 3);
-      const bool shape = capture && Layer(capture, "Depth", layers - 1) &&
-        !Layer(capture, "Depth", layers) && pass->GetEffectiveNumberOfLayers() == layers;
+      const bool shape = capture && Layer(capture, vtkDeepGICaptureNames::Depth, layers - 1) &&
+        !Layer(capture, vtkDeepGICaptureNames::Depth, layers) &&
+        pass->GetEffectiveNumberOfLayers() == layers;
       std::string what = std::to_string(layers) + " layer(s) with " +
         vtkDeepGBufferPass::GetOracleAsString(oracle) + ": capture shape, separation";
       Check(shape && Separated(capture, layers, 0.25) && AllFinite(capture) &&
@@ -259,8 +261,8 @@ void TestMappersAndTranslucency()
   // No normals: the shader's geometric normal faces the camera.
   vtkNew<vtkDeepGBufferPass> pass;
   auto capture = RenderAndCapture(pass, [](vtkRenderer* r) { AddSphereAndWall(r, false); });
-  vtkDataArray* normals = Layer(capture, "Normal", 0);
-  vtkDataArray* valid = Layer(capture, "Valid", 0);
+  vtkDataArray* normals = Layer(capture, vtkDeepGICaptureNames::Normal, 0);
+  vtkDataArray* valid = Layer(capture, vtkDeepGICaptureNames::Valid, 0);
   long facing = 0, total = 0;
   for (vtkIdType p = 0; p < normals->GetNumberOfTuples(); ++p)
   {
@@ -313,8 +315,8 @@ void TestMappersAndTranslucency()
   const vtkIdType pixel =
     static_cast<vtkIdType>(display[1]) * 200 + static_cast<vtkIdType>(display[0]);
   vtkDataArray* colour = rgb->GetPointData()->GetScalars();
-  vtkDataArray* albedo = Layer(layers, "Albedo", 0);
-  vtkDataArray* radiance = Layer(layers, "Radiance", 0);
+  vtkDataArray* albedo = Layer(layers, vtkDeepGICaptureNames::Albedo, 0);
+  vtkDataArray* radiance = Layer(layers, vtkDeepGICaptureNames::Radiance, 0);
   std::printf("  glass pixel: final blue %g, layer-0 blue %g, layer-0 albedo (%g %g %g)\n",
     colour->GetComponent(pixel, 2), 255.0 * radiance->GetComponent(pixel, 2),
     albedo->GetComponent(pixel, 0), albedo->GetComponent(pixel, 1), albedo->GetComponent(pixel, 2));

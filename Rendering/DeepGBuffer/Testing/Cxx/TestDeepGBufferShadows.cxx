@@ -37,6 +37,7 @@
 
 #include "vtkCameraPass.h"
 #include "vtkDeepGBufferPass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkSequencePass.h"
 #include "vtkShadowMapBakerPass.h"
@@ -126,8 +127,8 @@ bool Unoccluded(const double p[3])
 // Direct radiance RADIANCE - AMBIENT (red) of pixel q of a layer.
 double Direct(vtkImageData* layers, int layer, vtkIdType q)
 {
-  return Layer(layers, "Radiance", layer)->GetComponent(q, 0) -
-    Layer(layers, "Ambient", layer)->GetComponent(q, 0);
+  return Layer(layers, vtkDeepGICaptureNames::Radiance, layer)->GetComponent(q, 0) -
+    Layer(layers, vtkDeepGICaptureNames::Ambient, layer)->GetComponent(q, 0);
 }
 
 struct FloorStats
@@ -168,7 +169,9 @@ FloorStats Classify(vtkImageData* layers, int layer)
         ? 1
         : 0;
       st.Lit += direct > 0.5 * unshadowed ? 1 : 0;
-      st.BadAmbient += std::abs(Layer(layers, "Ambient", layer)->GetComponent(q, 0) - 0.1) > 2e-3;
+      st.BadAmbient +=
+        std::abs(Layer(layers, vtkDeepGICaptureNames::Ambient, layer)->GetComponent(q, 0) - 0.1) >
+        2e-3;
     }
   }
   return st;
@@ -294,8 +297,8 @@ int TestDeepGBufferShadows(int, char*[])
     vtkNew<vtkImageData> rgb;
     ReadWindow(vtkWindow, rgb, nullptr);
     vtkDataArray* colors = rgb->GetPointData()->GetScalars();
-    vtkDataArray* radiance = Layer(layers, "Radiance", 0);
-    vtkDataArray* valid = Layer(layers, "Valid", 0);
+    vtkDataArray* radiance = Layer(layers, vtkDeepGICaptureNames::Radiance, 0);
+    vtkDataArray* valid = Layer(layers, vtkDeepGICaptureNames::Valid, 0);
     long compared = 0, different = 0;
     double worst = 0.0;
     for (vtkIdType p = 0; p < colors->GetNumberOfTuples(); ++p)
@@ -346,8 +349,10 @@ int TestDeepGBufferShadows(int, char*[])
           continue;
         }
         ++n;
-        red += At(f.Radiosity, "IndirectRadiance_0", i, j, 0);
-        green += At(f.Radiosity, "IndirectRadiance_0", i, j, 1);
+        red += At(f.Radiosity,
+          vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0), i, j, 0);
+        green += At(f.Radiosity,
+          vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0), i, j, 1);
         direct = std::max(direct, d);
       }
     }

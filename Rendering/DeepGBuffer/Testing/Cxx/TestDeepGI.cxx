@@ -33,6 +33,7 @@
 
 #include "vtkAssembly.h"
 #include "vtkDeepAmbientObscurancePass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIPass.h"
 #include "vtkDeepReflectionPass.h"
 #include "vtkLightCollection.h"
@@ -146,14 +147,20 @@ void CheckComposite(bool multiply)
     Release(run);
     return;
   }
-  vtkDataArray* radiance = layers->GetPointData()->GetArray("Radiance_0");
-  vtkDataArray* ambient = layers->GetPointData()->GetArray("Ambient_0");
-  vtkDataArray* valid = layers->GetPointData()->GetArray("Valid_0");
-  vtkDataArray* visibility = av->GetPointData()->GetArray("AmbientVisibility");
-  vtkDataArray* indirect = radiosity->GetPointData()->GetArray("IndirectRadiance_0");
-  vtkDataArray* reflected = reflections->GetPointData()->GetArray("ReflectedRadiance");
-  vtkDataArray* reflectivity = reflections->GetPointData()->GetArray("Reflectivity");
-  vtkDataArray* traced = reflections->GetPointData()->GetArray("Valid");
+  vtkDataArray* radiance = layers->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Radiance, 0).c_str());
+  vtkDataArray* ambient = layers->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Ambient, 0).c_str());
+  vtkDataArray* valid = layers->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0).c_str());
+  vtkDataArray* visibility = av->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility);
+  vtkDataArray* indirect = radiosity->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0).c_str());
+  vtkDataArray* reflected =
+    reflections->GetPointData()->GetArray(vtkDeepGICaptureNames::ReflectedRadiance);
+  vtkDataArray* reflectivity =
+    reflections->GetPointData()->GetArray(vtkDeepGICaptureNames::Reflectivity);
+  vtkDataArray* traced = reflections->GetPointData()->GetArray(vtkDeepGICaptureNames::Valid);
   vtkDataArray* pixels = run.Image->GetPointData()->GetScalars();
   double worst = 0.0, aoTerm = 0.0, indirectTerm = 0.0, reflectionTerm = 0.0;
   long surface = 0;

@@ -24,6 +24,7 @@
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
 #include "vtkDeepAmbientObscurancePass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIPass.h"
 #include "vtkDeepGIReferenceImage.h"
 #include "vtkPolyData.h"
@@ -136,10 +137,10 @@ int TestDeepGIContact(int, char*[])
   reference->SetSamplesPerPixel(128);
   Check(reference->Compute(gi.Layers), "reference image");
   vtkPointData* ref = reference->GetOutput()->GetPointData();
-  vtkDataArray* truth = ref->GetArray("Radiance");
+  vtkDataArray* truth = ref->GetArray(vtkDeepGICaptureNames::Radiance);
   vtkDataArray* truthError = ref->GetArray("RadianceStandardError");
-  vtkDataArray* valid = ref->GetArray("Valid");
-  vtkDataArray* visibility = ref->GetArray("AmbientVisibility");
+  vtkDataArray* valid = ref->GetArray(vtkDeepGICaptureNames::Valid);
+  vtkDataArray* visibility = ref->GetArray(vtkDeepGICaptureNames::AmbientVisibility);
 
   std::vector<RingSums> rings(Rings);
   double squared[3] = { 0.0, 0.0, 0.0 };

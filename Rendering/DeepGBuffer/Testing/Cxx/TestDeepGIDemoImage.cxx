@@ -20,6 +20,7 @@
 #include "DeepGBufferTestUtilities.h"
 
 #include "vtkDeepGBufferDemoScene.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIPass.h"
 #include "vtkRegressionTestImage.h"
 
@@ -70,7 +71,8 @@ int TestDeepGIDemoImage(int argc, char* argv[])
   gi->Converge(renderer, 1);
   ReadWindow(window, image, nullptr);
 
-  vtkDataArray* valid = plainLayers->GetPointData()->GetArray("Valid_0");
+  vtkDataArray* valid = plainLayers->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0).c_str());
   vtkDataArray* a = image->GetPointData()->GetScalars();
   vtkDataArray* b = plain->GetPointData()->GetScalars();
   vtkDataArray* c = before->GetPointData()->GetScalars();

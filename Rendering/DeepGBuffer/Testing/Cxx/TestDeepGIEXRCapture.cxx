@@ -10,6 +10,7 @@
 #include "DeepGBufferTestUtilities.h"
 
 #include "vtkDeepGBufferDemoScene.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIEXRReader.h"
 #include "vtkDeepGIEXRWriter.h"
 #include "vtkDeepGIReferenceObscurance.h"
@@ -105,7 +106,8 @@ int TestDeepGIEXRCapture(int argc, char* argv[])
   vtkFieldData* b = exact->GetFieldData();
   bool sameField = true;
   for (const char* name :
-    { "ViewMatrix", "ProjectionMatrix", "MinimumSeparation", "NumberOfLayers" })
+    { vtkDeepGICaptureNames::ViewMatrix, vtkDeepGICaptureNames::ProjectionMatrix,
+      vtkDeepGICaptureNames::MinimumSeparation, vtkDeepGICaptureNames::NumberOfLayers })
   {
     vtkDataArray* x = a->GetArray(name);
     vtkDataArray* y = b->GetArray(name);
@@ -115,8 +117,8 @@ int TestDeepGIEXRCapture(int argc, char* argv[])
       sameField = x->GetComponent(0, k) == y->GetComponent(0, k);
     }
   }
-  auto oracle = vtkStringArray::SafeDownCast(b->GetAbstractArray("Oracle"));
-  auto oracleIn = vtkStringArray::SafeDownCast(a->GetAbstractArray("Oracle"));
+  auto oracle = vtkStringArray::SafeDownCast(b->GetAbstractArray(vtkDeepGICaptureNames::Oracle));
+  auto oracleIn = vtkStringArray::SafeDownCast(a->GetAbstractArray(vtkDeepGICaptureNames::Oracle));
   Check(sameField && oracle && oracleIn && oracle->GetValue(0) == oracleIn->GetValue(0),
     "FLOAT: field data exact");
 

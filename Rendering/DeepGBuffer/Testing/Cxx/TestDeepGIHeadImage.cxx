@@ -22,6 +22,7 @@
 #include "DeepRadiosityTest.h"
 
 #include "vtkColorTransferFunction.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIPass.h"
 #include "vtkFlyingEdges3D.h"
 #include "vtkPiecewiseFunction.h"
@@ -127,7 +128,8 @@ int TestDeepGIHeadImage(int argc, char* argv[])
   volume->VisibilityOn();
   gi->Converge(renderer, 2);
 
-  vtkDataArray* valid = plainLayers->GetPointData()->GetArray("Valid_0");
+  vtkDataArray* valid = plainLayers->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0).c_str());
   vtkDataArray* a = image->GetPointData()->GetScalars();
   vtkDataArray* b = plain->GetPointData()->GetScalars();
   vtkDataArray* v = noVolume->GetPointData()->GetScalars();

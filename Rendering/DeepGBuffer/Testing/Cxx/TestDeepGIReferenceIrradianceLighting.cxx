@@ -18,6 +18,7 @@
 
 #include "vtkCamera.h"
 #include "vtkDeepGBufferDemoScene.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIReferenceIrradiance.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
@@ -82,9 +83,9 @@ int TestDeepGIReferenceIrradianceLighting(int, char*[])
       continue;
     }
     vtkDataArray* direct = reference->GetOutput()->GetPointData()->GetArray("DirectRadiance");
-    vtkDataArray* radiance = Layer(capture, "Radiance", layer);
-    vtkDataArray* ambient = Layer(capture, "Ambient", layer);
-    vtkDataArray* valid = Layer(capture, "Valid", layer);
+    vtkDataArray* radiance = Layer(capture, vtkDeepGICaptureNames::Radiance, layer);
+    vtkDataArray* ambient = Layer(capture, vtkDeepGICaptureNames::Ambient, layer);
+    vtkDataArray* valid = Layer(capture, vtkDeepGICaptureNames::Valid, layer);
     long pixels = 0, passed = 0;
     std::vector<double> errors;
     double sumVTK = 0.0;
@@ -137,9 +138,9 @@ int TestDeepGIReferenceIrradianceLighting(int, char*[])
   reference->Compute(capture);
   {
     vtkDataArray* direct = reference->GetOutput()->GetPointData()->GetArray("DirectRadiance");
-    vtkDataArray* radiance = Layer(capture, "Radiance", 0);
-    vtkDataArray* ambient = Layer(capture, "Ambient", 0);
-    vtkDataArray* valid = Layer(capture, "Valid", 0);
+    vtkDataArray* radiance = Layer(capture, vtkDeepGICaptureNames::Radiance, 0);
+    vtkDataArray* ambient = Layer(capture, vtkDeepGICaptureNames::Ambient, 0);
+    vtkDataArray* valid = Layer(capture, vtkDeepGICaptureNames::Valid, 0);
     long pixels = 0, passed = 0;
     for (vtkIdType p = 0; p < valid->GetNumberOfTuples(); ++p)
     {

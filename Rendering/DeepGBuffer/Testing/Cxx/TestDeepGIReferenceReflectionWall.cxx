@@ -13,6 +13,7 @@
 
 #include "vtkAppendPolyData.h"
 #include "vtkDeepGBufferPass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIReferenceReflection.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
@@ -63,7 +64,7 @@ int TestDeepGIReferenceReflectionWall(int, char*[])
   Check(reference->Compute(capture), "reference computed");
   vtkPointData* out = reference->GetOutput()->GetPointData();
   vtkDataArray* hitArray = out->GetArray("Hit");
-  vtkDataArray* distanceArray = out->GetArray("HitDistance");
+  vtkDataArray* distanceArray = out->GetArray(vtkDeepGICaptureNames::HitDistance);
   vtkDataArray* positionArray = out->GetArray("HitPosition");
   vtkDataArray* directionArray = out->GetArray("MirrorDirection");
   const double eye[3] = { 0.3, 1.2, 3.0 };
@@ -86,9 +87,10 @@ int TestDeepGIReferenceReflectionWall(int, char*[])
       checked.push_back(p);
       // The capture's normal in world coordinates, as the reference reads it.
       double nc[3], n[3];
-      Layer(capture, "Normal", 0)->GetTuple(p, nc);
+      Layer(capture, vtkDeepGICaptureNames::Normal, 0)->GetTuple(p, nc);
       vtkNew<vtkMatrix4x4> view;
-      view->DeepCopy(vtkDoubleArray::SafeDownCast(capture->GetFieldData()->GetArray("ViewMatrix"))
+      view->DeepCopy(vtkDoubleArray::SafeDownCast(
+        capture->GetFieldData()->GetArray(vtkDeepGICaptureNames::ViewMatrix))
                        ->GetPointer(0));
       for (int c = 0; c < 3; ++c)
       {

@@ -27,6 +27,7 @@
 #include "vtkCommand.h"
 #include "vtkDeepAmbientObscurancePass.h"
 #include "vtkDeepGBufferPass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepRadiosityPass.h"
 #include "vtkMath.h"
 #include "vtkPointGaussianMapper.h"
@@ -144,8 +145,10 @@ Comparison Compare(vtkImageData* frame, vtkImageData* wide, const char* name, in
   Comparison c;
   vtkDataArray* a = frame->GetPointData()->GetArray(name);
   vtkDataArray* b = wide->GetPointData()->GetArray(name);
-  vtkDataArray* va = frameLayers->GetPointData()->GetArray("Valid_0");
-  vtkDataArray* vb = wideLayers->GetPointData()->GetArray("Valid_0");
+  vtkDataArray* va = frameLayers->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0).c_str());
+  vtkDataArray* vb = wideLayers->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0).c_str());
   if (!a || !b || !va || !vb)
   {
     return c;
@@ -205,16 +208,20 @@ void TestExactness()
   Check(dims[0] == Width && dims[1] == Height, "captures are the frame's size");
   Check(AllFinite(guarded.Radiosity) && AllFinite(guarded.Visibility), "finite results");
 
-  const Comparison depth =
-    Compare(guarded.Layers, wide.Layers, "Depth_0", Guard, guarded.Layers, wide.Layers, 1e-4);
-  const Comparison radiance =
-    Compare(guarded.Layers, wide.Layers, "Radiance_0", Guard, guarded.Layers, wide.Layers, 2e-3);
-  const Comparison av = Compare(guarded.Visibility, wide.Visibility, "AmbientVisibility", Guard,
+  const Comparison depth = Compare(guarded.Layers, wide.Layers,
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Depth, 0).c_str(), Guard, guarded.Layers,
+    wide.Layers, 1e-4);
+  const Comparison radiance = Compare(guarded.Layers, wide.Layers,
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Radiance, 0).c_str(), Guard, guarded.Layers,
+    wide.Layers, 2e-3);
+  const Comparison av = Compare(guarded.Visibility, wide.Visibility,
+    vtkDeepGICaptureNames::AmbientVisibility, Guard, guarded.Layers, wide.Layers, 2e-3);
+  const Comparison raw = Compare(guarded.Radiosity, wide.Radiosity,
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::RawIrradiance, 0).c_str(), Guard,
     guarded.Layers, wide.Layers, 2e-3);
-  const Comparison raw = Compare(
-    guarded.Radiosity, wide.Radiosity, "RawIrradiance_0", Guard, guarded.Layers, wide.Layers, 2e-3);
-  const Comparison filtered = Compare(
-    guarded.Radiosity, wide.Radiosity, "Irradiance_0", Guard, guarded.Layers, wide.Layers, 2e-3);
+  const Comparison filtered = Compare(guarded.Radiosity, wide.Radiosity,
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 0).c_str(), Guard,
+    guarded.Layers, wide.Layers, 2e-3);
   Report("guard band vs wide: layer 0 distance", depth);
   Report("guard band vs wide: layer 0 radiance", radiance);
   Report("guard band vs wide: AV", av);
@@ -226,10 +233,11 @@ void TestExactness()
   Check(MostlyEqual(raw), "raw irradiance = the wide render's centre");
   Check(MostlyEqual(filtered), "filtered irradiance = the wide render's centre");
 
-  const Comparison plainAV = Compare(
-    plain.Visibility, wide.Visibility, "AmbientVisibility", Guard, plain.Layers, wide.Layers, 2e-3);
-  const Comparison plainE = Compare(
-    plain.Radiosity, wide.Radiosity, "Irradiance_0", Guard, plain.Layers, wide.Layers, 2e-3);
+  const Comparison plainAV = Compare(plain.Visibility, wide.Visibility,
+    vtkDeepGICaptureNames::AmbientVisibility, Guard, plain.Layers, wide.Layers, 2e-3);
+  const Comparison plainE = Compare(plain.Radiosity, wide.Radiosity,
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 0).c_str(), Guard, plain.Layers,
+    wide.Layers, 2e-3);
   Report("no guard band vs wide: AV", plainAV);
   Report("no guard band vs wide: E", plainE);
   Check(plainAV.BorderMean > 10.0 * av.BorderMean && plainAV.BorderMean > 1e-3,
@@ -237,8 +245,9 @@ void TestExactness()
   Check(plainE.BorderMean > 10.0 * filtered.BorderMean && plainE.BorderMean > 1e-3,
     "without a guard band the border's irradiance misses the light outside the view");
 
-  const Comparison unshadedRaw = Compare(unshaded.Radiosity, wide.Radiosity, "RawIrradiance_0",
-    Guard, unshaded.Layers, wide.Layers, 2e-3);
+  const Comparison unshadedRaw = Compare(unshaded.Radiosity, wide.Radiosity,
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::RawIrradiance, 0).c_str(), Guard,
+    unshaded.Layers, wide.Layers, 2e-3);
   Report("shaded fraction 0 vs wide: raw E", unshadedRaw);
   Check(MostlyEqual(unshadedRaw), "shaded fraction 0 still gathers from the whole guard band");
 
@@ -249,9 +258,11 @@ void TestExactness()
   Render(guardedBounces, GuardFraction, 0, 1.0, 0.5, 5);
   Render(wideBounces, 0.0, Guard, 1.0, 0.5, 5);
   const Comparison bounces = Compare(guardedBounces.Radiosity, wideBounces.Radiosity,
-    "IndirectRadiance_0", Guard, guardedBounces.Layers, wideBounces.Layers, 2e-3);
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0).c_str(), Guard,
+    guardedBounces.Layers, wideBounces.Layers, 2e-3);
   const Comparison bouncesLayer1 = Compare(guardedBounces.Radiosity, wideBounces.Radiosity,
-    "IndirectRadiance_1", Guard, guardedBounces.Layers, wideBounces.Layers, 2e-3);
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 1).c_str(), Guard,
+    guardedBounces.Layers, wideBounces.Layers, 2e-3);
   Report("guard band vs wide after 5 bounces: L_ind", bounces);
   Report("guard band vs wide after 5 bounces: layer 1 L_ind", bouncesLayer1);
   Check(MostlyEqual(bounces), "bounces = the wide render's centre");

@@ -30,6 +30,7 @@
 #include "DeepRadiosityTest.h"
 
 #include "vtkDeepAmbientObscurancePass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkObjectFactory.h"
 #include "vtkRenderState.h"
 
@@ -107,11 +108,12 @@ Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerC
     return g;
   }
   const double eps = vtkDeepRadiosityPass::COSINE_EPSILON;
-  const double* P =
-    vtkDoubleArray::SafeDownCast(layers->GetFieldData()->GetArray("ProjectionMatrix"))
-      ->GetPointer(0);
+  const double* P = vtkDoubleArray::SafeDownCast(
+    layers->GetFieldData()->GetArray(vtkDeepGICaptureNames::ProjectionMatrix))
+                      ->GetPointer(0);
   double nX[3];
-  Layer(layers, "Normal", layer)->GetTuple(static_cast<vtkIdType>(j) * W + i, nX);
+  Layer(layers, vtkDeepGICaptureNames::Normal, layer)
+    ->GetTuple(static_cast<vtkIdType>(j) * W + i, nX);
   const double rp = radius * P[5] * 0.5 * H / (P[14] * X0[2] + P[15]);
   const double ign =
     52.9829189 * std::fmod(0.06711056 * (i / divisor) + 0.00583715 * (j / divisor), 1.0);
@@ -162,7 +164,7 @@ Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerC
       const double w[3] = { v[0] / len, v[1] / len, v[2] / len };
       const double cosX = w[0] * nX[0] + w[1] * nX[1] + w[2] * nX[2];
       double nY[3];
-      Layer(layers, "Normal", k)->GetTuple(source, nY);
+      Layer(layers, vtkDeepGICaptureNames::Normal, k)->GetTuple(source, nY);
       if (!(cosX > eps) || (normalTest && !(w[0] * nY[0] + w[1] * nY[1] + w[2] * nY[2] < -eps)))
       {
         continue;
@@ -170,9 +172,10 @@ Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerC
       double c[3], score = 1.0;
       for (int a = 0; a < 3; ++a)
       {
-        const double B = std::max(Layer(layers, "Radiance", k)->GetComponent(source, a) -
-            Layer(layers, "Ambient", k)->GetComponent(source, a),
-          0.0);
+        const double B =
+          std::max(Layer(layers, vtkDeepGICaptureNames::Radiance, k)->GetComponent(source, a) -
+              Layer(layers, vtkDeepGICaptureNames::Ambient, k)->GetComponent(source, a),
+            0.0);
         c[a] = B * cosX;
         score += c[a] * c[a];
       }
@@ -233,8 +236,8 @@ void TestReference(int preset)
     return;
   }
   Check(AllFinite(f.Radiosity), "radiosity finite");
-  const int layerCount =
-    static_cast<int>(f.Radiosity->GetFieldData()->GetArray("NumberOfLayers")->GetTuple1(0));
+  const int layerCount = static_cast<int>(
+    f.Radiosity->GetFieldData()->GetArray(vtkDeepGICaptureNames::NumberOfLayers)->GetTuple1(0));
   Check(layerCount == 2, "two layers");
   int finest = 0;
   while ((std::max(f.Width, f.Height) >> (finest + 1)) > 0)
@@ -257,7 +260,8 @@ void TestReference(int preset)
     {
       for (int i = 0; i < f.Width; ++i)
       {
-        if (At(f.Radiosity, "Valid" + suffix, i, j) == 0 || i % divisor != 0 || j % divisor != 0)
+        if (At(f.Radiosity, vtkDeepGICaptureNames::Valid + suffix, i, j) == 0 || i % divisor != 0 ||
+          j % divisor != 0)
         {
           continue;
         }
@@ -265,10 +269,12 @@ void TestReference(int preset)
         const Gather g =
           ReferenceGather(f.Layers, i, j, layer, layerCount, pass->GetNumberOfSamples(), radius,
             pass->GetMipThreshold(), minMip, maxMip, pass->GetUseNormalTest(), divisor);
-        bool same = std::abs(At(f.Radiosity, "RawConfidence" + suffix, i, j) - g.Confidence) < 1e-6;
+        bool same = std::abs(At(f.Radiosity, vtkDeepGICaptureNames::RawConfidence + suffix, i, j) -
+                      g.Confidence) < 1e-6;
         for (int c = 0; c < 3; ++c)
         {
-          const double d = std::abs(At(f.Radiosity, "RawIrradiance" + suffix, i, j, c) - g.E[c]);
+          const double d = std::abs(
+            At(f.Radiosity, vtkDeepGICaptureNames::RawIrradiance + suffix, i, j, c) - g.E[c]);
           same = same && d <= 1e-3 * (1.0 + std::abs(g.E[c]));
           worst = std::max(worst, d);
         }
@@ -318,13 +324,16 @@ void TestBleeding()
           ++count[b];
           for (int c = 0; c < 3; ++c)
           {
-            sum[b][c] += At(f.Radiosity, "IndirectRadiance_0", i, j, c);
+            sum[b][c] += At(f.Radiosity,
+              vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0), i, j, c);
           }
         }
       }
       if (p[0] > radius + 0.05)
       {
-        beyond = std::max(beyond, At(f.Radiosity, "RawIrradiance_0", i, j, 0));
+        beyond = std::max(beyond,
+          At(f.Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::RawIrradiance, 0), i,
+            j, 0));
       }
     }
   }
@@ -364,7 +373,7 @@ void TestBleeding()
     for (int i = 0; i < g.Width; ++i)
     {
       const vtkIdType p = static_cast<vtkIdType>(j) * g.Width + i;
-      if (At(g.Radiosity, "Valid_0", i, j) == 0)
+      if (At(g.Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0), i, j) == 0)
       {
         ++background;
         wrongBackground +=
@@ -377,8 +386,9 @@ void TestBleeding()
       {
         const double expected = 255.0 *
           std::min(1.0,
-            Layer(g.Layers, "Radiance", 0)->GetComponent(p, c) +
-              At(g.Radiosity, "IndirectRadiance_0", i, j, c));
+            Layer(g.Layers, vtkDeepGICaptureNames::Radiance, 0)->GetComponent(p, c) +
+              At(g.Radiosity,
+                vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0), i, j, c));
         worst = std::max(worst, std::abs(pixels->GetComponent(p, c) - expected));
       }
     }
@@ -401,7 +411,8 @@ void BlueExcess(Frame& f, double& largest, double& mean, long& pixels)
   pixels = 0;
   for (int layer = 0; layer < 2; ++layer)
   {
-    const std::string name = "RawIrradiance_" + std::to_string(layer);
+    const std::string name =
+      vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::RawIrradiance, layer);
     for (int j = 0; j < f.Height; ++j)
     {
       for (int i = 0; i < f.Width; ++i)
@@ -497,18 +508,24 @@ void TestBoost()
       {
         continue; // not the floor
       }
-      whiteFloor = std::max(whiteFloor, At(white.Radiosity, "IndirectRadiance_0", i, j, 0));
-      const double a = At(plain.Radiosity, "IndirectRadiance_0", i, j, 0);
+      whiteFloor = std::max(whiteFloor,
+        At(white.Radiosity,
+          vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0), i, j, 0));
+      const double a = At(plain.Radiosity,
+        vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0), i, j, 0);
       if (a > 1e-3)
       {
         ++compared;
         // Eq. 7 of the stored (8-bit) albedo: (max - min) / max.
         double rho[3];
-        Layer(boosted.Layers, "Albedo", 0)->GetTuple(pixel, rho);
+        Layer(boosted.Layers, vtkDeepGICaptureNames::Albedo, 0)->GetTuple(pixel, rho);
         const double boost =
           (std::max({ rho[0], rho[1], rho[2] }) - std::min({ rho[0], rho[1], rho[2] })) /
           std::max({ rho[0], rho[1], rho[2] });
-        ratio = At(boosted.Radiosity, "IndirectRadiance_0", i, j, 0) / a;
+        ratio =
+          At(boosted.Radiosity,
+            vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0), i, j, 0) /
+          a;
         worst = std::max(worst, std::abs(ratio - boost));
       }
     }
@@ -542,20 +559,26 @@ void TestFallback()
   {
     for (int i = 0; i < a.Width; ++i)
     {
-      if (At(a.Radiosity, "Valid_0", i, j) == 0)
+      if (At(a.Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0), i, j) == 0)
       {
         continue;
       }
-      const double c = At(b.Radiosity, "Confidence_0", i, j);
+      const double c =
+        At(b.Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Confidence, 0), i, j);
       lowest = std::min(lowest, c);
       for (int k = 0; k < 3; ++k)
       {
-        const double rho =
-          Layer(b.Layers, "Albedo", 0)->GetComponent(static_cast<vtkIdType>(j) * a.Width + i, k);
-        const double expected = c * At(a.Radiosity, "IndirectRadiance_0", i, j, k) +
+        const double rho = Layer(b.Layers, vtkDeepGICaptureNames::Albedo, 0)
+                             ->GetComponent(static_cast<vtkIdType>(j) * a.Width + i, k);
+        const double expected = c *
+            At(a.Radiosity,
+              vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0), i, j, k) +
           (1.0 - c) * rho * environment[k] / Pi;
-        worst =
-          std::max(worst, std::abs(At(b.Radiosity, "IndirectRadiance_0", i, j, k) - expected));
+        worst = std::max(worst,
+          std::abs(
+            At(b.Radiosity,
+              vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0), i, j, k) -
+            expected));
       }
     }
   }
@@ -615,8 +638,10 @@ void TestExternalComposite()
   {
     return;
   }
-  vtkDataArray* x = a.Radiosity->GetPointData()->GetArray("IndirectRadiance_0");
-  vtkDataArray* y = b.Radiosity->GetPointData()->GetArray("IndirectRadiance_0");
+  vtkDataArray* x = a.Radiosity->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0).c_str());
+  vtkDataArray* y = b.Radiosity->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0).c_str());
   double worst = 0.0, image = 0.0;
   vtkNew<vtkImageData> rgb;
   ReadWindow(b.Window, rgb, nullptr);
@@ -625,11 +650,13 @@ void TestExternalComposite()
     for (int c = 0; c < 3; ++c)
     {
       worst = std::max(worst, std::abs(x->GetComponent(p, c) - y->GetComponent(p, c)));
-      if (Layer(b.Layers, "Valid", 0)->GetTuple1(p) != 0)
+      if (Layer(b.Layers, vtkDeepGICaptureNames::Valid, 0)->GetTuple1(p) != 0)
       {
         image = std::max(image,
           std::abs(rgb->GetPointData()->GetScalars()->GetComponent(p, c) -
-            255.0 * std::min(1.0, Layer(b.Layers, "Radiance", 0)->GetComponent(p, c))));
+            255.0 *
+              std::min(
+                1.0, Layer(b.Layers, vtkDeepGICaptureNames::Radiance, 0)->GetComponent(p, c))));
       }
     }
   }
@@ -685,13 +712,15 @@ void TestPresets()
   Check(warnings.Count == 1 && pass->GetNumberOfSamples() == 30, "unknown preset ignored");
   std::ostringstream os;
   pass->Print(os);
-  for (const char* name : { "Radius", "AutomaticRadius", "AutomaticRadiusFraction",
-         "EffectiveRadius", "NumberOfSamples", "UseNormalTest", "UseColorBoost", "BlurRadius",
-         "BlurPlaneTolerance", "BlurNormalPower", "MipThreshold", "MinimumMipLevel",
-         "MaximumMipLevel", "ResolutionDivisor", "Damping", "TemporalAlpha",
-         "ReprojectionTolerance", "AutomaticReprojectionTolerance", "AutomaticReprojectionFraction",
-         "EffectiveReprojectionTolerance", "ConfidenceFallback", "EnvironmentIrradiance",
-         "AutomaticEnvironmentIrradiance", "EffectiveEnvironmentIrradiance", "GBufferPass" })
+  for (const char* name :
+    { vtkDeepGICaptureNames::Radius, "AutomaticRadius", "AutomaticRadiusFraction",
+      "EffectiveRadius", vtkDeepGICaptureNames::NumberOfSamples, "UseNormalTest", "UseColorBoost",
+      "BlurRadius", "BlurPlaneTolerance", "BlurNormalPower", "MipThreshold", "MinimumMipLevel",
+      "MaximumMipLevel", "ResolutionDivisor", "Damping", "TemporalAlpha",
+      vtkDeepGICaptureNames::ReprojectionTolerance, "AutomaticReprojectionTolerance",
+      "AutomaticReprojectionFraction", "EffectiveReprojectionTolerance", "ConfidenceFallback",
+      vtkDeepGICaptureNames::EnvironmentIrradiance, "AutomaticEnvironmentIrradiance",
+      "EffectiveEnvironmentIrradiance", "GBufferPass" })
   {
     Check(os.str().find(std::string(name) + ":") != std::string::npos,
       std::string("PrintSelf prints ") + name);

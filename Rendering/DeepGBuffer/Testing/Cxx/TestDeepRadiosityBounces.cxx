@@ -25,6 +25,7 @@
 //   history (Frames = 1) and the same first frame (1e-6).
 
 #include "DeepRadiosityTest.h"
+#include "vtkDeepGICaptureNames.h"
 
 #include <algorithm>
 #include <vector>
@@ -57,8 +58,8 @@ double LargestDirect(vtkImageData* layers)
   double largest = 0.0;
   for (int j = 0; j < 2; ++j)
   {
-    vtkDataArray* radiance = Layer(layers, "Radiance", j);
-    vtkDataArray* ambient = Layer(layers, "Ambient", j);
+    vtkDataArray* radiance = Layer(layers, vtkDeepGICaptureNames::Radiance, j);
+    vtkDataArray* ambient = Layer(layers, vtkDeepGICaptureNames::Ambient, j);
     for (vtkIdType p = 0; p < radiance->GetNumberOfTuples(); ++p)
     {
       for (int c = 0; c < 3; ++c)
@@ -91,11 +92,18 @@ void TestEnergy(double alpha)
   {
     window->Render();
     pass->CaptureIrradiance(radiosity, renderer);
-    total[k] = Total(radiosity, "IndirectRadiance_0") + Total(radiosity, "IndirectRadiance_1");
-    layer1[k] = Total(radiosity, "IndirectRadiance_1");
-    largest = std::max({ largest, Maximum(radiosity, "IndirectRadiance_0"),
-      Maximum(radiosity, "IndirectRadiance_1") });
-    finite = finite && AllFinite(radiosity) && Minimum(radiosity, "IndirectRadiance_0") >= 0.0;
+    total[k] =
+      Total(radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0)) +
+      Total(radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 1));
+    layer1[k] =
+      Total(radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 1));
+    largest = std::max({ largest,
+      Maximum(radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0)),
+      Maximum(
+        radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 1)) });
+    finite = finite && AllFinite(radiosity) &&
+      Minimum(
+        radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0)) >= 0.0;
     if (k > 0 && total[k] < total[k - 1] * (1.0 - 1e-5))
     {
       monotone = false;
@@ -167,39 +175,44 @@ void TestReprojection()
   window->Render();
   pass->CaptureIrradiance(after, renderer);
   pass->GetGBufferPass()->CaptureLayers(afterLayers, renderer);
-  const double tolerance = after->GetFieldData()->GetArray("ReprojectionTolerance")->GetTuple1(0);
+  const double tolerance =
+    after->GetFieldData()->GetArray(vtkDeepGICaptureNames::ReprojectionTolerance)->GetTuple1(0);
   long kept = 0, fresh = 0, fromLayer1 = 0, wrong = 0;
   for (int j = 0; j < H; ++j)
   {
     for (int i = 0; i < W; ++i)
     {
-      if (At(after, "Valid_0", i, j) == 0)
+      if (At(after, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0), i, j) == 0)
       {
         continue;
       }
       const vtkIdType p = static_cast<vtkIdType>(j) * W + i;
-      const double d = Layer(afterLayers, "Depth", 0)->GetTuple1(p);
-      const double d0 = Layer(beforeLayers, "Depth", 0)->GetTuple1(p);
-      const double d1 = Layer(beforeLayers, "Depth", 1)->GetTuple1(p);
+      const double d = Layer(afterLayers, vtkDeepGICaptureNames::Depth, 0)->GetTuple1(p);
+      const double d0 = Layer(beforeLayers, vtkDeepGICaptureNames::Depth, 0)->GetTuple1(p);
+      const double d1 = Layer(beforeLayers, vtkDeepGICaptureNames::Depth, 1)->GetTuple1(p);
       const double e0 = d0 > 0 ? std::abs(d0 - d) : 1e30, e1 = d1 > 0 ? std::abs(d1 - d) : 1e30;
-      const char* expected = nullptr;
+      std::string expected;
       std::string source;
       if (std::min(e0, e1) > tolerance)
       {
-        expected = "FilteredIrradiance_0";
+        expected = vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::FilteredIrradiance, 0);
         ++fresh;
       }
       else
       {
-        expected = e0 <= e1 ? "Irradiance_0" : "Irradiance_1";
+        expected = e0 <= e1 ? vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 0)
+                            : vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 1);
         (e0 <= e1 ? kept : fromLayer1)++;
       }
       vtkImageData* from =
-        std::string(expected) == "FilteredIrradiance_0" ? after.GetPointer() : before.GetPointer();
+        expected == vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::FilteredIrradiance, 0)
+        ? after.GetPointer()
+        : before.GetPointer();
       for (int c = 0; c < 3; ++c)
       {
-        if (std::abs(At(after, "Irradiance_0", i, j, c) - At(from, expected, i, j, c)) >
-          1e-6 * (1.0 + std::abs(At(from, expected, i, j, c))))
+        if (std::abs(At(after, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 0),
+                       i, j, c) -
+              At(from, expected, i, j, c)) > 1e-6 * (1.0 + std::abs(At(from, expected, i, j, c))))
         {
           ++wrong;
           break;
@@ -257,7 +270,7 @@ void TestMotion()
     {
       for (int i = 0; i < W; ++i)
       {
-        if (At(radiosity, "Valid_0", i, j) == 0)
+        if (At(radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0), i, j) == 0)
         {
           continue;
         }
@@ -266,11 +279,16 @@ void TestMotion()
         for (int c = 0; c < 3; ++c)
         {
           fresh = fresh &&
-            At(radiosity, "Irradiance_0", i, j, c) ==
-              At(radiosity, "FilteredIrradiance_0", i, j, c);
+            At(radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 0), i, j,
+              c) ==
+              At(radiosity,
+                vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::FilteredIrradiance, 0), i, j,
+                c);
         }
         // Pixels without light (E = 0 both ways) say nothing.
-        fresh = fresh && At(radiosity, "FilteredIrradiance_0", i, j, 0) > 0.0;
+        fresh = fresh &&
+          At(radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::FilteredIrradiance, 0),
+            i, j, 0) > 0.0;
         rejected += fresh ? 1 : 0;
       }
     }
@@ -325,15 +343,22 @@ void TestRenderers()
       {
         for (int c = 0; c < 3; ++c)
         {
-          const double x = At(f.Radiosity, "Irradiance_0", i, j, c);
-          worst = std::max(worst, std::abs(At(together[s], "Irradiance_0", i, j, c) - x));
+          const double x = At(f.Radiosity,
+            vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 0), i, j, c);
+          worst = std::max(worst,
+            std::abs(
+              At(together[s], vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 0), i,
+                j, c) -
+              x));
           largest = std::max(largest, x);
         }
       }
     }
     std::printf("renderer %d of 2: frames %g, largest |E - E alone| %.3g (largest E %.3f)\n", s,
-      together[s]->GetFieldData()->GetArray("Frames")->GetTuple1(0), worst, largest);
-    Check(together[s]->GetFieldData()->GetArray("Frames")->GetTuple1(0) == frames,
+      together[s]->GetFieldData()->GetArray(vtkDeepGICaptureNames::Frames)->GetTuple1(0), worst,
+      largest);
+    Check(
+      together[s]->GetFieldData()->GetArray(vtkDeepGICaptureNames::Frames)->GetTuple1(0) == frames,
       "each renderer counts its own frames");
     Check(largest > 0.1 && worst <= 1e-4 * largest, "two renderers = each alone");
     alone->ReleaseGraphicsResources(f.Window);
@@ -361,8 +386,10 @@ void TestRestart()
   window->Render();
   pass->CaptureIrradiance(again, renderer);
   double worst = 0.0;
-  vtkDataArray* x = first->GetPointData()->GetArray("Irradiance_0");
-  vtkDataArray* y = again->GetPointData()->GetArray("Irradiance_0");
+  vtkDataArray* x = first->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 0).c_str());
+  vtkDataArray* y = again->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 0).c_str());
   for (vtkIdType p = 0; p < x->GetNumberOfTuples(); ++p)
   {
     for (int c = 0; c < 3; ++c)
@@ -371,14 +398,15 @@ void TestRestart()
     }
   }
   std::printf("after ReleaseGraphicsResources: frames %g, largest |E - first frame E| %.3g\n",
-    again->GetFieldData()->GetArray("Frames")->GetTuple1(0), worst);
-  Check(again->GetFieldData()->GetArray("Frames")->GetTuple1(0) == 1, "history restarted");
+    again->GetFieldData()->GetArray(vtkDeepGICaptureNames::Frames)->GetTuple1(0), worst);
+  Check(again->GetFieldData()->GetArray(vtkDeepGICaptureNames::Frames)->GetTuple1(0) == 1,
+    "history restarted");
   Check(worst <= 1e-6, "same first frame after ReleaseGraphicsResources");
   window->Render();
   window->SetSize(100, 80);
   window->Render();
   pass->CaptureIrradiance(resized, renderer);
-  Check(resized->GetFieldData()->GetArray("Frames")->GetTuple1(0) == 1 &&
+  Check(resized->GetFieldData()->GetArray(vtkDeepGICaptureNames::Frames)->GetTuple1(0) == 1 &&
       resized->GetDimensions()[0] == 100 && AllFinite(resized),
     "a resize restarts the history");
   pass->ReleaseGraphicsResources(window);

@@ -28,6 +28,7 @@
 #include "DeepRadiosityReferenceTest.h"
 
 #include "vtkDeepGBufferPass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepRadiosityPass.h"
 
 #include <algorithm>
@@ -70,9 +71,12 @@ std::pair<double, double> Measure(const std::string& sceneName, const std::strin
   double standardError = 0;
   const std::vector<double> ref = ReferenceIrradiance(
     scene, renderer, layers, std::numeric_limits<double>::infinity(), 32, standardError);
-  const std::vector<double> e = Luminance(radiosity, "Irradiance_0");
-  vtkDataArray* confidence = radiosity->GetPointData()->GetArray("Confidence_0");
-  vtkDataArray* valid = layers->GetPointData()->GetArray("Valid_0");
+  const std::vector<double> e =
+    Luminance(radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 0));
+  vtkDataArray* confidence = radiosity->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Confidence, 0).c_str());
+  vtkDataArray* valid = layers->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0).c_str());
   if (ref.size() != e.size())
   {
     return { 0.0, 0.0 };

@@ -29,6 +29,7 @@
 #include "DeepRadiosityTest.h"
 
 #include "vtkDeepGBufferSceneLoader.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkImageActor.h"
 #include "vtkImageProperty.h"
 #include "vtkLightCollection.h"
@@ -133,7 +134,8 @@ int TestDeepRadiosityCornellImage(int argc, char* argv[])
     return EXIT_FAILURE;
   }
   {
-    vtkDataArray* l = radiosity->GetPointData()->GetArray("IndirectRadiance_0");
+    vtkDataArray* l = radiosity->GetPointData()->GetArray(
+      vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0).c_str());
     unsigned char* out = static_cast<unsigned char*>(rgb->GetScalarPointer());
     for (vtkIdType p = 0; p < l->GetNumberOfTuples(); ++p)
     {
@@ -163,9 +165,10 @@ int TestDeepRadiosityCornellImage(int argc, char* argv[])
         double direct[3], indirect[3], normal[3];
         for (int c = 0; c < 3; ++c)
         {
-          direct[c] = At(layers, "Radiance" + j, x, y, c) - At(layers, "Ambient" + j, x, y, c);
-          indirect[c] = At(radiosity, "IndirectRadiance" + j, x, y, c);
-          normal[c] = At(layers, "Normal" + j, x, y, c);
+          direct[c] = At(layers, vtkDeepGICaptureNames::Radiance + j, x, y, c) -
+            At(layers, vtkDeepGICaptureNames::Ambient + j, x, y, c);
+          indirect[c] = At(radiosity, vtkDeepGICaptureNames::IndirectRadiance + j, x, y, c);
+          normal[c] = At(layers, vtkDeepGICaptureNames::Normal + j, x, y, c);
         }
         all.Add(indirect);
         const bool underLamp = std::abs(p[0]) < 0.3 && p[2] > -0.3 && p[2] < 0.22;
@@ -205,7 +208,9 @@ int TestDeepRadiosityCornellImage(int argc, char* argv[])
     all.Mean(1), all.Mean(2));
 
   Check(AllFinite(radiosity) && AllFinite(layers), "finite captures (no NaN)");
-  Check(Minimum(radiosity, "IndirectRadiance_0") >= 0.0, "L_ind >= 0");
+  Check(Minimum(radiosity,
+          vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0)) >= 0.0,
+    "L_ind >= 0");
   Check(lamp.Pixels > 50 && std::abs(lamp.Mean(0) - 1.0) < 2e-3 &&
       std::abs(lamp.Mean(1) - 12.0 / 17.0) < 2e-3 && std::abs(lamp.Mean(2) - 4.0 / 17.0) < 2e-3,
     "the lamp's direct radiance is Ke / max(Ke)");

@@ -20,6 +20,7 @@
 #include "DeepRadiosityTest.h"
 
 #include "vtkDeepGBufferDemoScene.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkImageActor.h"
 #include "vtkImageProperty.h"
 #include "vtkRegressionTestImage.h"
@@ -82,7 +83,8 @@ int TestDeepRadiosityDemoImage(int argc, char* argv[])
   ok = ok && pass->CaptureIrradiance(shown, lit);
   if (ok)
   {
-    vtkDataArray* l = shown->GetPointData()->GetArray("IndirectRadiance_0");
+    vtkDataArray* l = shown->GetPointData()->GetArray(
+      vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0).c_str());
     unsigned char* out = static_cast<unsigned char*>(rgb->GetScalarPointer());
     for (vtkIdType p = 0; p < l->GetNumberOfTuples(); ++p)
     {
@@ -102,10 +104,14 @@ int TestDeepRadiosityDemoImage(int argc, char* argv[])
     return EXIT_FAILURE;
   }
 
-  vtkDataArray* l = last->GetPointData()->GetArray("IndirectRadiance_0");
-  vtkDataArray* before = shown->GetPointData()->GetArray("IndirectRadiance_0");
-  vtkDataArray* confidence = last->GetPointData()->GetArray("Confidence_0");
-  vtkDataArray* valid = last->GetPointData()->GetArray("Valid_0");
+  vtkDataArray* l = last->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0).c_str());
+  vtkDataArray* before = shown->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0).c_str());
+  vtkDataArray* confidence = last->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Confidence, 0).c_str());
+  vtkDataArray* valid = last->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0).c_str());
   long surface = 0, confident = 0;
   double sum = 0.0, changed = 0.0, largest = 0.0, confidenceSum = 0.0;
   for (vtkIdType p = 0; p < l->GetNumberOfTuples(); ++p)
@@ -127,14 +133,19 @@ int TestDeepRadiosityDemoImage(int argc, char* argv[])
   const double mean = sum / std::max(surface, 1L);
   const double fraction = static_cast<double>(confident) / std::max(surface, 1L);
   const double meanConfidence = confidenceSum / std::max(surface, 1L);
-  const double growth = Total(last, "IndirectRadiance_0") / Total(first, "IndirectRadiance_0");
+  const double growth =
+    Total(last, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0)) /
+    Total(first, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0));
   std::printf(
     "demo scene: %ld surface px (radius %.4g, N %d), mean L_ind %.4f, largest %.4f, "
     "mean confidence %.3f, > 0.25 on %.3f, total frame %d / frame 1 = %.4f, change since the "
     "displayed frame %.2e\n",
     surface, pass->GetEffectiveRadius(), pass->GetNumberOfSamples(), mean, largest, meanConfidence,
     fraction, frames, growth, changed);
-  Check(AllFinite(last) && Minimum(last, "IndirectRadiance_0") >= 0.0, "finite, non-negative");
+  Check(AllFinite(last) &&
+      Minimum(last, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0)) >=
+        0.0,
+    "finite, non-negative");
   Check(surface > W * H / 2, "the scene fills the view");
   Check(mean >= 0.019 && mean <= 0.027, "mean L_ind in the measured range (0.0227)");
   Check(meanConfidence >= 0.095 && meanConfidence <= 0.14,

@@ -14,6 +14,7 @@
 #include "DeepRadiosityReferenceTest.h"
 
 #include "vtkDeepGBufferPass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepRadiosityPass.h"
 
 #include <cstdio>
@@ -46,10 +47,14 @@ int TestDeepRadiosityEstimator(int, char*[])
   Check(pass->GetGBufferPass()->CaptureLayers(layers, renderer), "layers");
 
   // ALL_TAPS = ACCEPTED_TAPS x M / N.
-  vtkDataArray* rawM = captures[0]->GetPointData()->GetArray("RawIrradiance_0");
-  vtkDataArray* rawN = captures[1]->GetPointData()->GetArray("RawIrradiance_0");
-  vtkDataArray* confM = captures[0]->GetPointData()->GetArray("RawConfidence_0");
-  vtkDataArray* confN = captures[1]->GetPointData()->GetArray("RawConfidence_0");
+  vtkDataArray* rawM = captures[0]->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::RawIrradiance, 0).c_str());
+  vtkDataArray* rawN = captures[1]->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::RawIrradiance, 0).c_str());
+  vtkDataArray* confM = captures[0]->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::RawConfidence, 0).c_str());
+  vtkDataArray* confN = captures[1]->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::RawConfidence, 0).c_str());
   long mismatches = 0, lit = 0;
   for (vtkIdType p = 0; p < rawM->GetNumberOfTuples(); ++p)
   {
@@ -68,11 +73,13 @@ int TestDeepRadiosityEstimator(int, char*[])
   double standardError = 0;
   const std::vector<double> ref =
     ReferenceIrradiance(scene, renderer, layers, pass->GetEffectiveRadius(), 32, standardError);
-  vtkDataArray* valid = layers->GetPointData()->GetArray("Valid_0");
+  vtkDataArray* valid = layers->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0).c_str());
   double rmse[3];
   for (int estimator = 0; estimator < 3; ++estimator)
   {
-    const std::vector<double> e = Luminance(captures[estimator], "Irradiance_0");
+    const std::vector<double> e = Luminance(
+      captures[estimator], vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 0));
     double s2 = 0;
     long n = 0;
     for (size_t i = 0; i < e.size() && ref.size() == e.size(); ++i)

@@ -21,6 +21,7 @@
 //   and keep or clamp the value.
 
 #include "DeepRadiosityTest.h"
+#include "vtkDeepGICaptureNames.h"
 
 #include <cmath>
 #include <limits>
@@ -34,9 +35,14 @@ using Configure = std::function<void(vtkDeepRadiosityPass*)>;
 bool Healthy(Frame& f, const std::string& what)
 {
   const bool finite = AllFinite(f.Radiosity);
-  const bool positive = Minimum(f.Radiosity, "IndirectRadiance_0") >= 0.0 &&
-    Minimum(f.Radiosity, "IndirectRadiance_1") >= 0.0 &&
-    Minimum(f.Radiosity, "Irradiance_0") >= 0.0 && Minimum(f.Radiosity, "Irradiance_1") >= 0.0;
+  const bool positive =
+    Minimum(f.Radiosity,
+      vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0)) >= 0.0 &&
+    Minimum(f.Radiosity,
+      vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 1)) >= 0.0 &&
+    Minimum(f.Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 0)) >=
+      0.0 &&
+    Minimum(f.Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 1)) >= 0.0;
   Check(finite && positive, what + ": finite and non-negative");
   return finite && positive;
 }
@@ -57,7 +63,8 @@ void TestScale()
     Healthy(frames[k], "scale " + std::to_string(s));
     pass->ReleaseGraphicsResources(frames[k].Window);
   }
-  const double radius = frames[0].Radiosity->GetFieldData()->GetArray("Radius")->GetTuple1(0);
+  const double radius =
+    frames[0].Radiosity->GetFieldData()->GetArray(vtkDeepGICaptureNames::Radius)->GetTuple1(0);
   for (int k = 1; k < 3; ++k)
   {
     long compared = 0, far = 0;
@@ -66,8 +73,10 @@ void TestScale()
     {
       for (int i = 0; i < frames[0].Width; ++i)
       {
-        if (At(frames[0].Radiosity, "Valid_0", i, j) == 0 &&
-          At(frames[k].Radiosity, "Valid_0", i, j) == 0)
+        if (At(frames[0].Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0),
+              i, j) == 0 &&
+          At(frames[k].Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0), i,
+            j) == 0)
         {
           continue;
         }
@@ -75,8 +84,11 @@ void TestScale()
         double worst = 0.0;
         for (int c = 0; c < 3; ++c)
         {
-          const double d = std::abs(At(frames[0].Radiosity, "IndirectRadiance_0", i, j, c) -
-            At(frames[k].Radiosity, "IndirectRadiance_0", i, j, c));
+          const double d = std::abs(
+            At(frames[0].Radiosity,
+              vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0), i, j, c) -
+            At(frames[k].Radiosity,
+              vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0), i, j, c));
           mean += d / 3.0;
           worst = std::max(worst, d);
         }
@@ -84,7 +96,8 @@ void TestScale()
       }
     }
     mean /= std::max(compared, 1L);
-    const double r = frames[k].Radiosity->GetFieldData()->GetArray("Radius")->GetTuple1(0);
+    const double r =
+      frames[k].Radiosity->GetFieldData()->GetArray(vtkDeepGICaptureNames::Radius)->GetTuple1(0);
     std::printf("scale %g: radius %g (scale 1: %g), mean |L_ind - L_ind(scale 1)| %.2e, %ld of "
                 "%ld pixels differ by > 0.01\n",
       scales[k], r, radius, mean, far, compared);
@@ -102,15 +115,21 @@ double MeanDifference(Frame& a, Frame& b)
   {
     for (int i = 0; i < a.Width; ++i)
     {
-      if (At(a.Radiosity, "Valid_0", i, j) == 0 || At(b.Radiosity, "Valid_0", i, j) == 0)
+      if (At(a.Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0), i, j) ==
+          0 ||
+        At(b.Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0), i, j) == 0)
       {
         continue;
       }
       ++compared;
       for (int c = 0; c < 3; ++c)
       {
-        sum += std::abs(At(a.Radiosity, "IndirectRadiance_0", i, j, c) -
-                 At(b.Radiosity, "IndirectRadiance_0", i, j, c)) /
+        sum +=
+          std::abs(
+            At(a.Radiosity,
+              vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0), i, j, c) -
+            At(b.Radiosity,
+              vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0), i, j, c)) /
           3.0;
       }
     }
@@ -184,8 +203,12 @@ void TestParameters()
     if (RenderFrames([](vtkRenderer* r) { RedWallScene(r); }, pass, 5, f, 96, 72))
     {
       Healthy(f, c.Name);
-      std::printf("%s: largest L_ind %.3f\n", c.Name, Maximum(f.Radiosity, "IndirectRadiance_0"));
-      Check(Maximum(f.Radiosity, "IndirectRadiance_0") > 0.05, std::string(c.Name) + ": light");
+      std::printf("%s: largest L_ind %.3f\n", c.Name,
+        Maximum(
+          f.Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0)));
+      Check(Maximum(f.Radiosity,
+              vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0)) > 0.05,
+        std::string(c.Name) + ": light");
     }
     pass->ReleaseGraphicsResources(f.Window);
   }
@@ -214,7 +237,8 @@ void ExpectDark(const char* what, const Scene& scene, const Configure& setup, in
   }
   Healthy(f, what);
   const double largest = std::max(
-    Maximum(f.Radiosity, "IndirectRadiance_0"), Maximum(f.Radiosity, "IndirectRadiance_1"));
+    Maximum(f.Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0)),
+    Maximum(f.Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 1)));
   std::printf("%s: largest L_ind %g, %d warning(s)\n", what, largest, warnings.Count);
   Check(largest == 0.0, std::string(what) + ": no indirect light");
   Check(warnings.Count == expectedWarnings, std::string(what) + ": warnings");
@@ -284,12 +308,13 @@ void TestClosedBox()
     }
     const bool healthy = Healthy(f, "closed white box");
     double direct = 0.0;
-    vtkDataArray* radiance = Layer(f.Layers, "Radiance", 0);
+    vtkDataArray* radiance = Layer(f.Layers, vtkDeepGICaptureNames::Radiance, 0);
     for (vtkIdType p = 0; p < radiance->GetNumberOfTuples(); ++p)
     {
       direct = std::max(direct, radiance->GetComponent(p, 0));
     }
-    const double largest = Maximum(f.Radiosity, "IndirectRadiance_0");
+    const double largest = Maximum(
+      f.Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0));
     std::printf("closed white box, delta %.2f, 100 frames: largest L_ind %.3f, largest direct "
                 "%.3f\n",
       delta, largest, direct);
@@ -298,7 +323,9 @@ void TestClosedBox()
       Check(healthy && largest <= 2.0 * direct / (1.0 - 2.0 * delta),
         "closed white box: below 2 rho D / (1 - 2 rho delta)");
     }
-    Check(Total(f.Radiosity, "Valid_0") == 48 * 48, "the box fills the view");
+    Check(
+      Total(f.Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0)) == 48 * 48,
+      "the box fills the view");
     pass->ReleaseGraphicsResources(f.Window);
   }
 }
@@ -316,14 +343,19 @@ void TestOneLayer()
     return;
   }
   Healthy(f, "one layer");
-  const double layers = f.Radiosity->GetFieldData()->GetArray("NumberOfLayers")->GetTuple1(0);
+  const double layers =
+    f.Radiosity->GetFieldData()->GetArray(vtkDeepGICaptureNames::NumberOfLayers)->GetTuple1(0);
   std::printf(
     "one G-buffer layer: %g radiosity layer(s), %g valid layer-1 px, largest L_ind %.3f\n", layers,
-    Total(f.Radiosity, "Valid_1"), Maximum(f.Radiosity, "IndirectRadiance_0"));
+    Total(f.Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 1)),
+    Maximum(f.Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0)));
   Check(pass->GetGBufferPass() == gbuffer.GetPointer(), "shared G-buffer pass");
-  Check(layers == 1 && Total(f.Radiosity, "Valid_1") == 0 &&
-      Maximum(f.Radiosity, "IndirectRadiance_1") == 0 &&
-      Maximum(f.Radiosity, "IndirectRadiance_0") > 0.05,
+  Check(layers == 1 &&
+      Total(f.Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 1)) == 0 &&
+      Maximum(f.Radiosity,
+        vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 1)) == 0 &&
+      Maximum(f.Radiosity,
+        vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0)) > 0.05,
     "one layer: layer 0 lit, layer 1 empty");
   pass->ReleaseGraphicsResources(f.Window);
 }

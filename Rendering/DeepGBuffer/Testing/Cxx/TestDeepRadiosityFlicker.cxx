@@ -28,6 +28,7 @@
 #include "vtkCamera.h"
 #include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferPass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepRadiosityPass.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -73,11 +74,12 @@ double Luminance(vtkDataArray* a, vtkIdType i)
 bool Project(vtkImageData* layers, const double world[3], int& i, int& j)
 {
   vtkNew<vtkMatrix4x4> view, projection, m;
-  view->DeepCopy(
-    vtkDoubleArray::SafeDownCast(layers->GetFieldData()->GetArray("ViewMatrix"))->GetPointer(0));
-  projection->DeepCopy(
-    vtkDoubleArray::SafeDownCast(layers->GetFieldData()->GetArray("ProjectionMatrix"))
-      ->GetPointer(0));
+  view->DeepCopy(vtkDoubleArray::SafeDownCast(
+    layers->GetFieldData()->GetArray(vtkDeepGICaptureNames::ViewMatrix))
+                   ->GetPointer(0));
+  projection->DeepCopy(vtkDoubleArray::SafeDownCast(
+    layers->GetFieldData()->GetArray(vtkDeepGICaptureNames::ProjectionMatrix))
+                         ->GetPointer(0));
   vtkMatrix4x4::Multiply4x4(projection, view, m);
   const double p[4] = { world[0], world[1], world[2], 1.0 };
   double clip[4];
@@ -127,8 +129,10 @@ Measure Flicker(double alpha, double guardBand)
     if (frame >= FirstMeasuredFrame && previousLayers)
     {
       const int* dims = layers->GetDimensions();
-      vtkDataArray* now = radiosity->GetPointData()->GetArray("IndirectRadiance_0");
-      vtkDataArray* before = previousRadiosity->GetPointData()->GetArray("IndirectRadiance_0");
+      vtkDataArray* now = radiosity->GetPointData()->GetArray(
+        vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0).c_str());
+      vtkDataArray* before = previousRadiosity->GetPointData()->GetArray(
+        vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0).c_str());
       for (int j = 0; j < dims[1]; ++j)
       {
         for (int i = 0; i < dims[0]; ++i)

@@ -21,6 +21,7 @@
 // - divisors outside 1..2 are clamped with a warning.
 
 #include "DeepRadiosityTest.h"
+#include "vtkDeepGICaptureNames.h"
 
 #include <cmath>
 
@@ -63,7 +64,8 @@ bool Render(int divisor, Capture& c)
 
 double Red(Frame& f, int i, int j)
 {
-  return At(f.Radiosity, "IndirectRadiance_0", i, j, 0);
+  return At(
+    f.Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0), i, j, 0);
 }
 
 // Whether `value` lies within 0.02 of the range of `f`'s values over the
@@ -92,7 +94,8 @@ void CompareWithEveryTexel(Frame& full, Frame& reduced, int divisor)
   {
     for (int i = 0; i < W; ++i)
     {
-      if (At(full.Radiosity, "Valid_0", i, j) == 0)
+      if (At(full.Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0), i, j) ==
+        0)
       {
         continue;
       }
@@ -108,12 +111,14 @@ void CompareWithEveryTexel(Frame& full, Frame& reduced, int divisor)
         unlit += b > 0.0 ? 0 : 1;
       }
       // A silhouette of the box: a neighbour's distance differs by > 10 %.
-      const double d = At(full.Layers, "Depth_0", i, j);
+      const double d =
+        At(full.Layers, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Depth, 0), i, j);
       bool edge = false;
       for (int k = 0; k < 4 && i > 0 && j > 0 && i < W - 1 && j < H - 1; ++k)
       {
         const int di = (k == 0) - (k == 1), dj = (k == 2) - (k == 3);
-        const double dn = At(full.Layers, "Depth_0", i + di, j + dj);
+        const double dn = At(full.Layers,
+          vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Depth, 0), i + di, j + dj);
         edge = edge || std::abs(dn - d) > 0.1 * d;
       }
       edges += edge ? 1 : 0;
@@ -159,8 +164,11 @@ int TestDeepRadiosityResolution(int, char*[])
     {
       for (int i = 0; i < W; ++i)
       {
-        worst =
-          std::max(worst, std::abs(At(capture, "IndirectRadiance_0", i, j) - Red(full.F, i, j)));
+        worst = std::max(worst,
+          std::abs(
+            At(capture, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0), i,
+              j) -
+            Red(full.F, i, j)));
       }
     }
     std::printf("divisor 2 then 1: largest |L - L at every texel| %.3g\n", worst);

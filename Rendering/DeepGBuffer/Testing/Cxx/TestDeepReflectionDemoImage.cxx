@@ -13,6 +13,7 @@
 
 #include "vtkActorCollection.h"
 #include "vtkDeepGBufferDemoScene.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepReflectionPass.h"
 #include "vtkRegressionTestImage.h"
 
@@ -77,8 +78,8 @@ int TestDeepReflectionDemoImage(int argc, char* argv[])
   vtkNew<vtkImageData> capture;
   pass->CaptureReflections(capture, renderer);
   long traced = 0, hits = 0;
-  vtkDataArray* valid = capture->GetPointData()->GetArray("Valid");
-  vtkDataArray* layer = capture->GetPointData()->GetArray("HitLayer");
+  vtkDataArray* valid = capture->GetPointData()->GetArray(vtkDeepGICaptureNames::Valid);
+  vtkDataArray* layer = capture->GetPointData()->GetArray(vtkDeepGICaptureNames::HitLayer);
   for (vtkIdType p = 0; p < valid->GetNumberOfTuples(); ++p)
   {
     traced += valid->GetTuple1(p) ? 1 : 0;

@@ -18,6 +18,7 @@
 
 #include "vtkCamera.h"
 #include "vtkCommand.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIEXRReader.h"
 #include "vtkDeepGIEXRWriter.h"
 #include "vtkDeepReflectionPass.h"
@@ -53,9 +54,10 @@ Comparison Compare(vtkImageData* reflections,
 {
   Comparison result;
   const Camera cam(reflections);
-  vtkDataArray* valid = reflections->GetPointData()->GetArray("Valid");
-  vtkDataArray* hitLayer = reflections->GetPointData()->GetArray("HitLayer");
-  vtkDataArray* radiance = reflections->GetPointData()->GetArray("ReflectedRadiance");
+  vtkDataArray* valid = reflections->GetPointData()->GetArray(vtkDeepGICaptureNames::Valid);
+  vtkDataArray* hitLayer = reflections->GetPointData()->GetArray(vtkDeepGICaptureNames::HitLayer);
+  vtkDataArray* radiance =
+    reflections->GetPointData()->GetArray(vtkDeepGICaptureNames::ReflectedRadiance);
   const Vector eye = cam.Eye();
   for (int j = 0; j < cam.Height; ++j)
   {
@@ -169,8 +171,8 @@ int TestDeepReflectionEnvironment(int, char*[])
   // texel border.
   vtkNew<vtkImageData> layers;
   pass->GetGBufferPass()->CaptureLayers(layers, renderer);
-  const Comparison decoded =
-    Compare(reflections, equirectangular, oneTexel, Layer(layers, "Normal", 0));
+  const Comparison decoded = Compare(
+    reflections, equirectangular, oneTexel, Layer(layers, vtkDeepGICaptureNames::Normal, 0));
   std::printf(
     "about the G-buffer's normals: %ld of %ld exact texel\n", decoded.Exact, decoded.Pixels);
   Check(decoded.Exact >= 0.995 * decoded.Pixels,
@@ -212,7 +214,9 @@ int TestDeepReflectionEnvironment(int, char*[])
     const double fourTexels[3] = { 4.0 * oneTexel[0], 4.0 * oneTexel[1], 4.0 * oneTexel[2] };
     const Comparison h = Compare(hdrReflections, scaled, fourTexels);
     double range[2];
-    hdrReflections->GetPointData()->GetArray("ReflectedRadiance")->GetRange(range, 0);
+    hdrReflections->GetPointData()
+      ->GetArray(vtkDeepGICaptureNames::ReflectedRadiance)
+      ->GetRange(range, 0);
     std::printf("OpenEXR environment at 4x: %ld traced pixels, %ld within one texel, red up to "
                 "%.3f\n",
       h.Pixels, h.Near, range[1]);
@@ -273,7 +277,7 @@ int TestDeepReflectionEnvironment(int, char*[])
     return { c[0], c[1], c[2] };
   };
   pass->GetGBufferPass()->CaptureLayers(layers, renderer);
-  c = Compare(reflections, cubeFace, exact, Layer(layers, "Normal", 0));
+  c = Compare(reflections, cubeFace, exact, Layer(layers, vtkDeepGICaptureNames::Normal, 0));
   std::printf("cube map: %ld of %ld pixels exact (%ld near a face border)\n", c.Exact, c.Pixels,
     borderPixels);
   std::printf("  pixels per face +x -x +y -y +z -z: %ld %ld %ld %ld %ld %ld\n", faceCount[0],

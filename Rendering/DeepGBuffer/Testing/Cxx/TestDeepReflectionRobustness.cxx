@@ -12,6 +12,7 @@
 
 #include "vtkCamera.h"
 #include "vtkCommand.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepReflectionPass.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkSphereSource.h"
@@ -62,8 +63,8 @@ Summary Summarize(vtkDeepReflectionPass* pass, vtkRenderer* renderer, vtkImageDa
     return s;
   }
   s.Finite = AllFinite(capture);
-  vtkDataArray* valid = capture->GetPointData()->GetArray("Valid");
-  vtkDataArray* layer = capture->GetPointData()->GetArray("HitLayer");
+  vtkDataArray* valid = capture->GetPointData()->GetArray(vtkDeepGICaptureNames::Valid);
+  vtkDataArray* layer = capture->GetPointData()->GetArray(vtkDeepGICaptureNames::HitLayer);
   for (vtkIdType p = 0; p < valid->GetNumberOfTuples(); ++p)
   {
     if (valid->GetTuple1(p))
@@ -136,7 +137,8 @@ int TestDeepReflectionRobustness(int, char*[])
     vtkNew<vtkImageData> capture;
     const Summary metal = Summarize(pass, renderer, capture);
     double pbrReflectivity = 0.0;
-    vtkDataArray* reflectivity = capture->GetPointData()->GetArray("Reflectivity");
+    vtkDataArray* reflectivity =
+      capture->GetPointData()->GetArray(vtkDeepGICaptureNames::Reflectivity);
     for (vtkIdType p = 0; p < reflectivity->GetNumberOfTuples(); ++p)
     {
       pbrReflectivity = std::max(pbrReflectivity, reflectivity->GetComponent(p, 0));
@@ -239,7 +241,7 @@ int TestDeepReflectionRobustness(int, char*[])
   ReadWindow(window, reflectivityImage, nullptr);
   pass->GetGBufferPass()->SetDisplayQuantity(vtkDeepGBufferPass::RADIANCE);
   long displayOk = 0, displayTraced = 0;
-  vtkDataArray* tracedMask = before->GetPointData()->GetArray("Valid");
+  vtkDataArray* tracedMask = before->GetPointData()->GetArray(vtkDeepGICaptureNames::Valid);
   vtkDataArray* shown = reflectivityImage->GetPointData()->GetScalars();
   for (vtkIdType p = 0; p < tracedMask->GetNumberOfTuples(); ++p)
   {
@@ -295,7 +297,7 @@ int TestDeepReflectionRobustness(int, char*[])
   std::printf("two renderers: left %dx%d %ld traced %ld hits, right %ld traced\n", dims[0], dims[1],
     l.Traced, l.Hits, r.Traced);
   Check(dims[0] == 80 && dims[1] == 120 && l.Hits > 500 && r.Traced == 0 &&
-      rightCapture->GetFieldData()->GetArray("Traced")->GetTuple1(0) == 0,
+      rightCapture->GetFieldData()->GetArray(vtkDeepGICaptureNames::Traced)->GetTuple1(0) == 0,
     "each renderer keeps its own reflections");
   Check(warnings.Count == 9, "no further warnings");
 

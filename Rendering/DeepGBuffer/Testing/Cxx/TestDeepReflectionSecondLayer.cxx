@@ -10,6 +10,7 @@
 
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepReflectionPass.h"
 
 using namespace DeepGBufferTest;
@@ -56,10 +57,11 @@ int TestDeepReflectionSecondLayer(int, char*[])
   long redLayer0 = 0, redLayer1 = 0;
   for (vtkIdType p = 0; p < layers->GetNumberOfPoints(); ++p)
   {
-    redLayer0 += IsRed(Layer(layers, "Radiance", 0), p, 0.02) ? 1 : 0;
-    redLayer1 +=
-      IsRed(Layer(layers, "Radiance", 1), p, 0.02) && Layer(layers, "Valid", 1)->GetTuple1(p) ? 1
-                                                                                              : 0;
+    redLayer0 += IsRed(Layer(layers, vtkDeepGICaptureNames::Radiance, 0), p, 0.02) ? 1 : 0;
+    redLayer1 += IsRed(Layer(layers, vtkDeepGICaptureNames::Radiance, 1), p, 0.02) &&
+        Layer(layers, vtkDeepGICaptureNames::Valid, 1)->GetTuple1(p)
+      ? 1
+      : 0;
   }
   std::printf("red pixels: layer 0 %ld, layer 1 %ld\n", redLayer0, redLayer1);
   Check(redLayer0 == 0 && redLayer1 > 100, "the box is hidden in layer 0 and seen in layer 1");
@@ -67,8 +69,8 @@ int TestDeepReflectionSecondLayer(int, char*[])
   vtkNew<vtkImageData> two;
   pass->CaptureReflections(two, renderer);
   Check(AllFinite(two), "reflection capture is finite");
-  vtkDataArray* hitLayer = two->GetPointData()->GetArray("HitLayer");
-  vtkDataArray* radiance = two->GetPointData()->GetArray("ReflectedRadiance");
+  vtkDataArray* hitLayer = two->GetPointData()->GetArray(vtkDeepGICaptureNames::HitLayer);
+  vtkDataArray* radiance = two->GetPointData()->GetArray(vtkDeepGICaptureNames::ReflectedRadiance);
   std::vector<vtkIdType> boxPixels;
   long redOtherLayer = 0;
   for (vtkIdType p = 0; p < two->GetNumberOfPoints(); ++p)
@@ -95,8 +97,8 @@ int TestDeepReflectionSecondLayer(int, char*[])
   window->Render();
   vtkNew<vtkImageData> one;
   pass->CaptureReflections(one, renderer);
-  hitLayer = one->GetPointData()->GetArray("HitLayer");
-  radiance = one->GetPointData()->GetArray("ReflectedRadiance");
+  hitLayer = one->GetPointData()->GetArray(vtkDeepGICaptureNames::HitLayer);
+  radiance = one->GetPointData()->GetArray(vtkDeepGICaptureNames::ReflectedRadiance);
   long stillRed = 0, background = 0;
   for (vtkIdType p : boxPixels)
   {

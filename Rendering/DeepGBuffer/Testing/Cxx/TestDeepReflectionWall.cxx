@@ -12,6 +12,7 @@
 #include "DeepReflectionTestUtilities.h"
 
 #include "vtkCamera.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepReflectionPass.h"
 #include "vtkPolyData.h"
 
@@ -67,13 +68,16 @@ int TestDeepReflectionWall(int, char*[])
     pass->CaptureReflections(reflections, renderer);
     Check(AllFinite(reflections), "reflection capture is finite");
     const Camera cam(layers);
-    vtkDataArray* depth = Layer(layers, "Depth", 0);
-    vtkDataArray* radiance = Layer(layers, "Radiance", 0);
-    vtkDataArray* reflectivity = reflections->GetPointData()->GetArray("Reflectivity");
-    vtkDataArray* reflected = reflections->GetPointData()->GetArray("ReflectedRadiance");
-    vtkDataArray* hitLayer = reflections->GetPointData()->GetArray("HitLayer");
-    vtkDataArray* hitDistance = reflections->GetPointData()->GetArray("HitDistance");
-    vtkDataArray* valid = reflections->GetPointData()->GetArray("Valid");
+    vtkDataArray* depth = Layer(layers, vtkDeepGICaptureNames::Depth, 0);
+    vtkDataArray* radiance = Layer(layers, vtkDeepGICaptureNames::Radiance, 0);
+    vtkDataArray* reflectivity =
+      reflections->GetPointData()->GetArray(vtkDeepGICaptureNames::Reflectivity);
+    vtkDataArray* reflected =
+      reflections->GetPointData()->GetArray(vtkDeepGICaptureNames::ReflectedRadiance);
+    vtkDataArray* hitLayer = reflections->GetPointData()->GetArray(vtkDeepGICaptureNames::HitLayer);
+    vtkDataArray* hitDistance =
+      reflections->GetPointData()->GetArray(vtkDeepGICaptureNames::HitDistance);
+    vtkDataArray* valid = reflections->GetPointData()->GetArray(vtkDeepGICaptureNames::Valid);
 
     const Vector eye = cam.Eye();
     // Parallel projection (P33 = 1): every view ray runs along the camera's -z.
