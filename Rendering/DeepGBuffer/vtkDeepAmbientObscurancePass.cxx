@@ -184,7 +184,6 @@ public:
   vtkOpenGLQuadHelper* CompositeQuad = nullptr;
   vtkOpenGLQuadHelper* MinifyQuad = nullptr;
   vtkOpenGLQuadHelper* TemporalQuad = nullptr;
-  bool WarnedUnsupported = false;
 };
 
 //------------------------------------------------------------------------------
@@ -300,19 +299,7 @@ void vtkDeepAmbientObscurancePass::SetIntensity(double intensity)
 //------------------------------------------------------------------------------
 void vtkDeepAmbientObscurancePass::SetNumberOfSamples(int samples)
 {
-  if (samples < 1 || samples > MAXIMUM_NUMBER_OF_SAMPLES)
-  {
-    const int clamped = std::min(std::max(samples, 1), static_cast<int>(MAXIMUM_NUMBER_OF_SAMPLES));
-    vtkWarningMacro("NumberOfSamples "
-      << samples << " is outside 1.." << MAXIMUM_NUMBER_OF_SAMPLES
-      << " (the paper's Listing 3 gives spiral turns for N = 1..98); using " << clamped << ".");
-    samples = clamped;
-  }
-  if (samples != this->NumberOfSamples)
-  {
-    this->NumberOfSamples = samples;
-    this->Modified();
-  }
+  this->SetSampleCount(samples, this->NumberOfSamples);
 }
 
 //------------------------------------------------------------------------------
@@ -381,14 +368,8 @@ void vtkDeepAmbientObscurancePass::RenderOpaque(const vtkRenderState* s)
   vtkInternals& in = *this->Internals;
   vtkOpenGLRenderer* renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   vtkDeepGBufferPass* gbuffer = this->GBufferPass;
-  if (!gbuffer->RenderLayers(s))
+  if (!this->RenderLayersOrWarn(s, "ambient obscurance"))
   {
-    // The opaque props have been drawn the plain way.
-    if (!renderer->GetSelector() && !in.WarnedUnsupported)
-    {
-      in.WarnedUnsupported = true;
-      vtkWarningMacro("The deep G-buffer is unavailable; rendering without ambient obscurance.");
-    }
     if (vtkDeepAmbientObscuranceRendererState* state = in.States.Existing(renderer))
     {
       state->HasFrame = false;

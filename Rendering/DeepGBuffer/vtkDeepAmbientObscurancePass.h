@@ -139,9 +139,6 @@ public:
   /// Relative distance tolerance of the temporal reprojection test.
   static constexpr double TEMPORAL_DISTANCE_TOLERANCE = 0.01;
 
-  /// Largest sample count: Listing 3 of the paper gives tau for N = 1..98.
-  static constexpr int MAXIMUM_NUMBER_OF_SAMPLES = 98;
-
   /**
    * Number of spiral turns tau for N samples, the paper's Listing 3
    * (discrepancy-minimising, N = 1..98). Returns 0 for N outside 1..98: the

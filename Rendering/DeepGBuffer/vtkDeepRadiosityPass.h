@@ -134,9 +134,6 @@ public:
   /// Layers that receive and send indirect light (G-buffer layers 0 and 1).
   static constexpr int NUMBER_OF_LAYERS = 2;
 
-  /// Largest sample count: Listing 3 of the paper gives tau for N = 1..98.
-  static constexpr int MAXIMUM_NUMBER_OF_SAMPLES = 98;
-
   /// Cosine threshold of eq. 5's tests: Oct16 normals are quantised to
   /// about 0.5 degree, so a tap on X's own plane has w.n_X of either sign
   /// within about 0.009; it is rejected rather than counted in M.

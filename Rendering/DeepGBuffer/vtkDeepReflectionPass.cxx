@@ -170,7 +170,6 @@ public:
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
   vtkOpenGLQuadHelper* TraceQuads[NUMBER_OF_ENVIRONMENTS] = { nullptr, nullptr, nullptr };
   vtkOpenGLQuadHelper* CompositeQuad = nullptr;
-  bool WarnedUnsupported = false;
   bool WarnedMappedEnvironment = false;
   // Whether the last frame of each renderer drawn by this pass had a
   // reflective prop. The G-buffer writes reflectivity while any has, so that
@@ -385,14 +384,8 @@ void vtkDeepReflectionPass::RenderOpaque(const vtkRenderState* s)
   {
     existing->HasFrame = false;
   }
-  if (!gbuffer->RenderLayers(s))
+  if (!this->RenderLayersOrWarn(s, "reflections"))
   {
-    // The opaque props have been drawn the plain way.
-    if (!renderer->GetSelector() && !in.WarnedUnsupported)
-    {
-      in.WarnedUnsupported = true;
-      vtkWarningMacro("The deep G-buffer is unavailable; rendering without reflections.");
-    }
     this->LastFrameTraced = false;
     return;
   }

@@ -7,6 +7,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkRenderState.h"
+#include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 
 #include <algorithm>
@@ -174,6 +175,40 @@ void vtkDeepScreenSpacePass::SetFraction(const char* name, double fraction, doub
   if (fraction != value)
   {
     value = fraction;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepScreenSpacePass::RenderLayersOrWarn(const vtkRenderState* s, const char* effect)
+{
+  if (this->GBufferPass->RenderLayers(s))
+  {
+    return true;
+  }
+  if (!s->GetRenderer()->GetSelector() && !this->WarnedLayersUnavailable)
+  {
+    this->WarnedLayersUnavailable = true;
+    vtkWarningMacro("The deep G-buffer is unavailable; rendering without " << effect << ".");
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepScreenSpacePass::SetSampleCount(int samples, int& value)
+{
+  const int maximum = MAXIMUM_NUMBER_OF_SAMPLES;
+  if (samples < 1 || samples > maximum)
+  {
+    const int clamped = std::min(std::max(samples, 1), maximum);
+    vtkWarningMacro("NumberOfSamples "
+      << samples << " is outside 1.." << maximum
+      << " (the paper's Listing 3 gives spiral turns for N = 1..98); using " << clamped << ".");
+    samples = clamped;
+  }
+  if (samples != value)
+  {
+    value = samples;
     this->Modified();
   }
 }

@@ -38,6 +38,10 @@ public:
   vtkTypeMacro(vtkDeepScreenSpacePass, vtkRenderPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /// Largest spiral tap count of the effects: Listing 3 of the paper gives
+  /// tau for N = 1..98.
+  static constexpr int MAXIMUM_NUMBER_OF_SAMPLES = 98;
+
   ///@{
   /**
    * The G-buffer pass that builds the layers. One is created by default;
@@ -77,6 +81,22 @@ protected:
 #define vtkDeepSetManualLengthMacro(property, length, allowInfinity, atZero)                       \
   this->SetManualLength(                                                                           \
     #property, length, this->property, this->Automatic##property, allowInfinity, atZero)
+
+  /**
+   * Builds this frame's layers with the G-buffer. When the G-buffer is
+   * unavailable (too old an OpenGL, an incomplete framebuffer) the opaque
+   * props have been drawn the plain way instead: warns once per pass, not
+   * while picking, that the frame is "rendering without `effect`", and
+   * returns false.
+   */
+  bool RenderLayersOrWarn(const vtkRenderState* s, const char* effect);
+
+  /**
+   * Sets a spiral tap count N (NumberOfSamples of the obscurance and the
+   * radiosity): outside 1..MAXIMUM_NUMBER_OF_SAMPLES it is clamped with a
+   * warning; Modified() when it changes.
+   */
+  void SetSampleCount(int samples, int& value);
 
   /// The layers of a renderer's last G-buffer frame, as the subclasses read them.
   struct LayerFrame
@@ -145,6 +165,7 @@ private:
 
   class vtkOpaqueStep;
   vtkOpaqueStep* OpaqueStep = nullptr;
+  bool WarnedLayersUnavailable = false;
 };
 
 #endif
