@@ -887,16 +887,12 @@ bool vtkDeepAmbientObscurancePass::CaptureAmbientVisibility(
     return false;
   }
   vtkRenderer* ren = state->Renderer;
-  const GLuint distanceHandle = this->GBufferPass->GetTextureHandle(ren, vtkDeepGBufferPass::DEPTH);
-  if (!distanceHandle)
+  unsigned int distanceHandle = 0;
+  vtkOpenGLState* ostate = this->BeginCapture(ren, "CaptureAmbientVisibility", distanceHandle);
+  if (!ostate)
   {
-    vtkErrorMacro("CaptureAmbientVisibility: the G-buffer of this renderer is gone.");
     return false;
   }
-  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  window->MakeCurrent();
-  vtkOpenGLState* ostate = window->GetState();
-  vtkOpenGLClearErrorMacro();
 
   const int w = state->Width, h = state->Height;
   const size_t pixels = static_cast<size_t>(w) * h;

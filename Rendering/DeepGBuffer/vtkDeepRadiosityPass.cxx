@@ -1330,16 +1330,12 @@ bool vtkDeepRadiosityPass::CaptureIrradiance(vtkImageData* output, vtkRenderer* 
     return false;
   }
   vtkRenderer* ren = state->Renderer;
-  const GLuint distanceHandle = this->GBufferPass->GetTextureHandle(ren, vtkDeepGBufferPass::DEPTH);
-  if (!distanceHandle)
+  unsigned int distanceHandle = 0;
+  vtkOpenGLState* ostate = this->BeginCapture(ren, "CaptureIrradiance", distanceHandle);
+  if (!ostate)
   {
-    vtkErrorMacro("CaptureIrradiance: the G-buffer of this renderer is gone.");
     return false;
   }
-  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  window->MakeCurrent();
-  vtkOpenGLState* ostate = window->GetState();
-  vtkOpenGLClearErrorMacro();
   ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
   vtkOpenGLState::ScopedglActiveTexture savedUnit(ostate);
   GLint previous2D = 0, previousArray = 0;

@@ -4,6 +4,7 @@
 #include "vtkDeepScreenSpaceHelpers.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkRenderState.h"
@@ -192,6 +193,22 @@ bool vtkDeepScreenSpacePass::RenderLayersOrWarn(const vtkRenderState* s, const c
     vtkWarningMacro("The deep G-buffer is unavailable; rendering without " << effect << ".");
   }
   return false;
+}
+
+//------------------------------------------------------------------------------
+vtkOpenGLState* vtkDeepScreenSpacePass::BeginCapture(
+  vtkRenderer* renderer, const char* caller, unsigned int& distanceHandle)
+{
+  distanceHandle = this->GBufferPass->GetTextureHandle(renderer, vtkDeepGBufferPass::DEPTH);
+  if (!distanceHandle)
+  {
+    vtkErrorMacro(<< caller << ": the G-buffer of this renderer is gone.");
+    return nullptr;
+  }
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  window->MakeCurrent();
+  vtkOpenGLClearErrorMacro();
+  return window->GetState();
 }
 
 //------------------------------------------------------------------------------

@@ -92,6 +92,15 @@ protected:
   bool RenderLayersOrWarn(const vtkRenderState* s, const char* effect);
 
   /**
+   * The start of a capture method named `caller`: the OpenGL name of the
+   * renderer's G-buffer distances (`distanceHandle`) and its window's
+   * context made current with no pending OpenGL error. Null, with an error,
+   * when the renderer's G-buffer is gone.
+   */
+  vtkOpenGLState* BeginCapture(
+    vtkRenderer* renderer, const char* caller, unsigned int& distanceHandle);
+
+  /**
    * Sets a spiral tap count N (NumberOfSamples of the obscurance and the
    * radiosity): outside 1..MAXIMUM_NUMBER_OF_SAMPLES it is clamped with a
    * warning; Modified() when it changes.
