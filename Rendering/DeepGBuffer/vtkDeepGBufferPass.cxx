@@ -1702,8 +1702,10 @@ void vtkDeepGBufferPass::ExchangeLayer(vtkLayerFrame& frame, int j)
   std::vector<float> depth(pixels);
   std::vector<unsigned char> attributes(pixels * bytesPerPixel);
   std::vector<unsigned char> plane;
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  // Through VTK's state, which caches the pixel store (rows of RG8 are not
+  // 4-byte aligned).
+  frame.GL->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+  frame.GL->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   frame.GL->vtkglBindFramebuffer(GL_FRAMEBUFFER, state.LayerFramebuffers[j]);
   glReadPixels(0, 0, state.Width, state.Height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
   int offset = 0;
@@ -1738,8 +1740,8 @@ void vtkDeepGBufferPass::ExchangeLayer(vtkLayerFrame& frame, int j)
     }
   }
   glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  frame.GL->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
+  frame.GL->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, 4);
 }
 
 //------------------------------------------------------------------------------

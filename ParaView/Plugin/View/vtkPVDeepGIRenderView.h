@@ -41,6 +41,7 @@
 #define vtkPVDeepGIRenderView_h
 
 #include "vtkDeepGIParaViewViewModule.h" // for export macro
+#include "vtkDeepGISetGet.h"             // for vtkDeepGISetClampMacro
 #include "vtkNew.h"                      // for vtkNew
 #include "vtkPVRenderView.h"
 
@@ -80,7 +81,7 @@ public:
   vtkGetMacro(ConvergeStills, bool);
   vtkSetClampMacro(ConvergeMaximumFrames, int, 1, 1000);
   vtkGetMacro(ConvergeMaximumFrames, int);
-  vtkSetClampMacro(ConvergeTolerance, double, 0.0, 1.0);
+  vtkDeepGISetClampMacro(ConvergeTolerance, double, 0.0, 1.0);
   vtkGetMacro(ConvergeTolerance, double);
   ///@}
 
