@@ -113,12 +113,16 @@ def parse_arguments():
     parser.add_argument("--iso", action="append", type=float, default=[], help="iso-value")
     parser.add_argument("--data", required=True, help="the project's Testing/Data folder")
     parser.add_argument("--output", default="output", help="folder of the files (default output)")
+    parser.add_argument("--methods", default="",
+                        help="comma list of words; only the methods whose name contains one of "
+                        "them run, besides plain VTK (default: every method)")
     args = parser.parse_args()
     args.sizes = parse_sizes(parser, args.sizes)
     if not (1 <= args.frames <= 1000 and 1 <= args.rounds <= 100):
         parser.error("--frames 1..1000, --rounds 1..100")
     if len(args.volume) != len(args.iso):
         parser.error("every --volume needs one --iso")
+    args.method_words = [w for w in args.methods.split(",") if w]
     args.scene_list = [s for s in args.scenes.split(",") if s]
     for name in args.scene_list:
         if name not in SCENES:
@@ -246,7 +250,7 @@ def make_effect(name, effect):
     return Method(name, effect, effect.GetGBufferPass())
 
 
-def make_methods(radius):
+def make_methods(radius, wanted):
     one_layer_ao = vtkdeepgi.vtkDeepAmbientObscurancePass()
     one_layer_ao.SetUseSecondLayer(False)
     # A second layer nobody reads would be built and timed otherwise.
@@ -264,7 +268,7 @@ def make_methods(radius):
         gi = vtkdeepgi.vtkDeepGIPass()
         gi.SetPreset(preset)
         methods.append(make_effect("vtkDeepGIPass " + preset, gi))
-    return methods
+    return [m for m in methods if m.pass_ is None or not wanted or any(w in m.name for w in wanted)]
 
 
 class Orbit:
@@ -332,7 +336,7 @@ def measure_size(args, orbit, radius, size):
     """Every method at one window size; returns the methods with their results."""
     window, renderer = orbit.window, orbit.renderer
     window.SetSize(*size)
-    methods = make_methods(radius)
+    methods = make_methods(radius, args.method_words)
     run_rounds(args, renderer, orbit, methods)
     for m in methods:
         if m.gbuffer:

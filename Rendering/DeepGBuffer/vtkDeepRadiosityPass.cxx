@@ -309,6 +309,7 @@ void vtkDeepRadiosityPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MipThreshold: " << this->MipThreshold << "\n";
   os << indent << "MinimumMipLevel: " << this->MinimumMipLevel << "\n";
   os << indent << "MaximumMipLevel: " << this->MaximumMipLevel << "\n";
+  os << indent << "AverageFarTaps: " << (this->AverageFarTaps ? "On" : "Off") << "\n";
   os << indent << "ResolutionDivisor: " << this->ResolutionDivisor << "\n";
   os << indent << "Damping: " << this->Damping << "\n";
   os << indent << "TemporalAlpha: " << this->TemporalAlpha << "\n";
@@ -542,9 +543,10 @@ struct vtkDeepRadiosityPass::vtkGatherFrame : vtkDeepScreenSpacePass::EffectFram
   bool HasLights = false;
   double RotationOffset = 0.0;
   int Units[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES]; // of the G-buffer's textures
-  int MinimumMip = 0;
+  int MinimumMip = 0; // the coarsest level the taps use is MaximumMip
   int MaximumMip = 0;
-  int Previous = 0; // History[Previous] is the last frame's, History[Next] this one's
+  int BounceSize[2] = { 0, 0 }; // BOUNCE's texels: those of level MinimumMip
+  int Previous = 0;             // History[Previous] is the last frame's, History[Next] this one's
   int Next = 1;
   float ToPrevious[16];
   float PreviousProjection[16];
@@ -767,6 +769,13 @@ bool vtkDeepRadiosityPass::PrepareTargets(
   vtkInternals& in = *this->Internals;
   vtkOpenGLRenderWindow* window = frame.Window;
   const int width = frame.Size[0], height = frame.Size[1];
+  frame.MaximumMip = std::min(std::max(this->MaximumMipLevel, this->MinimumMipLevel),
+    CoarsestMipLevel(frame.LayerSize[0], frame.LayerSize[1]));
+  frame.MinimumMip = std::min(this->MinimumMipLevel, frame.MaximumMip);
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    frame.BounceSize[axis] = std::max(frame.LayerSize[axis] >> frame.MinimumMip, 1);
+  }
   if (!state.Renders.Consecutive() || state.Width != width || state.Height != height ||
     state.Divisor != frame.Divisor || state.LayerCount != frame.UsedLayers ||
     !std::equal(frame.Region, frame.Region + 4, state.ShadedRegion))
@@ -778,10 +787,12 @@ bool vtkDeepRadiosityPass::PrepareTargets(
   bool allocated = true;
   for (int target = 0; target < NUMBER_OF_TARGETS; ++target)
   {
-    // BOUNCE, the gather's sources, and INDIRECT, what the composites
-    // read, have every layer texel; on a reduced grid only layer 0's
-    // INDIRECT exists.
-    const int* size = target == BOUNCE || target == INDIRECT ? frame.LayerSize : frame.Size;
+    // BOUNCE holds the gather's sources (texels of the minimum MIP level);
+    // INDIRECT, what the composites read, has every layer texel; on a
+    // reduced grid only layer 0's INDIRECT exists.
+    const int* size = target == BOUNCE ? frame.BounceSize
+      : target == INDIRECT             ? frame.LayerSize
+                                       : frame.Size;
     for (int layer = 0; layer < Layers; ++layer)
     {
       vtkSmartPointer<vtkTextureObject>& t = state.Targets[target][layer];
@@ -791,6 +802,12 @@ bool vtkDeepRadiosityPass::PrepareTargets(
         continue;
       }
       allocated = allocated && AllocateTarget(t, window, size[0], size[1], 4);
+      if (target == BOUNCE && t)
+      {
+        // Levels MinimumMip..MaximumMip of the layers (AverageFarTaps).
+        t->SetMinificationFilter(vtkTextureObject::NearestMipmapNearest);
+        t->SetMaxLevel(frame.MaximumMip - frame.MinimumMip);
+      }
     }
   }
   for (auto& ping : state.History)
@@ -837,9 +854,6 @@ bool vtkDeepRadiosityPass::PrepareTargets(
   }
   vtkDeepScreenSpace::ReprojectionUniforms(frame.View, frame.Projection, state.HistoryValid,
     state.PreviousView, state.PreviousProjection, frame.ToPrevious, frame.PreviousProjection);
-  frame.MaximumMip = std::min(std::max(this->MaximumMipLevel, this->MinimumMipLevel),
-    CoarsestMipLevel(frame.LayerSize[0], frame.LayerSize[1]));
-  frame.MinimumMip = std::min(this->MinimumMipLevel, frame.MaximumMip);
   frame.Previous = state.HistoryCurrent;
   frame.Next = 1 - state.HistoryCurrent;
   return true;
@@ -975,14 +989,16 @@ void vtkDeepRadiosityPass::SetOutgoingUniforms(vtkShaderProgram* program)
 
 //------------------------------------------------------------------------------
 // Step 1, bounce input B = direct + delta L_ind,t-1 (section 3.3), over the
-// whole layers: the guard band's surfaces are sources for the gather.
+// whole layers (the guard band's surfaces are sources for the gather), at
+// the texels the gather reads: those level MinimumMip of the rotated-grid
+// pyramid holds.
 void vtkDeepRadiosityPass::ComputeBounceInput(
   vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
 {
   vtkInternals& in = *this->Internals;
   vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: bounce input");
   AttachLayerTextures(in.Framebuffer, state.Targets[BOUNCE]);
-  frame.GL->vtkglViewport(0, 0, frame.LayerSize[0], frame.LayerSize[1]);
+  frame.GL->vtkglViewport(0, 0, frame.BounceSize[0], frame.BounceSize[1]);
   vtkShaderProgram* program = in.BounceQuad->Program;
   frame.Window->GetShaderCache()->ReadyShaderProgram(program);
   // The history's texels, on the gather's output grid, are the ones shaded.
@@ -1003,8 +1019,25 @@ void vtkDeepRadiosityPass::ComputeBounceInput(
   program->SetUniformf("deepDamping", static_cast<float>(this->Damping));
   program->SetUniformi("deepBoost", this->UseColorBoost ? 1 : 0);
   program->SetUniformi("deepHasLights", frame.HasLights ? 1 : 0);
+  program->SetUniformi("deepSourceLevel", frame.MinimumMip);
+  program->SetUniform2i("deepBounceSize", frame.BounceSize);
   in.BounceQuad->Render();
   UnbindLayerTextures(state.History[frame.Previous]);
+  if (this->AverageFarTaps && frame.MaximumMip > frame.MinimumMip)
+  {
+    // The coarser levels: box-filtered (B coverage, coverage), so that
+    // rgb / a is the block's mean B over its surfaces.
+    for (int a = 0; a < Layers; ++a)
+    {
+      in.Framebuffer->RemoveColorAttachment(a);
+    }
+    for (auto& t : state.Targets[BOUNCE])
+    {
+      t->Activate();
+      glGenerateMipmap(GL_TEXTURE_2D);
+      t->Deactivate();
+    }
+  }
   frame.GL->vtkglViewport(0, 0, frame.Size[0], frame.Size[1]);
 }
 
@@ -1031,6 +1064,7 @@ void vtkDeepRadiosityPass::Gather(vtkGatherFrame& frame, vtkDeepRadiosityRendere
   program->SetUniformi("deepMinMip", frame.MinimumMip);
   program->SetUniformi("deepMaxMip", frame.MaximumMip);
   program->SetUniformi("deepNormalTest", this->UseNormalTest ? 1 : 0);
+  program->SetUniformi("deepAverageFarTaps", this->AverageFarTaps ? 1 : 0);
   program->SetUniformi("deepEstimator", this->Estimator);
   program->SetUniformf("deepCosineEpsilon", static_cast<float>(COSINE_EPSILON));
   program->SetUniformf("deepRotationOffset", static_cast<float>(frame.RotationOffset));

@@ -327,6 +327,21 @@ public:
 
   ///@{
   /**
+   * Whether a tap on a MIP level m above the minimum reads the mean
+   * radiosity B of the 2^m x 2^m block of surfaces it stands for (a
+   * box-filtered pyramid of B, weighted by coverage) instead of the B of
+   * the one texel whose position it uses. On by default: a far tap then
+   * estimates the light of its whole patch, which removes most of the
+   * variance, and the low-frequency blotches, of a large radius. The
+   * positions and normals of eq. 5 stay the rotated grid's point samples.
+   */
+  vtkSetMacro(AverageFarTaps, bool);
+  vtkGetMacro(AverageFarTaps, bool);
+  vtkBooleanMacro(AverageFarTaps, bool);
+  ///@}
+
+  ///@{
+  /**
    * The gather's resolution divisor D, 1 or 2: the gather computes E for
    * the layers' texels D q only (D^2 times fewer receivers; its taps and
    * their sources, the bounce input, stay the layers'), the filters and the
@@ -507,6 +522,7 @@ protected:
   double EffectiveRadius = 0.0;
   int NumberOfSamples = 14;
   bool UseNormalTest = true;
+  bool AverageFarTaps = true;
   int Estimator = SOLID_ANGLE;
   bool UseColorBoost = false;
   int BlurRadius = 5;

@@ -90,8 +90,16 @@ vtkTypeInt64 TextureBytes(const vtkSmartPointer<vtkTextureObject>& texture)
   {
     return 0;
   }
-  return static_cast<vtkTypeInt64>(texture->GetWidth()) * texture->GetHeight() *
-    std::max(1, static_cast<int>(texture->GetDepth())) * texture->GetComponents() *
+  // Every level up to MaxLevel when the texture is mipmapped.
+  const bool mipmapped = texture->GetMinificationFilter() >= vtkTextureObject::NearestMipmapNearest;
+  const int levels = mipmapped ? texture->GetMaxLevel() + 1 : 1;
+  vtkTypeInt64 texels = 0;
+  for (int level = 0; level < levels; ++level)
+  {
+    texels += static_cast<vtkTypeInt64>(std::max(1u, texture->GetWidth() >> level)) *
+      std::max(1u, texture->GetHeight() >> level);
+  }
+  return texels * std::max(1, static_cast<int>(texture->GetDepth())) * texture->GetComponents() *
     vtkAbstractArray::GetDataTypeSize(texture->GetVTKDataType());
 }
 

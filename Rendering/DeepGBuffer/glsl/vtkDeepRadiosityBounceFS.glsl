@@ -15,6 +15,12 @@
 // bounce). The history may be on a reduced grid (vtkDeepRadiosityPass::
 // SetResolutionDivisor): deepPrevProjection and deepHistorySize are the
 // grid's, so the reprojection lands on its texels.
+// B is written only where the gather reads it: the gather's taps use MIP
+// levels deepSourceLevel (Table 2's minimum MIP level) and coarser, whose
+// rotated-grid texels are all level-0 texels that level deepSourceLevel
+// holds (section 3.4). Output texel q is B of the level-0 texel stored at
+// texel q of that level, so the bounce costs 4^-deepSourceLevel of a
+// full-resolution pass.
 //=========================================================================
 
 in vec2 texCoord;
@@ -35,6 +41,8 @@ uniform float deepTolerance;      // world units
 uniform float deepDamping;        // delta
 uniform int deepBoost;            // eq. 7 on/off
 uniform int deepHasLights;        // 0: VTK drew the props unlit, no direct light
+uniform int deepSourceLevel;      // MIP level of the output's texels
+uniform ivec2 deepBounceSize;     // the output's texels
 
 //VTK::DeepGBuffer::Common
 
@@ -86,7 +94,22 @@ vec3 bounceInput(ivec2 pixel, vec2 size, int layer)
 void main()
 {
   vec2 size = vec2(textureSize(deepDistance, 0).xy);
-  ivec2 pixel = min(ivec2(texCoord * size), ivec2(size) - 1);
-  gl_FragData[0] = vec4(bounceInput(pixel, size, 0), 1.0);
-  gl_FragData[1] = vec4(bounceInput(pixel, size, 1), 1.0);
+  ivec2 texel = min(ivec2(texCoord * vec2(deepBounceSize)), deepBounceSize - 1);
+  ivec2 pixel = deepRotatedGridSource(texel, deepSourceLevel, ivec2(size));
+  // Alpha: whether the layer has a surface there, so that the box-filtered
+  // levels of AverageFarTaps hold (mean of B over the block's surfaces) x
+  // (their share of the block).
+  for (int j = 0; j < 2; ++j)
+  {
+    bool present = j < deepLayers && texelFetch(deepDistance, ivec3(pixel, j), 0).r > 0.0;
+    vec4 result = vec4(bounceInput(pixel, size, j), present ? 1.0 : 0.0);
+    if (j == 0)
+    {
+      gl_FragData[0] = result;
+    }
+    else
+    {
+      gl_FragData[1] = result;
+    }
+  }
 }

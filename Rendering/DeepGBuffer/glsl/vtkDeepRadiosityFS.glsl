@@ -37,8 +37,9 @@ in vec2 texCoord;
 
 uniform sampler2DArray deepDistance;
 uniform sampler2DArray deepNormal;
-uniform sampler2D deepBounce0;     // B of layer 0
-uniform sampler2D deepBounce1;     // B of layer 1
+uniform sampler2D deepBounce0;     // (B, coverage) of layer 0 from level deepMinMip on
+uniform sampler2D deepBounce1;     // of layer 1 (vtkDeepRadiosityBounceFS)
+uniform int deepAverageFarTaps;    // taps above deepMinMip read their block's mean B
 uniform int deepLayers;            // 1 or 2
 uniform int deepSamples;           // N
 uniform float deepTurns;           // tau(N), Listing 3
@@ -86,6 +87,9 @@ void main()
   float r2 = deepRadius * deepRadius;
   float rp = deepScreenRadius(deepRadius, d0, size);
   float phi = deepSpiralRotation(receiver) + deepRotationOffset;
+  bool solidAngle = deepEstimator == DEEP_ESTIMATOR_SOLID_ANGLE;
+  bool useNormals = deepNormalTest != 0 || solidAngle;
+  float ringArea = 2.0 * deepPi * rp / float(deepSamples); // times h: the tap's screen ring
 
   vec3 sum[2] = vec3[2](vec3(0.0), vec3(0.0));
   float used[2] = float[2](0.0, 0.0);
@@ -99,23 +103,44 @@ void main()
       continue;
     }
     int m = deepTapMipLevel(h, deepMipThreshold, deepMinMip, deepMaxMip);
-    ivec2 source = deepRotatedGridSource(deepCoarseTexel(tap, m, isize), m, isize);
+    // The tap's source texel, through the texel of the minimum level that
+    // holds it (where the bounce input B is stored).
+    ivec2 sourceTexel = deepRotatedGridDescend(deepCoarseTexel(tap, m, isize), m, deepMinMip, isize);
+    ivec2 source = deepRotatedGridSource(sourceTexel, deepMinMip, isize);
     vec2 sourceCenter = vec2(source) + 0.5;
+    // Where B is read: the source's texel, or with deepAverageFarTaps the
+    // tap's block at its level (vtkDeepRadiosityPass::AverageFarTaps).
+    bool averaged = deepAverageFarTaps != 0 && m > deepMinMip;
+    ivec2 bounceTexel = averaged ? deepCoarseTexel(tap, m, isize) : sourceTexel;
+    int bounceLevel = averaged ? m - deepMinMip : 0;
 
-    // The candidates of this tap: the surface of every layer.
+    // The candidates of this tap: the surface of every layer, and, for
+    // SOLID_ANGLE, the area of the patch the tap stands for at each (its
+    // screen ring 2 pi h r_p / N pixels^2, times the world area of a pixel
+    // at Y's distance, over Y's tilt to the view, at least 0.1), which does
+    // not depend on the receiver.
     vec3 Y[2];
     vec3 nY[2];
     vec3 B[2];
+    float area[2];
     bool present[2];
     for (int k = 0; k < 2; ++k)
     {
       float dy = k < deepLayers ? texelFetch(deepDistance, ivec3(source, k), 0).r : 0.0;
       present[k] = dy > 0.0;
       Y[k] = deepPositionFromDistance(sourceCenter, size, max(dy, 0.0));
-      nY[k] = deepNormalTest != 0 || deepEstimator == DEEP_ESTIMATOR_SOLID_ANGLE
-        ? deepDecodeOct16(texelFetch(deepNormal, ivec3(source, k), 0).rg)
-        : vec3(0.0);
-      B[k] = k == 0 ? texelFetch(deepBounce0, source, 0).rgb : texelFetch(deepBounce1, source, 0).rgb;
+      nY[k] = useNormals ? deepDecodeOct16(texelFetch(deepNormal, ivec3(source, k), 0).rg)
+                         : vec3(0.0);
+      vec4 b = k == 0 ? texelFetch(deepBounce0, bounceTexel, bounceLevel)
+                      : texelFetch(deepBounce1, bounceTexel, bounceLevel);
+      B[k] = b.a > 0.0 ? b.rgb / b.a : vec3(0.0);
+      area[k] = 0.0;
+      if (solidAngle && present[k])
+      {
+        float pixelSize = 1.0 / deepScreenRadius(1.0, dy, size);
+        float tilt = max(abs(dot(nY[k], normalize(Y[k]))), 0.1);
+        area[k] = ringArea * h * pixelSize * pixelSize / tilt;
+      }
     }
 
     for (int j = 0; j < 2; ++j)
@@ -124,26 +149,24 @@ void main()
       {
         continue;
       }
+      // The passing candidate with the larger contribution |B (w.n_X)|.
       float bestScore = 0.0;
-      float bestOmega = 0.0;
       vec3 best = vec3(0.0);
+      float bestWeight = 0.0; // SOLID_ANGLE: area (-w.n_Y) of the best candidate
+      float bestDistance2 = 1.0;
       for (int k = 0; k < 2; ++k)
       {
-        if (!present[k])
-        {
-          continue;
-        }
         vec3 v = Y[k] - X[j];
         float vv = dot(v, v);
-        if (!(vv < r2) || !(vv > 0.0))
+        if (!present[k] || !(vv < r2) || !(vv > 0.0))
         {
           continue;
         }
         vec3 w = v * inversesqrt(vv);
         float cosX = dot(w, nX[j]);
+        float cosY = dot(w, nY[k]);
         // Equation 5.
-        if (!(cosX > deepCosineEpsilon) ||
-          (deepNormalTest != 0 && !(dot(w, nY[k]) < -deepCosineEpsilon)))
+        if (!(cosX > deepCosineEpsilon) || (deepNormalTest != 0 && !(cosY < -deepCosineEpsilon)))
         {
           continue;
         }
@@ -153,22 +176,17 @@ void main()
         {
           bestScore = score;
           best = c;
-          if (deepEstimator == DEEP_ESTIMATOR_SOLID_ANGLE)
-          {
-            // World size of a pixel at Y's distance, and Y's tilt to the view.
-            float pixelSize = 1.0 / deepScreenRadius(1.0, -Y[k].z, size);
-            float tilt = max(abs(dot(nY[k], normalize(Y[k]))), 0.1);
-            float area = 2.0 * deepPi * h * rp / float(deepSamples) * pixelSize * pixelSize / tilt;
-            bestOmega = area * max(-dot(w, nY[k]), 0.0) / vv;
-            best = c * bestOmega;
-          }
+          bestWeight = area[k] * max(-cosY, 0.0);
+          bestDistance2 = vv;
         }
       }
       if (bestScore > 0.0)
       {
-        sum[j] += best;
+        // dOmega_i = area (-w.n_Y) / |Y - X|^2.
+        float omega = solidAngle ? bestWeight / bestDistance2 : 0.0;
+        sum[j] += solidAngle ? best * omega : best;
         used[j] += 1.0;
-        omegaSum[j] += bestOmega;
+        omegaSum[j] += omega;
       }
     }
   }

@@ -81,19 +81,27 @@ int deepTapMipLevel(float h, float q, int minLevel, int maxLevel)
   return min(m, maxLevel);
 }
 
-// The level-0 texel that the rotated-grid pyramid (SAO's minification:
+// The level-`to` texel that the rotated-grid pyramid (SAO's minification:
 // level m + 1 texel (x, y) is level m texel (2x + (y & 1), 2y + (x & 1)),
-// clamped) stores at texel `coarse` of level m. Reading level-0 data there
-// is exactly reading level m of a pyramid built that way.
-ivec2 deepRotatedGridSource(ivec2 coarse, int m, ivec2 size)
+// clamped) stores at texel `coarse` of level `from` >= `to`, for layers of
+// `size` texels.
+ivec2 deepRotatedGridDescend(ivec2 coarse, int from, int to, ivec2 size)
 {
   ivec2 source = coarse;
-  for (int k = m; k > 0; --k)
+  for (int k = from; k > to; --k)
   {
     source = min(2 * source + ivec2(source.y & 1, source.x & 1),
       max(size >> (k - 1), ivec2(1)) - 1);
   }
   return source;
+}
+
+// The level-0 texel that the rotated-grid pyramid stores at texel `coarse`
+// of level m. Reading level-0 data there is exactly reading level m of a
+// pyramid built that way.
+ivec2 deepRotatedGridSource(ivec2 coarse, int m, ivec2 size)
+{
+  return deepRotatedGridDescend(coarse, m, 0, size);
 }
 
 // The level-m texel containing window point `tap` (clamped to level m).
