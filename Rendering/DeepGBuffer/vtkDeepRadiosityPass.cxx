@@ -804,9 +804,13 @@ bool vtkDeepRadiosityPass::PrepareTargets(
       allocated = allocated && AllocateTarget(t, window, size[0], size[1], 4);
       if (target == BOUNCE && t)
       {
-        // Levels MinimumMip..MaximumMip of the layers (AverageFarTaps).
-        t->SetMinificationFilter(vtkTextureObject::NearestMipmapNearest);
-        t->SetMaxLevel(frame.MaximumMip - frame.MinimumMip);
+        // With AverageFarTaps, levels MinimumMip..MaximumMip of the layers;
+        // otherwise one level (a mipmapped texture whose levels are never
+        // written would be incomplete and read as 0).
+        const int coarserLevels = this->AverageFarTaps ? frame.MaximumMip - frame.MinimumMip : 0;
+        t->SetMinificationFilter(
+          coarserLevels > 0 ? vtkTextureObject::NearestMipmapNearest : vtkTextureObject::Nearest);
+        t->SetMaxLevel(coarserLevels);
       }
     }
   }
