@@ -66,7 +66,7 @@ CLASS = re.compile(r"^class\s+(?:\w+_EXPORT\s+)?(\w+)\s*(?::|$)", re.M)
 COMMENT = re.compile(r"/\*\*(.*?)\*/|((?:^[ \t]*///(?!@)[^\n]*\n)+)", re.S | re.M)
 
 # The declaration that names an entry and gives its type.
-MACRO = re.compile(r"\bvtk(?:DeepGI)?(Set|Get|Boolean)(\w*)Macro\(\s*(\w+)\s*(?:,\s*([^,)]+))?")
+MACRO = re.compile(r"\bvtk(?:DeepGI)?(?:Set|Get|Boolean)(\w*)Macro\(\s*(\w+)\s*(?:,\s*([^,)]+))?")
 METHOD = re.compile(
     r"^\s*(?:virtual\s+|static\s+)?([\w:]+(?:\s*\*)?)\s+(Set|Get)(\w+)\s*\(([^)]*)\)", re.M)
 
@@ -94,7 +94,7 @@ def split_tags(lines):
     return " ".join(" ".join(prose).split()), tags
 
 
-def macro_type(kind, suffix, argument):
+def macro_type(suffix, argument):
     """The documented type of a VTK Set/Get macro's value."""
     if "String" in suffix:
         return "string"
@@ -111,8 +111,8 @@ def declaration(text):
     macro = MACRO.search(text)
     method = METHOD.search(text)
     if macro and (not method or macro.start() < method.start()):
-        kind, suffix, name, argument = macro.groups()
-        return name, macro_type(kind, suffix, (argument or "bool").strip())
+        suffix, name, argument = macro.groups()
+        return name, macro_type(suffix, (argument or "bool").strip())
     if method:
         returned, kind, name, arguments = method.groups()
         if kind == "Set":
