@@ -65,6 +65,12 @@ public:
 
   ///@{
   /// Default AV_SCALES_RADIANCE (VTK's default actors have no ambient term).
+  /// Which term AV scales: the ambient term (AV_SCALES_AMBIENT, scenes with one) or VTK's whole
+  /// shading (AV_SCALES_RADIANCE, VTK's default actors), as
+  /// vtkDeepAmbientObscurancePass::ResolveComposition decides for the pass.
+  ///
+  /// @range AV_SCALES_AMBIENT 0, AV_SCALES_RADIANCE 1; clamped
+  /// @default AV_SCALES_RADIANCE
   vtkSetClampMacro(Visibility, int, AV_SCALES_AMBIENT, AV_SCALES_RADIANCE);
   vtkGetMacro(Visibility, int);
   ///@}
@@ -77,18 +83,32 @@ public:
 
   ///@{
   /// The obscurance radius r (world units), as the pass's effective radius.
+  /// Use the pass's GetEffectiveRadius().
+  ///
+  /// @unit world units
+  /// @range > 0 (Compute() fails otherwise)
+  /// @default 1
   void SetObscuranceRadius(double radius);
   double GetObscuranceRadius();
   ///@}
 
   ///@{
   /// Bounces of indirect light, [1, 16]; default 4.
+  /// The bounces are undamped.
+  ///
+  /// @unit bounces
+  /// @range 1..16, clamped with a warning
+  /// @default 4
   void SetNumberOfBounces(int bounces);
   int GetNumberOfBounces();
   ///@}
 
   ///@{
   /// Rays per pixel of each estimate; default 256.
+  ///
+  /// @unit rays
+  /// @range 1..1048576, clamped
+  /// @default 256
   void SetSamplesPerPixel(int samples);
   int GetSamplesPerPixel();
   ///@}

@@ -229,6 +229,9 @@ public:
    * exact, its standard error 0). It checks the light model against VTK's
    * rendering: a capture's Radiance_j - Ambient_j is VTK's diffuse (plus
    * specular) term, plus the ambient term on EMISSIVE props.
+   *
+   * @range INDIRECT_IRRADIANCE 0, DIRECT_RADIANCE 1; clamped
+   * @default INDIRECT_IRRADIANCE
    */
   vtkSetClampMacro(Quantity, int, INDIRECT_IRRADIANCE, DIRECT_RADIANCE);
   vtkGetMacro(Quantity, int);
@@ -240,6 +243,8 @@ public:
   /**
    * Shadow rays from each hit point Y to each light. Default off (VTK's
    * default rendering, and so the screen-space input, has no shadows).
+   *
+   * @default off
    */
   vtkSetMacro(Shadows, bool);
   vtkGetMacro(Shadows, bool);
@@ -250,6 +255,10 @@ public:
   /**
    * Back faces hit by a ray are lit with the flipped normal (on, default:
    * what VTK 9.1's OpenGL2 renderer always does) or send no light (off).
+   * With it on, back faces also emit like the front face; off, they send no light, emission
+   * included.
+   *
+   * @default on
    */
   vtkSetMacro(TwoSidedLighting, bool);
   vtkGetMacro(TwoSidedLighting, bool);
@@ -263,6 +272,10 @@ public:
    * limits every segment of a path. Set it to the screen-space gather
    * radius r to compare with a gather limited to r.
    * Compute() fails with an error when it is NaN or not positive.
+   *
+   * @unit world units
+   * @range (0, inf]
+   * @default inf
    */
   vtkSetMacro(MaximumDistance, double);
   vtkGetMacro(MaximumDistance, double);
@@ -275,6 +288,12 @@ public:
    * outside the range are clamped with a warning. The cost grows about
    * linearly with it (one continuation ray, plus shadow rays, per bounce);
    * NumberOfRays counts the rays that leave X only.
+   * With k bounces the radiance leaving a hit is L_emitted + L_direct + delta rho E_{k-1} / pi,
+   * E_{k-1} by diffuse path tracing (one continuation ray per bounce and sample).
+   *
+   * @unit bounces
+   * @range [1, 16]; outside: clamped with a warning
+   * @default 1
    */
   void SetNumberOfBounces(int bounces);
   vtkGetMacro(NumberOfBounces, int);
@@ -287,6 +306,9 @@ public:
    * (undamped, the physical multi-bounce irradiance). Out-of-range values
    * are clamped and NaN is ignored, both with a warning. Has no effect with
    * NumberOfBounces 1.
+   *
+   * @range [0, 1]; outside: clamped with a warning; NaN: warning, ignored
+   * @default 1
    */
   void SetBounceDamping(double delta);
   vtkGetMacro(BounceDamping, double);
@@ -296,6 +318,13 @@ public:
   /**
    * Name of the scene's cell array of emitted radiance (see the class
    * description). Default "Emission"; nullptr or empty: nothing emits.
+   * The array holds the emitted radiance L_emitted: RGB or 1 component (grey); float/double in
+   * VTK's pixel-colour units (the Radiance - Ambient of an EMISSIVE prop), unsigned char divided by
+   * 255. A hit leaves L_emitted + L_direct. A missing array means nothing emits (no warning); a
+   * wrong tuple or component count: the array is ignored with a warning; NaN, infinite or negative
+   * values: 0 with a warning.
+   *
+   * @default "Emission"
    */
   vtkSetStringMacro(EmissionArrayName);
   vtkGetStringMacro(EmissionArrayName);
@@ -307,6 +336,10 @@ public:
    * "Colors" albedo when the scene carries no "Diffuse" cell or field array.
    * [0, 1]; default 1. The scene polydata of vtkDeepGBufferDemoScene and
    * vtkDeepGBufferSceneLoader carry their actors' Diffuse as field data.
+   * Those scenes carry their actors' 0.9.
+   *
+   * @range [0, 1], clamped
+   * @default 1
    */
   vtkDeepGISetClampMacro(DiffuseCoefficient, double, 0.0, 1.0);
   vtkGetMacro(DiffuseCoefficient, double);

@@ -123,6 +123,9 @@ public:
    * The scene: all its polygons (triangulated on the fly; lines, vertices
    * ignored), world space, the same coordinates the capture was rendered
    * with. Default nullptr (Compute() then fails with an error).
+   *
+   * @unit world units
+   * @default null
    */
   void SetScene(vtkPolyData* scene);
   vtkPolyData* GetScene();
@@ -133,6 +136,10 @@ public:
    * r of eq. 2: occluders farther than r do not count. World units,
    * (0, VTK_DOUBLE_MAX]; default 1. Compute() fails with an error when it
    * is not a positive finite number (NaN, infinity, <= 0).
+   *
+   * @unit world units
+   * @range (0, max], finite
+   * @default 1
    */
   vtkSetMacro(Radius, double);
   vtkGetMacro(Radius, double);
@@ -143,6 +150,10 @@ public:
    * beta of eq. 2 (world units, >= 0; default 0): subtracted from t cos,
    * ignores occluders close to the tangent plane. Set it to the
    * screen-space pass's value when comparing with it.
+   *
+   * @unit world units
+   * @range >= 0, clamped
+   * @default 0
    */
   vtkDeepGISetClampMacro(Bias, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Bias, double);
@@ -152,6 +163,10 @@ public:
   /**
    * eps of eq. 2 (world units squared, >= 0; default 0): regularises
    * 1 / |v| for very near occluders.
+   *
+   * @unit world units^2
+   * @range >= 0, clamped
+   * @default 0
    */
   vtkDeepGISetClampMacro(Epsilon, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Epsilon, double);
@@ -161,6 +176,10 @@ public:
   /**
    * Monte Carlo samples (rays) per pixel, [1, 1048576]; default 256.
    * The noise (standard error) falls as 1 / sqrt(SamplesPerPixel).
+   *
+   * @unit rays
+   * @range 1..1048576, clamped
+   * @default 256
    */
   vtkSetClampMacro(SamplesPerPixel, int, 1, 1048576);
   vtkGetMacro(SamplesPerPixel, int);
@@ -171,6 +190,9 @@ public:
    * Seed of the counter-based random sequence (any value; default 0). The
    * same seed, capture and scene give bit-identical results for any number
    * of threads.
+   *
+   * @range any
+   * @default 0
    */
   vtkSetMacro(Seed, unsigned int);
   vtkGetMacro(Seed, unsigned int);
@@ -179,6 +201,9 @@ public:
   ///@{
   /**
    * Which layer of the capture provides X and n, [0, 7]; default 0.
+   *
+   * @range 0..7, clamped
+   * @default 0
    */
   vtkSetClampMacro(Layer, int, 0, 7);
   vtkGetMacro(Layer, int);
@@ -189,6 +214,9 @@ public:
    * Ray origins are moved along n by RelativeOffset * (scene diagonal +
    * |X - scene centre|) to avoid self-intersection; dimensionless,
    * [0, 0.01]; default 1e-5.
+   *
+   * @range 0..0.01, clamped
+   * @default 1e-5
    */
   vtkDeepGISetClampMacro(RelativeOffset, double, 0.0, 0.01);
   vtkGetMacro(RelativeOffset, double);

@@ -50,6 +50,11 @@ public:
    * the reflection pass's maximum distance t_max to compare with a march
    * limited to it. Compute() fails with an error when it is NaN or not
    * positive.
+   * The length is |Y - X|; the pass's t_max is its EffectiveMaximumDistance.
+   *
+   * @unit world units
+   * @range (0, inf]
+   * @default inf
    */
   vtkSetMacro(MaximumDistance, double);
   vtkGetMacro(MaximumDistance, double);

@@ -88,6 +88,10 @@ public:
    * until the scene has at least this many triangles (it may have a few
    * percent more; below about 7,700 the coarsest tessellation is used).
    * Range 0 to 500,000,000. Default 10,000.
+   *
+   * @unit triangles
+   * @range 0 to 500,000,000, clamped
+   * @default 10,000
    */
   vtkSetClampMacro(TargetNumberOfTriangles, vtkIdType, 0, 500000000);
   vtkGetMacro(TargetNumberOfTriangles, vtkIdType);
@@ -98,6 +102,9 @@ public:
    * Uniform scale of the whole scene: geometry, light positions and the
    * camera setups. Must be finite and positive; other values are rejected
    * with an error. Default 1 (room 10 x 4 x 8 units).
+   *
+   * @range finite and > 0; other values: error, ignored
+   * @default 1
    */
   virtual void SetScaleFactor(double scale);
   vtkGetMacro(ScaleFactor, double);
@@ -106,6 +113,9 @@ public:
   ///@{
   /**
    * Whether the room has a ceiling (y = 4). Default on.
+   *
+   * @range on/off
+   * @default on
    */
   vtkSetMacro(Ceiling, bool);
   vtkGetMacro(Ceiling, bool);
@@ -116,6 +126,9 @@ public:
   /**
    * Whether point normals are computed (vtkPolyDataNormals). Turn off to
    * exercise meshes without normals. Default on.
+   *
+   * @range on/off
+   * @default on
    */
   vtkSetMacro(ComputeNormals, bool);
   vtkGetMacro(ComputeNormals, bool);
@@ -126,6 +139,10 @@ public:
   /**
    * Edges between triangles meeting at more than this angle (degrees) are
    * hard: the normals are split there. Range 0 to 180. Default 30.
+   *
+   * @unit degrees
+   * @range 0 to 180, clamped
+   * @default 30
    */
   vtkDeepGISetClampMacro(FeatureAngle, double, 0.0, 180.0);
   vtkGetMacro(FeatureAngle, double);

@@ -110,6 +110,10 @@ public:
   /**
    * Iso-value used by Load() for volumes, in the volume's scalar units.
    * Default 500 (skin of the headsq CT data).
+   *
+   * @unit the volume's scalar units
+   * @range any
+   * @default 500
    */
   vtkSetMacro(IsoValue, double);
   vtkGetMacro(IsoValue, double);
@@ -119,6 +123,10 @@ public:
   /**
    * Compute point normals for meshes that have none, and gradient normals
    * for iso-surfaces. Off leaves them without normals. Default on.
+   * Normals stored in a file are kept.
+   *
+   * @range on/off
+   * @default on
    */
   vtkSetMacro(ComputeNormals, bool);
   vtkGetMacro(ComputeNormals, bool);
@@ -129,6 +137,10 @@ public:
   /**
    * Feature angle (degrees) where computed mesh normals are split, so hard
    * edges stay hard. Range 0 to 180. Default 30.
+   *
+   * @unit degrees
+   * @range 0 to 180, clamped
+   * @default 30
    */
   vtkDeepGISetClampMacro(FeatureAngle, double, 0.0, 180.0);
   vtkGetMacro(FeatureAngle, double);
@@ -138,6 +150,9 @@ public:
   /**
    * Diffuse colour (RGB, 0-1) of parts without a material. Default
    * (0.8, 0.8, 0.8).
+   *
+   * @unit RGB 0-1
+   * @default (0.8, 0.8, 0.8)
    */
   vtkSetVector3Macro(DefaultColor, double);
   vtkGetVector3Macro(DefaultColor, double);
@@ -145,11 +160,24 @@ public:
 
   ///@{
   /**
-   * For slice-series prefixes without a .nhdr: voxel spacing (default
-   * 1, 1, 1) and byte order (default little endian) of the 16-bit slices.
+   * For slice-series prefixes without a .nhdr: voxel spacing of the 16-bit
+   * slices (default 1, 1, 1).
+   *
+   * @unit volume units
+   * @default (1, 1, 1)
    */
   vtkSetVector3Macro(RawSliceSpacing, double);
   vtkGetVector3Macro(RawSliceSpacing, double);
+  ///@}
+
+  ///@{
+  /**
+   * For slice-series prefixes without a .nhdr: byte order of the 16-bit
+   * slices (default little endian).
+   *
+   * @range on/off
+   * @default on
+   */
   vtkSetMacro(RawSliceLittleEndian, bool);
   vtkGetMacro(RawSliceLittleEndian, bool);
   vtkBooleanMacro(RawSliceLittleEndian, bool);
@@ -159,6 +187,9 @@ public:
   /**
    * Whether Populate() also adds the default light (see AddDefaultLight).
    * Default on.
+   *
+   * @range on/off
+   * @default on
    */
   vtkSetMacro(DefaultLight, bool);
   vtkGetMacro(DefaultLight, bool);
@@ -167,13 +198,24 @@ public:
 
   ///@{
   /**
-   * Direction the camera looks along and its view-up, for ResetCamera().
-   * Defaults (0, 0, -1) and (0, 1, 0): looking down -z with +y up, the
-   * usual frame of OBJ scenes (Cornell boxes open towards +z). The headsq
-   * CT volume faces the camera with (0, -1, 0) and (0, 0, -1).
+   * Direction the camera looks along for ResetCamera(). Default (0, 0, -1):
+   * looking down -z (with ViewUp's +y up), the usual frame of OBJ scenes
+   * (Cornell boxes open towards +z). The headsq CT volume faces the camera
+   * with (0, -1, 0) and view-up (0, 0, -1).
+   *
+   * @default (0, 0, -1)
    */
   vtkSetVector3Macro(ViewDirection, double);
   vtkGetVector3Macro(ViewDirection, double);
+  ///@}
+
+  ///@{
+  /**
+   * View-up of the camera for ResetCamera(). Default (0, 1, 0); the headsq
+   * CT volume faces the camera with direction (0, -1, 0) and up (0, 0, -1).
+   *
+   * @default (0, 1, 0)
+   */
   vtkSetVector3Macro(ViewUp, double);
   vtkGetVector3Macro(ViewUp, double);
   ///@}

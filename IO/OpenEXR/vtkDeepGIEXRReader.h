@@ -56,6 +56,10 @@ public:
   ///@{
   /**
    * The file to read. Default empty (Update() then fails with an error).
+   * An OpenEXR file: scanline or tiled, half/float/uint channels; of a multi-part file the first
+   * part is read. A missing, non-EXR, deep or undecodable file gives an error and an empty output.
+   *
+   * @default empty
    */
   vtkSetStdStringFromCharMacro(FileName);
   vtkGetCharFromStdStringMacro(FileName);

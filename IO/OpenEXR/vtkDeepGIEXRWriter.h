@@ -76,6 +76,9 @@ public:
   ///@{
   /**
    * The file to write. Default empty (Write() then fails with an error).
+   * The file is a ZIP-compressed scanline OpenEXR.
+   *
+   * @default empty
    */
   vtkSetStdStringFromCharMacro(FileName);
   vtkGetCharFromStdStringMacro(FileName);
@@ -85,6 +88,10 @@ public:
   /**
    * Pixel type of every channel: HALF (2 bytes, about 3 significant decimal
    * digits) or FLOAT (4 bytes, exact for float arrays). Default FLOAT.
+   * FLOAT writes float arrays exactly; HALF rounds to 11 significant bits.
+   *
+   * @range HALF 1, FLOAT 2; clamped
+   * @default FLOAT
    */
   vtkSetClampMacro(PixelType, int, HALF, FLOAT);
   vtkGetMacro(PixelType, int);

@@ -152,6 +152,10 @@ public:
    * AutomaticRadius off. NaN and infinities are rejected with a warning
    * (the previous value stays); negative values are clamped to 0 with a
    * warning (r = 0 gives AV = 1).
+   *
+   * @unit world units
+   * @range >= 0, finite; negative: warning, 0; NaN/inf: warning, ignored
+   * @default 1 (unused while automatic)
    */
   void SetRadius(double radius);
   vtkGetMacro(Radius, double);
@@ -159,19 +163,35 @@ public:
 
   ///@{
   /**
-   * When on (default), r is AutomaticRadiusFraction (default 0.05) times the
-   * diagonal of the bounds of the renderer's visible props, so it follows
+   * When on (default), r is AutomaticRadiusFraction times the diagonal of
+   * the bounds of the renderer's visible props, every frame, so it follows
    * the scene's scale (0.67 in vtkDeepGBufferDemoScene's 10 x 4 x 8 room,
    * about SAO's 1 m in the paper's 30-40 m scenes).
+   *
+   * @range on/off
+   * @default on
    */
   vtkSetMacro(AutomaticRadius, bool);
   vtkGetMacro(AutomaticRadius, bool);
   vtkBooleanMacro(AutomaticRadius, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The fraction of the diagonal that gives the automatic r (default 0.05).
+   *
+   * @unit fraction of the diagonal
+   * @range 0 to 1, clamped
+   * @default 0.05
+   */
   vtkDeepGISetClampMacro(AutomaticRadiusFraction, double, 0.0, 1.0);
   vtkGetMacro(AutomaticRadiusFraction, double);
   ///@}
 
   /// The radius r used by the last frame (world units).
+  ///
+  /// @unit world units
+  /// @readonly
   vtkGetMacro(EffectiveRadius, double);
 
   ///@{
@@ -180,6 +200,10 @@ public:
    * Bias * r. It keeps flat surfaces from obscuring themselves through
    * depth and normal quantisation. Default 0.01 (SAO's 1.2 cm at r = 1 m).
    * Clamped to [0, 1].
+   *
+   * @unit fraction of r
+   * @range 0 to 1, clamped
+   * @default 0.01
    */
   vtkDeepGISetClampMacro(Bias, double, 0.0, 1.0);
   vtkGetMacro(Bias, double);
@@ -194,6 +218,10 @@ public:
    * SOLID_ANGLE, 0.01, SAO's 0.01 m^2 at r = 1 m, leaves the obscurance
    * of a floor point beside a wall 0.22 too low; 1e-4, 0.12). Clamped to
    * [1e-6, 1].
+   *
+   * @unit fraction of r^2
+   * @range 1e-6 to 1, clamped
+   * @default 1e-4
    */
   vtkDeepGISetClampMacro(Epsilon, double, 1e-6, 1.0);
   vtkGetMacro(Epsilon, double);
@@ -224,6 +252,11 @@ public:
    * EQUATION_1 is the paper's eq. 1, whose square root is a contrast
    * curve: small obscurance becomes a broad grey shadow, 2-4 times darker
    * than the reference (Documentation/ambient-obscurance.md).
+   * Also SetEstimatorToEquation1(), SetEstimatorToSolidAngle().
+   *
+   * @type int (EstimatorType)
+   * @range EQUATION_1 0, SOLID_ANGLE 1; clamped
+   * @default SOLID_ANGLE
    */
   vtkSetClampMacro(Estimator, int, EQUATION_1, SOLID_ANGLE);
   vtkGetMacro(Estimator, int);
@@ -237,7 +270,11 @@ public:
    * Exponent applied to AV: AV = max(0, 1 - sqrt(...))^Intensity.
    * 1 (default) is exactly eq. 1, 0 disables obscurance (AV = 1), larger
    * values darken; AV stays in [0, 1]. Negative values are clamped to 0
-   * with a warning.
+   * with a warning; NaN and infinities are rejected with a warning (the
+   * previous value stays).
+   *
+   * @range >= 0, finite; negative: warning, 0; NaN/inf: warning, ignored
+   * @default 1
    */
   void SetIntensity(double intensity);
   vtkGetMacro(Intensity, double);
@@ -249,6 +286,10 @@ public:
    * 16. Values outside are clamped with a warning; in particular N = 99,
    * which the paper's Figure 7 uses but Listing 3 does not tabulate, becomes
    * 98 with a warning.
+   *
+   * @unit taps
+   * @range 1 to 98; outside: warning and clamp
+   * @default 16
    */
   void SetNumberOfSamples(int samples);
   vtkGetMacro(NumberOfSamples, int);
@@ -259,6 +300,9 @@ public:
    * When on (default), occluders come from every layer of the G-buffer
    * (eq. 1's max over A_i^0, A_i^1, ...). Off: layer 0 only, classic SAO
    * without its falloff terms.
+   *
+   * @range on/off
+   * @default on
    */
   vtkSetMacro(UseSecondLayer, bool);
   vtkGetMacro(UseSecondLayer, bool);
@@ -268,14 +312,37 @@ public:
   ///@{
   /**
    * Bilateral reconstruction: taps on each side of each separable pass
-   * (0 to 16, default 4; 0 disables the filter), the plane tolerance as a
-   * fraction of the centre pixel's distance (default 0.02) and the exponent
-   * of the normal weight (default 8).
+   * (0 to 16, default 4; 0 disables the filter).
+   *
+   * @unit pixels per side
+   * @range 0 to 16, clamped
+   * @default 4
    */
   vtkSetClampMacro(BlurRadius, int, 0, 16);
   vtkGetMacro(BlurRadius, int);
+  ///@}
+
+  ///@{
+  /**
+   * Plane weight of the bilateral filter: the tolerance as a fraction of
+   * the centre pixel's distance (default 0.02).
+   *
+   * @unit fraction of depth
+   * @range 1e-6 to 1, clamped
+   * @default 0.02
+   */
   vtkDeepGISetClampMacro(BlurPlaneTolerance, double, 1e-6, 1.0);
   vtkGetMacro(BlurPlaneTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Normal weight of the bilateral filter: its exponent (default 8).
+   *
+   * @unit exponent
+   * @range 0 to 128, clamped
+   * @default 8
+   */
   vtkDeepGISetClampMacro(BlurNormalPower, double, 0.0, 128.0);
   vtkGetMacro(BlurNormalPower, double);
   ///@}
@@ -288,6 +355,13 @@ public:
    * off-screen); the shaded part lets the filter and the temporal history
    * work across the frame's edges. NaN is ignored and values outside
    * [0, 1] are clamped, with a warning. A change resets the history.
+   * Because the taps read the whole band, occluders just off-screen
+   * darken the frame's edges (see Documentation/radiosity.md, "Guard
+   * band").
+   *
+   * @unit fraction of the guard band
+   * @range 0 to 1; outside: warning and clamp; NaN: warning, ignored
+   * @default 0.5
    */
   void SetGuardBandShadedFraction(double fraction)
   {
@@ -299,12 +373,27 @@ public:
   ///@{
   /**
    * Depth MIP pyramid (see the class description): q, the screen radius in
-   * pixels at which taps start reading coarser levels (default 8, SAO's
-   * 2^LOG_MAX_OFFSET; clamped to [1, 65536]), and the coarsest level L
-   * (0 to 15, default 5 as SAO's MAX_MIP_LEVEL; 0 disables the pyramid).
+   * pixels at which taps start reading coarser levels: taps with h_i >= 2q
+   * read coarser levels (default 8, SAO's 2^LOG_MAX_OFFSET; clamped to
+   * [1, 65536]).
+   *
+   * @unit pixels
+   * @range 1 to 65536, clamped
+   * @default 8
    */
   vtkDeepGISetClampMacro(MipThreshold, double, 1.0, 65536.0);
   vtkGetMacro(MipThreshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * Depth MIP pyramid: the coarsest level L (0 to 15, default 5 as SAO's
+   * MAX_MIP_LEVEL; 0 disables the pyramid: taps read level 0).
+   *
+   * @unit level
+   * @range 0 to 15, clamped
+   * @default 5
+   */
   vtkSetClampMacro(MaximumMipLevel, int, 0, 15);
   vtkGetMacro(MaximumMipLevel, int);
   ///@}
@@ -316,6 +405,9 @@ public:
    * then exactly the single-frame one; larger values average over more
    * frames (about (1 + alpha) / (1 - alpha) frames for a still camera) but
    * lag more behind changes. Clamped to [0, 0.99].
+   *
+   * @range 0 to 0.99, clamped
+   * @default 0
    */
   vtkDeepGISetClampMacro(TemporalAlpha, double, 0.0, 0.99);
   vtkGetMacro(TemporalAlpha, double);
@@ -350,7 +442,12 @@ public:
    * actors, the actors without an ambient term are then not darkened.
    * GetEffectiveComposition() tells which one the last frame used. The
    * ambient composition applies when the G-buffer displays RADIANCE; for
-   * its debug displays the pass multiplies.
+   * its debug displays the pass multiplies. Also SetCompositionToMultiply(),
+   * SetCompositionToAmbient(), SetCompositionToAutomatic().
+   *
+   * @type int (CompositionMode)
+   * @range COMPOSITE_MULTIPLY 0, COMPOSITE_AMBIENT 1, COMPOSITE_AUTOMATIC 2; clamped
+   * @default COMPOSITE_AUTOMATIC
    */
   vtkSetClampMacro(Composition, int, COMPOSITE_MULTIPLY, COMPOSITE_AUTOMATIC);
   vtkGetMacro(Composition, int);
@@ -358,7 +455,12 @@ public:
   void SetCompositionToAmbient() { this->SetComposition(COMPOSITE_AMBIENT); }
   void SetCompositionToAutomatic() { this->SetComposition(COMPOSITE_AUTOMATIC); }
   static const char* GetCompositionAsString(int composition);
+  ///@}
+
+  ///@{
   /// COMPOSITE_MULTIPLY or COMPOSITE_AMBIENT: what the last frame used.
+  ///
+  /// @readonly
   vtkGetMacro(EffectiveComposition, int);
   ///@}
 

@@ -122,6 +122,13 @@ public:
   /**
    * Oracle used to build layers j > 0 (see the class description).
    * Default REPROJECT.
+   * It predicts layer j - 1's depth while layer j is built. Also SetOracleToDepthPeel(),
+   * ...Previous(), ...Reproject(), ...Predict(), ...Delay(). PREDICT and DELAY with more than 2
+   * layers use REPROJECT (warning once).
+   *
+   * @type int (OracleType)
+   * @range DEPTH_PEEL 0, PREVIOUS 1, REPROJECT 2, PREDICT 3, DELAY 4; clamped
+   * @default REPROJECT
    */
   vtkSetClampMacro(Oracle, int, DEPTH_PEEL, DELAY);
   vtkGetMacro(Oracle, int);
@@ -142,6 +149,11 @@ public:
    * count is also limited by what the GPU's geometry shaders and array
    * textures allow. PREDICT and DELAY predict one layer; with k > 2 they
    * fall back to REPROJECT with a warning.
+   * The GPU limits are reported once as a warning.
+   *
+   * @unit layers
+   * @range 1 to MAXIMUM_NUMBER_OF_LAYERS (8); out of range: warning and clamp
+   * @default 2
    */
   void SetNumberOfLayers(int layers);
   vtkGetMacro(NumberOfLayers, int);
@@ -155,6 +167,10 @@ public:
    * negative values are clamped to 0 with a warning (dz = 0 is classic depth
    * peeling). A dz larger than the scene leaves layers j > 0 empty; that is
    * reported once as a warning.
+   *
+   * @unit world units
+   * @range >= 0, finite; negative: warning, 0 is used; NaN/inf: warning, ignored
+   * @default 0 (unused while automatic)
    */
   void SetMinimumSeparation(double dz);
   vtkGetMacro(MinimumSeparation, double);
@@ -163,13 +179,27 @@ public:
   ///@{
   /**
    * When on (default), dz is AutomaticSeparationFraction times the diagonal
-   * of the bounds of the renderer's visible props, so it follows the scene's
-   * scale. The paper uses dz = 0.5 m in scenes about 30-40 m across, i.e.
-   * about 1.5 % of their size; the default fraction is 0.015.
+   * of the bounds of the renderer's visible props, every frame, so it
+   * follows the scene's scale.
+   *
+   * @range on/off (...On(), ...Off())
+   * @default on
    */
   vtkSetMacro(AutomaticMinimumSeparation, bool);
   vtkGetMacro(AutomaticMinimumSeparation, bool);
   vtkBooleanMacro(AutomaticMinimumSeparation, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The fraction of the diagonal that gives the automatic dz. The paper uses
+   * dz = 0.5 m in scenes about 30-40 m across, i.e. about 1.5 % of their
+   * size; the default fraction is 0.015.
+   *
+   * @unit fraction of the diagonal
+   * @range 0 to 1, clamped
+   * @default 0.015
+   */
   vtkDeepGISetClampMacro(AutomaticSeparationFraction, double, 0.0, 1.0);
   vtkGetMacro(AutomaticSeparationFraction, double);
   ///@}
@@ -182,6 +212,9 @@ public:
    * behind it (paper Figure 2, the Sponza tapestry), unless dz exceeds the
    * column's thickness. Turn it off for open surfaces whose back faces are
    * seen (e.g. a cut-open iso-surface). Layer 0 always draws what VTK draws.
+   *
+   * @range on/off
+   * @default on
    */
   vtkSetMacro(DeepLayerBackfaceCulling, bool);
   vtkGetMacro(DeepLayerBackfaceCulling, bool);
@@ -201,6 +234,9 @@ public:
    * consumer (vtkDeepReflectionPass) turns this on, so other users of the
    * G-buffer pay nothing. Turning it on or off rebuilds the props' shaders
    * once.
+   *
+   * @range on/off
+   * @default off
    */
   void SetWriteReflectivity(bool write);
   vtkGetMacro(WriteReflectivity, bool);
@@ -232,12 +268,21 @@ public:
    * the GPU's largest texture), with one warning per pass the first time
    * a limit applies. The resolved image, the depth buffer and CaptureLayers
    * are the frame's.
+   * For example an 8 x 4000 frame with 0.5 gets 8 pixels, not 2000.
+   *
+   * @unit fraction of the viewport height, per side
+   * @range 0 to MAXIMUM_GUARD_BAND (0.5); outside: warning and clamp; NaN: warning, ignored
+   * @default 0 (0.1 in the G-buffers vtkDeepRadiosityPass and vtkDeepGIPass create)
    */
   void SetGuardBand(double fraction);
   vtkGetMacro(GuardBand, double);
   ///@}
 
   /// The guard band of the last rendered frame, in pixels on each side.
+  /// 0 before the first frame.
+  ///
+  /// @unit pixels per side
+  /// @readonly
   vtkGetMacro(EffectiveGuardBand, int);
 
   /**
@@ -257,34 +302,64 @@ public:
     double fraction, int width, int height, int maximumTextureSize, bool* limited = nullptr);
 
   /// The dz used by the last rendered frame (world units).
+  /// 0 before the first frame.
+  ///
+  /// @unit world units
+  /// @readonly
   vtkGetMacro(EffectiveMinimumSeparation, double);
 
   /// The layer count used by the last rendered frame (after GPU limits).
+  /// 0 before the first frame.
+  ///
+  /// @unit layers
+  /// @readonly
   vtkGetMacro(EffectiveNumberOfLayers, int);
 
   /// The oracle used by the last frame for its single-pass props; DEPTH_PEEL
   /// when the frame had no history (first frame, resize) or one layer.
+  /// A layout change also leaves the frame without history.
+  ///
+  /// @readonly
   vtkGetMacro(EffectiveOracle, int);
 
   /// Number of geometry submissions of the opaque props in the last frame:
   /// 1 for the single-pass oracles, k for DEPTH_PEEL, 1 + k when some props
   /// also take the per-layer path.
+  /// 0 before the first frame.
+  ///
+  /// @unit submissions
+  /// @readonly
   vtkGetMacro(LastGeometryPassCount, int);
 
   ///@{
   /**
-   * Debug display: which quantity and which layer the pass shows on screen.
-   * Default RADIANCE of layer 0, i.e. the normal image. DEPTH is shown as
+   * Debug display: the quantity the pass draws into the framebuffer.
+   * Default RADIANCE, i.e. the normal image. DEPTH is shown as
    * distance normalised to the camera's clipping range (near black, far
    * white), NORMAL as n * 0.5 + 0.5. REFLECTIVITY is shown while it is
    * written (WriteReflectivity), RADIANCE otherwise.
    * Empty pixels keep the renderer's background.
+   *
+   * @type int (Quantity)
+   * @range RADIANCE 0, ALBEDO 1, NORMAL 2, DEPTH 3, AMBIENT 4, REFLECTIVITY 5; clamped
+   * @default RADIANCE
    */
   vtkSetClampMacro(DisplayQuantity, int, RADIANCE, REFLECTIVITY);
   vtkGetMacro(DisplayQuantity, int);
+  static const char* GetQuantityAsString(int quantity);
+  ///@}
+
+  ///@{
+  /**
+   * Debug display: the layer the pass draws into the framebuffer (default
+   * 0). At draw time it is limited to the rendered layers.
+   *
+   * @unit layer index
+   * @range 0 to 7, clamped; at draw time limited to the rendered layers
+   * @default 0
+   */
   vtkSetClampMacro(DisplayLayer, int, 0, MAXIMUM_NUMBER_OF_LAYERS - 1);
   vtkGetMacro(DisplayLayer, int);
-  static const char* GetQuantityAsString(int quantity);
   ///@}
 
   /**
@@ -417,6 +492,10 @@ public:
    * their vtkLight::GetShadowAttenuation. Null (default): no shadows, and the
    * G-buffer is exactly what it is without this feature. The same shadow
    * pass must not also be in the renderer's own pass pipeline.
+   * See Documentation/radiosity.md.
+   *
+   * @range any vtkShadowMapPass or null
+   * @default null
    */
   void SetShadowMapPass(vtkShadowMapPass* pass);
   vtkGetObjectMacro(ShadowMapPass, vtkShadowMapPass);
@@ -448,12 +527,30 @@ public:
   ///@}
 
   ///@{
-  /// The steps drawn after the opaque layers. Defaults: vtkTranslucentPass,
-  /// vtkVolumetricPass, vtkOverlayPass. Set to null to skip a step.
+  /// The step drawn after the opaque layers (default a vtkTranslucentPass).
+  /// Set to null to skip it.
+  ///
+  /// @range any pass or null (skip)
+  /// @default a vtkTranslucentPass
   void SetTranslucentPass(vtkRenderPass* pass);
   vtkGetObjectMacro(TranslucentPass, vtkRenderPass);
+  ///@}
+
+  ///@{
+  /// The step drawn after the translucent step (default a
+  /// vtkVolumetricPass). Set to null to skip it.
+  ///
+  /// @range any pass or null (skip)
+  /// @default a vtkVolumetricPass
   void SetVolumetricPass(vtkRenderPass* pass);
   vtkGetObjectMacro(VolumetricPass, vtkRenderPass);
+  ///@}
+
+  ///@{
+  /// The step drawn last (default a vtkOverlayPass). Set to null to skip it.
+  ///
+  /// @range any pass or null (skip)
+  /// @default a vtkOverlayPass
   void SetOverlayPass(vtkRenderPass* pass);
   vtkGetObjectMacro(OverlayPass, vtkRenderPass);
   ///@}

@@ -176,14 +176,33 @@ public:
   ///@}
 
   ///@{
-  /// Effect switches, all on by default. An effect that is on still runs
-  /// only when the scene needs it (see the class description).
+  /// Effect switch of the obscurance term (default on). It runs only when
+  /// a visible opaque actor has an ambient term.
+  ///
+  /// @range on/off
+  /// @default on
   vtkSetMacro(AmbientObscurance, bool);
   vtkGetMacro(AmbientObscurance, bool);
   vtkBooleanMacro(AmbientObscurance, bool);
+  ///@}
+
+  ///@{
+  /// Effect switch of the radiosity (default on). It runs only with a
+  /// light on and a visible opaque actor with a diffuse albedo.
+  ///
+  /// @range on/off
+  /// @default on
   vtkSetMacro(Radiosity, bool);
   vtkGetMacro(Radiosity, bool);
   vtkBooleanMacro(Radiosity, bool);
+  ///@}
+
+  ///@{
+  /// Effect switch of the reflections (default on). They run only when a
+  /// visible prop reflects.
+  ///
+  /// @range on/off
+  /// @default on
   vtkSetMacro(Reflections, bool);
   vtkGetMacro(Reflections, bool);
   vtkBooleanMacro(Reflections, bool);
@@ -194,6 +213,12 @@ public:
    * distinct "ao", "radiosity" and "reflections" (case-insensitive, spaces
    * ignored), or "all" or "none". An effect not named is switched off.
    * Returns false, with a warning and nothing changed, for anything else.
+   *
+   * @label SetEffects(const char*)
+   * @type string
+   * @range distinct ao, radiosity, reflections separated by commas, or all,
+   * none; otherwise: warning, returns false, nothing changed
+   * @default all (the three switches' defaults)
    */
   bool SetEffects(const char* names);
 
@@ -212,6 +237,13 @@ public:
    * "high_quality" (case-insensitive, '-' or '_'); -1 if unknown.
    * SetPreset(name) sets a preset by that name (from Python:
    * gi.SetPreset("balanced")).
+   * The presets set the obscurance preset, the radiosity preset and the reflection steps and
+   * bisections (table in Documentation/gi.md). Also SetPresetToHighPerformance(), ...Balanced(),
+   * ...HighQuality(); an unknown name is ignored with a warning.
+   *
+   * @type int (Preset)
+   * @range HIGH_PERFORMANCE 0, BALANCED 1, HIGH_QUALITY 2; unknown: warning, ignored
+   * @default BALANCED
    */
   void SetPreset(int preset);
   void SetPreset(const char* name);
@@ -225,32 +257,57 @@ public:
 
   ///@{
   /**
-   * Adaptive layer count (default on): one layer while the layer-1
-   * coverage measured by the occlusion query is 0. Off: always two layers.
-   * LayerProbeInterval (frames, default 60, at least 1): how long a
-   * renderer stays at one layer before it probes with two again when its
-   * camera and props did not change.
+   * Adaptive layer count (default on): one G-buffer layer while the
+   * layer-1 coverage measured by the occlusion query is 0. Off: always two
+   * layers.
+   *
+   * @range on/off
+   * @default on
    */
   vtkSetMacro(AdaptiveLayers, bool);
   vtkGetMacro(AdaptiveLayers, bool);
   vtkBooleanMacro(AdaptiveLayers, bool);
+  ///@}
+
+  ///@{
+  /**
+   * How many frames a renderer stays at one layer before it probes with
+   * two again when its camera and props did not change (a camera or prop
+   * change probes at once). Default 60; values below 1 become 1 with a
+   * warning.
+   *
+   * @unit frames
+   * @range >= 1; below: warning, 1
+   * @default 60
+   */
   void SetLayerProbeInterval(int frames);
   vtkGetMacro(LayerProbeInterval, int);
   ///@}
 
   ///@{
   /**
-   * What the last frame rendered by this pass computed: a mask of Effect
-   * bits, the G-buffer's layer count, and the layer-1 pixel count of the
-   * newest occlusion query result (-1 before the first).
-   * GetEffectsAsString(mask) names the bits ("AMBIENT_OBSCURANCE|RADIOSITY",
-   * "NONE").
+   * What the last frame rendered by this pass computed and composited: a
+   * mask of Effect bits (AMBIENT_OBSCURANCE 1, RADIOSITY 2, REFLECTIONS 4,
+   * SECOND_LAYER 8). GetEffectsAsString(mask) names the bits
+   * ("AMBIENT_OBSCURANCE|RADIOSITY", "NONE").
+   *
+   * @readonly
    */
   vtkGetMacro(LastFrameEffects, int);
-  vtkGetMacro(LastFrameNumberOfLayers, int);
-  vtkGetMacro(LastLayerCoverage, long long);
   static std::string GetEffectsAsString(int effects);
   ///@}
+
+  /// The G-buffer's layer count in the last frame (0 when it was
+  /// unsupported).
+  ///
+  /// @readonly
+  vtkGetMacro(LastFrameNumberOfLayers, int);
+
+  /// The layer-1 pixels counted by the newest occlusion query result; -1
+  /// before the first.
+  ///
+  /// @readonly
+  vtkGetMacro(LastLayerCoverage, long long);
 
   /**
    * Renders `renderer`'s window `frames` times without moving the camera,
@@ -300,11 +357,24 @@ public:
    * frames on the benchmark scenes; Documentation/performance.md).
    */
   int Converge(vtkRenderer* renderer, int maximumFrames, double tolerance);
+
+  /// The last change measured by Converge with a tolerance: the mean
+  /// absolute RGB difference of two consecutive frames, full scale 1
+  /// (1/255 per 8-bit level); -1 when none was measured.
+  ///
+  /// @readonly
   vtkGetMacro(LastConvergenceChange, double);
+
+  /// Whether the last Converge with a tolerance stopped because a frame's
+  /// change was at most the tolerance.
+  ///
+  /// @readonly
   vtkGetMacro(LastConvergenceReached, bool);
 
   /// Whether the last Converge call stopped because it was aborted
   /// (AbortRender or SIGINT, see Converge).
+  ///
+  /// @readonly
   vtkGetMacro(LastConvergenceAborted, bool);
 
   void Render(const vtkRenderState* s) override;

@@ -179,6 +179,10 @@ public:
    * Setting a value switches AutomaticRadius off. NaN and infinities are
    * rejected with a warning (the previous value stays); negative values
    * are clamped to 0 with a warning (r = 0 gives no indirect light).
+   *
+   * @unit world units
+   * @range >= 0, finite; negative: warning, 0; NaN/inf: warning, ignored
+   * @default 1 (unused while automatic)
    */
   void SetRadius(double radius);
   vtkGetMacro(Radius, double);
@@ -186,18 +190,35 @@ public:
 
   ///@{
   /**
-   * When on (default), r is AutomaticRadiusFraction (default 0.1, clamped
-   * to [0, 1]) times the diagonal of the bounds of the renderer's visible
-   * props (1.34 in vtkDeepGBufferDemoScene's 10 x 4 x 8 room).
+   * When on (default), r is AutomaticRadiusFraction times the diagonal of
+   * the bounds of the renderer's visible props, every frame (1.34 in
+   * vtkDeepGBufferDemoScene's 10 x 4 x 8 room).
+   *
+   * @range on/off
+   * @default on
    */
   vtkSetMacro(AutomaticRadius, bool);
   vtkGetMacro(AutomaticRadius, bool);
   vtkBooleanMacro(AutomaticRadius, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The fraction of the diagonal that gives the automatic r (default 0.1,
+   * clamped to [0, 1]).
+   *
+   * @unit fraction of the diagonal
+   * @range 0 to 1, clamped
+   * @default 0.1
+   */
   vtkDeepGISetClampMacro(AutomaticRadiusFraction, double, 0.0, 1.0);
   vtkGetMacro(AutomaticRadiusFraction, double);
   ///@}
 
   /// The radius r used by the last frame (world units).
+  ///
+  /// @unit world units
+  /// @readonly
   vtkGetMacro(EffectiveRadius, double);
 
   ///@{
@@ -205,6 +226,10 @@ public:
    * Number of spiral taps N, 1 to 98. Default 14 (BALANCED). Values
    * outside are clamped with a warning (N = 99 becomes 98: Listing 3 has
    * no tau for it).
+   *
+   * @unit taps
+   * @range 1 to 98; outside: warning and clamp (99 -> 98)
+   * @default 14
    */
   void SetNumberOfSamples(int samples);
   vtkGetMacro(NumberOfSamples, int);
@@ -215,6 +240,9 @@ public:
    * The n_Y test of eq. 5 (w.n_Y < 0: Y faces X). On by default
    * (BALANCED). Off: less bandwidth and variance, more bias (light from
    * surfaces that face away from X is gathered).
+   *
+   * @range on/off
+   * @default on
    */
   vtkSetMacro(UseNormalTest, bool);
   vtkGetMacro(UseNormalTest, bool);
@@ -245,6 +273,10 @@ public:
    * the lamp-lit Cornell box), where eq. 4 is 2.4x to 5.6x too bright on
    * average. SetPreset does not change the estimator.
    * Values outside the enum are clamped.
+   * See Documentation/radiosity.md and Documentation/benchmark-radiosity.md.
+   *
+   * @range ACCEPTED_TAPS 0, ALL_TAPS 1, SOLID_ANGLE 2; clamped
+   * @default SOLID_ANGLE
    */
   vtkSetClampMacro(Estimator, int, ACCEPTED_TAPS, SOLID_ANGLE);
   vtkGetMacro(Estimator, int);
@@ -259,6 +291,9 @@ public:
    * Eq. 7's colour boost of the reflected light. Off by default: boost = 1
    * conserves energy (and the boost of a grey or white surface is 0, so
    * with it on only saturated surfaces reflect indirect light).
+   *
+   * @range on/off
+   * @default off
    */
   vtkSetMacro(UseColorBoost, bool);
   vtkGetMacro(UseColorBoost, bool);
@@ -267,16 +302,43 @@ public:
 
   ///@{
   /**
-   * Bilateral reconstruction: taps on each side of each separable pass, 0
-   * to 16 (Table 2's 9, 11 and 13 taps are radii 4, 5 and 6); 0 disables
-   * the filter. Default 5. Plane tolerance (fraction of the centre's
-   * distance, default 0.02) and normal weight exponent (default 8) as in
-   * vtkDeepAmbientObscurancePass.
+   * Separable bilateral reconstruction: taps on each side of each separable
+   * pass, 0 to 16 (Table 2's 9, 11 and 13 taps are radii 4, 5 and 6); 0
+   * disables the filter. Default 5.
+   * SetFilterTaps(t) / GetFilterTaps() (taps per direction, 2 BlurRadius + 1) are the deprecated
+   * names of an earlier release, removed in the next.
+   *
+   * @unit taps on each side
+   * @range 0 to 16, clamped
+   * @default 5
    */
   vtkSetClampMacro(BlurRadius, int, 0, 16);
   vtkGetMacro(BlurRadius, int);
+  ///@}
+
+  ///@{
+  /**
+   * Plane weight of the bilateral filter: the tolerance as a fraction of
+   * the centre's distance (default 0.02), as in
+   * vtkDeepAmbientObscurancePass.
+   *
+   * @unit fraction of the centre's distance
+   * @range 1e-6 to 1, clamped
+   * @default 0.02
+   */
   vtkDeepGISetClampMacro(BlurPlaneTolerance, double, 1e-6, 1.0);
   vtkGetMacro(BlurPlaneTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Normal weight of the bilateral filter: the exponent (default 8), as in
+   * vtkDeepAmbientObscurancePass.
+   *
+   * @unit exponent
+   * @range 0 to 128, clamped
+   * @default 8
+   */
   vtkDeepGISetClampMacro(BlurNormalPower, double, 0.0, 128.0);
   vtkGetMacro(BlurNormalPower, double);
   ///@}
@@ -301,6 +363,10 @@ public:
    * surfaces that move into the frame (section 3.5). Smaller is faster and
    * less robust under camera motion. A change resets the history. NaN is
    * ignored and values outside [0, 1] are clamped, with a warning.
+   *
+   * @unit fraction of the guard band
+   * @range 0 to 1; outside: warning and clamp; NaN: warning, ignored
+   * @default 0.5
    */
   void SetGuardBandShadedFraction(double fraction)
   {
@@ -312,15 +378,39 @@ public:
   ///@{
   /**
    * MIP levels of the taps: q, the screen radius in pixels beyond which
-   * taps read coarser levels (default 8, clamped to [1, 65536]); Table 2's
-   * minimum level (0 to 15, default 2) and the coarsest level (0 to 15,
-   * default 5; the minimum wins when larger). Both are also limited by
-   * floor(log2(max(width, height))).
+   * taps read coarser levels (taps farther than 2q pixels use coarser
+   * levels). Default 8, clamped to [1, 65536].
+   *
+   * @unit pixels
+   * @range 1 to 65536, clamped
+   * @default 8
    */
   vtkDeepGISetClampMacro(MipThreshold, double, 1.0, 65536.0);
   vtkGetMacro(MipThreshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * Table 2's minimum MIP level of the taps (0 to 15, default 2); also
+   * limited by floor(log2(max(width, height))).
+   *
+   * @unit level
+   * @range 0 to 15, clamped
+   * @default 2
+   */
   vtkSetClampMacro(MinimumMipLevel, int, 0, 15);
   vtkGetMacro(MinimumMipLevel, int);
+  ///@}
+
+  ///@{
+  /**
+   * The coarsest MIP level of the taps (0 to 15, default 5; the minimum
+   * wins when larger); also limited by floor(log2(max(width, height))).
+   *
+   * @unit level
+   * @range 0 to 15, clamped (the minimum wins when larger)
+   * @default 5
+   */
   vtkSetClampMacro(MaximumMipLevel, int, 0, 15);
   vtkGetMacro(MaximumMipLevel, int);
   ///@}
@@ -352,6 +442,10 @@ public:
    * every texel, as the paper does; HIGH_PERFORMANCE uses 2 (see SetPreset
    * and Documentation/performance.md for its cost and error). Other values
    * are clamped with a warning.
+   * See Documentation/radiosity.md (section Resolution divisor).
+   *
+   * @range 1 or 2; outside: warning and clamp
+   * @default 1 (HIGH_PERFORMANCE: 2)
    */
   void SetResolutionDivisor(int divisor);
   vtkGetMacro(ResolutionDivisor, int);
@@ -365,6 +459,10 @@ public:
    * M, and w.n_X <= 1), so the bounces stay bounded for any albedo when
    * 2 delta max(rho boost) < 1; see Documentation/radiosity.md. NaN is
    * rejected and values outside [0, 1] are clamped, with a warning.
+   * delta is the weight of last frame's L_ind in this frame's B.
+   *
+   * @range 0 to 1; outside: warning and clamp; NaN: warning, ignored
+   * @default 0.5
    */
   void SetDamping(double delta);
   vtkGetMacro(Damping, double);
@@ -376,6 +474,10 @@ public:
    * default 0.85 (the paper's). 0 turns the filter off; 1 keeps the first
    * frame's E forever at a still camera. NaN is rejected and values
    * outside [0, 1] are clamped, with a warning.
+   * The filter is E_t = E (1 - alpha) + reproject(E_t-1) alpha.
+   *
+   * @range 0 to 1; outside: warning and clamp; NaN: warning, ignored
+   * @default 0.85
    */
   void SetTemporalAlpha(double alpha);
   vtkGetMacro(TemporalAlpha, double);
@@ -385,21 +487,49 @@ public:
   /**
    * Reprojection tolerance (world units): history is used where the
    * reprojected point's camera depth is within it of either previous
-   * layer. Setting a value switches the automatic tolerance off; NaN is
-   * rejected, negative values become 0, with a warning. Automatic
-   * (default): AutomaticReprojectionFraction (default 2.5e-4) times the
-   * scene diagonal, the paper's 1 cm in scenes about 40 m across.
+   * layer. Setting a value switches AutomaticReprojectionTolerance off;
+   * NaN and infinities are rejected, negative values become 0, with a
+   * warning.
+   *
+   * @unit world units
+   * @range >= 0, finite; negative: warning, 0; NaN/inf: warning, ignored
+   * @default 0.01 (unused while automatic)
    */
   void SetReprojectionTolerance(double tolerance);
   vtkGetMacro(ReprojectionTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * When on (default), the reprojection tolerance is
+   * AutomaticReprojectionFraction times the scene diagonal.
+   *
+   * @range on/off
+   * @default on
+   */
   vtkSetMacro(AutomaticReprojectionTolerance, bool);
   vtkGetMacro(AutomaticReprojectionTolerance, bool);
   vtkBooleanMacro(AutomaticReprojectionTolerance, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The fraction of the scene diagonal that gives the automatic
+   * reprojection tolerance (default 2.5e-4, the paper's 1 cm in scenes
+   * about 40 m across).
+   *
+   * @unit fraction of the diagonal
+   * @range 0 to 1, clamped
+   * @default 2.5e-4
+   */
   vtkDeepGISetClampMacro(AutomaticReprojectionFraction, double, 0.0, 1.0);
   vtkGetMacro(AutomaticReprojectionFraction, double);
   ///@}
 
   /// The tolerance used by the last frame (world units).
+  ///
+  /// @unit world units
+  /// @readonly
   vtkGetMacro(EffectiveReprojectionTolerance, double);
 
   ///@{
@@ -409,6 +539,9 @@ public:
    * white, i.e. an environment as bright as a light of intensity 1 from
    * every direction, which would brighten every low-confidence pixel by
    * its full albedo; turn it on with an environment that matches the scene.
+   *
+   * @range on/off
+   * @default off
    */
   vtkSetMacro(ConfidenceFallback, bool);
   vtkGetMacro(ConfidenceFallback, bool);
@@ -418,10 +551,15 @@ public:
   ///@{
   /**
    * Environment irradiance E_env (RGB, irradiance units: pi times the
-   * radiance of a uniform environment). Setting a value switches the
-   * automatic one off; NaN components are rejected, negative ones become
-   * 0, with a warning. Automatic (default): pi times the renderer's
-   * ambient colour (vtkRenderer::GetAmbient).
+   * radiance of a uniform environment), used by ConfidenceFallback.
+   * Setting a value switches AutomaticEnvironmentIrradiance off; NaN and
+   * infinite components are rejected, negative ones become 0, with a
+   * warning.
+   *
+   * @type double[3]
+   * @unit irradiance (pi x radiance)
+   * @range >= 0, finite per component; negative: warning, 0; NaN/inf: warning, ignored
+   * @default (0, 0, 0) (unused while automatic)
    */
   void SetEnvironmentIrradiance(double r, double g, double b);
   void SetEnvironmentIrradiance(const double e[3])
@@ -429,12 +567,25 @@ public:
     this->SetEnvironmentIrradiance(e[0], e[1], e[2]);
   }
   vtkGetVector3Macro(EnvironmentIrradiance, double);
+  ///@}
+
+  ///@{
+  /**
+   * When on (default), E_env is pi times the renderer's ambient colour
+   * (vtkRenderer::GetAmbient).
+   *
+   * @range on/off
+   * @default on
+   */
   vtkSetMacro(AutomaticEnvironmentIrradiance, bool);
   vtkGetMacro(AutomaticEnvironmentIrradiance, bool);
   vtkBooleanMacro(AutomaticEnvironmentIrradiance, bool);
   ///@}
 
   /// E_env used by the last frame.
+  ///
+  /// @unit irradiance
+  /// @readonly
   vtkGetVector3Macro(EffectiveEnvironmentIrradiance, double);
 
   ///@{

@@ -117,6 +117,10 @@ public:
    * previous setting stays); negative values are clamped to 0 with a
    * warning (every reflection then shows the environment); +infinity is
    * accepted: the ray is still cut where it leaves the view frustum.
+   *
+   * @unit world units
+   * @range >= 0; NaN: warning, ignored; negative: warning, 0; +inf accepted
+   * @default 1 (unused while automatic)
    */
   void SetMaximumDistance(double distance);
   vtkGetMacro(MaximumDistance, double);
@@ -124,13 +128,26 @@ public:
 
   ///@{
   /**
-   * When on (default), t_max is AutomaticDistanceFraction (default 0.5,
-   * clamped to [0, 10]) times the diagonal of the bounds of the renderer's
-   * visible props.
+   * When on (default), t_max is AutomaticDistanceFraction times the
+   * diagonal of the bounds of the renderer's visible props, every frame.
+   *
+   * @range on/off
+   * @default on
    */
   vtkSetMacro(AutomaticMaximumDistance, bool);
   vtkGetMacro(AutomaticMaximumDistance, bool);
   vtkBooleanMacro(AutomaticMaximumDistance, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The fraction of the diagonal that gives the automatic t_max (default
+   * 0.5, clamped to [0, 10]).
+   *
+   * @unit fraction of the diagonal
+   * @range 0 to 10, clamped
+   * @default 0.5
+   */
   vtkDeepGISetClampMacro(AutomaticDistanceFraction, double, 0.0, 10.0);
   vtkGetMacro(AutomaticDistanceFraction, double);
   ///@}
@@ -140,12 +157,25 @@ public:
    * Hit thickness dz, world units: a ray point at distance s hits layer j
    * where d_j <= s <= d_j + dz. Setting a value switches AutomaticThickness
    * off. NaN and infinities are rejected with a warning; negative values
-   * are clamped to 0 with a warning. When AutomaticThickness is on
-   * (default), dz is the G-buffer's effective minimum separation of the
-   * frame (the paper's choice), or 0.5 % of the scene's diagonal if that is 0.
+   * are clamped to 0 with a warning.
+   *
+   * @unit world units
+   * @range >= 0, finite; negative: warning, 0; NaN/inf: warning, ignored
+   * @default 0 (unused while automatic)
    */
   void SetThickness(double thickness);
   vtkGetMacro(Thickness, double);
+  ///@}
+
+  ///@{
+  /**
+   * When on (default), dz is the G-buffer's EffectiveMinimumSeparation of
+   * the frame (the paper's choice), or 0.5 % of the scene's diagonal if
+   * that is 0.
+   *
+   * @range on/off
+   * @default on
+   */
   vtkSetMacro(AutomaticThickness, bool);
   vtkGetMacro(AutomaticThickness, bool);
   vtkBooleanMacro(AutomaticThickness, bool);
@@ -155,6 +185,10 @@ public:
   /**
    * Most ray-march steps per pixel, 1 to MAXIMUM_NUMBER_OF_STEPS. Default
    * 64. Values outside are clamped with a warning.
+   *
+   * @unit steps
+   * @range 1 to MAXIMUM_NUMBER_OF_STEPS (1024); outside: warning, clamp
+   * @default 64
    */
   void SetNumberOfSteps(int steps);
   vtkGetMacro(NumberOfSteps, int);
@@ -166,7 +200,11 @@ public:
    * whose projection is L pixels long takes at least ceil(L / PixelStride)
    * steps (more where its depth changes faster than dz / 2 per step), at
    * most NumberOfSteps. Non-finite or non-positive values are refused
-   * with a warning; values below 0.01 are clamped to 0.01.
+   * with a warning; values below 0.01 become 0.01, with a warning.
+   *
+   * @unit pixels
+   * @range >= 0.01; <= 0 or non-finite: warning, ignored; below 0.01: warning, 0.01
+   * @default 2
    */
   void SetPixelStride(double pixels);
   vtkGetMacro(PixelStride, double);
@@ -175,16 +213,32 @@ public:
   ///@{
   /**
    * Bisection steps refining a hit (0 to 16, default 4).
+   * They locate a hit's entry into the band.
+   *
+   * @unit bisections
+   * @range 0 to 16, clamped
+   * @default 4
    */
   vtkSetClampMacro(RefinementSteps, int, 0, 16);
   vtkGetMacro(RefinementSteps, int);
   ///@}
 
-  /// The t_max and dz used by the last frame (world units).
+  /// The t_max used by the last frame (world units, before the frustum
+  /// cut).
+  ///
+  /// @unit world units
+  /// @readonly
   vtkGetMacro(EffectiveMaximumDistance, double);
+
+  /// The dz used by the last frame (world units).
+  ///
+  /// @unit world units
+  /// @readonly
   vtkGetMacro(EffectiveThickness, double);
 
   /// Whether the last frame traced rays (false when no visible prop reflects).
+  ///
+  /// @readonly
   vtkGetMacro(LastFrameTraced, bool);
 
   /**

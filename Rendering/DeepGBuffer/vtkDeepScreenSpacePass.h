@@ -47,6 +47,9 @@ public:
    * The G-buffer pass that builds the layers. One is created by default;
    * set one to share it with other deep passes. Null is refused with a
    * warning.
+   *
+   * @range non-null (null: warning, ignored)
+   * @default a new vtkDeepGBufferPass per pass
    */
   void SetGBufferPass(vtkDeepGBufferPass* pass);
   vtkGetObjectMacro(GBufferPass, vtkDeepGBufferPass);

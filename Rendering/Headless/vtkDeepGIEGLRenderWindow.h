@@ -81,6 +81,13 @@ public:
   /**
    * The EGL platform to use (see Platform). Only read when the context is
    * created. Default PLATFORM_AUTO.
+   * PLATFORM_AUTO: a hardware EGL device if there is one, else Mesa's surfaceless platform, else
+   * the first (software) EGL device. PLATFORM_DEVICE: the EGL device DeviceIndex.
+   * PLATFORM_SURFACELESS: Mesa's surfaceless platform.
+   *
+   * @type int (Platform)
+   * @range PLATFORM_AUTO 0, PLATFORM_DEVICE 1, PLATFORM_SURFACELESS 2; clamped
+   * @default PLATFORM_AUTO
    */
   vtkSetClampMacro(Platform, int, PLATFORM_AUTO, PLATFORM_SURFACELESS);
   vtkGetMacro(Platform, int);
@@ -152,12 +159,16 @@ public:
   /**
    * The window is never shown: setting ShowWindow to true warns and is
    * ignored.
+   *
+   * @default off
    */
   void SetShowWindow(bool val) override;
 
   /**
    * Rendering always goes to VTK's offscreen framebuffers: setting this to
    * false warns and is ignored.
+   *
+   * @default on
    */
   void SetUseOffScreenBuffers(bool val) override;
 
