@@ -44,6 +44,8 @@ text is the meaning, and its last lines are tags:
 - @label: optional; the name column when it is not the declared name.
 
 The name is that of the first Set/Get macro or method after the comment.
+--check also fails for a setting declared with a VTK Set or Boolean macro
+in a covered header that has no such comment.
 For Doxygen, define the tags as paragraphs in the Doxyfile:
 ALIASES = "unit=@par Unit:^^" "range=@par Range:^^" "default=@par Default:^^"
           "type=@par Type:^^" "readonly=" "label=@par Name:^^"
@@ -218,11 +220,33 @@ def defaults():
     return result
 
 
+# A setting declared with a VTK Set or Boolean macro.
+SETTING_MACRO = re.compile(r"\bvtk(?:DeepGI)?(?:Set\w*|Boolean)Macro\(\s*(\w+)")
+
+
+def undocumented():
+    """(header, name) of each macro-declared setting of a covered header
+    that has no tagged comment."""
+    missing = []
+    for kind, header in directives():
+        if kind == "settings":
+            with open(os.path.join(REPO, header)) as f:
+                declared = set(SETTING_MACRO.findall(f.read()))
+            documented = {e["getter"] for e in entries(header)}
+            missing += [(header, name) for name in sorted(declared - documented)]
+    return missing
+
+
 def check(generated):
+    missing = undocumented()
+    for header, name in missing:
+        print("%s: the setting %s has no comment with @default" % (header, name))
     with open(OUTPUT) as f:
         current = f.read()
-    if current == generated:
+    if current == generated and not missing:
         return 0
+    if current == generated:
+        return 1
     sys.stdout.writelines(difflib.unified_diff(
         current.splitlines(True), generated.splitlines(True),
         "Documentation/parameters.md", "generated from the headers"))

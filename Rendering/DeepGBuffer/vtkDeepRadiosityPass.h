@@ -204,12 +204,17 @@ public:
 
   ///@{
   /**
-   * The fraction of the diagonal that gives the automatic r (default 0.1,
-   * clamped to [0, 1]).
+   * The fraction of the diagonal that gives the automatic r (default 0.5,
+   * clamped to [0, 1]). Half the diagonal reaches the light of the far
+   * walls of an interior, which a smaller radius misses (the final image's
+   * error against the reference falls by a factor 2-4 in interiors and on
+   * every other benchmark scene from 0.1 to 0.5, Documentation/
+   * lighting-model.md); the far taps read coarse MIP levels, so the cost
+   * does not grow with r.
    *
    * @unit fraction of the diagonal
    * @range 0 to 1, clamped
-   * @default 0.1
+   * @default 0.5
    */
   vtkDeepGISetClampMacro(AutomaticRadiusFraction, double, 0.0, 1.0);
   vtkGetMacro(AutomaticRadiusFraction, double);
@@ -424,6 +429,9 @@ public:
    * estimates the light of its whole patch, which removes most of the
    * variance, and the low-frequency blotches, of a large radius. The
    * positions and normals of eq. 5 stay the rotated grid's point samples.
+   *
+   * @range on/off
+   * @default on
    */
   vtkSetMacro(AverageFarTaps, bool);
   vtkGetMacro(AverageFarTaps, bool);
@@ -454,15 +462,20 @@ public:
   ///@{
   /**
    * Damping delta of the propagated bounce (section 3.3), in [0, 1];
-   * default 0.5. 0 gives the single bounce every frame. The gathered
-   * estimate can exceed the true irradiance by up to 2x (eq. 4 divides by
-   * M, and w.n_X <= 1), so the bounces stay bounded for any albedo when
-   * 2 delta max(rho boost) < 1; see Documentation/radiosity.md. NaN is
-   * rejected and values outside [0, 1] are clamped, with a warning.
-   * delta is the weight of last frame's L_ind in this frame's B.
+   * default 1: every bounce counts in full, as in the lighting model and
+   * its reference (Documentation/lighting-model.md). 0 gives the single
+   * bounce every frame. With eq. 4 (ACCEPTED_TAPS) the gathered estimate
+   * can exceed the true irradiance by up to 2x (it divides by M, and
+   * w.n_X <= 1), so with that estimator the bounces stay bounded for any
+   * albedo only when 2 delta max(rho boost) < 1. The default SOLID_ANGLE
+   * estimator weights each tap by the solid angle of its patch, which
+   * follows the true irradiance instead; the image benchmark's scenes
+   * (albedo up to 1) converge at delta 1 (Documentation/radiosity.md). NaN is rejected
+   * and values outside [0, 1] are clamped, with a warning. delta is the
+   * weight of last frame's L_ind in this frame's B.
    *
    * @range 0 to 1; outside: warning and clamp; NaN: warning, ignored
-   * @default 0.5
+   * @default 1
    */
   void SetDamping(double delta);
   vtkGetMacro(Damping, double);
@@ -669,7 +682,7 @@ protected:
 
   double Radius = 1.0;
   bool AutomaticRadius = true;
-  double AutomaticRadiusFraction = 0.1;
+  double AutomaticRadiusFraction = 0.5;
   double EffectiveRadius = 0.0;
   int NumberOfSamples = 14;
   bool UseNormalTest = true;
@@ -684,7 +697,7 @@ protected:
   int MinimumMipLevel = 2;
   int MaximumMipLevel = 5;
   int ResolutionDivisor = 1;
-  double Damping = 0.5;
+  double Damping = 1.0;
   double TemporalAlpha = 0.85;
   double ReprojectionTolerance = 0.01;
   bool AutomaticReprojectionTolerance = true;

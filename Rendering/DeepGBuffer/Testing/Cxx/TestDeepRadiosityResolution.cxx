@@ -19,6 +19,9 @@
 //   (GetTextureBytes); switching the divisor back to 1 gives D = 1's
 //   image exactly (the history restarts);
 // - divisors outside 1..2 are clamped with a warning.
+// The gather radius is 0.1 of the diagonal: the silhouette tolerance of
+// 0.02 is absolute, and at the default 0.5, whose indirect light is about
+// 3 x brighter here, 14 of 365 silhouette pixels (3.8 %) fall outside it.
 
 #include "DeepRadiosityTest.h"
 #include "vtkDeepGICaptureNames.h"
@@ -42,6 +45,7 @@ vtkSmartPointer<vtkDeepRadiosityPass> MakePass(int divisor)
 {
   auto pass = vtkSmartPointer<vtkDeepRadiosityPass>::New();
   pass->SetDamping(0.0);
+  pass->SetAutomaticRadiusFraction(0.1);
   pass->SetTemporalAlpha(0.0);
   pass->SetResolutionDivisor(divisor);
   return pass;
