@@ -76,7 +76,7 @@ Global illumination:
                       still runs only where the scene needs it.
   --radius F          gather radius of obscurance and radiosity as a
                       fraction of the scene's diagonal (default: the
-                      passes' own, 0.05 for obscurance and 0.1 for
+                      passes' own, 0.05 for obscurance and 0.5 for
                       radiosity); larger gives broader shadows and light
   --exposure E        multiplies every light's intensity, in both images
                       (default 1): raise it for a dark result

@@ -3,16 +3,19 @@ radius and damping change (Documentation/lighting-model.md).
 
     PYTHONPATH=<build>/lib/python3/dist-packages /usr/bin/python3 \\
         Examples/Python/deepgi_radiosity_radius_sweep.py DATA HELDOUT \\
-        [FRACTION:DAMPING ...]
+        [--default-actors] [FRACTION:DAMPING ...]
 
 DATA is the project's Testing/Data, HELDOUT the folder of
-scripts/heldout-scenes.sh. For the stairs room, the demo scene, the dragon
-and the Cornell box with Lucy (the scene loader's materials, 320 x 240), each
-setting (default 0.1:0.5 0.2:0.5 0.3:0.5 0.5:0.5 0.5:1.0) sets the radiosity
-pass's AutomaticRadiusFraction and Damping of a BALANCED vtkDeepGIPass,
-converges it (Converge(renderer, 24, 0.05 / 255)) and prints the RMSE and
-bias of the 8-bit image against vtkDeepGIReferenceImage (128 rays per pixel,
-clipped at 1), computed once per scene on the first setting's capture.
+scripts/heldout-scenes.sh. For the image benchmark's seven scenes (the
+demo scene, the Cornell box with Lucy, the dragon, the CT head, and the
+object on a floor, the stairs room and the wavelet of HELDOUT; the scene
+loader's materials, or with --default-actors VTK's default property on
+every actor; 320 x 240), each setting (default 0.1:0.5 0.3:1.0 0.5:1.0)
+sets the radiosity pass's AutomaticRadiusFraction and Damping of a BALANCED
+vtkDeepGIPass, converges it as the image benchmark does (Converge(renderer,
+16, 0.07 / 255)) and prints the RMSE and bias of the 8-bit image against
+vtkDeepGIReferenceImage (128 rays per pixel, 4 bounces, clipped at 1),
+computed once per scene on the first setting's capture.
 Needs an X display (scripts/with-display.sh) or EGL.
 """
 import os
@@ -53,9 +56,13 @@ def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
     data, heldout = sys.argv[1], sys.argv[2]
-    settings = [tuple(float(v) for v in s.split(":")) for s in sys.argv[3:]] or [
-        (0.1, 0.5), (0.2, 0.5), (0.3, 0.5), (0.5, 0.5), (0.5, 1.0)]
-    scenes = [("mesh", os.path.join(heldout, "stairs-room.vtp")), "demo", "dragon", "cornell-lucy"]
+    default_actors = "--default-actors" in sys.argv[3:]
+    settings = [tuple(float(v) for v in s.split(":")) for s in sys.argv[3:]
+                if s != "--default-actors"] or [(0.1, 0.5), (0.3, 1.0), (0.5, 1.0)]
+    scenes = ["demo", "cornell-lucy", "dragon", "headsq",
+              ("mesh", os.path.join(heldout, "wuson-on-floor.vtp")),
+              ("mesh", os.path.join(heldout, "stairs-room.vtp")),
+              ("volume", os.path.join(heldout, "wavelet.nhdr"), 160.0)]
     factory = vtkdeepgi.vtkDeepGIRenderWindowFactory
     for scene in scenes:
         window = factory.NewRenderWindow(factory.BACKEND_AUTO)
@@ -64,6 +71,8 @@ def main():
         renderer = vtkRenderer()
         window.AddRenderer(renderer)
         name, keep = bench.populate(renderer, scene, data)
+        if default_actors:
+            bench.use_default_properties(renderer)
         renderer.ResetCameraClippingRange()
         truth, valid, cells = None, None, []
         for fraction, damping in settings:
@@ -71,7 +80,7 @@ def main():
             gi.GetRadiosityPass().SetAutomaticRadiusFraction(fraction)
             gi.GetRadiosityPass().SetDamping(damping)
             renderer.SetPass(gi)
-            gi.Converge(renderer, 24, 0.05 / 255.0)
+            gi.Converge(renderer, 16, 0.07 / 255.0)
             image = bench.grab(window)
             if truth is None:
                 truth, valid = reference_of(gi, renderer)

@@ -90,7 +90,7 @@ view = make_view("DeepGIRenderView")
 displays = show_scene(view)
 defaults = {"UseDeepGI": 1, "DeepGIPreset": "Balanced", "DeepGIAmbientObscurance": 1,
             "DeepGIRadiosity": 1, "DeepGIReflections": 1, "DeepGIObscuranceRadius": 0.05,
-            "DeepGIRadiosityRadius": 0.1, "DeepGIConvergeStills": 1,
+            "DeepGIRadiosityRadius": 0.5, "DeepGIConvergeStills": 1,
             "DeepGIConvergeMaximumFrames": 16}
 for name, expected in defaults.items():
     value = getattr(view, name)
