@@ -43,7 +43,10 @@
  * texel (the same texel vtkDeepAmbientObscurancePass's distance pyramid
  * holds), so a coarse level moves the tap to a texel of a coarser grid
  * (more correlated taps, Table 2's trade) and every sample is an exact
- * surface point.
+ * surface point. With AverageFarTaps (the default) a tap above the minimum
+ * level takes B as the mean over its coarse texel's block instead of that
+ * one texel's; the bounce input is computed only at the texels of the
+ * minimum level, the only ones the taps read.
  *
  * Multiple bounces (section 3.3): the radiosity of a tap is
  *   B(Y) = direct(Y) + delta L_ind,t-1(Y)
