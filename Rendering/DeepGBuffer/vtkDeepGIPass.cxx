@@ -592,16 +592,24 @@ public:
   explicit ScopedStillRadiosity(vtkDeepRadiosityPass* pass)
     : Pass(pass)
     , Alpha(pass->GetTemporalAlpha())
+    , BlurRadius(pass->GetBlurRadius())
   {
     this->Pass->SetTemporalAlpha(0.0);
+    this->Pass->SetBlurRadius(std::min(
+      16, static_cast<int>(std::lround(vtkDeepGIPass::STILL_BLUR_SCALE * this->BlurRadius))));
   }
-  ~ScopedStillRadiosity() { this->Pass->SetTemporalAlpha(this->Alpha); }
+  ~ScopedStillRadiosity()
+  {
+    this->Pass->SetTemporalAlpha(this->Alpha);
+    this->Pass->SetBlurRadius(this->BlurRadius);
+  }
   ScopedStillRadiosity(const ScopedStillRadiosity&) = delete;
   void operator=(const ScopedStillRadiosity&) = delete;
 
 private:
   vtkDeepRadiosityPass* Pass;
   double Alpha;
+  int BlurRadius;
 };
 } // anonymous namespace
 

@@ -89,7 +89,10 @@
  * renders n frames at a fixed camera, with the radiosity's temporal filter
  * off (TemporalAlpha 0 while it runs, which also fixes the spiral's
  * rotation): each frame then adds exactly one bounce, so the image
- * converges geometrically, and fires vtkCommand::ProgressEvent (call
+ * converges geometrically. Without the filter's average over rotations,
+ * the noise of the spiral taps stays in the image, so the radiosity's
+ * blur is widened by STILL_BLUR_SCALE meanwhile. Converge fires
+ * vtkCommand::ProgressEvent (call
  * data: double progress in [0, 1]) after each. See Documentation/gi.md,
  * Documentation/performance.md and Examples/Python/deepgi_convergence.py.
  *
@@ -155,6 +158,13 @@ public:
   /// The most frames one Converge call renders; more are clamped, with a
   /// warning.
   static constexpr int MAXIMUM_CONVERGE_FRAMES = 10000;
+
+  /// While Converge runs, the radiosity's BlurRadius is this times its own
+  /// (rounded, at most 16; restored afterwards): with the temporal filter
+  /// off nothing else averages the spiral's noise, which at the default
+  /// gather radius leaves a low-frequency mottling on large uniform
+  /// surfaces (BALANCED's 5 taps become 8; Documentation/gi.md).
+  static constexpr double STILL_BLUR_SCALE = 1.6;
 
   /// Quality presets (see the class description).
   enum Preset
@@ -312,7 +322,8 @@ public:
   /**
    * Renders `renderer`'s window `frames` times without moving the camera,
    * so that the radiosity bounces settle (the radiosity's temporal filter
-   * is off meanwhile: TemporalAlpha 0, restored afterwards), and
+   * is off meanwhile: TemporalAlpha 0, and its blur is STILL_BLUR_SCALE
+   * times wider; both restored afterwards), and
    * fires vtkCommand::ProgressEvent with a double progress (k / frames)
    * after frame k. The renderer should use this pass, directly or through
    * any wrapping passes (vtkOpenGLFXAAPass, vtkSSAAPass, vtkToneMappingPass,
