@@ -10,7 +10,8 @@ at one still camera:
 - plain VTK; vtkSSAOPass with kernel 16 and 64 (radius = the obscurance
   pass's automatic radius, 0.05 x the scene's diagonal, blur on); and
   vtkDeepGIPass with each preset, converged with Converge(renderer, 16,
-  0.07 / 255) as the main job does;
+  0.07 / 255) as the main job does, and BALANCED with UseSecondLayer off
+  (one G-buffer layer: what the second layer is worth);
 - the reference: vtkDeepGIReferenceImage (the pass's lighting model,
   Documentation/lighting-model.md) on the G-buffer capture of the same
   camera, with the same obscurance radius and the same rule for what
@@ -178,10 +179,11 @@ def make_ssao(kernel, radius):
     return make
 
 
-def make_gi(preset):
+def make_gi(preset, second_layer=True):
     def make():
         gi = vtkdeepgi.vtkDeepGIPass()
         gi.SetPreset(preset)
+        gi.SetUseSecondLayer(second_layer)
         return gi
 
     return make
@@ -225,6 +227,8 @@ def measure_scene(args, scene):
 
     methods = [Method("plain VTK", None)]
     methods += [Method("vtkSSAOPass K%d" % k, make_ssao(k, radius)) for k in (16, 64)]
+    methods.append(Method("vtkDeepGIPass BALANCED 1 layer", make_gi("BALANCED", False)))
+    # The presets last: the figure and the reference use BALANCED (methods[-2]).
     methods += [Method("vtkDeepGIPass " + p, make_gi(p)) for p in PRESETS]
     for m in methods:
         m.pass_ = m.make_pass() if m.make_pass else None

@@ -296,6 +296,7 @@ void vtkDeepGIPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Reflections: " << (this->Reflections ? "On" : "Off") << "\n";
   os << indent << "Preset: " << GetPresetAsString(this->Preset) << "\n";
   os << indent << "AdaptiveLayers: " << (this->AdaptiveLayers ? "On" : "Off") << "\n";
+  os << indent << "UseSecondLayer: " << (this->UseSecondLayer ? "On" : "Off") << "\n";
   os << indent << "LayerProbeInterval: " << this->LayerProbeInterval << "\n";
   os << indent << "LastFrameEffects: " << GetEffectsAsString(this->LastFrameEffects) << "\n";
   os << indent << "LastFrameNumberOfLayers: " << this->LastFrameNumberOfLayers << "\n";
@@ -767,8 +768,9 @@ void vtkDeepGIPass::Render(const vtkRenderState* s)
   state.Reflects = (wanted & REFLECTIONS) != 0;
   this->UpdateLayerCount(renderer, state);
   // Only layer 0 is read unless an effect looks behind it.
-  const bool deepEffect = (wanted & (RADIOSITY | REFLECTIONS)) ||
-    ((wanted & AMBIENT_OBSCURANCE) && this->AmbientObscurancePass->GetUseSecondLayer());
+  const bool deepEffect = this->UseSecondLayer &&
+    ((wanted & (RADIOSITY | REFLECTIONS)) ||
+      ((wanted & AMBIENT_OBSCURANCE) && this->AmbientObscurancePass->GetUseSecondLayer()));
   const int layers = !deepEffect ? 1 : (this->AdaptiveLayers ? state.Layers : 2);
   this->GBufferPass->SetNumberOfLayers(layers);
   this->GBufferPass->SetWriteReflectivity(in.AnyReflects());

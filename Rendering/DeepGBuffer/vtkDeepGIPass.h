@@ -269,7 +269,7 @@ public:
   /**
    * Adaptive layer count (default on): one G-buffer layer while the
    * layer-1 coverage measured by the occlusion query is 0. Off: always two
-   * layers.
+   * layers (unless UseSecondLayer is off).
    *
    * @range on/off
    * @default on
@@ -277,6 +277,23 @@ public:
   vtkSetMacro(AdaptiveLayers, bool);
   vtkGetMacro(AdaptiveLayers, bool);
   vtkBooleanMacro(AdaptiveLayers, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Whether the effects may look behind the visible surfaces (default on).
+   * Off: the G-buffer always has one layer, which halves its geometry cost
+   * and the effects' taps on layer 1, and loses what the second layer
+   * gives: occluders and light sources hidden behind the first surface, and
+   * the propagation of light through them (Documentation/lighting-model.md
+   * measures the difference on the pixels that have a second layer).
+   *
+   * @range on/off
+   * @default on
+   */
+  vtkSetMacro(UseSecondLayer, bool);
+  vtkGetMacro(UseSecondLayer, bool);
+  vtkBooleanMacro(UseSecondLayer, bool);
   ///@}
 
   ///@{
@@ -412,6 +429,7 @@ protected:
   bool Reflections = true;
   int Preset = BALANCED;
   bool AdaptiveLayers = true;
+  bool UseSecondLayer = true;
   int LayerProbeInterval = 60;
   int LastFrameEffects = 0;
   int LastFrameNumberOfLayers = 0;

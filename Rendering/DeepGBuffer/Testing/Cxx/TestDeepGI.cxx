@@ -15,7 +15,8 @@
 //    face-on has no layer 1: the occlusion query reports 0 and the pass
 //    drops to one layer, probes again after LayerProbeInterval frames, and
 //    goes back to two layers (coverage > 0) in the frame after a box is
-//    put in front of the plane. No effect at all: one layer, VTK's image.
+//    put in front of the plane; with UseSecondLayer off it keeps one layer
+//    and the effects. No effect at all: one layer, VTK's image.
 //    Actors inside a vtkAssembly count for every effect.
 // 3. Converge(renderer, 12) fires 12 ProgressEvents (k / 12), the
 //    per-frame image change falls to exactly 0 within 10 frames (the
@@ -391,6 +392,16 @@ void CheckSkipLogic()
   Check(print.str().find("LastFrameEffects: AMBIENT_OBSCURANCE|RADIOSITY|SECOND_LAYER") !=
       std::string::npos,
     "PrintSelf names the effects of the last frame");
+  // UseSecondLayer off: one layer although layer 1 is covered, the effects
+  // still run; on again: two layers in the next frame.
+  gi->UseSecondLayerOff();
+  run.Window->Render();
+  Check(gi->GetLastFrameNumberOfLayers() == 1 &&
+      gi->GetLastFrameEffects() == (vtkDeepGIPass::AMBIENT_OBSCURANCE | vtkDeepGIPass::RADIOSITY),
+    "UseSecondLayer off: one layer, obscurance and radiosity");
+  gi->UseSecondLayerOn();
+  run.Window->Render();
+  Check(gi->GetLastFrameNumberOfLayers() == 2, "UseSecondLayer on: two layers again");
   Release(run);
 }
 
