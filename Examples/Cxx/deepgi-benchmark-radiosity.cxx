@@ -100,6 +100,7 @@ struct Options
   std::vector<std::string> Methods;
   bool ErrorMaps = true;
   int Bounces = 4;
+  double RadiusFraction = 0.0; // > 0: every pass's AutomaticRadiusFraction; 0: the pass's default
 };
 
 // Still frames of the multi-bounce measurement: frame t adds bounce t, so
@@ -129,6 +130,8 @@ void Usage()
               "  --frames N           timed frames per method and round (default 5)\n"
               "  --rounds N           rounds over all methods (default 2)\n"
               "  --samples N          reference rays per pixel (default 64)\n"
+              "  --radius-fraction F  gather radius r = F x scene diagonal, every method\n"
+              "                       (default: vtkDeepRadiosityPass's own)\n"
               "  --scenes LIST        comma list of demo, cornell-lucy, cornell-original,\n"
               "                       dragon (default all four)\n"
               "  --methods LIST       comma list of L:P[:nt][:E][:gb]: L layers (1 or 2), P the\n"
@@ -230,7 +233,8 @@ bool ParseOptions(int argc, char* argv[], Options& o)
       continue;
     }
     static const char* const withValue[] = { "--size", "--accuracy-size", "--frames", "--rounds",
-      "--samples", "--scenes", "--methods", "--bounces", "--data", "--backend", "--output" };
+      "--samples", "--radius-fraction", "--scenes", "--methods", "--bounces", "--data", "--backend",
+      "--output" };
     if (std::find_if(std::begin(withValue), std::end(withValue),
           [&](const char* s) { return arg == s; }) == std::end(withValue))
     {
@@ -260,6 +264,15 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     if (arg == "--samples" && (!ParseInt(value, o.Samples) || o.Samples < 1 || o.Samples > 1048576))
     {
       return bad("--samples needs an integer 1..1048576, got '" + value + "'");
+    }
+    if (arg == "--radius-fraction")
+    {
+      char* end = nullptr;
+      o.RadiusFraction = std::strtod(value.c_str(), &end);
+      if (value.empty() || *end || !(o.RadiusFraction > 0.0 && o.RadiusFraction <= 1.0))
+      {
+        return bad("--radius-fraction needs a number in (0, 1], got '" + value + "'");
+      }
     }
     if (arg == "--bounces" && (!ParseInt(value, o.Bounces) || o.Bounces < 0 || o.Bounces > 16))
     {
@@ -609,6 +622,10 @@ int main(int argc, char* argv[])
       pass->SetEstimator(m.Estimator);
       pass->SetDamping(0.0);
       pass->SetTemporalAlpha(0.0);
+      if (options.RadiusFraction > 0.0)
+      {
+        pass->SetAutomaticRadiusFraction(options.RadiusFraction);
+      }
       passes.push_back(pass);
     }
 
@@ -759,6 +776,10 @@ int main(int argc, char* argv[])
         pass->SetUseNormalTest(true);
         pass->SetDamping(delta);
         pass->SetTemporalAlpha(0.0);
+        if (options.RadiusFraction > 0.0)
+        {
+          pass->SetAutomaticRadiusFraction(options.RadiusFraction);
+        }
         renderer->SetPass(pass);
         bool ok = true;
         change = 0;
