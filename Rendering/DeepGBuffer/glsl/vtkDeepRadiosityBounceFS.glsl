@@ -50,10 +50,10 @@ uniform ivec2 deepBounceSize;     // the output's texels
 
 //VTK::Output::Dec
 
-vec3 bounceInput(ivec2 pixel, vec2 size, int layer)
+// B of the layer's surface at `pixel`, at distance d (0: no surface).
+vec3 bounceInput(ivec2 pixel, vec2 size, int layer, float d)
 {
-  float d = texelFetch(deepDistance, ivec3(pixel, layer), 0).r;
-  if (layer >= deepLayers || !(d > 0.0))
+  if (!(d > 0.0))
   {
     return vec3(0.0);
   }
@@ -101,8 +101,8 @@ void main()
   // (their share of the block).
   for (int j = 0; j < 2; ++j)
   {
-    bool present = j < deepLayers && texelFetch(deepDistance, ivec3(pixel, j), 0).r > 0.0;
-    vec4 result = vec4(bounceInput(pixel, size, j), present ? 1.0 : 0.0);
+    float d = j < deepLayers ? texelFetch(deepDistance, ivec3(pixel, j), 0).r : 0.0;
+    vec4 result = vec4(bounceInput(pixel, size, j, d), d > 0.0 ? 1.0 : 0.0);
     if (j == 0)
     {
       gl_FragData[0] = result;
