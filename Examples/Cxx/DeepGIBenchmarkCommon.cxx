@@ -80,6 +80,18 @@ bool ParseInt(const std::string& s, int& v)
   return true;
 }
 
+bool ParseFraction(const std::string& s, double& v)
+{
+  char* end = nullptr;
+  const double x = std::strtod(s.c_str(), &end);
+  if (s.empty() || *end || !(x > 0.0 && x <= 1.0))
+  {
+    return false;
+  }
+  v = x;
+  return true;
+}
+
 bool ParseSize(const std::string& s, int& w, int& h)
 {
   const std::vector<std::string> p = Split(s, 'x');

@@ -24,6 +24,10 @@ std::vector<std::string> Split(const std::string& s, char sep);
 /// Whole string as a decimal integer in [-1e9, 1e9].
 bool ParseInt(const std::string& s, int& v);
 
+/// Whole string as a number in (0, 1] (a radius as a fraction of the
+/// scene's diagonal).
+bool ParseFraction(const std::string& s, double& v);
+
 /// "WxH" with 16..8192 pixels per side.
 bool ParseSize(const std::string& s, int& w, int& h);
 

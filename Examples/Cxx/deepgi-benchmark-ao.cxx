@@ -322,14 +322,9 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     {
       return bad("--samples needs an integer 1..1048576, got '" + value + "'");
     }
-    if (arg == "--radius-fraction")
+    if (arg == "--radius-fraction" && !ParseFraction(value, o.RadiusFraction))
     {
-      char* end = nullptr;
-      o.RadiusFraction = std::strtod(value.c_str(), &end);
-      if (value.empty() || *end || !(o.RadiusFraction > 0.0 && o.RadiusFraction <= 1.0))
-      {
-        return bad("--radius-fraction needs a number in (0, 1], got '" + value + "'");
-      }
+      return bad("--radius-fraction needs a number in (0, 1], got '" + value + "'");
     }
     if (arg == "--scenes")
     {

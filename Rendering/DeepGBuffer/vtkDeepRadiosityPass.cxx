@@ -769,13 +769,7 @@ bool vtkDeepRadiosityPass::PrepareTargets(
   vtkInternals& in = *this->Internals;
   vtkOpenGLRenderWindow* window = frame.Window;
   const int width = frame.Size[0], height = frame.Size[1];
-  frame.MaximumMip = std::min(std::max(this->MaximumMipLevel, this->MinimumMipLevel),
-    CoarsestMipLevel(frame.LayerSize[0], frame.LayerSize[1]));
-  frame.MinimumMip = std::min(this->MinimumMipLevel, frame.MaximumMip);
-  for (int axis = 0; axis < 2; ++axis)
-  {
-    frame.BounceSize[axis] = std::max(frame.LayerSize[axis] >> frame.MinimumMip, 1);
-  }
+  this->ChooseTapLevels(frame);
   if (!state.Renders.Consecutive() || state.Width != width || state.Height != height ||
     state.Divisor != frame.Divisor || state.LayerCount != frame.UsedLayers ||
     !std::equal(frame.Region, frame.Region + 4, state.ShadedRegion))
@@ -784,44 +778,7 @@ bool vtkDeepRadiosityPass::PrepareTargets(
   }
   ++state.FrameIndex;
   frame.RotationOffset = this->TemporalAlpha > 0.0 ? RotationOffset(state.FrameIndex) : 0.0;
-  bool allocated = true;
-  for (int target = 0; target < NUMBER_OF_TARGETS; ++target)
-  {
-    // BOUNCE holds the gather's sources (texels of the minimum MIP level);
-    // INDIRECT, what the composites read, has every layer texel; on a
-    // reduced grid only layer 0's INDIRECT exists.
-    const int* size = target == BOUNCE ? frame.BounceSize
-      : target == INDIRECT             ? frame.LayerSize
-                                       : frame.Size;
-    for (int layer = 0; layer < Layers; ++layer)
-    {
-      vtkSmartPointer<vtkTextureObject>& t = state.Targets[target][layer];
-      if (target == INDIRECT && layer > 0 && frame.Divisor > 1)
-      {
-        ReleaseTarget(t, window);
-        continue;
-      }
-      allocated = allocated && AllocateTarget(t, window, size[0], size[1], 4);
-      if (target == BOUNCE && t)
-      {
-        // With AverageFarTaps, levels MinimumMip..MaximumMip of the layers;
-        // otherwise one level (a mipmapped texture whose levels are never
-        // written would be incomplete and read as 0).
-        const int coarserLevels = this->AverageFarTaps ? frame.MaximumMip - frame.MinimumMip : 0;
-        t->SetMinificationFilter(
-          coarserLevels > 0 ? vtkTextureObject::NearestMipmapNearest : vtkTextureObject::Nearest);
-        t->SetMaxLevel(coarserLevels);
-      }
-    }
-  }
-  for (auto& ping : state.History)
-  {
-    for (auto& t : ping)
-    {
-      allocated = allocated && AllocateTarget(t, window, width, height, 4);
-    }
-  }
-  if (!allocated)
+  if (!this->AllocateTargets(frame, state))
   {
     vtkErrorMacro("Could not allocate the radiosity targets.");
     return false;
@@ -861,6 +818,68 @@ bool vtkDeepRadiosityPass::PrepareTargets(
   frame.Previous = state.HistoryCurrent;
   frame.Next = 1 - state.HistoryCurrent;
   return true;
+}
+
+//------------------------------------------------------------------------------
+// The MIP levels the taps read (Table 2's minimum to the coarsest level the
+// layers have) and the size of the bounce input, which holds the texels of
+// the minimum level.
+void vtkDeepRadiosityPass::ChooseTapLevels(vtkGatherFrame& frame) const
+{
+  frame.MaximumMip = std::min(std::max(this->MaximumMipLevel, this->MinimumMipLevel),
+    CoarsestMipLevel(frame.LayerSize[0], frame.LayerSize[1]));
+  frame.MinimumMip = std::min(this->MinimumMipLevel, frame.MaximumMip);
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    frame.BounceSize[axis] = std::max(frame.LayerSize[axis] >> frame.MinimumMip, 1);
+  }
+}
+
+//------------------------------------------------------------------------------
+// The per-layer targets and the history, (re)allocated when their sizes
+// change. Returns false when one could not be allocated.
+bool vtkDeepRadiosityPass::AllocateTargets(
+  vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
+{
+  vtkOpenGLRenderWindow* window = frame.Window;
+  bool allocated = true;
+  for (int target = 0; target < NUMBER_OF_TARGETS; ++target)
+  {
+    // BOUNCE holds the gather's sources (texels of the minimum MIP level);
+    // INDIRECT, what the composites read, has every layer texel; on a
+    // reduced grid only layer 0's INDIRECT exists.
+    const int* size = target == BOUNCE ? frame.BounceSize
+      : target == INDIRECT             ? frame.LayerSize
+                                       : frame.Size;
+    for (int layer = 0; layer < Layers; ++layer)
+    {
+      vtkSmartPointer<vtkTextureObject>& t = state.Targets[target][layer];
+      if (target == INDIRECT && layer > 0 && frame.Divisor > 1)
+      {
+        ReleaseTarget(t, window);
+        continue;
+      }
+      allocated = allocated && AllocateTarget(t, window, size[0], size[1], 4);
+      if (target == BOUNCE && t)
+      {
+        // With AverageFarTaps, levels MinimumMip..MaximumMip of the layers;
+        // otherwise one level (a mipmapped texture whose levels are never
+        // written would be incomplete and read as 0).
+        const int coarserLevels = this->AverageFarTaps ? frame.MaximumMip - frame.MinimumMip : 0;
+        t->SetMinificationFilter(
+          coarserLevels > 0 ? vtkTextureObject::NearestMipmapNearest : vtkTextureObject::Nearest);
+        t->SetMaxLevel(coarserLevels);
+      }
+    }
+  }
+  for (auto& ping : state.History)
+  {
+    for (auto& t : ping)
+    {
+      allocated = allocated && AllocateTarget(t, window, frame.Size[0], frame.Size[1], 4);
+    }
+  }
+  return allocated;
 }
 
 //------------------------------------------------------------------------------

@@ -724,6 +724,8 @@ private:
   void ComputeSceneParameters(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   static void ReduceFrame(vtkGatherFrame& frame, int divisor);
   bool PrepareTargets(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
+  void ChooseTapLevels(vtkGatherFrame& frame) const;
+  bool AllocateTargets(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   bool AllocateReduced(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void ReduceLayers(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void ComputeBounceInput(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
