@@ -1,10 +1,11 @@
 // Helpers shared by the tests of the ray-traced references and the OpenEXR
-// I/O: checks with a failure count, an observer counting error and warning
-// events, hand-made layer-0 captures in the layout of
-// vtkDeepGBufferPass::CaptureLayers, and the closed-form view factor from a
-// point to a parallel square.
+// I/O: an observer counting error and warning events, hand-made layer-0
+// captures in the layout of vtkDeepGBufferPass::CaptureLayers, and the
+// closed-form view factor from a point to a parallel square.
 #ifndef DeepGIReferenceTestUtilities_h
 #define DeepGIReferenceTestUtilities_h
+
+#include "DeepGITestChecks.h"
 
 #include "vtkCommand.h"
 #include "vtkDeepGICaptureNames.h"
@@ -26,18 +27,6 @@
 
 namespace DeepGIReferenceTest
 {
-inline int& Failures()
-{
-  static int failures = 0;
-  return failures;
-}
-
-inline void Check(bool ok, const std::string& what)
-{
-  std::cout << (ok ? "ok: " : "FAILED: ") << what << "\n";
-  Failures() += ok ? 0 : 1;
-}
-
 /// Counts the ErrorEvents and WarningEvents of the objects it observes.
 class EventCounter : public vtkCommand
 {

@@ -64,6 +64,7 @@
 #include <vector>
 
 using namespace DeepGIReferenceTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -461,6 +462,5 @@ int TestDeepGIReferenceBounces(int, char*[])
       reference->GetBounceDamping() == 0.0 && events->Warnings == 6, "BounceDamping 0: no warning");
   }
 
-  std::cout << (Failures() ? "FAILED" : "passed") << " (" << Failures() << " failures)\n";
-  return Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  return ExitStatus();
 }

@@ -52,6 +52,7 @@
 #include <vector>
 
 using namespace DeepGIReferenceTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -239,188 +240,218 @@ double MaxAbs(vtkDeepGIReferenceIrradiance* reference, const char* name)
   }
   return a ? m : -1;
 }
+
+const double Below[3] = { 0, 0, -1 }, Above[3] = { 0, 0, 1 };
+
+// The capture of the plane z = 0 and the closed forms there: F, the view
+// factor to the square, and E = pi L_e F of the emitting square alone.
+struct Plane
+{
+  Plane() { this->Capture = MakeCapture(this->Positions); }
+  double ViewFactor(vtkIdType p) const
+  {
+    return SquareViewFactor(this->Positions[p][0], this->Positions[p][1], Half, Lift);
+  }
+  double EmittedExact(vtkIdType p, int c) const
+  {
+    return vtkMath::Pi() * Emitted[c] * this->ViewFactor(p);
+  }
+  std::function<double(vtkIdType, int)> EmittedExactFunction() const
+  {
+    return [this](vtkIdType p, int c) { return this->EmittedExact(p, c); };
+  }
+  std::vector<std::array<double, 3>> Positions;
+  vtkSmartPointer<vtkImageData> Capture;
+};
+
+// 1. Closed form, no lights: no warning either.
+void CheckEmittingSquareMatchesClosedForm(const Plane& plane)
+{
+  vtkNew<vtkDeepGIReferenceIrradiance> reference;
+  vtkNew<EventCounter> events;
+  reference->AddObserver(vtkCommand::WarningEvent, events);
+  reference->SetScene(SquareScene(true, EmissionArray(Emitted)));
+  reference->SetSamplesPerPixel(1024);
+  Check(reference->Compute(plane.Capture), "emitting square: Compute");
+  CompareExact(reference, plane.EmittedExactFunction(), "emitting square, no lights (closed form)");
+  Check(events->Warnings == 0, "an emitting scene without lights: no warning");
+}
+
+// 2. Emission adds to the diffuse radiance from a light below (n.l = 1).
+void CheckEmissionAddsToLitRadiance(const Plane& plane)
+{
+  const double intensity = 0.6, rho = 128.0 / 255.0;
+  vtkNew<vtkDeepGIReferenceIrradiance> reference;
+  reference->SetScene(SquareScene(true, EmissionArray(Emitted)));
+  reference->AddLight(Directional(Below, intensity));
+  reference->SetSamplesPerPixel(1024);
+  Check(reference->Compute(plane.Capture), "emitting and lit square: Compute");
+  CompareExact(
+    reference,
+    [&](vtkIdType p, int c)
+    { return vtkMath::Pi() * (Emitted[c] + rho * intensity) * plane.ViewFactor(p); },
+    "emitting square lit from below: pi (L_e + rho I) F");
+}
+
+// 3. Back faces: emitted on both sides with two-sided lighting, as VTK draws
+// the ambient term; nothing with it off.
+void CheckBackFacesEmitWithTwoSidedLighting(const Plane& plane)
+{
+  vtkNew<vtkDeepGIReferenceIrradiance> reference;
+  reference->SetScene(SquareScene(false, EmissionArray(Emitted)));
+  reference->SetSamplesPerPixel(1024);
+  Check(reference->Compute(plane.Capture), "emitting square seen from behind: Compute");
+  CompareExact(reference, plane.EmittedExactFunction(),
+    "emitting square seen from behind, two-sided (closed form)");
+  reference->TwoSidedLightingOff();
+  Check(reference->Compute(plane.Capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0,
+    "emitting square seen from behind, one-sided: E = 0");
+}
+
+// 4. No array, or no array name: E = 0 and no warning.
+void CheckMissingEmissionArrayEmitsNothing(const Plane& plane)
+{
+  vtkNew<vtkDeepGIReferenceIrradiance> reference;
+  vtkNew<EventCounter> events;
+  reference->AddObserver(vtkCommand::WarningEvent, events);
+  reference->AddLight(Directional(Above, 1.0));
+  reference->SetSamplesPerPixel(64);
+  reference->SetScene(SquareScene(true, nullptr));
+  Check(reference->Compute(plane.Capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0 &&
+      events->Warnings == 0,
+    "no Emission array: E = 0, no warning");
+  reference->SetScene(SquareScene(true, EmissionArray(Emitted, 3, 1, "Glow")));
+  Check(reference->Compute(plane.Capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0 &&
+      events->Warnings == 0,
+    "an array of another name: E = 0, no warning");
+  reference->SetEmissionArrayName("Glow");
+  reference->SetSamplesPerPixel(1024);
+  Check(reference->Compute(plane.Capture), "EmissionArrayName Glow: Compute");
+  CompareExact(reference, plane.EmittedExactFunction(), "EmissionArrayName Glow (closed form)");
+  reference->SetEmissionArrayName(nullptr);
+  Check(reference->Compute(plane.Capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0 &&
+      events->Warnings == 0,
+    "EmissionArrayName null: no emission, no warning");
+  reference->SetEmissionArrayName("");
+  Check(reference->Compute(plane.Capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0 &&
+      events->Warnings == 0,
+    "EmissionArrayName empty: no emission, no warning");
+}
+
+// 5. Bad arrays.
+void CheckBadEmissionArraysAreRepaired(const Plane& plane)
+{
+  vtkNew<vtkDeepGIReferenceIrradiance> reference;
+  vtkNew<EventCounter> events;
+  reference->AddObserver(vtkCommand::WarningEvent, events);
+  reference->AddObserver(vtkCommand::ErrorEvent, events);
+  // A light that reaches only the square's back, so that an ignored
+  // array does not also bring the warning about a scene without light.
+  reference->AddLight(Directional(Above, 1.0));
+  reference->SetSamplesPerPixel(1024);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double bad[3] = { nan, -1.0, Emitted[2] };
+  reference->SetScene(SquareScene(true, EmissionArray(bad)));
+  Check(reference->Compute(plane.Capture) && events->Warnings == 1 && events->Errors == 0,
+    "NaN and negative emission: one warning");
+  Check(MaxAbs(reference, "IndirectIrradiance") < 10.0, "NaN and negative emission: E finite");
+  CompareExact(
+    reference, [&](vtkIdType p, int c) { return c == 2 ? plane.EmittedExact(p, c) : 0.0; },
+    "NaN and negative emission clamped to 0, blue unchanged");
+  const double infinite[3] = { std::numeric_limits<double>::infinity(), 0.0, 0.0 };
+  reference->SetScene(SquareScene(true, EmissionArray(infinite)));
+  Check(reference->Compute(plane.Capture) && events->Warnings == 2 &&
+      MaxAbs(reference, "IndirectIrradiance") == 0.0,
+    "infinite emission: a warning, set to 0");
+  reference->SetScene(SquareScene(true, EmissionArray(Emitted, 2)));
+  Check(reference->Compute(plane.Capture) && events->Warnings == 3 &&
+      MaxAbs(reference, "IndirectIrradiance") == 0.0,
+    "a 2-component Emission array: a warning, ignored");
+  reference->SetScene(SquareScene(true, EmissionArray(Emitted, 3, 2)));
+  Check(reference->Compute(plane.Capture) && events->Warnings == 4 &&
+      MaxAbs(reference, "IndirectIrradiance") == 0.0,
+    "an Emission array with more tuples than cells: a warning, ignored");
+  // One component is grey.
+  const double grey[3] = { 0.4, 0.4, 0.4 };
+  reference->SetScene(SquareScene(true, EmissionArray(grey, 1)));
+  Check(reference->Compute(plane.Capture) && events->Warnings == 4, "grey emission: Compute");
+  CompareExact(
+    reference, [&](vtkIdType p, int) { return vtkMath::Pi() * 0.4 * plane.ViewFactor(p); },
+    "a 1-component Emission array is grey (closed form)");
+}
+
+// 6. DIRECT_RADIANCE: the emitting floor itself (larger than the view).
+void CheckDirectRadianceOfEmitter(const Plane& plane)
+{
+  const double e = 4.0;
+  const std::array<std::array<double, 3>, 4> up = { { { -e, -e, 0 }, { e, -e, 0 }, { e, e, 0 },
+    { -e, e, 0 } } };
+  const std::array<std::array<double, 3>, 4> down = { { { -e, -e, 0 }, { -e, e, 0 }, { e, e, 0 },
+    { e, -e, 0 } } };
+  vtkNew<vtkDeepGIReferenceIrradiance> reference;
+  reference->SetQuantityToDirectRadiance();
+  auto maxError = [&](const double expected[3])
+  {
+    vtkFloatArray* l = Array(reference, "DirectRadiance");
+    double m = l ? 0.0 : 1.0;
+    for (vtkIdType p = 0; l && p < l->GetNumberOfTuples(); ++p)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        m = std::max(m, std::fabs(l->GetComponent(p, c) - expected[c]));
+      }
+    }
+    return m;
+  };
+  const double zero[3] = { 0, 0, 0 };
+  reference->SetScene(QuadScene(up, EmissionArray(Emitted)));
+  Check(reference->Compute(plane.Capture) && maxError(Emitted) < 1e-6,
+    "DIRECT_RADIANCE of an emitting floor: L_e");
+  reference->AddLight(Directional(Above, 0.6));
+  double lit[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    lit[c] = Emitted[c] + 128.0 / 255.0 * 0.6;
+  }
+  Check(reference->Compute(plane.Capture) && maxError(lit) < 1e-6,
+    "DIRECT_RADIANCE of an emitting floor under a light: L_e + rho I");
+  reference->RemoveAllLights();
+  reference->SetScene(QuadScene(down, EmissionArray(Emitted)));
+  Check(reference->Compute(plane.Capture) && maxError(Emitted) < 1e-6,
+    "DIRECT_RADIANCE of an emitting floor seen from behind, two-sided: L_e");
+  reference->TwoSidedLightingOff();
+  Check(reference->Compute(plane.Capture) && maxError(zero) == 0.0,
+    "DIRECT_RADIANCE of an emitting floor seen from behind, one-sided: 0");
+}
+
+// 7. An unsigned char array is a colour (/ 255), like "Colors".
+void CheckUnsignedCharEmissionIsAColour(const Plane& plane)
+{
+  vtkNew<vtkUnsignedCharArray> bytes;
+  bytes->SetName("Emission");
+  bytes->SetNumberOfComponents(3);
+  const unsigned char rgb[3] = { 255, 51, 0 };
+  bytes->InsertNextTypedTuple(rgb);
+  vtkNew<vtkDeepGIReferenceIrradiance> reference;
+  reference->SetScene(SquareScene(true, bytes));
+  reference->SetSamplesPerPixel(1024);
+  Check(reference->Compute(plane.Capture), "unsigned char emission: Compute");
+  CompareExact(
+    reference,
+    [&](vtkIdType p, int c) { return vtkMath::Pi() * rgb[c] / 255.0 * plane.ViewFactor(p); },
+    "unsigned char emission / 255 (closed form)");
+}
 }
 
 int TestDeepGIReferenceEmission(int, char*[])
 {
-  std::vector<std::array<double, 3>> positions;
-  auto capture = MakeCapture(positions);
-  auto viewFactor = [&](vtkIdType p)
-  { return SquareViewFactor(positions[p][0], positions[p][1], Half, Lift); };
-  auto emittedExact = [&](vtkIdType p, int c)
-  { return vtkMath::Pi() * Emitted[c] * viewFactor(p); };
-  const double below[3] = { 0, 0, -1 }, above[3] = { 0, 0, 1 };
-
-  // 1. Closed form, no lights: no warning either.
-  {
-    vtkNew<vtkDeepGIReferenceIrradiance> reference;
-    vtkNew<EventCounter> events;
-    reference->AddObserver(vtkCommand::WarningEvent, events);
-    reference->SetScene(SquareScene(true, EmissionArray(Emitted)));
-    reference->SetSamplesPerPixel(1024);
-    Check(reference->Compute(capture), "emitting square: Compute");
-    CompareExact(reference, emittedExact, "emitting square, no lights (closed form)");
-    Check(events->Warnings == 0, "an emitting scene without lights: no warning");
-  }
-
-  // 2. Emission adds to the diffuse radiance from a light below (n.l = 1).
-  {
-    const double intensity = 0.6, rho = 128.0 / 255.0;
-    vtkNew<vtkDeepGIReferenceIrradiance> reference;
-    reference->SetScene(SquareScene(true, EmissionArray(Emitted)));
-    reference->AddLight(Directional(below, intensity));
-    reference->SetSamplesPerPixel(1024);
-    Check(reference->Compute(capture), "emitting and lit square: Compute");
-    CompareExact(
-      reference,
-      [&](vtkIdType p, int c)
-      { return vtkMath::Pi() * (Emitted[c] + rho * intensity) * viewFactor(p); },
-      "emitting square lit from below: pi (L_e + rho I) F");
-  }
-
-  // 3. Back faces: emitted on both sides with two-sided lighting, as VTK draws
-  // the ambient term; nothing with it off.
-  {
-    vtkNew<vtkDeepGIReferenceIrradiance> reference;
-    reference->SetScene(SquareScene(false, EmissionArray(Emitted)));
-    reference->SetSamplesPerPixel(1024);
-    Check(reference->Compute(capture), "emitting square seen from behind: Compute");
-    CompareExact(
-      reference, emittedExact, "emitting square seen from behind, two-sided (closed form)");
-    reference->TwoSidedLightingOff();
-    Check(reference->Compute(capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0,
-      "emitting square seen from behind, one-sided: E = 0");
-  }
-
-  // 4. No array, or no array name: E = 0 and no warning.
-  {
-    vtkNew<vtkDeepGIReferenceIrradiance> reference;
-    vtkNew<EventCounter> events;
-    reference->AddObserver(vtkCommand::WarningEvent, events);
-    reference->AddLight(Directional(above, 1.0));
-    reference->SetSamplesPerPixel(64);
-    reference->SetScene(SquareScene(true, nullptr));
-    Check(reference->Compute(capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0 &&
-        events->Warnings == 0,
-      "no Emission array: E = 0, no warning");
-    reference->SetScene(SquareScene(true, EmissionArray(Emitted, 3, 1, "Glow")));
-    Check(reference->Compute(capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0 &&
-        events->Warnings == 0,
-      "an array of another name: E = 0, no warning");
-    reference->SetEmissionArrayName("Glow");
-    reference->SetSamplesPerPixel(1024);
-    Check(reference->Compute(capture), "EmissionArrayName Glow: Compute");
-    CompareExact(reference, emittedExact, "EmissionArrayName Glow (closed form)");
-    reference->SetEmissionArrayName(nullptr);
-    Check(reference->Compute(capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0 &&
-        events->Warnings == 0,
-      "EmissionArrayName null: no emission, no warning");
-    reference->SetEmissionArrayName("");
-    Check(reference->Compute(capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0 &&
-        events->Warnings == 0,
-      "EmissionArrayName empty: no emission, no warning");
-  }
-
-  // 5. Bad arrays.
-  {
-    vtkNew<vtkDeepGIReferenceIrradiance> reference;
-    vtkNew<EventCounter> events;
-    reference->AddObserver(vtkCommand::WarningEvent, events);
-    reference->AddObserver(vtkCommand::ErrorEvent, events);
-    // A light that reaches only the square's back, so that an ignored
-    // array does not also bring the warning about a scene without light.
-    reference->AddLight(Directional(above, 1.0));
-    reference->SetSamplesPerPixel(1024);
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    const double bad[3] = { nan, -1.0, Emitted[2] };
-    reference->SetScene(SquareScene(true, EmissionArray(bad)));
-    Check(reference->Compute(capture) && events->Warnings == 1 && events->Errors == 0,
-      "NaN and negative emission: one warning");
-    Check(MaxAbs(reference, "IndirectIrradiance") < 10.0, "NaN and negative emission: E finite");
-    CompareExact(
-      reference, [&](vtkIdType p, int c) { return c == 2 ? emittedExact(p, c) : 0.0; },
-      "NaN and negative emission clamped to 0, blue unchanged");
-    const double infinite[3] = { std::numeric_limits<double>::infinity(), 0.0, 0.0 };
-    reference->SetScene(SquareScene(true, EmissionArray(infinite)));
-    Check(reference->Compute(capture) && events->Warnings == 2 &&
-        MaxAbs(reference, "IndirectIrradiance") == 0.0,
-      "infinite emission: a warning, set to 0");
-    reference->SetScene(SquareScene(true, EmissionArray(Emitted, 2)));
-    Check(reference->Compute(capture) && events->Warnings == 3 &&
-        MaxAbs(reference, "IndirectIrradiance") == 0.0,
-      "a 2-component Emission array: a warning, ignored");
-    reference->SetScene(SquareScene(true, EmissionArray(Emitted, 3, 2)));
-    Check(reference->Compute(capture) && events->Warnings == 4 &&
-        MaxAbs(reference, "IndirectIrradiance") == 0.0,
-      "an Emission array with more tuples than cells: a warning, ignored");
-    // One component is grey.
-    const double grey[3] = { 0.4, 0.4, 0.4 };
-    reference->SetScene(SquareScene(true, EmissionArray(grey, 1)));
-    Check(reference->Compute(capture) && events->Warnings == 4, "grey emission: Compute");
-    CompareExact(
-      reference, [&](vtkIdType p, int) { return vtkMath::Pi() * 0.4 * viewFactor(p); },
-      "a 1-component Emission array is grey (closed form)");
-  }
-
-  // 6. DIRECT_RADIANCE: the emitting floor itself (larger than the view).
-  {
-    const double e = 4.0;
-    const std::array<std::array<double, 3>, 4> up = { { { -e, -e, 0 }, { e, -e, 0 }, { e, e, 0 },
-      { -e, e, 0 } } };
-    const std::array<std::array<double, 3>, 4> down = { { { -e, -e, 0 }, { -e, e, 0 }, { e, e, 0 },
-      { e, -e, 0 } } };
-    vtkNew<vtkDeepGIReferenceIrradiance> reference;
-    reference->SetQuantityToDirectRadiance();
-    auto maxError = [&](const double expected[3])
-    {
-      vtkFloatArray* l = Array(reference, "DirectRadiance");
-      double m = l ? 0.0 : 1.0;
-      for (vtkIdType p = 0; l && p < l->GetNumberOfTuples(); ++p)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          m = std::max(m, std::fabs(l->GetComponent(p, c) - expected[c]));
-        }
-      }
-      return m;
-    };
-    const double zero[3] = { 0, 0, 0 };
-    reference->SetScene(QuadScene(up, EmissionArray(Emitted)));
-    Check(reference->Compute(capture) && maxError(Emitted) < 1e-6,
-      "DIRECT_RADIANCE of an emitting floor: L_e");
-    reference->AddLight(Directional(above, 0.6));
-    double lit[3];
-    for (int c = 0; c < 3; ++c)
-    {
-      lit[c] = Emitted[c] + 128.0 / 255.0 * 0.6;
-    }
-    Check(reference->Compute(capture) && maxError(lit) < 1e-6,
-      "DIRECT_RADIANCE of an emitting floor under a light: L_e + rho I");
-    reference->RemoveAllLights();
-    reference->SetScene(QuadScene(down, EmissionArray(Emitted)));
-    Check(reference->Compute(capture) && maxError(Emitted) < 1e-6,
-      "DIRECT_RADIANCE of an emitting floor seen from behind, two-sided: L_e");
-    reference->TwoSidedLightingOff();
-    Check(reference->Compute(capture) && maxError(zero) == 0.0,
-      "DIRECT_RADIANCE of an emitting floor seen from behind, one-sided: 0");
-  }
-
-  // 7. An unsigned char array is a colour (/ 255), like "Colors".
-  {
-    vtkNew<vtkUnsignedCharArray> bytes;
-    bytes->SetName("Emission");
-    bytes->SetNumberOfComponents(3);
-    const unsigned char rgb[3] = { 255, 51, 0 };
-    bytes->InsertNextTypedTuple(rgb);
-    vtkNew<vtkDeepGIReferenceIrradiance> reference;
-    reference->SetScene(SquareScene(true, bytes));
-    reference->SetSamplesPerPixel(1024);
-    Check(reference->Compute(capture), "unsigned char emission: Compute");
-    CompareExact(
-      reference, [&](vtkIdType p, int c) { return vtkMath::Pi() * rgb[c] / 255.0 * viewFactor(p); },
-      "unsigned char emission / 255 (closed form)");
-  }
-
-  std::cout << (Failures() ? "FAILED" : "passed") << " (" << Failures() << " failures)\n";
-  return Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  const Plane plane;
+  CheckEmittingSquareMatchesClosedForm(plane);
+  CheckEmissionAddsToLitRadiance(plane);
+  CheckBackFacesEmitWithTwoSidedLighting(plane);
+  CheckMissingEmissionArrayEmitsNothing(plane);
+  CheckBadEmissionArraysAreRepaired(plane);
+  CheckDirectRadianceOfEmitter(plane);
+  CheckUnsignedCharEmissionIsAColour(plane);
+  return ExitStatus();
 }

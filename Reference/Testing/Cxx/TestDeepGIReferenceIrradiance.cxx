@@ -54,6 +54,7 @@
 #include <vector>
 
 using namespace DeepGIReferenceTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -293,390 +294,435 @@ vtkSmartPointer<vtkPolyData> WallScene(const Frame& f, bool roof)
   }
   return b.Build();
 }
+
+const double White3[3] = { 1, 1, 1 };
+const double AlbedoX[3] = { 0.5, 0.6, 0.7 };
+const double Below[3] = { 0, 0, -1 }, Origin[3] = { 0, 0, 0 };
+const double SunFrom[3] = { 1, 0, 1 };
+
+// Test 1's directional light below the square, n.l = 1.
+vtkSmartPointer<vtkLight> SquareLight(const Frame& f)
+{
+  return SceneLight(f, Below, Origin, false, LightIntensity, LightColor);
+}
+
+// Test 1's capture of the plane under the square and the closed form of E
+// there: E = pi L F, L = rho I, F the view factor of the parallel square.
+struct SquareCase
+{
+  explicit SquareCase(const Frame& f)
+  {
+    this->Capture = MakeCapture(f, 16, 16, 0.3, -0.2, 3.0, AlbedoX, this->Positions);
+    for (int c = 0; c < 3; ++c)
+    {
+      this->L[c] = SquareColor[c] / 255.0 * LightIntensity * LightColor[c];
+    }
+  }
+  double Exact(vtkIdType p, int c) const
+  {
+    return vtkMath::Pi() * this->L[c] *
+      SquareViewFactor(this->Positions[p][0], this->Positions[p][1], SquareHalf, SquareHeight);
+  }
+  std::function<double(vtkIdType, int)> ExactFunction() const
+  {
+    return [this](vtkIdType p, int c) { return this->Exact(p, c); };
+  }
+  std::vector<std::array<double, 3>> Positions;
+  vtkSmartPointer<vtkImageData> Capture;
+  double L[3];
+};
+
+vtkSmartPointer<vtkDeepGIReferenceIrradiance> MakeReference(
+  vtkPolyData* scene, vtkLight* light, int samplesPerPixel)
+{
+  auto reference = vtkSmartPointer<vtkDeepGIReferenceIrradiance>::New();
+  reference->SetScene(scene);
+  reference->AddLight(light);
+  reference->SetSamplesPerPixel(samplesPerPixel);
+  return reference;
+}
+
+// 1. Analytic: parallel square lit from below; IndirectRadiance = rho_X E / pi.
+void CheckSquareMatchesClosedForm(vtkDeepGIReferenceIrradiance* reference, const SquareCase& square)
+{
+  Check(reference->Compute(square.Capture), "square: Compute");
+  CompareExact(reference, square.ExactFunction(), "square facing down (closed form)");
+  vtkFloatArray* e = Array(reference, "IndirectIrradiance");
+  vtkFloatArray* l = Array(reference, vtkDeepGICaptureNames::IndirectRadiance);
+  double maxError = l ? 0 : 1;
+  for (vtkIdType p = 0; l && p < e->GetNumberOfTuples(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      maxError = std::max(maxError,
+        std::fabs(l->GetComponent(p, c) - AlbedoX[c] * e->GetComponent(p, c) / vtkMath::Pi()));
+    }
+  }
+  Check(maxError < 1e-6,
+    "IndirectRadiance = rho_X E / pi (max error " + std::to_string(maxError) + ")");
+}
+
+// Seen from behind: two-sided lighting flips the normal (same E), one-sided
+// lighting makes it black.
+void CheckBackFacesFollowTwoSidedLighting(const SquareCase& square)
+{
+  const Frame unit;
+  auto back = MakeReference(SquareScene(unit, false), SquareLight(unit), 1024);
+  Check(back->Compute(square.Capture), "square from behind: Compute");
+  CompareExact(back, square.ExactFunction(), "square facing up, two-sided lighting (closed form)");
+  back->TwoSidedLightingOff();
+  back->Compute(square.Capture);
+  Check(MaxIrradiance(back) == 0.0, "square facing up, one-sided lighting: E = 0");
+}
+
+// Point normals are the shading normals: pointing up (away from the light
+// below) they leave the front face unlit.
+void CheckPointNormalsShade(const SquareCase& square)
+{
+  const Frame unit;
+  auto scene = SquareScene(unit, true);
+  vtkNew<vtkFloatArray> normals;
+  normals->SetNumberOfComponents(3);
+  for (int k = 0; k < 4; ++k)
+  {
+    normals->InsertNextTuple3(0, 0, 1);
+  }
+  scene->GetPointData()->SetNormals(normals);
+  auto shaded = MakeReference(scene, SquareLight(unit), 64);
+  shaded->Compute(square.Capture);
+  Check(MaxIrradiance(shaded) == 0.0, "point normals facing away from the light: E = 0");
+  for (int k = 0; k < 4; ++k)
+  {
+    normals->SetTuple3(k, 0, 0, -1);
+  }
+  normals->Modified();
+  shaded->SetSamplesPerPixel(1024);
+  shaded->Compute(square.Capture);
+  CompareExact(shaded, square.ExactFunction(), "point normals facing the light (closed form)");
+}
+
+// MaximumDistance: a coaxial disc of radius R = sqrt(r^2 - h^2).
+void CheckMaximumDistanceLimitsToADisc(
+  vtkDeepGIReferenceIrradiance* reference, const SquareCase& square)
+{
+  reference->SetMaximumDistance(0.9 * SquareHeight);
+  reference->Compute(square.Capture);
+  Check(MaxIrradiance(reference) == 0.0, "MaximumDistance < h: E = 0");
+  const double r = 1.6 * SquareHeight;
+  const double r2 = r * r - SquareHeight * SquareHeight;
+  reference->SetMaximumDistance(r);
+  reference->Compute(square.Capture);
+  CompareExact(
+    reference,
+    [&](vtkIdType p, int c)
+    {
+      const double R = std::sqrt(r2);
+      if (std::fabs(square.Positions[p][0]) + R >= SquareHalf ||
+        std::fabs(square.Positions[p][1]) + R >= SquareHalf)
+      {
+        return -1.0; // the disc leaves the square
+      }
+      return vtkMath::Pi() * square.L[c] * r2 / (r2 + SquareHeight * SquareHeight);
+    },
+    "MaximumDistance 1.6 h (coaxial disc)");
+  reference->SetMaximumDistance(std::numeric_limits<double>::infinity());
+}
+
+// A "Diffuse" field array scales rho_Y.
+void CheckDiffuseFieldScalesReflectance(const SquareCase& square)
+{
+  const Frame unit;
+  auto scene = SquareScene(unit, true);
+  vtkNew<vtkDoubleArray> diffuse;
+  diffuse->SetName("Diffuse");
+  diffuse->InsertNextValue(0.5);
+  scene->GetFieldData()->AddArray(diffuse);
+  auto half = MakeReference(scene, SquareLight(unit), 1024);
+  half->Compute(square.Capture);
+  CompareExact(
+    half, [&](vtkIdType p, int c) { return 0.5 * square.Exact(p, c); },
+    "field data Diffuse 0.5 (closed form)");
+}
+
+// Tests 2-5's capture of the white floor beside the red wall, in the sun
+// from above +x, and its result with seed 1.
+struct WallCase
+{
+  WallCase()
+  {
+    const Frame unit;
+    this->Capture = MakeCapture(unit, 24, 8, 3.4, 0.0, 3.0, White3, this->Positions);
+    this->Reference = MakeReference(
+      WallScene(unit, false), SceneLight(unit, SunFrom, Origin, false, 1.0, White3), 1024);
+    this->Reference->SetSeed(1);
+    Check(this->Reference->Compute(this->Capture), "wall: Compute");
+    this->Result->DeepCopy(this->Reference->GetOutput());
+  }
+  std::vector<std::array<double, 3>> Positions;
+  vtkSmartPointer<vtkImageData> Capture;
+  vtkSmartPointer<vtkDeepGIReferenceIrradiance> Reference;
+  vtkNew<vtkImageData> Result;
+};
+
+// 2. The red wall bleeds red onto the white floor, more near the wall.
+void CheckRedWallBleedsRed(const WallCase& wall)
+{
+  vtkFloatArray* e = Array(wall.Reference, "IndirectIrradiance");
+  vtkFloatArray* se = Array(wall.Reference, "IndirectIrradianceStandardError");
+  int notRed = 0;
+  double nearSum = 0, farSum = 0, nearVar = 0, farVar = 0;
+  int nearN = 0, farN = 0;
+  for (vtkIdType p = 0; p < e->GetNumberOfTuples(); ++p)
+  {
+    const double r = e->GetComponent(p, 0);
+    notRed += !(r > e->GetComponent(p, 1) && r > e->GetComponent(p, 2));
+    const double d = wall.Positions[p][0];
+    const double s = se->GetComponent(p, 0);
+    if (d > 0 && d < 0.8)
+    {
+      nearSum += r;
+      nearVar += s * s;
+      ++nearN;
+    }
+    else if (d > 2.4)
+    {
+      farSum += r;
+      farVar += s * s;
+      ++farN;
+    }
+  }
+  const double nearMean = nearSum / nearN, farMean = farSum / farN;
+  const double sigma = std::sqrt(nearVar / (nearN * nearN) + farVar / (farN * farN));
+  std::cout << "red wall: mean E_r at d < 0.8: " << nearMean << ", at d > 2.4: " << farMean
+            << " (difference standard error " << sigma << ")\n";
+  Check(
+    notRed == 0, "red wall: E_r > E_g, E_b on every pixel (" + std::to_string(notRed) + " not)");
+  Check(nearMean - farMean > 10 * sigma, "red wall: more irradiance near the wall");
+}
+
+// 3. Shadows: a roof shades the wall from the sun.
+void CheckRoofShadowsTheWall(const WallCase& wall)
+{
+  const Frame unit;
+  auto roof = MakeReference(
+    WallScene(unit, true), SceneLight(unit, SunFrom, Origin, false, 1.0, White3), 256);
+  Check(roof->Compute(wall.Capture), "roof, shadows off: Compute");
+  const double lit = MaxIrradiance(roof);
+  const double litMean = roof->GetMeanStandardError();
+  roof->ShadowsOn();
+  Check(roof->Compute(wall.Capture), "roof, shadows on: Compute");
+  const double shadowed = MaxIrradiance(roof);
+  std::cout << "roof: max E shadows off " << lit << " (mean SE " << litMean << "), on " << shadowed
+            << "\n";
+  Check(lit > 0.1, "roof, shadows off: the wall lights the floor");
+  Check(shadowed == 0.0, "roof, shadows on: wall and roof underside dark, E = 0");
+  // Without the roof, shadow rays must not darken anything.
+  wall.Reference->ShadowsOn();
+  wall.Reference->Compute(wall.Capture);
+  vtkFloatArray* a = Array(wall.Reference, "IndirectIrradiance");
+  auto b = vtkFloatArray::SafeDownCast(wall.Result->GetPointData()->GetArray("IndirectIrradiance"));
+  double maxDiff = 0;
+  for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
+  {
+    maxDiff = std::max(maxDiff, static_cast<double>(std::fabs(a->GetValue(i) - b->GetValue(i))));
+  }
+  Check(maxDiff == 0.0,
+    "no roof: shadows on and off identical (max diff " + std::to_string(maxDiff) + ")");
+  wall.Reference->ShadowsOff();
+}
+
+// Checks that two results agree within k combined standard errors; returns
+// whether fewer than a quarter of the values are identical (independent
+// samples).
+bool CompareResults(vtkImageData* a, vtkImageData* b, double k, const std::string& what)
+{
+  auto ea = vtkFloatArray::SafeDownCast(a->GetPointData()->GetArray("IndirectIrradiance"));
+  auto sa =
+    vtkFloatArray::SafeDownCast(a->GetPointData()->GetArray("IndirectIrradianceStandardError"));
+  auto eb = vtkFloatArray::SafeDownCast(b->GetPointData()->GetArray("IndirectIrradiance"));
+  auto sb =
+    vtkFloatArray::SafeDownCast(b->GetPointData()->GetArray("IndirectIrradianceStandardError"));
+  int bad = 0, identical = 0, n = 0;
+  double maxZ = 0;
+  for (vtkIdType i = 0; i < ea->GetNumberOfValues(); ++i)
+  {
+    const double sigma = std::hypot(sa->GetValue(i), sb->GetValue(i));
+    const double diff = std::fabs(ea->GetValue(i) - eb->GetValue(i));
+    bad += diff > k * sigma + 1e-6 * std::fabs(eb->GetValue(i)) + 1e-7;
+    identical += diff == 0 && sigma > 0;
+    maxZ = std::max(maxZ, diff / std::max(sigma, 1e-12));
+    ++n;
+  }
+  std::cout << what << ": max |diff| / combined SE " << maxZ << "\n";
+  Check(bad == 0, what + ": " + std::to_string(bad) + " values differ beyond the noise");
+  return identical < n / 4;
+}
+
+// 4. Two seeds agree within noise.
+void CheckSeedsAgreeWithinNoise(const WallCase& wall)
+{
+  const Frame unit;
+  auto other = MakeReference(
+    wall.Reference->GetScene(), SceneLight(unit, SunFrom, Origin, false, 1.0, White3), 1024);
+  other->SetSeed(2);
+  other->Compute(wall.Capture);
+  Check(CompareResults(other->GetOutput(), wall.Result, 4.5, "seeds 1 vs 2"),
+    "seeds 1 vs 2: the seed changes the samples");
+}
+
+// 5. Scale invariance, with a positional light (no attenuation) too.
+void CheckScaleInvariance(const WallCase& wall)
+{
+  const double lamp[3] = { 3, 1, 4 };
+  auto makeLitWall = [&](const Frame& f)
+  {
+    auto reference =
+      MakeReference(WallScene(f, false), SceneLight(f, SunFrom, Origin, false, 0.5, White3), 1024);
+    reference->AddLight(SceneLight(f, lamp, Origin, true, 0.7, LightColor));
+    reference->SetSeed(3);
+    reference->ShadowsOn();
+    return reference;
+  };
+  auto base = makeLitWall(Frame());
+  base->Compute(wall.Capture);
+  vtkNew<vtkImageData> baseResult;
+  baseResult->DeepCopy(base->GetOutput());
+  for (double scale : { 1e-4, 1e4 })
+  {
+    Frame f;
+    f.Scale = scale;
+    f.Shift[0] = 3e4 * scale;
+    f.Shift[1] = -2e4 * scale;
+    f.Shift[2] = 1e4 * scale;
+    std::vector<std::array<double, 3>> positions;
+    auto capture = MakeCapture(f, 24, 8, 3.4, 0.0, 3.0, White3, positions);
+    auto scaled = makeLitWall(f);
+    Check(scaled->Compute(capture), "scale " + std::to_string(scale) + ": Compute");
+    CompareResults(scaled->GetOutput(), baseResult, 4.5, "scale " + std::to_string(scale));
+  }
+  // The square at other scales against the closed form.
+  for (double scale : { 1e-4, 1e4 })
+  {
+    Frame f;
+    f.Scale = scale;
+    f.Shift[0] = -1e4 * scale;
+    f.Shift[2] = 2e4 * scale;
+    const SquareCase square(f);
+    auto scaled = MakeReference(SquareScene(f, true), SquareLight(f), 1024);
+    scaled->Compute(square.Capture);
+    CompareExact(scaled, square.ExactFunction(),
+      "square at scale " + std::to_string(scale) + " (closed form)");
+  }
+}
+
+// 6a. Lights from a renderer.
+void CheckLightsFromRenderer()
+{
+  const Frame unit;
+  vtkNew<vtkRenderer> renderer;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(1, 2, 10);
+  camera->SetFocalPoint(1, 2, 0);
+  camera->SetViewUp(0, 1, 0);
+  vtkNew<vtkLight> headlight, cameraLight, off;
+  headlight->SetLightTypeToHeadlight();
+  cameraLight->SetLightTypeToCameraLight(); // at (0, 0, 1) towards (0, 0, 0)
+  cameraLight->SetIntensity(0.5);
+  off->SwitchOff();
+  renderer->AddLight(headlight);
+  renderer->AddLight(cameraLight);
+  renderer->AddLight(off);
+  renderer->AddLight(SceneLight(unit, SunFrom, Origin, false, 1.0, White3));
+  vtkNew<vtkDeepGIReferenceIrradiance> fromRenderer;
+  fromRenderer->SetLightsFromRenderer(renderer);
+  Check(fromRenderer->GetNumberOfLights() == 3, "renderer: 3 switched-on lights");
+  double p[3], d[3], c[3];
+  bool positional;
+  fromRenderer->GetLight(0, p, d, c, positional);
+  Check(std::fabs(p[0] - 1) + std::fabs(p[1] - 2) + std::fabs(p[2] - 10) < 1e-9 &&
+      std::fabs(d[2] + 1) < 1e-9,
+    "headlight at the camera, looking along its view direction");
+  fromRenderer->GetLight(1, p, d, c, positional);
+  Check(std::fabs(p[0] - 1) + std::fabs(p[1] - 2) + std::fabs(p[2] - 10) < 1e-9 &&
+      std::fabs(d[2] + 1) < 1e-9 && std::fabs(c[0] - 0.5) < 1e-12,
+    "camera light (0,0,1)->(0,0,0) at the camera, intensity 0.5");
+  fromRenderer->GetLight(2, p, d, c, positional);
+  Check(std::fabs(d[0] + std::sqrt(0.5)) < 1e-9 && std::fabs(d[2] + std::sqrt(0.5)) < 1e-9,
+    "scene light direction in world space");
+  vtkNew<vtkRenderer> empty;
+  empty->GetActiveCamera()->SetPosition(0, 0, 5);
+  fromRenderer->SetLightsFromRenderer(empty);
+  Check(fromRenderer->GetNumberOfLights() == 1, "no lights on: VTK's automatic headlight");
+  empty->AutomaticLightCreationOff();
+  fromRenderer->SetLightsFromRenderer(empty);
+  Check(fromRenderer->GetNumberOfLights() == 0, "no automatic light creation: no light");
+  vtkNew<vtkLight> cameraOnly;
+  cameraOnly->SetLightTypeToHeadlight();
+  vtkNew<EventCounter> events;
+  fromRenderer->AddObserver(vtkCommand::WarningEvent, events);
+  Check(!fromRenderer->AddLight(cameraOnly) && events->Warnings == 1,
+    "headlight without a camera: skipped with a warning");
+  fromRenderer->Print(std::cout);
+}
+
+// 6b. Bad input: warnings or errors, no crash.
+void CheckBadInputIsRefused(vtkImageData* squareCapture)
+{
+  const Frame unit;
+  vtkNew<EventCounter> events;
+  vtkNew<vtkDeepGIReferenceIrradiance> bad;
+  bad->AddObserver(vtkCommand::ErrorEvent, events);
+  bad->AddObserver(vtkCommand::WarningEvent, events);
+  Check(!bad->Compute(squareCapture) && events->Errors == 1, "no scene: error");
+  bad->SetScene(SquareScene(unit, true));
+  Check(bad->Compute(squareCapture) && events->Warnings == 1 && MaxIrradiance(bad) == 0.0,
+    "no lights: a warning and E = 0");
+  bad->AddLight(SquareLight(unit));
+  bad->SetMaximumDistance(std::numeric_limits<double>::quiet_NaN());
+  Check(!bad->Compute(squareCapture) && events->Errors == 2, "NaN MaximumDistance: error");
+  bad->SetMaximumDistance(-1);
+  Check(!bad->Compute(squareCapture) && events->Errors == 3, "negative MaximumDistance: error");
+  bad->SetMaximumDistance(std::numeric_limits<double>::infinity());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double nanPoint[3] = { nan, 0, 0 };
+  Check(
+    !bad->AddLight(SceneLight(unit, nanPoint, Origin, false, 1, White3)) && events->Warnings == 2,
+    "light with a NaN position: skipped with a warning");
+  Check(!bad->AddLight(SceneLight(unit, Origin, Origin, false, 1, White3)) && events->Warnings == 3,
+    "light without a direction: skipped with a warning");
+  bad->GetScene()->GetCellData()->RemoveArray("Colors");
+  Check(bad->Compute(squareCapture) && events->Warnings == 4, "no Colors: a warning");
+  bad->SetDiffuseCoefficient(7);
+  Check(bad->GetDiffuseCoefficient() == 1.0, "DiffuseCoefficient clamped");
+  vtkNew<vtkImageData> noAlbedo;
+  noAlbedo->DeepCopy(squareCapture);
+  noAlbedo->GetPointData()->RemoveArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Albedo, 0).c_str());
+  Check(bad->Compute(noAlbedo) && events->Warnings == 6 &&
+      !bad->GetOutput()->GetPointData()->GetArray(vtkDeepGICaptureNames::IndirectRadiance),
+    "no Albedo_0: warnings, no IndirectRadiance");
+  Check(!bad->Compute(nullptr) && events->Errors == 4, "null capture: error");
+}
 }
 
 int TestDeepGIReferenceIrradiance(int, char*[])
 {
-  const double white[3] = { 1, 1, 1 };
-  const double albedoX[3] = { 0.5, 0.6, 0.7 };
   const Frame unit;
+  const SquareCase square(unit);
+  auto reference = MakeReference(SquareScene(unit, true), SquareLight(unit), 1024);
+  CheckSquareMatchesClosedForm(reference, square);
+  CheckBackFacesFollowTwoSidedLighting(square);
+  CheckPointNormalsShade(square);
+  CheckMaximumDistanceLimitsToADisc(reference, square);
+  CheckDiffuseFieldScalesReflectance(square);
 
-  // 1. Analytic: parallel square lit from below.
-  std::vector<std::array<double, 3>> squarePositions;
-  auto squareCapture = MakeCapture(unit, 16, 16, 0.3, -0.2, 3.0, albedoX, squarePositions);
-  double squareL[3];
-  for (int c = 0; c < 3; ++c)
-  {
-    squareL[c] = SquareColor[c] / 255.0 * LightIntensity * LightColor[c];
-  }
-  const double below[3] = { 0, 0, -1 }, origin[3] = { 0, 0, 0 };
-  auto squareExact = [&](vtkIdType p, int c)
-  {
-    return vtkMath::Pi() * squareL[c] *
-      SquareViewFactor(squarePositions[p][0], squarePositions[p][1], SquareHalf, SquareHeight);
-  };
-  vtkNew<vtkDeepGIReferenceIrradiance> reference;
-  reference->SetScene(SquareScene(unit, true));
-  reference->AddLight(SceneLight(unit, below, origin, false, LightIntensity, LightColor));
-  reference->SetSamplesPerPixel(1024);
-  Check(reference->Compute(squareCapture), "square: Compute");
-  CompareExact(reference, squareExact, "square facing down (closed form)");
-  // IndirectRadiance = rho_X E / pi.
-  {
-    vtkFloatArray* e = Array(reference, "IndirectIrradiance");
-    vtkFloatArray* l = Array(reference, vtkDeepGICaptureNames::IndirectRadiance);
-    double maxError = l ? 0 : 1;
-    for (vtkIdType p = 0; l && p < e->GetNumberOfTuples(); ++p)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        maxError = std::max(maxError,
-          std::fabs(l->GetComponent(p, c) - albedoX[c] * e->GetComponent(p, c) / vtkMath::Pi()));
-      }
-    }
-    Check(maxError < 1e-6,
-      "IndirectRadiance = rho_X E / pi (max error " + std::to_string(maxError) + ")");
-  }
-  // Seen from behind: two-sided lighting flips the normal (same E), one-sided
-  // lighting makes it black.
-  {
-    vtkNew<vtkDeepGIReferenceIrradiance> back;
-    back->SetScene(SquareScene(unit, false));
-    back->AddLight(SceneLight(unit, below, origin, false, LightIntensity, LightColor));
-    back->SetSamplesPerPixel(1024);
-    Check(back->Compute(squareCapture), "square from behind: Compute");
-    CompareExact(back, squareExact, "square facing up, two-sided lighting (closed form)");
-    back->TwoSidedLightingOff();
-    back->Compute(squareCapture);
-    Check(MaxIrradiance(back) == 0.0, "square facing up, one-sided lighting: E = 0");
-  }
-  // Point normals are the shading normals: pointing up (away from the light
-  // below) they leave the front face unlit.
-  {
-    auto scene = SquareScene(unit, true);
-    vtkNew<vtkFloatArray> normals;
-    normals->SetNumberOfComponents(3);
-    for (int k = 0; k < 4; ++k)
-    {
-      normals->InsertNextTuple3(0, 0, 1);
-    }
-    scene->GetPointData()->SetNormals(normals);
-    vtkNew<vtkDeepGIReferenceIrradiance> shaded;
-    shaded->SetScene(scene);
-    shaded->AddLight(SceneLight(unit, below, origin, false, LightIntensity, LightColor));
-    shaded->SetSamplesPerPixel(64);
-    shaded->Compute(squareCapture);
-    Check(MaxIrradiance(shaded) == 0.0, "point normals facing away from the light: E = 0");
-    for (int k = 0; k < 4; ++k)
-    {
-      normals->SetTuple3(k, 0, 0, -1);
-    }
-    normals->Modified();
-    shaded->SetSamplesPerPixel(1024);
-    shaded->Compute(squareCapture);
-    CompareExact(shaded, squareExact, "point normals facing the light (closed form)");
-  }
-  // MaximumDistance: a coaxial disc of radius R = sqrt(r^2 - h^2).
-  {
-    reference->SetMaximumDistance(0.9 * SquareHeight);
-    reference->Compute(squareCapture);
-    Check(MaxIrradiance(reference) == 0.0, "MaximumDistance < h: E = 0");
-    const double r = 1.6 * SquareHeight;
-    const double r2 = r * r - SquareHeight * SquareHeight;
-    reference->SetMaximumDistance(r);
-    reference->Compute(squareCapture);
-    CompareExact(
-      reference,
-      [&](vtkIdType p, int c)
-      {
-        const double R = std::sqrt(r2);
-        if (std::fabs(squarePositions[p][0]) + R >= SquareHalf ||
-          std::fabs(squarePositions[p][1]) + R >= SquareHalf)
-        {
-          return -1.0; // the disc leaves the square
-        }
-        return vtkMath::Pi() * squareL[c] * r2 / (r2 + SquareHeight * SquareHeight);
-      },
-      "MaximumDistance 1.6 h (coaxial disc)");
-    reference->SetMaximumDistance(std::numeric_limits<double>::infinity());
-  }
-  // A "Diffuse" field array scales rho_Y.
-  {
-    auto scene = SquareScene(unit, true);
-    vtkNew<vtkDoubleArray> diffuse;
-    diffuse->SetName("Diffuse");
-    diffuse->InsertNextValue(0.5);
-    scene->GetFieldData()->AddArray(diffuse);
-    vtkNew<vtkDeepGIReferenceIrradiance> half;
-    half->SetScene(scene);
-    half->AddLight(SceneLight(unit, below, origin, false, LightIntensity, LightColor));
-    half->SetSamplesPerPixel(1024);
-    half->Compute(squareCapture);
-    CompareExact(
-      half, [&](vtkIdType p, int c) { return 0.5 * squareExact(p, c); },
-      "field data Diffuse 0.5 (closed form)");
-  }
+  const WallCase wall;
+  CheckRedWallBleedsRed(wall);
+  CheckRoofShadowsTheWall(wall);
+  CheckSeedsAgreeWithinNoise(wall);
+  CheckScaleInvariance(wall);
 
-  // 2. White floor beside a red wall, sun from above +x.
-  const double sunFrom[3] = { 1, 0, 1 };
-  std::vector<std::array<double, 3>> wallPositions;
-  auto wallCapture = MakeCapture(unit, 24, 8, 3.4, 0.0, 3.0, white, wallPositions);
-  vtkNew<vtkDeepGIReferenceIrradiance> wall;
-  wall->SetScene(WallScene(unit, false));
-  wall->AddLight(SceneLight(unit, sunFrom, origin, false, 1.0, white));
-  wall->SetSamplesPerPixel(1024);
-  wall->SetSeed(1);
-  Check(wall->Compute(wallCapture), "wall: Compute");
-  vtkNew<vtkImageData> wallResult;
-  wallResult->DeepCopy(wall->GetOutput());
-  {
-    vtkFloatArray* e = Array(wall, "IndirectIrradiance");
-    vtkFloatArray* se = Array(wall, "IndirectIrradianceStandardError");
-    int notRed = 0;
-    double nearSum = 0, farSum = 0, nearVar = 0, farVar = 0;
-    int nearN = 0, farN = 0;
-    for (vtkIdType p = 0; p < e->GetNumberOfTuples(); ++p)
-    {
-      const double r = e->GetComponent(p, 0);
-      notRed += !(r > e->GetComponent(p, 1) && r > e->GetComponent(p, 2));
-      const double d = wallPositions[p][0];
-      const double s = se->GetComponent(p, 0);
-      if (d > 0 && d < 0.8)
-      {
-        nearSum += r;
-        nearVar += s * s;
-        ++nearN;
-      }
-      else if (d > 2.4)
-      {
-        farSum += r;
-        farVar += s * s;
-        ++farN;
-      }
-    }
-    const double nearMean = nearSum / nearN, farMean = farSum / farN;
-    const double sigma = std::sqrt(nearVar / (nearN * nearN) + farVar / (farN * farN));
-    std::cout << "red wall: mean E_r at d < 0.8: " << nearMean << ", at d > 2.4: " << farMean
-              << " (difference standard error " << sigma << ")\n";
-    Check(
-      notRed == 0, "red wall: E_r > E_g, E_b on every pixel (" + std::to_string(notRed) + " not)");
-    Check(nearMean - farMean > 10 * sigma, "red wall: more irradiance near the wall");
-  }
-
-  // 3. Shadows: a roof shades the wall from the sun.
-  {
-    vtkNew<vtkDeepGIReferenceIrradiance> roof;
-    roof->SetScene(WallScene(unit, true));
-    roof->AddLight(SceneLight(unit, sunFrom, origin, false, 1.0, white));
-    roof->SetSamplesPerPixel(256);
-    Check(roof->Compute(wallCapture), "roof, shadows off: Compute");
-    const double lit = MaxIrradiance(roof);
-    const double litMean = roof->GetMeanStandardError();
-    roof->ShadowsOn();
-    Check(roof->Compute(wallCapture), "roof, shadows on: Compute");
-    const double shadowed = MaxIrradiance(roof);
-    std::cout << "roof: max E shadows off " << lit << " (mean SE " << litMean << "), on "
-              << shadowed << "\n";
-    Check(lit > 0.1, "roof, shadows off: the wall lights the floor");
-    Check(shadowed == 0.0, "roof, shadows on: wall and roof underside dark, E = 0");
-    // Without the roof, shadow rays must not darken anything.
-    wall->ShadowsOn();
-    wall->Compute(wallCapture);
-    vtkFloatArray* a = Array(wall, "IndirectIrradiance");
-    auto b =
-      vtkFloatArray::SafeDownCast(wallResult->GetPointData()->GetArray("IndirectIrradiance"));
-    double maxDiff = 0;
-    for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
-    {
-      maxDiff = std::max(maxDiff, static_cast<double>(std::fabs(a->GetValue(i) - b->GetValue(i))));
-    }
-    Check(maxDiff == 0.0,
-      "no roof: shadows on and off identical (max diff " + std::to_string(maxDiff) + ")");
-    wall->ShadowsOff();
-  }
-
-  // 4. Two seeds agree within noise.
-  auto compareResults = [](vtkImageData* a, vtkImageData* b, double k, const std::string& what)
-  {
-    auto ea = vtkFloatArray::SafeDownCast(a->GetPointData()->GetArray("IndirectIrradiance"));
-    auto sa =
-      vtkFloatArray::SafeDownCast(a->GetPointData()->GetArray("IndirectIrradianceStandardError"));
-    auto eb = vtkFloatArray::SafeDownCast(b->GetPointData()->GetArray("IndirectIrradiance"));
-    auto sb =
-      vtkFloatArray::SafeDownCast(b->GetPointData()->GetArray("IndirectIrradianceStandardError"));
-    int bad = 0, identical = 0, n = 0;
-    double maxZ = 0;
-    for (vtkIdType i = 0; i < ea->GetNumberOfValues(); ++i)
-    {
-      const double sigma = std::hypot(sa->GetValue(i), sb->GetValue(i));
-      const double diff = std::fabs(ea->GetValue(i) - eb->GetValue(i));
-      bad += diff > k * sigma + 1e-6 * std::fabs(eb->GetValue(i)) + 1e-7;
-      identical += diff == 0 && sigma > 0;
-      maxZ = std::max(maxZ, diff / std::max(sigma, 1e-12));
-      ++n;
-    }
-    std::cout << what << ": max |diff| / combined SE " << maxZ << "\n";
-    Check(bad == 0, what + ": " + std::to_string(bad) + " values differ beyond the noise");
-    return identical < n / 4;
-  };
-  {
-    vtkNew<vtkDeepGIReferenceIrradiance> other;
-    other->SetScene(wall->GetScene());
-    other->AddLight(SceneLight(unit, sunFrom, origin, false, 1.0, white));
-    other->SetSamplesPerPixel(1024);
-    other->SetSeed(2);
-    other->Compute(wallCapture);
-    Check(compareResults(other->GetOutput(), wallResult, 4.5, "seeds 1 vs 2"),
-      "seeds 1 vs 2: the seed changes the samples");
-  }
-
-  // 5. Scale invariance, with a positional light (no attenuation) too.
-  {
-    const double lamp[3] = { 3, 1, 4 };
-    vtkNew<vtkDeepGIReferenceIrradiance> base;
-    base->SetScene(WallScene(unit, false));
-    base->AddLight(SceneLight(unit, sunFrom, origin, false, 0.5, white));
-    base->AddLight(SceneLight(unit, lamp, origin, true, 0.7, LightColor));
-    base->SetSamplesPerPixel(1024);
-    base->SetSeed(3);
-    base->ShadowsOn();
-    base->Compute(wallCapture);
-    vtkNew<vtkImageData> baseResult;
-    baseResult->DeepCopy(base->GetOutput());
-    for (double scale : { 1e-4, 1e4 })
-    {
-      Frame f;
-      f.Scale = scale;
-      f.Shift[0] = 3e4 * scale;
-      f.Shift[1] = -2e4 * scale;
-      f.Shift[2] = 1e4 * scale;
-      std::vector<std::array<double, 3>> positions;
-      auto capture = MakeCapture(f, 24, 8, 3.4, 0.0, 3.0, white, positions);
-      vtkNew<vtkDeepGIReferenceIrradiance> scaled;
-      scaled->SetScene(WallScene(f, false));
-      scaled->AddLight(SceneLight(f, sunFrom, origin, false, 0.5, white));
-      scaled->AddLight(SceneLight(f, lamp, origin, true, 0.7, LightColor));
-      scaled->SetSamplesPerPixel(1024);
-      scaled->SetSeed(3);
-      scaled->ShadowsOn();
-      Check(scaled->Compute(capture), "scale " + std::to_string(scale) + ": Compute");
-      compareResults(scaled->GetOutput(), baseResult, 4.5, "scale " + std::to_string(scale));
-    }
-    // The square at other scales against the closed form.
-    for (double scale : { 1e-4, 1e4 })
-    {
-      Frame f;
-      f.Scale = scale;
-      f.Shift[0] = -1e4 * scale;
-      f.Shift[2] = 2e4 * scale;
-      std::vector<std::array<double, 3>> positions;
-      auto capture = MakeCapture(f, 16, 16, 0.3, -0.2, 3.0, albedoX, positions);
-      vtkNew<vtkDeepGIReferenceIrradiance> scaled;
-      scaled->SetScene(SquareScene(f, true));
-      scaled->AddLight(SceneLight(f, below, origin, false, LightIntensity, LightColor));
-      scaled->SetSamplesPerPixel(1024);
-      scaled->Compute(capture);
-      CompareExact(
-        scaled,
-        [&](vtkIdType p, int c)
-        {
-          return vtkMath::Pi() * squareL[c] *
-            SquareViewFactor(positions[p][0], positions[p][1], SquareHalf, SquareHeight);
-        },
-        "square at scale " + std::to_string(scale) + " (closed form)");
-    }
-  }
-
-  // 6a. Lights from a renderer.
-  {
-    vtkNew<vtkRenderer> renderer;
-    vtkCamera* camera = renderer->GetActiveCamera();
-    camera->SetPosition(1, 2, 10);
-    camera->SetFocalPoint(1, 2, 0);
-    camera->SetViewUp(0, 1, 0);
-    vtkNew<vtkLight> headlight, cameraLight, off;
-    headlight->SetLightTypeToHeadlight();
-    cameraLight->SetLightTypeToCameraLight(); // at (0, 0, 1) towards (0, 0, 0)
-    cameraLight->SetIntensity(0.5);
-    off->SwitchOff();
-    renderer->AddLight(headlight);
-    renderer->AddLight(cameraLight);
-    renderer->AddLight(off);
-    renderer->AddLight(SceneLight(unit, sunFrom, origin, false, 1.0, white));
-    vtkNew<vtkDeepGIReferenceIrradiance> fromRenderer;
-    fromRenderer->SetLightsFromRenderer(renderer);
-    Check(fromRenderer->GetNumberOfLights() == 3, "renderer: 3 switched-on lights");
-    double p[3], d[3], c[3];
-    bool positional;
-    fromRenderer->GetLight(0, p, d, c, positional);
-    Check(std::fabs(p[0] - 1) + std::fabs(p[1] - 2) + std::fabs(p[2] - 10) < 1e-9 &&
-        std::fabs(d[2] + 1) < 1e-9,
-      "headlight at the camera, looking along its view direction");
-    fromRenderer->GetLight(1, p, d, c, positional);
-    Check(std::fabs(p[0] - 1) + std::fabs(p[1] - 2) + std::fabs(p[2] - 10) < 1e-9 &&
-        std::fabs(d[2] + 1) < 1e-9 && std::fabs(c[0] - 0.5) < 1e-12,
-      "camera light (0,0,1)->(0,0,0) at the camera, intensity 0.5");
-    fromRenderer->GetLight(2, p, d, c, positional);
-    Check(std::fabs(d[0] + std::sqrt(0.5)) < 1e-9 && std::fabs(d[2] + std::sqrt(0.5)) < 1e-9,
-      "scene light direction in world space");
-    vtkNew<vtkRenderer> empty;
-    empty->GetActiveCamera()->SetPosition(0, 0, 5);
-    fromRenderer->SetLightsFromRenderer(empty);
-    Check(fromRenderer->GetNumberOfLights() == 1, "no lights on: VTK's automatic headlight");
-    empty->AutomaticLightCreationOff();
-    fromRenderer->SetLightsFromRenderer(empty);
-    Check(fromRenderer->GetNumberOfLights() == 0, "no automatic light creation: no light");
-    vtkNew<vtkLight> cameraOnly;
-    cameraOnly->SetLightTypeToHeadlight();
-    vtkNew<EventCounter> events;
-    fromRenderer->AddObserver(vtkCommand::WarningEvent, events);
-    Check(!fromRenderer->AddLight(cameraOnly) && events->Warnings == 1,
-      "headlight without a camera: skipped with a warning");
-    fromRenderer->Print(std::cout);
-  }
-
-  // 6b. Bad input.
-  {
-    vtkNew<EventCounter> events;
-    vtkNew<vtkDeepGIReferenceIrradiance> bad;
-    bad->AddObserver(vtkCommand::ErrorEvent, events);
-    bad->AddObserver(vtkCommand::WarningEvent, events);
-    Check(!bad->Compute(squareCapture) && events->Errors == 1, "no scene: error");
-    bad->SetScene(SquareScene(unit, true));
-    Check(bad->Compute(squareCapture) && events->Warnings == 1 && MaxIrradiance(bad) == 0.0,
-      "no lights: a warning and E = 0");
-    bad->AddLight(SceneLight(unit, below, origin, false, LightIntensity, LightColor));
-    bad->SetMaximumDistance(std::numeric_limits<double>::quiet_NaN());
-    Check(!bad->Compute(squareCapture) && events->Errors == 2, "NaN MaximumDistance: error");
-    bad->SetMaximumDistance(-1);
-    Check(!bad->Compute(squareCapture) && events->Errors == 3, "negative MaximumDistance: error");
-    bad->SetMaximumDistance(std::numeric_limits<double>::infinity());
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    const double nanPoint[3] = { nan, 0, 0 };
-    Check(
-      !bad->AddLight(SceneLight(unit, nanPoint, origin, false, 1, white)) && events->Warnings == 2,
-      "light with a NaN position: skipped with a warning");
-    Check(
-      !bad->AddLight(SceneLight(unit, origin, origin, false, 1, white)) && events->Warnings == 3,
-      "light without a direction: skipped with a warning");
-    bad->GetScene()->GetCellData()->RemoveArray("Colors");
-    Check(bad->Compute(squareCapture) && events->Warnings == 4, "no Colors: a warning");
-    bad->SetDiffuseCoefficient(7);
-    Check(bad->GetDiffuseCoefficient() == 1.0, "DiffuseCoefficient clamped");
-    vtkNew<vtkImageData> noAlbedo;
-    noAlbedo->DeepCopy(squareCapture);
-    noAlbedo->GetPointData()->RemoveArray(
-      vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Albedo, 0).c_str());
-    Check(bad->Compute(noAlbedo) && events->Warnings == 6 &&
-        !bad->GetOutput()->GetPointData()->GetArray(vtkDeepGICaptureNames::IndirectRadiance),
-      "no Albedo_0: warnings, no IndirectRadiance");
-    Check(!bad->Compute(nullptr) && events->Errors == 4, "null capture: error");
-  }
-
-  if (Failures())
-  {
-    std::cerr << Failures() << " failures\n";
-    return EXIT_FAILURE;
-  }
-  return EXIT_SUCCESS;
+  CheckLightsFromRenderer();
+  CheckBadInputIsRefused(square.Capture);
+  return ExitStatus();
 }

@@ -17,6 +17,8 @@
 //     1e4 * size away from the origin): same AV within noise;
 //  6. bad input: errors, no crash.
 
+#include "DeepGITestChecks.h"
+
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
@@ -47,17 +49,8 @@
 
 namespace
 {
-int Failures = 0;
-
-#define CHECK(condition, message)                                                                  \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(condition))                                                                              \
-    {                                                                                              \
-      std::cerr << "FAILED (line " << __LINE__ << "): " << message << "\n";                        \
-      ++Failures;                                                                                  \
-    }                                                                                              \
-  } while (false)
+using DeepGITest::Check;
+using DeepGITest::Format;
 
 class ErrorCounter : public vtkCommand
 {
@@ -298,10 +291,11 @@ double CompareExact(vtkDeepGIReferenceObscurance* reference,
             << reference->GetMeanStandardError() << ", max SE "
             << reference->GetMaximumStandardError() << ", " << reference->GetComputeTime()
             << " s\n";
-  CHECK(n > 0, what << ": no valid pixel");
-  CHECK(bad == 0, what << ": " << bad << " pixels beyond 4.5 standard errors");
-  CHECK(std::fabs(meanDiff) < 4.0 * meanSE + 1e-4,
-    what << ": mean difference " << meanDiff << " beyond 4 standard errors " << meanSE);
+  Check(n > 0, Format("%s: %d valid pixels", what, n));
+  Check(bad == 0, Format("%s: %d pixels beyond 4.5 standard errors + 1e-4", what, bad));
+  Check(std::fabs(meanDiff) < 4.0 * meanSE + 1e-4,
+    Format("%s: mean difference %g within 4 standard errors of the mean (%g) + 1e-4", what,
+      meanDiff, meanSE));
   return maxZ;
 }
 
@@ -319,65 +313,58 @@ bool SameArrays(vtkDeepGIReferenceObscurance* a, vtkImageData* b)
   }
   return true;
 }
+// A reference on `s`'s scene with the test's radius and sample count.
+vtkSmartPointer<vtkDeepGIReferenceObscurance> MakeReference(
+  vtkPolyData* scene, double radius, int seed = -1)
+{
+  auto reference = vtkSmartPointer<vtkDeepGIReferenceObscurance>::New();
+  reference->SetScene(scene);
+  reference->SetRadius(radius);
+  reference->SetSamplesPerPixel(1024);
+  if (seed >= 0)
+  {
+    reference->SetSeed(seed);
+  }
+  return reference;
 }
 
-int TestDeepGIReferenceObscurance(int, char*[])
+// 1. An unoccluded plane: AV = 1 and standard error 0 exactly.
+void CheckUnoccludedPlaneIsFullyVisible(double r)
 {
-  const double r = 1.0;
-
-  // 1. Unoccluded plane.
-  {
-    Setup s;
-    s.WallX = -10;
-    vtkNew<vtkDeepGIReferenceObscurance> reference;
-    reference->SetScene(MakeScene(s));
-    reference->SetRadius(r);
-    reference->SetSamplesPerPixel(256);
-    auto capture = MakeCapture(s, 16, 16, 0, 0, 3);
-    CHECK(reference->Compute(capture), "plane: Compute failed");
-    vtkFloatArray* av = Array(reference, vtkDeepGICaptureNames::AmbientVisibility);
-    int notOne = 0;
-    for (vtkIdType p = 0; p < av->GetNumberOfTuples(); ++p)
-    {
-      notOne += av->GetValue(p) != 1.0f;
-    }
-    CHECK(notOne == 0, "plane: " << notOne << " pixels with AV != 1");
-    CHECK(reference->GetMaximumStandardError() == 0.0, "plane: nonzero standard error");
-    CHECK(reference->GetNumberOfValidPixels() == 256, "plane: valid pixels");
-    std::cout << "plane: AV = 1 on " << reference->GetNumberOfValidPixels() << " pixels, "
-              << reference->GetComputeTime() << " s\n";
-  }
-
-  // 2a. Floor beside a tall wall: d from 0 to about 1.3 r.
-  Setup wall;
-  wall.WallXOn = true;
-  std::vector<std::array<double, 3>> wallPositions;
-  auto wallCapture = MakeCapture(wall, 24, 24, 0.6, 0.0, 3.6, &wallPositions);
+  Setup s;
+  s.WallX = -10;
   vtkNew<vtkDeepGIReferenceObscurance> reference;
-  reference->SetScene(MakeScene(wall));
+  reference->SetScene(MakeScene(s));
   reference->SetRadius(r);
-  reference->SetSamplesPerPixel(1024);
-  reference->SetSeed(1);
-  CHECK(reference->Compute(wallCapture), "wall: Compute failed");
-  CompareExact(
-    reference,
-    [&](vtkIdType p) { return 1.0 - WallObscurance(wallPositions[p][0] - wall.WallX, r); },
-    "wall (closed form)");
-  vtkNew<vtkImageData> wallResult;
-  wallResult->DeepCopy(reference->GetOutput());
-  const double wallMeanSE = reference->GetMeanStandardError();
+  reference->SetSamplesPerPixel(256);
+  auto capture = MakeCapture(s, 16, 16, 0, 0, 3);
+  Check(reference->Compute(capture), "plane: Compute succeeds");
+  vtkFloatArray* av = Array(reference, vtkDeepGICaptureNames::AmbientVisibility);
+  int notOne = 0;
+  for (vtkIdType p = 0; p < av->GetNumberOfTuples(); ++p)
+  {
+    notOne += av->GetValue(p) != 1.0f;
+  }
+  Check(notOne == 0, Format("plane: %d pixels with AV != 1", notOne));
+  Check(reference->GetMaximumStandardError() == 0.0, "plane: standard error 0");
+  Check(reference->GetNumberOfValidPixels() == 256,
+    Format("plane: %lld valid pixels (256)",
+      static_cast<long long>(reference->GetNumberOfValidPixels())));
+  std::cout << "plane: AV = 1 on " << reference->GetNumberOfValidPixels() << " pixels, "
+            << reference->GetComputeTime() << " s\n";
+}
 
-  // 2b. Three-plane corner (floor and two walls).
+// 2b. Three-plane corner (floor and two walls) against the numerical
+// integral.
+void CheckCornerMatchesIntegral(double r)
+{
   Setup corner;
   corner.WallXOn = corner.WallYOn = true;
   corner.WallY = 0.0;
   std::vector<std::array<double, 3>> cornerPositions;
   auto cornerCapture = MakeCapture(corner, 24, 24, 0.6, 0.6, 3.6, &cornerPositions);
-  vtkNew<vtkDeepGIReferenceObscurance> cornerReference;
-  cornerReference->SetScene(MakeScene(corner));
-  cornerReference->SetRadius(r);
-  cornerReference->SetSamplesPerPixel(1024);
-  CHECK(cornerReference->Compute(cornerCapture), "corner: Compute failed");
+  auto cornerReference = MakeReference(MakeScene(corner), r);
+  Check(cornerReference->Compute(cornerCapture), "corner: Compute succeeds");
   // Both walls within r: numerical integral; otherwise only the nearer
   // wall can be hit within r and the closed form applies.
   std::vector<double> cornerExact(cornerPositions.size(), 1.0);
@@ -392,63 +379,69 @@ int TestDeepGIReferenceObscurance(int, char*[])
   }
   CompareExact(
     cornerReference, [&](vtkIdType p) { return cornerExact[p]; }, "corner (numerical integral)");
-  CHECK(cornerReference->GetMeanStandardError() > 0.0, "corner: no noise reported");
+  Check(cornerReference->GetMeanStandardError() > 0.0, "corner: noise reported");
+}
 
-  // 3. Two seeds agree within noise.
+// 3. Two seeds agree within noise.
+void CheckSeedsAgreeWithinNoise(
+  vtkPolyData* scene, double r, vtkImageData* wallCapture, vtkImageData* wallResult)
+{
+  auto other = MakeReference(scene, r, 2);
+  Check(other->Compute(wallCapture), "seed 2: Compute succeeds");
+  vtkFloatArray* a = Array(other, vtkDeepGICaptureNames::AmbientVisibility);
+  vtkFloatArray* ae = Array(other, "StandardError");
+  auto b = vtkFloatArray::SafeDownCast(
+    wallResult->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility));
+  auto be = vtkFloatArray::SafeDownCast(wallResult->GetPointData()->GetArray("StandardError"));
+  int bad = 0, n = 0, identical = 0;
+  double sumDiff = 0, sumVar = 0, maxZ = 0;
+  for (vtkIdType p = 0; p < a->GetNumberOfTuples(); ++p)
   {
-    vtkNew<vtkDeepGIReferenceObscurance> other;
-    other->SetScene(reference->GetScene());
-    other->SetRadius(r);
-    other->SetSamplesPerPixel(1024);
-    other->SetSeed(2);
-    CHECK(other->Compute(wallCapture), "seed 2: Compute failed");
-    vtkFloatArray* a = Array(other, vtkDeepGICaptureNames::AmbientVisibility);
-    vtkFloatArray* ae = Array(other, "StandardError");
-    auto b = vtkFloatArray::SafeDownCast(
-      wallResult->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility));
-    auto be = vtkFloatArray::SafeDownCast(wallResult->GetPointData()->GetArray("StandardError"));
-    int bad = 0, n = 0, identical = 0;
-    double sumDiff = 0, sumVar = 0, maxZ = 0;
-    for (vtkIdType p = 0; p < a->GetNumberOfTuples(); ++p)
+    if (a->GetValue(p) < 0)
     {
-      if (a->GetValue(p) < 0)
-      {
-        continue;
-      }
-      const double diff = a->GetValue(p) - b->GetValue(p);
-      const double sigma =
-        std::sqrt(ae->GetValue(p) * ae->GetValue(p) + be->GetValue(p) * be->GetValue(p));
-      bad += std::fabs(diff) > 4.5 * sigma + 1e-6;
-      identical += diff == 0.0 && sigma > 0;
-      maxZ = std::max(maxZ, std::fabs(diff) / std::max(sigma, 1e-9));
-      sumDiff += diff;
-      sumVar += sigma * sigma;
-      ++n;
+      continue;
     }
-    std::cout << "seeds 1 vs 2: mean difference " << sumDiff / n << " (standard error "
-              << std::sqrt(sumVar) / n << "), max |diff|/sigma " << maxZ << "\n";
-    CHECK(bad == 0, "seeds: " << bad << " pixels differ by more than 4.5 sigma");
-    CHECK(std::fabs(sumDiff / n) < 4 * std::sqrt(sumVar) / n, "seeds: mean difference");
-    CHECK(identical < n / 4, "seeds: the seed seems not to change the samples");
+    const double diff = a->GetValue(p) - b->GetValue(p);
+    const double sigma =
+      std::sqrt(ae->GetValue(p) * ae->GetValue(p) + be->GetValue(p) * be->GetValue(p));
+    bad += std::fabs(diff) > 4.5 * sigma + 1e-6;
+    identical += diff == 0.0 && sigma > 0;
+    maxZ = std::max(maxZ, std::fabs(diff) / std::max(sigma, 1e-9));
+    sumDiff += diff;
+    sumVar += sigma * sigma;
+    ++n;
   }
+  std::cout << "seeds 1 vs 2: mean difference " << sumDiff / n << " (standard error "
+            << std::sqrt(sumVar) / n << "), max |diff|/sigma " << maxZ << "\n";
+  Check(bad == 0, Format("seeds: %d pixels differ by more than 4.5 sigma", bad));
+  Check(std::fabs(sumDiff / n) < 4 * std::sqrt(sumVar) / n,
+    Format("seeds: mean difference %g within 4 standard errors", sumDiff / n));
+  Check(identical < n / 4,
+    Format("seeds: the seed changes the samples (%d of %d pixels identical)", identical, n));
+}
 
-  // 4. Determinism: same seed twice, 1 and 2 threads.
-  {
-    vtkSMPTools::Initialize(1);
-    CHECK(reference->Compute(wallCapture), "1 thread: Compute failed");
-    CHECK(SameArrays(reference, wallResult), "1 thread differs from the default");
-    vtkSMPTools::Initialize(2);
-    CHECK(reference->Compute(wallCapture), "2 threads: Compute failed");
-    CHECK(SameArrays(reference, wallResult), "2 threads differ from the default");
-    CHECK(reference->Compute(wallCapture), "again: Compute failed");
-    CHECK(SameArrays(reference, wallResult), "same seed twice differs");
-    std::cout << "determinism: identical with 1 and 2 threads and twice; 2 threads "
-              << reference->GetComputeTime() << " s for " << reference->GetNumberOfRays()
-              << " rays\n";
-    vtkSMPTools::Initialize();
-  }
+// 4. Determinism: same seed twice, 1 and 2 threads.
+void CheckSameSeedIsDeterministic(
+  vtkDeepGIReferenceObscurance* reference, vtkImageData* wallCapture, vtkImageData* wallResult)
+{
+  vtkSMPTools::Initialize(1);
+  Check(reference->Compute(wallCapture), "1 thread: Compute succeeds");
+  Check(SameArrays(reference, wallResult), "1 thread: identical to the default");
+  vtkSMPTools::Initialize(2);
+  Check(reference->Compute(wallCapture), "2 threads: Compute succeeds");
+  Check(SameArrays(reference, wallResult), "2 threads: identical to the default");
+  Check(reference->Compute(wallCapture), "again: Compute succeeds");
+  Check(SameArrays(reference, wallResult), "same seed twice: identical");
+  std::cout << "determinism: 2 threads " << reference->GetComputeTime() << " s for "
+            << reference->GetNumberOfRays() << " rays\n";
+  vtkSMPTools::Initialize();
+}
 
-  // 5. Scale invariance (and a position far from the origin).
+// 5. Scale invariance (and a position far from the origin).
+void CheckScaleInvariance(const Setup& wall,
+  const std::vector<std::array<double, 3>>& wallPositions, double r, vtkImageData* wallResult,
+  double wallMaximumStandardError)
+{
   for (double scale : { 1e-4, 1e4 })
   {
     Setup scaled = wall;
@@ -457,12 +450,8 @@ int TestDeepGIReferenceObscurance(int, char*[])
     scaled.Shift[1] = -2e4 * scale;
     scaled.Shift[2] = 1e4 * scale;
     auto capture = MakeCapture(scaled, 24, 24, 0.6, 0.0, 3.6);
-    vtkNew<vtkDeepGIReferenceObscurance> s;
-    s->SetScene(MakeScene(scaled));
-    s->SetRadius(r * scale);
-    s->SetSamplesPerPixel(1024);
-    s->SetSeed(1);
-    CHECK(s->Compute(capture), "scale " << scale << ": Compute failed");
+    auto s = MakeReference(MakeScene(scaled), r * scale, 1);
+    Check(s->Compute(capture), Format("scale %g: Compute succeeds", scale));
     std::string what = "wall at scale " + std::to_string(scale) + " (closed form)";
     CompareExact(
       s, [&](vtkIdType p) { return 1.0 - WallObscurance(wallPositions[p][0] - wall.WallX, r); },
@@ -475,54 +464,75 @@ int TestDeepGIReferenceObscurance(int, char*[])
     {
       maxDiff = std::max(maxDiff, std::fabs(static_cast<double>(a->GetValue(p)) - b->GetValue(p)));
     }
-    std::cout << "scale " << scale << ": max |AV - AV(scale 1)| = " << maxDiff << "\n";
-    CHECK(maxDiff < 4.5 * std::sqrt(2.0) * reference->GetMaximumStandardError(),
-      "scale " << scale << " differs from scale 1 by " << maxDiff);
+    Check(maxDiff < 4.5 * std::sqrt(2.0) * wallMaximumStandardError,
+      Format("scale %g: max |AV - AV(scale 1)| = %g within 4.5 sqrt(2) max SE", scale, maxDiff));
   }
-  (void)wallMeanSE;
+}
 
-  // 6. Bad input.
-  {
-    vtkNew<ErrorCounter> errors;
-    vtkNew<vtkDeepGIReferenceObscurance> bad;
-    bad->AddObserver(vtkCommand::ErrorEvent, errors);
-    CHECK(!bad->Compute(wallCapture) && errors->Errors == 1, "null scene accepted");
-    bad->SetScene(reference->GetScene());
-    CHECK(!bad->Compute(nullptr) && errors->Errors == 2, "null capture accepted");
-    vtkNew<vtkImageData> empty;
-    CHECK(!bad->Compute(empty) && errors->Errors == 3, "empty capture accepted");
-    vtkNew<vtkImageData> noMatrices;
-    noMatrices->DeepCopy(wallCapture);
-    noMatrices->GetFieldData()->RemoveArray(vtkDeepGICaptureNames::ViewMatrix);
-    CHECK(!bad->Compute(noMatrices) && errors->Errors == 4, "capture without matrices accepted");
-    bad->SetRadius(std::numeric_limits<double>::quiet_NaN());
-    CHECK(!bad->Compute(wallCapture) && errors->Errors == 5, "NaN radius accepted");
-    bad->SetRadius(-1.0);
-    CHECK(!bad->Compute(wallCapture) && errors->Errors == 6, "negative radius accepted");
-    bad->SetRadius(std::numeric_limits<double>::infinity());
-    CHECK(!bad->Compute(wallCapture) && errors->Errors == 7, "infinite radius accepted");
-    bad->SetRadius(1.0);
-    bad->SetLayer(1);
-    CHECK(!bad->Compute(wallCapture) && errors->Errors == 8, "missing layer accepted");
-    bad->SetLayer(0);
-    vtkNew<vtkPolyData> noPolygons;
-    bad->SetScene(noPolygons);
-    CHECK(!bad->Compute(wallCapture) && errors->Errors == 9, "scene without polygons accepted");
-    bad->SetScene(reference->GetScene());
-    bad->SetSamplesPerPixel(0);
-    CHECK(bad->GetSamplesPerPixel() == 1, "SamplesPerPixel not clamped");
-    bad->SetBias(-1);
-    bad->SetEpsilon(-1);
-    CHECK(bad->GetBias() == 0 && bad->GetEpsilon() == 0, "Bias/Epsilon not clamped");
-    CHECK(bad->Compute(wallCapture) && errors->Errors == 9, "one sample per pixel failed");
-    CHECK(bad->GetMaximumStandardError() == 0.0, "one sample: standard error must be 0");
-    bad->Print(std::cout);
-  }
+// 6. Bad input: errors, no crash.
+void CheckBadInputIsRefused(vtkPolyData* scene, vtkImageData* wallCapture)
+{
+  vtkNew<ErrorCounter> errors;
+  vtkNew<vtkDeepGIReferenceObscurance> bad;
+  bad->AddObserver(vtkCommand::ErrorEvent, errors);
+  Check(!bad->Compute(wallCapture) && errors->Errors == 1, "null scene: error");
+  bad->SetScene(scene);
+  Check(!bad->Compute(nullptr) && errors->Errors == 2, "null capture: error");
+  vtkNew<vtkImageData> empty;
+  Check(!bad->Compute(empty) && errors->Errors == 3, "empty capture: error");
+  vtkNew<vtkImageData> noMatrices;
+  noMatrices->DeepCopy(wallCapture);
+  noMatrices->GetFieldData()->RemoveArray(vtkDeepGICaptureNames::ViewMatrix);
+  Check(!bad->Compute(noMatrices) && errors->Errors == 4, "capture without matrices: error");
+  bad->SetRadius(std::numeric_limits<double>::quiet_NaN());
+  Check(!bad->Compute(wallCapture) && errors->Errors == 5, "NaN radius: error");
+  bad->SetRadius(-1.0);
+  Check(!bad->Compute(wallCapture) && errors->Errors == 6, "negative radius: error");
+  bad->SetRadius(std::numeric_limits<double>::infinity());
+  Check(!bad->Compute(wallCapture) && errors->Errors == 7, "infinite radius: error");
+  bad->SetRadius(1.0);
+  bad->SetLayer(1);
+  Check(!bad->Compute(wallCapture) && errors->Errors == 8, "missing layer: error");
+  bad->SetLayer(0);
+  vtkNew<vtkPolyData> noPolygons;
+  bad->SetScene(noPolygons);
+  Check(!bad->Compute(wallCapture) && errors->Errors == 9, "scene without polygons: error");
+  bad->SetScene(scene);
+  bad->SetSamplesPerPixel(0);
+  Check(bad->GetSamplesPerPixel() == 1, "SamplesPerPixel clamped to 1");
+  bad->SetBias(-1);
+  bad->SetEpsilon(-1);
+  Check(bad->GetBias() == 0 && bad->GetEpsilon() == 0, "Bias and Epsilon clamped to 0");
+  Check(bad->Compute(wallCapture) && errors->Errors == 9, "one sample per pixel computes");
+  Check(bad->GetMaximumStandardError() == 0.0, "one sample: standard error 0");
+  bad->Print(std::cout);
+}
+}
 
-  if (Failures)
-  {
-    std::cerr << Failures << " failures\n";
-    return EXIT_FAILURE;
-  }
-  return EXIT_SUCCESS;
+int TestDeepGIReferenceObscurance(int, char*[])
+{
+  const double r = 1.0;
+  CheckUnoccludedPlaneIsFullyVisible(r);
+
+  // 2a. Floor beside a tall wall: d from 0 to about 1.3 r, against the
+  // closed form. Its result is the one the later checks compare with.
+  Setup wall;
+  wall.WallXOn = true;
+  std::vector<std::array<double, 3>> wallPositions;
+  auto wallCapture = MakeCapture(wall, 24, 24, 0.6, 0.0, 3.6, &wallPositions);
+  auto reference = MakeReference(MakeScene(wall), r, 1);
+  Check(reference->Compute(wallCapture), "wall: Compute succeeds");
+  CompareExact(
+    reference,
+    [&](vtkIdType p) { return 1.0 - WallObscurance(wallPositions[p][0] - wall.WallX, r); },
+    "wall (closed form)");
+  vtkNew<vtkImageData> wallResult;
+  wallResult->DeepCopy(reference->GetOutput());
+
+  CheckCornerMatchesIntegral(r);
+  CheckSeedsAgreeWithinNoise(reference->GetScene(), r, wallCapture, wallResult);
+  CheckSameSeedIsDeterministic(reference, wallCapture, wallResult);
+  CheckScaleInvariance(wall, wallPositions, r, wallResult, reference->GetMaximumStandardError());
+  CheckBadInputIsRefused(reference->GetScene(), wallCapture);
+  return DeepGITest::ExitStatus();
 }

@@ -54,6 +54,7 @@
 #include <vector>
 
 using namespace DeepGIReferenceTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -561,10 +562,5 @@ int TestDeepGIEXR(int argc, char* argv[])
     reader->Print(std::cout);
   }
 
-  if (Failures())
-  {
-    std::cerr << Failures() << " failures\n";
-    return EXIT_FAILURE;
-  }
-  return EXIT_SUCCESS;
+  return ExitStatus();
 }

@@ -6,6 +6,9 @@
 // a pixel; it must refuse them with one error each (naming the file),
 // before allocating. Argument: --data DIR (Testing/Data).
 
+#include "DeepGITestChecks.h"
+#include "DeepGITestData.h"
+
 #include "vtkCommand.h"
 #include "vtkDeepGIEXRReader.h"
 #include "vtkExecutive.h"
@@ -32,20 +35,11 @@ public:
 
 int TestDeepGIEXRReaderRobustness(int argc, char* argv[])
 {
-  std::string data;
-  for (int i = 1; i + 1 < argc; ++i)
-  {
-    if (std::string(argv[i]) == "--data")
-    {
-      data = argv[++i];
-    }
-  }
+  const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepGIEXRReaderRobustness");
   if (data.empty())
   {
-    std::cerr << "Usage: TestDeepGIEXRReaderRobustness --data DIR\n";
     return EXIT_FAILURE;
   }
-  int failures = 0;
   for (const char* name : { "claim2gb_1ch.exr", "claim8gb_1ch.exr", "fuzz_line_buffer.exr" })
   {
     const std::string path = data + "/robustness/" + name;
@@ -65,17 +59,13 @@ int TestDeepGIEXRReaderRobustness(int argc, char* argv[])
         text = t;
       }
     }
-    if (fromReader != 1 || reader->GetOutput()->GetNumberOfPoints() != 0)
-    {
-      std::cerr << "FAILED: " << name << ": expected one error naming the file and "
-                << "no pixels; got " << fromReader << " such error(s), "
-                << reader->GetOutput()->GetNumberOfPoints() << " pixels\n";
-      ++failures;
-    }
-    else
+    const vtkIdType pixels = reader->GetOutput()->GetNumberOfPoints();
+    if (DeepGITest::Check(fromReader == 1 && pixels == 0,
+          DeepGITest::Format("%s: one error naming the file (got %zu) and no pixels (got %lld)",
+            name, fromReader, static_cast<long long>(pixels))))
     {
       std::cout << name << ": " << text.substr(text.find('\n') + 1);
     }
   }
-  return failures ? EXIT_FAILURE : EXIT_SUCCESS;
+  return DeepGITest::ExitStatus();
 }

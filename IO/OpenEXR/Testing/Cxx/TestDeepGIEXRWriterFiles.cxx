@@ -8,6 +8,8 @@
 //    its bytes, a new name is not created, and no temporary file is left.
 // 3. A directory that does not exist: an error, nothing created.
 
+#include "DeepGITestChecks.h"
+
 #include "vtkCommand.h"
 #include "vtkDeepGIEXRReader.h"
 #include "vtkDeepGIEXRWriter.h"
@@ -33,13 +35,7 @@
 
 namespace
 {
-int Failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  std::printf("%s: %s\n", ok ? "ok" : "FAILED", what.c_str());
-  Failures += ok ? 0 : 1;
-}
+using DeepGITest::Check;
 
 // A w x h image whose float values do not compress (a hash of the index).
 vtkSmartPointer<vtkImageData> NoiseImage(int w, int h)
@@ -181,17 +177,9 @@ void TestMissingDirectory(const std::string& directory)
 
 int TestDeepGIEXRWriterFiles(int argc, char* argv[])
 {
-  std::string directory = ".";
-  for (int i = 1; i + 1 < argc; ++i)
-  {
-    if (std::string(argv[i]) == "-T")
-    {
-      directory = argv[i + 1];
-    }
-  }
+  const std::string directory = DeepGITest::Argument(argc, argv, "-T", ".");
   TestSymbolicLink(directory);
   TestFullDisk(directory);
   TestMissingDirectory(directory);
-  std::printf("%d check(s) failed\n", Failures);
-  return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return DeepGITest::ExitStatus();
 }
