@@ -1,8 +1,10 @@
 // Shared helpers of the headless-window tests: a scene whose image is known
 // exactly, numeric checks of that image, GL error checks and a counter of
-// VTK errors and warnings.
+// VTK errors and warnings, all reported through DeepGITestChecks.h.
 #ifndef DeepGIHeadlessTestHelpers_h
 #define DeepGIHeadlessTestHelpers_h
+
+#include "DeepGITestChecks.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -113,6 +115,13 @@ public:
     this->Previous->UnRegister(nullptr);
   }
   int Errors() const { return this->Counter->Errors; }
+  // Checks that VTK printed no error and no warning while installed.
+  void CheckNone() const
+  {
+    DeepGITest::Check(this->Errors() == 0 && this->Warnings() == 0,
+      DeepGITest::Format(
+        "VTK reported %d error(s) and %d warning(s)", this->Errors(), this->Warnings()));
+  }
   int Warnings() const { return this->Counter->Warnings; }
   void Reset()
   {
@@ -175,6 +184,13 @@ inline int CountGLErrors(vtkRenderWindow* rw, const char* when)
   return count;
 }
 
+// Checks that the window's context has no pending GL error.
+inline void CheckNoGLErrors(vtkRenderWindow* rw, const char* when)
+{
+  const int errors = CountGLErrors(rw, when);
+  DeepGITest::Check(errors == 0, DeepGITest::Format("%s: no GL error (%d)", when, errors));
+}
+
 inline bool Near(const unsigned char* p, const double c[3], int tol)
 {
   for (int i = 0; i < 3; ++i)
@@ -190,25 +206,27 @@ inline bool Near(const unsigned char* p, const double c[3], int tol)
 
 // Checks the rendered image pixel by pixel: sphere colour well inside the
 // disc, background well outside, and a disc area within 2% of pi r^2 (the
-// tessellated sphere's silhouette is a 96-gon, slightly smaller). Returns
-// the number of failures, printing the first few.
-inline int CheckSphereImage(vtkRenderWindow* rw, const char* label)
+// tessellated sphere's silhouette is a 96-gon, slightly smaller). The first
+// few wrong pixels are printed.
+inline void CheckSphereImage(vtkRenderWindow* rw, const char* label)
 {
+  using DeepGITest::Check;
+  using DeepGITest::Format;
   vtkNew<vtkUnsignedCharArray> pixels;
-  if (rw->GetPixelData(0, 0, Size - 1, Size - 1, 1, pixels) != 1 &&
-    pixels->GetNumberOfValues() == 0)
+  if (!Check(rw->GetPixelData(0, 0, Size - 1, Size - 1, 1, pixels) == 1 ||
+          pixels->GetNumberOfValues() != 0,
+        Format("%s: GetPixelData", label)))
   {
-    std::fprintf(stderr, "%s: GetPixelData failed\n", label);
-    return 1;
+    return;
   }
-  if (pixels->GetNumberOfValues() != 3 * Size * Size)
+  if (!Check(pixels->GetNumberOfValues() == 3 * Size * Size,
+        Format("%s: %lld pixel bytes (%d)", label,
+          static_cast<long long>(pixels->GetNumberOfValues()), 3 * Size * Size)))
   {
-    std::fprintf(stderr, "%s: expected %d pixel bytes, got %lld\n", label, 3 * Size * Size,
-      static_cast<long long>(pixels->GetNumberOfValues()));
-    return 1;
+    return;
   }
   const unsigned char* data = pixels->GetPointer(0);
-  int failures = 0;
+  int wrongPixels = 0;
   int sphereCount = 0;
   const double centre = 0.5 * (Size - 1);
   for (int y = 0; y < Size; ++y)
@@ -235,34 +253,31 @@ inline int CheckSphereImage(vtkRenderWindow* rw, const char* label)
       }
       if (problem)
       {
-        if (failures < 5)
+        if (wrongPixels < 5)
         {
           std::fprintf(
             stderr, "%s: pixel (%d,%d) = (%d,%d,%d): %s\n", label, x, y, p[0], p[1], p[2], problem);
         }
-        ++failures;
+        ++wrongPixels;
       }
     }
   }
+  Check(wrongPixels == 0,
+    Format("%s: sphere colour inside the disc, background outside, nothing else "
+           "(%d pixels wrong)",
+      label, wrongPixels));
   const double expectedArea = M_PI * DiscRadiusPx * DiscRadiusPx;
-  if (std::fabs(sphereCount - expectedArea) > 0.02 * expectedArea)
-  {
-    std::fprintf(stderr, "%s: sphere covers %d pixels, expected %.0f +- 2%%\n", label, sphereCount,
-      expectedArea);
-    ++failures;
-  }
-  std::printf("%s: %d sphere pixels (pi r^2 = %.0f), %d failures\n", label, sphereCount,
-    expectedArea, failures);
-  return failures;
+  Check(std::fabs(sphereCount - expectedArea) <= 0.02 * expectedArea,
+    Format(
+      "%s: the sphere covers %d pixels, pi r^2 = %.0f +- 2%%", label, sphereCount, expectedArea));
 }
 
-// Renders and checks the image and the GL error state; returns failures.
-inline int RenderAndCheck(vtkRenderWindow* rw, const char* label)
+// Renders and checks the image and the GL error state.
+inline void RenderAndCheck(vtkRenderWindow* rw, const char* label)
 {
   rw->Render();
-  int failures = CountGLErrors(rw, label);
-  failures += CheckSphereImage(rw, label);
-  return failures;
+  CheckNoGLErrors(rw, label);
+  CheckSphereImage(rw, label);
 }
 
 // Fails when DISPLAY is set: these tests must prove that EGL needs no X.

@@ -10,13 +10,13 @@
 int TestDeepGIEGLRenderWindowPlatforms(int, char*[])
 {
   using namespace deepgi_headless_test;
+  using namespace DeepGITest;
   using W = vtkDeepGIEGLRenderWindow;
   if (!RequireNoDisplay("TestDeepGIEGLRenderWindowPlatforms"))
   {
     return EXIT_FAILURE;
   }
   ScopedMessageCounter messages;
-  int failures = 0;
   int rendered = 0;
 
   struct Choice
@@ -46,22 +46,12 @@ int TestDeepGIEGLRenderWindowPlatforms(int, char*[])
     rw->SetPlatform(c.Platform);
     rw->SetDeviceIndex(c.Device);
     SetUpWindow(rw);
-    failures += RenderAndCheck(rw, c.Label.c_str());
+    RenderAndCheck(rw, c.Label.c_str());
     std::printf("%s: %s, OpenGL %d.%d\n", c.Label.c_str(), rw->GetPlatformDescription(),
       rw->GetContextMajorVersion(), rw->GetContextMinorVersion());
     ++rendered;
   }
-  if (rendered == 0)
-  {
-    std::fprintf(stderr, "no EGL platform worked\n");
-    ++failures;
-  }
-  if (messages.Errors() || messages.Warnings())
-  {
-    std::fprintf(stderr, "VTK reported %d error(s) and %d warning(s)\n", messages.Errors(),
-      messages.Warnings());
-    ++failures;
-  }
-  std::printf("%d failure(s)\n", failures);
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  Check(rendered > 0, Format("%d EGL platform(s) rendered (at least one)", rendered));
+  messages.CheckNone();
+  return ExitStatus();
 }
