@@ -4,7 +4,10 @@
 // -T DIR (a writable temporary directory).
 // Nothing is rendered: the test runs without a display.
 
+#include "DeepGITestChecks.h"
 #include "DeepGITestData.h"
+#include "DeepGITestHeadsq.h"
+
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
 #include "vtkCamera.h"
@@ -43,17 +46,8 @@
 
 namespace
 {
-int Failures = 0;
-
-#define CHECK(condition, message)                                                                  \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(condition))                                                                              \
-    {                                                                                              \
-      std::cerr << "FAILED (line " << __LINE__ << "): " << message << "\n";                        \
-      ++Failures;                                                                                  \
-    }                                                                                              \
-  } while (false)
+using DeepGITest::Check;
+using DeepGITest::Text;
 
 // Counts the errors an object reports, instead of printing them (an expected
 // error must not reach the output, where ctest would flag it).
@@ -71,20 +65,16 @@ public:
 };
 
 // Every cell a triangle, every coordinate finite; normals unit length if
-// present; "Colors" RGB per cell if asked.
-bool CheckMesh(vtkPolyData* pd, bool expectNormals, bool expectColors, const std::string& what)
+// present; "Colors" RGB per cell if asked. One check, whose description
+// lists what is wrong.
+void CheckMesh(vtkPolyData* pd, bool expectNormals, bool expectColors, const std::string& what)
 {
-  bool ok = true;
-  auto fail = [&](const std::string& m)
-  {
-    std::cerr << "FAILED: " << what << ": " << m << "\n";
-    ++Failures;
-    ok = false;
-  };
+  std::string problems;
+  auto fail = [&](const std::string& m) { problems += (problems.empty() ? "" : "; ") + m; };
   if (!pd || pd->GetNumberOfPolys() == 0)
   {
-    fail("no triangles");
-    return false;
+    Check(false, what + ": a triangle mesh (no triangles)");
+    return;
   }
   if (pd->GetNumberOfVerts() || pd->GetNumberOfLines() || pd->GetNumberOfStrips())
   {
@@ -133,7 +123,10 @@ bool CheckMesh(vtkPolyData* pd, bool expectNormals, bool expectColors, const std
       fail("no unsigned char RGB cell array \"Colors\" per triangle");
     }
   }
-  return ok;
+  Check(problems.empty(),
+    what + ": a triangle mesh with finite points" + (expectNormals ? ", unit normals" : "") +
+      (expectColors ? ", RGB colours per triangle" : "") +
+      (problems.empty() ? "" : " (" + problems + ")"));
 }
 
 // Number of point ids of `pd`'s cells outside [0, number of points).
@@ -219,34 +212,34 @@ void TestDemoScene()
   scene->AddObserver(vtkCommand::ErrorEvent, errors);
 
   // Triangle budget: at least the target, and not much more.
-  CHECK(scene->GetTargetNumberOfTriangles() == 10000, "default target is 10000");
+  Check(scene->GetTargetNumberOfTriangles() == 10000, "default target is 10000");
   const vtkIdType n10k = scene->GetNumberOfTriangles();
-  CHECK(n10k >= 10000 && n10k < 11000, "10k target gives " << n10k << " triangles");
+  Check(n10k >= 10000 && n10k < 11000, Text("10k target gives ", n10k, " triangles"));
   CheckMesh(scene->GetScenePolyData(), true, true, "10k scene");
-  CHECK(scene->GetScenePolyData()->GetNumberOfPolys() == n10k, "scene polydata has every triangle");
+  Check(scene->GetScenePolyData()->GetNumberOfPolys() == n10k, "scene polydata has every triangle");
 
   double bounds1[6];
   scene->GetBounds(bounds1);
   const double room[6] = { -5, 5, 0, 4, -4, 4 };
   for (int i = 0; i < 6; ++i)
   {
-    CHECK(std::abs(bounds1[i] - room[i]) < 1e-5, "bounds[" << i << "] = " << bounds1[i]);
+    Check(std::abs(bounds1[i] - room[i]) < 1e-5, Text("bounds[", i, "] = ", bounds1[i]));
   }
 
   // One actor per material, two lights, the required material settings.
   vtkNew<vtkRenderer> renderer;
   scene->Populate(renderer);
-  CHECK(renderer->GetActors()->GetNumberOfItems() == vtkDeepGBufferDemoScene::NUMBER_OF_MATERIALS,
+  Check(renderer->GetActors()->GetNumberOfItems() == vtkDeepGBufferDemoScene::NUMBER_OF_MATERIALS,
     "Populate adds one actor per material");
-  CHECK(renderer->GetLights()->GetNumberOfItems() == 2, "Populate adds two lights");
+  Check(renderer->GetLights()->GetNumberOfItems() == 2, "Populate adds two lights");
   vtkActor* first = renderer->GetActors()->GetLastActor();
-  CHECK(first && first->GetProperty()->GetAmbient() == 0.1 &&
+  Check(first && first->GetProperty()->GetAmbient() == 0.1 &&
       first->GetProperty()->GetDiffuse() == 0.9 && first->GetProperty()->GetSpecular() == 0.0,
     "actors have Ambient 0.1, Diffuse 0.9, Specular 0");
 
   scene->SetTargetNumberOfTriangles(1000000);
   const vtkIdType n1m = scene->GetNumberOfTriangles();
-  CHECK(n1m >= 1000000 && n1m < 1050000, "1M target gives " << n1m << " triangles");
+  Check(n1m >= 1000000 && n1m < 1050000, Text("1M target gives ", n1m, " triangles"));
   CheckMesh(scene->GetScenePolyData(), true, true, "1M scene");
 
   // Without normals or ceiling.
@@ -255,9 +248,9 @@ void TestDemoScene()
   CheckMesh(scene->GetScenePolyData(), false, true, "scene without normals");
   const vtkIdType withCeiling = scene->GetNumberOfTriangles();
   scene->CeilingOff();
-  CHECK(scene->GetMaterialPolyData(vtkDeepGBufferDemoScene::CEILING)->GetNumberOfCells() == 0,
+  Check(scene->GetMaterialPolyData(vtkDeepGBufferDemoScene::CEILING)->GetNumberOfCells() == 0,
     "no ceiling triangles with Ceiling off");
-  CHECK(scene->GetNumberOfTriangles() >= 20000, "the target holds without ceiling");
+  Check(scene->GetNumberOfTriangles() >= 20000, "the target holds without ceiling");
   (void)withCeiling;
   scene->CeilingOn();
   scene->ComputeNormalsOn();
@@ -267,13 +260,13 @@ void TestDemoScene()
   for (double s : { 1e-4, 1e4 })
   {
     scene->SetScaleFactor(s);
-    CHECK(scene->GetNumberOfTriangles() == n10k, "scale " << s << " keeps the triangle count");
+    Check(scene->GetNumberOfTriangles() == n10k, Text("scale ", s, " keeps the triangle count"));
     double b[6];
     scene->GetBounds(b);
     for (int i = 0; i < 6; ++i)
     {
-      CHECK(std::abs(b[i] - s * bounds1[i]) <= 1e-6 * s * 10.0,
-        "scale " << s << ": bounds[" << i << "] = " << b[i] << ", expected " << s * bounds1[i]);
+      Check(std::abs(b[i] - s * bounds1[i]) <= 1e-6 * s * 10.0,
+        Text("scale ", s, ": bounds[", i, "] = ", b[i], ", expected ", s * bounds1[i]));
     }
     CheckMesh(scene->GetScenePolyData(), true, true, "scaled scene");
   }
@@ -281,7 +274,7 @@ void TestDemoScene()
   scene->SetScaleFactor(std::nan(""));
   scene->SetScaleFactor(-1.0);
   scene->SetScaleFactor(0.0);
-  CHECK(errors->Count == before + 3 && scene->GetScaleFactor() == 1e4,
+  Check(errors->Count == before + 3 && scene->GetScaleFactor() == 1e4,
     "non-finite and non-positive scale factors are rejected");
   scene->SetScaleFactor(1.0);
 
@@ -299,53 +292,50 @@ void TestDemoScene()
     b->GetPosition(pb);
     a->GetFocalPoint(fa);
     b->GetFocalPoint(fb);
-    CHECK(pa[0] == pb[0] && pa[1] == pb[1] && pa[2] == pb[2] && fa[0] == fb[0] && fa[1] == fb[1] &&
+    Check(pa[0] == pb[0] && pa[1] == pb[1] && pa[2] == pb[2] && fa[0] == fb[0] && fa[1] == fb[1] &&
         fa[2] == fb[2],
-      "path frame " << f << " is deterministic");
+      Text("path frame ", f, " is deterministic"));
     for (int i = 0; i < 3; ++i)
     {
-      CHECK(pa[i] > room[2 * i] && pa[i] < room[2 * i + 1], "path frame " << f << " is inside");
+      Check(pa[i] > room[2 * i] && pa[i] < room[2 * i + 1], Text("path frame ", f, " is inside"));
     }
     if (f > 0)
     {
-      CHECK(vtkMath::Distance2BetweenPoints(pa, previous) > 1e-4, "the camera moves");
+      Check(vtkMath::Distance2BetweenPoints(pa, previous) > 1e-4, "the camera moves");
     }
     std::copy(pa, pa + 3, previous);
   }
   scene->SetCameraToPathFrame(a, 0, frames);
   scene->SetCameraToPathFrame(b, frames, frames);
-  CHECK(a->GetPosition()[0] == b->GetPosition()[0] && a->GetPosition()[2] == b->GetPosition()[2],
+  Check(a->GetPosition()[0] == b->GetPosition()[0] && a->GetPosition()[2] == b->GetPosition()[2],
     "the path is closed (frame N is frame 0)");
   scene->SetCameraToPathFrame(a, -1, frames);
   scene->SetCameraToPathFrame(b, frames - 1, frames);
-  CHECK(a->GetPosition()[0] == b->GetPosition()[0], "frame -1 is frame N - 1");
+  Check(a->GetPosition()[0] == b->GetPosition()[0], "frame -1 is frame N - 1");
   scene->SetCameraToPathFrame(a, 5, 0); // no crash for a degenerate frame count
   other->SetScaleFactor(1e-4);
   scene->SetCameraToPathFrame(a, 17, frames);
   other->SetCameraToPathFrame(b, 17, frames);
-  CHECK(std::abs(b->GetPosition()[0] - 1e-4 * a->GetPosition()[0]) < 1e-12 &&
+  Check(std::abs(b->GetPosition()[0] - 1e-4 * a->GetPosition()[0]) < 1e-12 &&
       std::abs(b->GetClippingRange()[0] - 1e-4 * a->GetClippingRange()[0]) < 1e-12,
     "the path scales with the scene");
 
   for (int i = 0; i < vtkDeepGBufferDemoScene::GetNumberOfNamedViews(); ++i)
   {
-    CHECK(scene->SetCameraToNamedView(a, vtkDeepGBufferDemoScene::GetNamedViewName(i)),
-      "named view " << i);
+    Check(scene->SetCameraToNamedView(a, vtkDeepGBufferDemoScene::GetNamedViewName(i)),
+      Text("named view ", i));
   }
   const int beforeView = errors->Count;
-  CHECK(!scene->SetCameraToNamedView(a, "no-such-view") && errors->Count == beforeView + 1,
+  Check(!scene->SetCameraToNamedView(a, "no-such-view") && errors->Count == beforeView + 1,
     "an unknown view is rejected with an error");
   scene->SetCameraToDefaultView(a);
-  CHECK(a->GetViewAngle() > 0.0, "default view");
+  Check(a->GetViewAngle() > 0.0, "default view");
 }
 
-void TestLoader(const std::string& data, const std::string& temp)
+// Rejections: each returns false with exactly one error and loads nothing.
+void CheckBadFilesAreRejected(const std::string& data, const std::string& temp,
+  vtkDeepGBufferSceneLoader* loader, ErrorCounter* errors)
 {
-  vtkNew<vtkDeepGBufferSceneLoader> loader;
-  vtkNew<ErrorCounter> errors;
-  loader->AddObserver(vtkCommand::ErrorEvent, errors);
-
-  // Rejections: each returns false with exactly one error and loads nothing.
   struct Bad
   {
     std::string Path;
@@ -357,42 +347,48 @@ void TestLoader(const std::string& data, const std::string& temp)
     vtkNew<vtkXMLPolyDataWriter> writer;
     writer->SetInputData(nothing);
     writer->SetFileName(empty.c_str());
-    CHECK(writer->Write() == 1, "writing " << empty);
+    Check(writer->Write() == 1, Text("writing ", empty));
   }
   for (const Bad& bad : { Bad{ data + "/meshes/no-such-mesh.ply", "missing file" },
          Bad{ data + "/MANIFEST.md", "unknown extension" }, Bad{ empty, "empty mesh" },
          Bad{ data + "/meshes", "a directory without volumes" }, Bad{ "", "empty name" } })
   {
     const int before = errors->Count;
-    CHECK(!loader->Load(bad.Path.c_str()), bad.Why << " is rejected");
-    CHECK(errors->Count == before + 1, bad.Why << " gives one error");
+    Check(!loader->Load(bad.Path.c_str()), Text(bad.Why, " is rejected"));
+    Check(errors->Count == before + 1, Text(bad.Why, " gives one error"));
   }
-  CHECK(!loader->Load(nullptr), "a null name is rejected");
+  Check(!loader->Load(nullptr), "a null name is rejected");
   {
     const int before = errors->Count;
-    CHECK(!loader->LoadVolume((data + "/volumes/headsq").c_str(), 1e9),
+    Check(!loader->LoadVolume((data + "/volumes/headsq").c_str(), 1e9),
       "an iso-value outside the data is rejected");
-    CHECK(errors->Count == before + 1, "outside iso-value gives one error");
+    Check(errors->Count == before + 1, "outside iso-value gives one error");
   }
-  CHECK(loader->GetNumberOfParts() == 0, "failed loads add nothing");
-  const int expectedErrors = errors->Count;
+  Check(loader->GetNumberOfParts() == 0, "failed loads add nothing");
+}
 
-  // Bunny: 69,451 triangles, normals computed.
-  CHECK(loader->Load((data + "/meshes/bunny.ply").c_str()), "bunny.ply loads");
-  CHECK(loader->GetNumberOfTriangles() == 69451, "bunny has " << loader->GetNumberOfTriangles());
+// Bunny: 69,451 triangles, normals computed.
+void CheckBunnyLoads(const std::string& data, vtkDeepGBufferSceneLoader* loader)
+{
+  Check(loader->Load((data + "/meshes/bunny.ply").c_str()), "bunny.ply loads");
+  Check(loader->GetNumberOfTriangles() == 69451,
+    Text("bunny has 69451 triangles (", loader->GetNumberOfTriangles(), ")"));
   CheckMesh(loader->GetPartPolyData(0), true, false, "bunny");
-  CHECK(loader->GetScenePolyData() &&
+  Check(loader->GetScenePolyData() &&
       !loader->GetScenePolyData()->GetCellData()->GetArray("Emission") &&
       !loader->GetScenePolyData()->GetCellData()->GetArray("Diffuse"),
     "a scene without emitters has no Emission or Diffuse cell arrays");
   loader->Clear();
+}
 
-  // Cornell box: 8 materials, 36 triangles, the left wall red (Kd).
-  CHECK(loader->Load((data + "/scenes/cornell-original/CornellBox-Original.obj").c_str()),
+// Cornell box: 8 materials, 36 triangles, the left wall red (Kd).
+void CheckCornellBoxMaterials(const std::string& data, vtkDeepGBufferSceneLoader* loader)
+{
+  Check(loader->Load((data + "/scenes/cornell-original/CornellBox-Original.obj").c_str()),
     "CornellBox-Original.obj loads");
-  CHECK(loader->GetNumberOfParts() == 8,
-    "Cornell box has " << loader->GetNumberOfParts() << " parts, expected 8");
-  CHECK(loader->GetNumberOfTriangles() == 36, "Cornell box has 36 triangles");
+  Check(loader->GetNumberOfParts() == 8,
+    Text("Cornell box has ", loader->GetNumberOfParts(), " parts, expected 8"));
+  Check(loader->GetNumberOfTriangles() == 36, "Cornell box has 36 triangles");
   bool foundRed = false;
   for (int i = 0; i < loader->GetNumberOfParts(); ++i)
   {
@@ -405,13 +401,19 @@ void TestLoader(const std::string& data, const std::string& temp)
         std::abs(rgb[2] - 0.05) < 1e-6;
     }
   }
-  CHECK(foundRed, "the Cornell left wall has Kd 0.63 0.065 0.05");
+  Check(foundRed, "the Cornell left wall has Kd 0.63 0.065 0.05");
+}
+
+// The loaded Cornell box populates a renderer with VTK's material settings,
+// an emissive lamp and one spot light in place of VTK's default lights.
+void CheckCornellBoxPopulates(vtkDeepGBufferSceneLoader* loader)
+{
   vtkNew<vtkRenderer> renderer;
-  CHECK(loader->Populate(renderer) == 8, "Populate adds 8 actors");
+  Check(loader->Populate(renderer) == 8, "Populate adds 8 actors");
   // Parts in file order: the walls, the boxes, then the lamp (Ke 17 12 4).
   vtkActorCollection* actors = renderer->GetActors();
   vtkActor* wall = vtkActor::SafeDownCast(actors->GetItemAsObject(0));
-  CHECK(wall && wall->GetProperty()->GetAmbient() == 0.1 &&
+  Check(wall && wall->GetProperty()->GetAmbient() == 0.1 &&
       wall->GetProperty()->GetSpecular() == 0.0 && !wall->GetPropertyKeys(),
     "loaded actors have Ambient 0.1 and Specular 0 (not the importer's 1 and 1)");
   double ke[3] = { 0.0, 0.0, 0.0 };
@@ -420,19 +422,19 @@ void TestLoader(const std::string& data, const std::string& temp)
   {
     loader->GetPartEmission(7, ke);
   }
-  CHECK(hasLamp && std::string(loader->GetPartName(7)).find("light") != std::string::npos &&
+  Check(hasLamp && std::string(loader->GetPartName(7)).find("light") != std::string::npos &&
       ke[0] == 17.0 && ke[1] == 12.0 && ke[2] == 4.0,
     "the lamp part has Ke 17 12 4");
   vtkActor* lamp = actors->GetLastActor();
   vtkProperty* lampProperty = lamp ? lamp->GetProperty() : nullptr;
-  CHECK(lampProperty && lampProperty->GetAmbient() == 1.0 && lampProperty->GetDiffuse() == 0.0 &&
+  Check(lampProperty && lampProperty->GetAmbient() == 1.0 && lampProperty->GetDiffuse() == 0.0 &&
       std::abs(lampProperty->GetAmbientColor()[1] - 12.0 / 17.0) < 1e-12 &&
       lamp->GetPropertyKeys() && lamp->GetPropertyKeys()->Get(vtkDeepGIKeys::EMISSIVE()) == 1,
     "the lamp is emissive: Ambient 1, AmbientColor Ke / max(Ke), Diffuse 0, EMISSIVE");
   vtkLight* light = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
   // The quad is 0.47 x 0.38 at y = 1.98, facing down.
   const double intensity = 17.0 * 0.47 * 0.38 / vtkMath::Pi();
-  CHECK(renderer->GetLights()->GetNumberOfItems() == 1 && light && light->GetPositional() &&
+  Check(renderer->GetLights()->GetNumberOfItems() == 1 && light && light->GetPositional() &&
       light->GetConeAngle() == 89.0 && std::abs(light->GetIntensity() - intensity) < 1e-6 &&
       std::abs(light->GetPosition()[1] - 1.98) < 1e-3 && light->GetFocalPoint()[1] < 1.98 &&
       std::abs(light->GetPosition()[0] + 0.005) < 1e-6 &&
@@ -440,9 +442,13 @@ void TestLoader(const std::string& data, const std::string& temp)
     "Populate adds one spot light at the lamp, pointing down, intensity Ke A / pi, and no "
     "default lights");
   loader->ResetCamera(renderer);
+}
+
+void CheckCornellScenePolyData(vtkDeepGBufferSceneLoader* loader)
+{
   vtkPolyData* scene = loader->GetScenePolyData();
   CheckMesh(scene, true, true, "Cornell scene polydata");
-  CHECK(scene && scene->GetNumberOfPolys() == 36, "Cornell scene polydata has 36 triangles");
+  Check(scene && scene->GetNumberOfPolys() == 36, "Cornell scene polydata has 36 triangles");
   {
     // The lamp's cells emit what Populate draws (Ke / max(Ke)) and have
     // Diffuse 0; the other cells emit nothing and have Diffuse 0.9.
@@ -463,11 +469,15 @@ void TestLoader(const std::string& data, const std::string& temp)
       ok = ok && std::abs(diffuse->GetComponent(c, 0) - (isLamp ? 0.0 : 0.9)) < 1e-6;
       lampCells += isLamp ? 1 : 0;
     }
-    CHECK(ok && lampCells == 2,
+    Check(ok && lampCells == 2,
       "Cornell scene polydata: Emission Ke / max(Ke) and Diffuse 0 on the lamp's 2 cells, "
       "0 and 0.9 elsewhere");
   }
+}
 
+void CheckCornellBoxReloads(
+  const std::string& data, vtkDeepGBufferSceneLoader* loader, ErrorCounter* errors)
+{
   // Regression: VTK 9.1's vtkOBJImporter resolved "f -4 -3 -2 -1" against a
   // vertex count that carried over from the previous OBJ file of the
   // process, so from the second load on every part pointed past its points
@@ -478,154 +488,157 @@ void TestLoader(const std::string& data, const std::string& temp)
   // file stores twice (its "bottom face" lines repeat a side face of each
   // block) are kept, exactly coincident.
   const std::string cornell = data + "/scenes/cornell-original/CornellBox-Original.obj";
-  CHECK(CountObjTriangles(cornell) == 36,
-    "CornellBox-Original.obj's text has " << CountObjTriangles(cornell) << " triangles");
+  Check(CountObjTriangles(cornell) == 36,
+    Text("CornellBox-Original.obj's text has ", CountObjTriangles(cornell), " triangles"));
   vtkNew<vtkDeepGBufferSceneLoader> again;
   again->AddObserver(vtkCommand::ErrorEvent, errors);
-  CHECK(again->Load(cornell.c_str()), "a second CornellBox-Original.obj load succeeds");
+  Check(again->Load(cornell.c_str()), "a second CornellBox-Original.obj load succeeds");
   loader->Clear();
-  CHECK(loader->Load(cornell.c_str()), "a third CornellBox-Original.obj load succeeds");
-  for (vtkDeepGBufferSceneLoader* l : { again.Get(), loader.Get() })
+  Check(loader->Load(cornell.c_str()), "a third CornellBox-Original.obj load succeeds");
+  for (vtkDeepGBufferSceneLoader* l : { again.Get(), loader })
   {
-    CHECK(l->GetNumberOfParts() == 8,
-      "reloaded Cornell box has " << l->GetNumberOfParts() << " parts, expected 8");
-    CHECK(l->GetNumberOfTriangles() == CountObjTriangles(cornell),
-      "reloaded Cornell box has " << l->GetNumberOfTriangles() << " triangles, expected 36");
+    Check(l->GetNumberOfParts() == 8,
+      Text("reloaded Cornell box has ", l->GetNumberOfParts(), " parts, expected 8"));
+    Check(l->GetNumberOfTriangles() == CountObjTriangles(cornell),
+      Text("reloaded Cornell box has ", l->GetNumberOfTriangles(), " triangles, expected 36"));
     int coincident = 0;
     for (int i = 0; i < l->GetNumberOfParts(); ++i)
     {
       vtkPolyData* part = l->GetPartPolyData(i);
       const std::string name = l->GetPartName(i);
-      CHECK(part && part->GetNumberOfPolys() > 0, name << " has no triangles");
+      Check(part && part->GetNumberOfPolys() > 0, Text(name, " has triangles"));
       if (!part)
       {
         continue;
       }
-      CHECK(CountBadPointIds(part) == 0,
-        name << " has " << CountBadPointIds(part) << " point ids outside its "
-             << part->GetNumberOfPoints() << " points");
+      Check(CountBadPointIds(part) == 0,
+        Text(name, " has ", CountBadPointIds(part), " point ids outside its ",
+          part->GetNumberOfPoints(), " points"));
       CheckMesh(part, true, false, "reloaded " + name);
       const int duplicates = CountCoincidentTriangles(part);
       const bool block =
         name.find("shortBox") != std::string::npos || name.find("tallBox") != std::string::npos;
-      CHECK(duplicates == (block ? 2 : 0),
-        name << " has " << duplicates << " coincident duplicate triangles, expected "
-             << (block ? 2 : 0) << " (one quad stored twice per block)");
+      Check(duplicates == (block ? 2 : 0),
+        Text(name, " has ", duplicates, " coincident duplicate triangles, expected ",
+          (block ? 2 : 0), " (one quad stored twice per block)"));
       coincident += duplicates;
     }
-    CHECK(coincident == 4,
-      "the Cornell box keeps its 2 duplicate quads (" << coincident << " triangles)");
+    Check(coincident == 4,
+      Text("the Cornell box keeps its 2 duplicate quads (", coincident, " triangles)"));
     vtkPolyData* all = l->GetScenePolyData();
-    CHECK(all && CountBadPointIds(all) == 0 && all->GetNumberOfPolys() == 36 &&
+    Check(all && CountBadPointIds(all) == 0 && all->GetNumberOfPolys() == 36 &&
         CountCoincidentTriangles(all) == 4,
       "reloaded Cornell scene polydata: 36 triangles, point ids in range, 4 duplicates");
   }
+}
 
-  // Faces with vertex indices the file does not define are skipped with a
-  // warning (never read out of bounds); a file left without faces fails
-  // with one error. Forward references and relative indices are valid.
+// Faces with vertex indices the file does not define are skipped with a
+// warning (never read out of bounds); a file left without faces fails
+// with one error. Forward references and relative indices are valid.
+void CheckBadObjIndicesAreSkipped(const std::string& temp)
+{
+  const std::string bad = temp + "/TestDeepGBufferDemoScene-bad-indices.obj";
   {
-    const std::string bad = temp + "/TestDeepGBufferDemoScene-bad-indices.obj";
-    {
-      std::ofstream out(bad);
-      out << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\n"
-             "f 1 2 3\n"                   // good
-             "f 1 3 9\n"                   // vertex 9 does not exist
-             "f -1 -2 -7\n"                // -7: before the first vertex
-             "f 0 1 2\n"                   // 0 is no index
-             "f -4//1 -3//1 -2//1 -1//1\n" // good quad, relative indices
-             "f 1 2 5//3\n"                // forward reference; normal 3 does not exist
-             "v 0 0 1\n";
-    }
-    vtkNew<vtkDeepGBufferSceneLoader> l;
-    vtkNew<ErrorCounter> badErrors, badWarnings;
-    l->AddObserver(vtkCommand::ErrorEvent, badErrors);
-    l->AddObserver(vtkCommand::WarningEvent, badWarnings);
-    CHECK(l->Load(bad.c_str()), "an OBJ with some bad indices loads");
-    CHECK(badErrors->Count == 0 && badWarnings->Count == 1,
-      "bad indices give one warning (" << badWarnings->Count << ") and no error ("
-                                       << badErrors->Count << ")");
-    CHECK(l->GetNumberOfTriangles() == 4,
-      "the 3 good faces give 4 triangles, got " << l->GetNumberOfTriangles());
-    CHECK(l->GetNumberOfParts() == 1 && CountBadPointIds(l->GetPartPolyData(0)) == 0,
-      "point ids in range after skipping bad faces");
-
-    const std::string none = temp + "/TestDeepGBufferDemoScene-no-good-faces.obj";
-    {
-      std::ofstream out(none);
-      out << "v 0 0 0\nv 1 0 0\nf 1 2 3\nf -1 -2 -3\n";
-    }
-    const int before = badErrors->Count;
-    CHECK(!l->Load(none.c_str()) && badErrors->Count == before + 1,
-      "an OBJ without a single valid face is rejected with one error");
-    CHECK(l->GetNumberOfParts() == 1, "the failed load adds nothing");
+    std::ofstream out(bad);
+    out << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\n"
+           "f 1 2 3\n"                   // good
+           "f 1 3 9\n"                   // vertex 9 does not exist
+           "f -1 -2 -7\n"                // -7: before the first vertex
+           "f 0 1 2\n"                   // 0 is no index
+           "f -4//1 -3//1 -2//1 -1//1\n" // good quad, relative indices
+           "f 1 2 5//3\n"                // forward reference; normal 3 does not exist
+           "v 0 0 1\n";
   }
+  vtkNew<vtkDeepGBufferSceneLoader> l;
+  vtkNew<ErrorCounter> badErrors, badWarnings;
+  l->AddObserver(vtkCommand::ErrorEvent, badErrors);
+  l->AddObserver(vtkCommand::WarningEvent, badWarnings);
+  Check(l->Load(bad.c_str()), "an OBJ with some bad indices loads");
+  Check(badErrors->Count == 0 && badWarnings->Count == 1,
+    Text("bad indices give one warning (", badWarnings->Count, ") and no error (", badErrors->Count,
+      ")"));
+  Check(l->GetNumberOfTriangles() == 4,
+    Text("the 3 good faces give 4 triangles, got ", l->GetNumberOfTriangles()));
+  Check(l->GetNumberOfParts() == 1 && CountBadPointIds(l->GetPartPolyData(0)) == 0,
+    "point ids in range after skipping bad faces");
 
-  // headsq at 500 (skin): 57,698 triangles (MANIFEST.md), by the directory,
-  // the .nhdr and the slice prefix.
+  const std::string none = temp + "/TestDeepGBufferDemoScene-no-good-faces.obj";
+  {
+    std::ofstream out(none);
+    out << "v 0 0 0\nv 1 0 0\nf 1 2 3\nf -1 -2 -3\n";
+  }
+  const int before = badErrors->Count;
+  Check(!l->Load(none.c_str()) && badErrors->Count == before + 1,
+    "an OBJ without a single valid face is rejected with one error");
+  Check(l->GetNumberOfParts() == 1, "the failed load adds nothing");
+}
+
+// headsq at 500 (skin): 57,698 triangles (MANIFEST.md), by the directory,
+// the .nhdr and the slice prefix.
+void CheckHeadsqVolumeLoads(const std::string& data, vtkDeepGBufferSceneLoader* loader)
+{
   for (const std::string& path : { data + "/volumes/headsq", data + "/volumes/headsq/quarter.nhdr",
          data + "/volumes/headsq/quarter" })
   {
     loader->Clear();
-    CHECK(loader->LoadVolume(path.c_str(), 500.0), path << " loads");
-    CHECK(loader->GetNumberOfTriangles() == 57698,
-      path << " at 500 has " << loader->GetNumberOfTriangles() << " triangles, expected 57698");
+    Check(loader->LoadVolume(path.c_str(), 500.0), Text(path, " loads"));
+    Check(loader->GetNumberOfTriangles() == 57698,
+      Text(path, " at 500 has ", loader->GetNumberOfTriangles(), " triangles, expected 57698"));
     if (loader->GetNumberOfParts() == 1)
     {
       CheckMesh(loader->GetPartPolyData(0), true, false, path);
       double b[6];
       loader->GetBounds(b);
-      CHECK(b[1] > 150.0 && b[1] <= 64 * 3.2 && b[5] <= 92 * 1.5 + 1e-3,
+      Check(b[1] > 150.0 && b[1] <= 64 * 3.2 && b[5] <= 92 * 1.5 + 1e-3,
         "headsq bounds follow its spacing 3.2/3.2/1.5");
     }
   }
-  // The NRRD parser reads the slices the way vtkVolume16Reader does (index
-  // order, no row flip): the same surface, point for point.
+}
+
+// The NRRD parser reads the slices the way vtkVolume16Reader does (index
+// order, no row flip): the same surface, point for point.
+void CheckNrrdMatchesVolume16Reader(const std::string& data, vtkDeepGBufferSceneLoader* loader)
+{
+  vtkSmartPointer<vtkVolume16Reader> reader = DeepGITestData::HeadsqReader(data);
+  vtkNew<vtkFlyingEdges3D> iso;
+  iso->SetInputConnection(reader->GetOutputPort());
+  iso->SetValue(0, 500.0);
+  iso->Update();
+  loader->Clear();
+  loader->LoadVolume((data + "/volumes/headsq/quarter.nhdr").c_str(), 500.0);
+  vtkPolyData* mine = loader->GetPartPolyData(0);
+  vtkPolyData* reference = iso->GetOutput();
+  bool same = mine && mine->GetNumberOfPoints() == reference->GetNumberOfPoints();
+  for (vtkIdType i = 0; same && i < reference->GetNumberOfPoints(); i += 97)
   {
-    vtkNew<vtkVolume16Reader> reader;
-    reader->SetFilePrefix((data + "/volumes/headsq/quarter").c_str());
-    reader->SetDataDimensions(64, 64);
-    reader->SetImageRange(1, 93);
-    reader->SetDataByteOrderToLittleEndian();
-    reader->SetDataSpacing(3.2, 3.2, 1.5);
-    vtkNew<vtkFlyingEdges3D> iso;
-    iso->SetInputConnection(reader->GetOutputPort());
-    iso->SetValue(0, 500.0);
-    iso->Update();
-    loader->Clear();
-    loader->LoadVolume((data + "/volumes/headsq/quarter.nhdr").c_str(), 500.0);
-    vtkPolyData* mine = loader->GetPartPolyData(0);
-    vtkPolyData* reference = iso->GetOutput();
-    bool same = mine && mine->GetNumberOfPoints() == reference->GetNumberOfPoints();
-    for (vtkIdType i = 0; same && i < reference->GetNumberOfPoints(); i += 97)
-    {
-      same = vtkMath::Distance2BetweenPoints(mine->GetPoint(i), reference->GetPoint(i)) < 1e-8;
-    }
-    CHECK(same, "headsq through the .nhdr matches vtkVolume16Reader point for point");
+    same = vtkMath::Distance2BetweenPoints(mine->GetPoint(i), reference->GetPoint(i)) < 1e-8;
   }
-  CHECK(errors->Count == expectedErrors, "good files load without errors");
+  Check(same, "headsq through the .nhdr matches vtkVolume16Reader point for point");
+}
+
+void TestLoader(const std::string& data, const std::string& temp)
+{
+  vtkNew<vtkDeepGBufferSceneLoader> loader;
+  vtkNew<ErrorCounter> errors;
+  loader->AddObserver(vtkCommand::ErrorEvent, errors);
+  CheckBadFilesAreRejected(data, temp, loader, errors);
+  const int expectedErrors = errors->Count;
+  CheckBunnyLoads(data, loader);
+  CheckCornellBoxMaterials(data, loader);
+  CheckCornellBoxPopulates(loader);
+  CheckCornellScenePolyData(loader);
+  CheckCornellBoxReloads(data, loader, errors);
+  CheckBadObjIndicesAreSkipped(temp);
+  CheckHeadsqVolumeLoads(data, loader);
+  CheckNrrdMatchesVolume16Reader(data, loader);
+  Check(errors->Count == expectedErrors, "good files load without errors");
 }
 } // anonymous namespace
 
 int TestDeepGBufferDemoScene(int argc, char* argv[])
 {
-  std::string data, temp = ".";
-  for (int i = 1; i + 1 < argc; ++i)
-  {
-    if (std::string(argv[i]) == "--data")
-    {
-      data = argv[++i];
-    }
-    else if (std::string(argv[i]) == "-T")
-    {
-      temp = argv[++i];
-    }
-  }
-  if (data.empty())
-  {
-    std::cerr << "Usage: TestDeepGBufferDemoScene --data DIR [-T TEMPDIR]\n";
-    return EXIT_FAILURE;
-  }
+  const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepGBufferDemoScene");
+  const std::string temp = DeepGITest::Argument(argc, argv, "-T", ".");
   if (!DeepGITestData::Require(data,
         { "MANIFEST.md", "meshes/bunny.ply", "scenes/cornell-original/CornellBox-Original.obj",
           "scenes/cornell-original/CornellBox-Original.mtl", "volumes/headsq/quarter.nhdr",
@@ -638,11 +651,5 @@ int TestDeepGBufferDemoScene(int argc, char* argv[])
   TestDemoScene();
   TestLoader(data, temp);
 
-  if (Failures)
-  {
-    std::cerr << Failures << " check(s) failed\n";
-    return EXIT_FAILURE;
-  }
-  std::cout << "All checks passed\n";
-  return EXIT_SUCCESS;
+  return DeepGITest::ExitStatus();
 }

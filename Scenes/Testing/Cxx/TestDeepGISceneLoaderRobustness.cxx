@@ -7,7 +7,9 @@
 // obj-continuation, fuzz-findings. Every refused file must give exactly one error and
 // leave the loader empty; nothing is rendered.
 
+#include "DeepGITestChecks.h"
 #include "DeepGITestData.h"
+
 #include "vtkCommand.h"
 #include "vtkDeepGBufferSceneLoader.h"
 #include "vtkMath.h"
@@ -30,17 +32,8 @@
 
 namespace
 {
-int Failures = 0;
-
-#define CHECK(condition, message)                                                                  \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(condition))                                                                              \
-    {                                                                                              \
-      std::cerr << "FAILED (line " << __LINE__ << "): " << message << "\n";                        \
-      ++Failures;                                                                                  \
-    }                                                                                              \
-  } while (false)
+using DeepGITest::Check;
+using DeepGITest::Text;
 
 // Counts the errors and warnings of the loader instead of printing them.
 class Messages : public vtkCommand
@@ -82,18 +75,18 @@ struct Fixture
     this->Log->Clear();
     this->Loader->Clear();
     const bool loaded = this->Loader->Load(path.c_str());
-    CHECK(!loaded, path << " is refused");
-    CHECK(
-      this->Log->Errors.size() == 1, path << " gives one error, not " << this->Log->Errors.size());
+    Check(!loaded, Text(path, " is refused"));
+    Check(this->Log->Errors.size() == 1,
+      Text(path, " gives one error (got ", this->Log->Errors.size(), ")"));
     // The message without the file's path (which may hold the word expected).
     std::string error = this->Log->Errors.empty() ? "" : this->Log->Errors.back();
     for (size_t at; !path.empty() && (at = error.find(path)) != std::string::npos;)
     {
       error.erase(at, path.size());
     }
-    CHECK(error.find(expected) != std::string::npos,
-      path << ": the error says \"" << expected << "\": " << error);
-    CHECK(this->Loader->GetNumberOfParts() == 0, path << " adds no part");
+    Check(error.find(expected) != std::string::npos,
+      Text(path, ": the error says \"", expected, "\": ", error));
+    Check(this->Loader->GetNumberOfParts() == 0, Text(path, " adds no part"));
   }
 
   // `path` loads without errors; returns the warnings.
@@ -101,8 +94,8 @@ struct Fixture
   {
     this->Log->Clear();
     this->Loader->Clear();
-    CHECK(this->Loader->Load(path.c_str()), path << " loads");
-    CHECK(this->Log->Errors.empty(), path << " loads without errors");
+    Check(this->Loader->Load(path.c_str()), Text(path, " loads"));
+    Check(this->Log->Errors.empty(), Text(path, " loads without errors"));
     return this->Log->Warnings;
   }
 
@@ -215,7 +208,7 @@ void DeviceFiles(Fixture& f)
   for (const char* name : { "devurandom.obj", "devzero.obj" })
   {
     const std::vector<std::string> warnings = f.Loads(f.Path(name));
-    CHECK(Contains(warnings, "not a regular file"), name << " warns about its mtllib");
+    Check(Contains(warnings, "not a regular file"), Text(name, " warns about its mtllib"));
   }
   f.Refused("/dev/zero", "Not a mesh file");
   const std::string head = "NRRD0004\ntype: uchar\ndimension: 3\nencoding: raw\nsizes: 4 4 4\n";
@@ -231,10 +224,10 @@ void DeviceFiles(Fixture& f)
 void DuplicateFaces(Fixture& f)
 {
   f.Loads(f.Path("dupface_2000.obj"));
-  CHECK(f.Loader->GetNumberOfTriangles() == 2000,
-    "dupface_2000.obj keeps its 2000 triangles, has " << f.Loader->GetNumberOfTriangles());
+  Check(f.Loader->GetNumberOfTriangles() == 2000,
+    Text("dupface_2000.obj keeps its 2000 triangles (has ", f.Loader->GetNumberOfTriangles(), ")"));
   vtkPolyData* pd = f.Loader->GetPartPolyData(0);
-  CHECK(pd && pd->GetPointData()->GetNormals(), "dupface_2000.obj gets normals");
+  Check(pd && pd->GetPointData()->GetNormals(), "dupface_2000.obj gets normals");
 }
 
 // Finding 6: truncated STL and legacy .vtk, short NRRD data, gzip claimed
@@ -254,8 +247,8 @@ void NonFinitePoints(Fixture& f)
   for (const char* name : { "fandisk_inf.obj", "fandisk_nan.obj" })
   {
     const std::vector<std::string> warnings = f.Loads(f.Path(name));
-    CHECK(Contains(warnings, "dropped 1 point(s) with non-finite"),
-      name << " warns about its non-finite point");
+    Check(Contains(warnings, "dropped 1 point(s) with non-finite"),
+      Text(name, " warns about its non-finite point"));
     double b[6];
     f.Loader->GetBounds(b);
     bool finite = true;
@@ -263,7 +256,7 @@ void NonFinitePoints(Fixture& f)
     {
       finite = finite && std::isfinite(v) && std::abs(v) < 1e6;
     }
-    CHECK(finite, name << " has finite bounds");
+    Check(finite, Text(name, " has finite bounds"));
     vtkPoints* points = f.Loader->GetPartPolyData(0)->GetPoints();
     for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
     {
@@ -271,7 +264,7 @@ void NonFinitePoints(Fixture& f)
       points->GetPoint(i, p);
       finite = finite && std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
     }
-    CHECK(finite, name << " keeps finite points only");
+    Check(finite, Text(name, " keeps finite points only"));
   }
 }
 
@@ -285,16 +278,16 @@ void HugeVolume(Fixture& f)
 void ObjContinuation(Fixture& f)
 {
   f.Loads(f.Path("cont_usemtl.obj"));
-  CHECK(f.Loader->GetNumberOfParts() == 1 &&
+  Check(f.Loader->GetNumberOfParts() == 1 &&
       std::string(f.Loader->GetPartName(0)) == "cont_usemtl.obj:red",
-    "the part is cont_usemtl.obj:red, not "
-      << (f.Loader->GetNumberOfParts() ? f.Loader->GetPartName(0) : "none"));
+    Text("the part is cont_usemtl.obj:red (got ",
+      (f.Loader->GetNumberOfParts() ? f.Loader->GetPartName(0) : "none"), ")"));
   double rgb[3];
   f.Loader->GetPartColor(0, rgb);
-  CHECK(rgb[0] == 1.0 && rgb[1] == 0.0 && rgb[2] == 0.0, "red has Kd 1 0 0");
+  Check(rgb[0] == 1.0 && rgb[1] == 0.0 && rgb[2] == 0.0, "red has Kd 1 0 0");
   // A continued line joins its parts with one space.
   f.Loads(f.Write("continued.obj", "v 0 \\\n 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 \\\n3\n"));
-  CHECK(f.Loader->GetNumberOfTriangles() == 1, "continued lines make one triangle");
+  Check(f.Loader->GetNumberOfTriangles() == 1, "continued lines make one triangle");
 }
 
 // What fuzzing (scripts/fuzz.sh) found after the fixes above, as small
@@ -338,7 +331,7 @@ void FuzzFindings(Fixture& f)
               "CONNECTIVITY vtktypeint64\n0 1 2\n"),
     "offsets end at");
   f.Loads(f.Write("good.vtk", vtk + "POLYGONS 1 4\n3 0 1 2\n"));
-  CHECK(f.Loader->GetNumberOfTriangles() == 1, "good.vtk has one triangle");
+  Check(f.Loader->GetNumberOfTriangles() == 1, "good.vtk has one triangle");
 }
 } // anonymous namespace
 
@@ -382,11 +375,5 @@ int TestDeepGISceneLoaderRobustness(int argc, char* argv[])
   f.Temp += "/TestDeepGISceneLoaderRobustness-" + finding;
   vtksys::SystemTools::MakeDirectory(f.Temp);
   findings.at(finding)(f);
-  if (Failures)
-  {
-    std::cerr << Failures << " check(s) failed\n";
-    return EXIT_FAILURE;
-  }
-  std::cout << finding << ": all checks passed\n";
-  return EXIT_SUCCESS;
+  return DeepGITest::ExitStatus();
 }
