@@ -36,20 +36,6 @@ struct AVExpectations
   double DarkMin;          // fraction of surface pixels with AV < 0.8
 };
 
-// Grey 8-bit image of the "AmbientVisibility" array of `av`.
-inline void AVToGrey(vtkImageData* av, vtkImageData* grey)
-{
-  grey->SetDimensions(av->GetDimensions());
-  grey->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
-  vtkDataArray* a = av->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility);
-  unsigned char* out = static_cast<unsigned char*>(grey->GetScalarPointer());
-  for (vtkIdType p = 0; p < a->GetNumberOfTuples(); ++p)
-  {
-    const double v = std::min(1.0, std::max(0.0, a->GetTuple1(p)));
-    out[p] = static_cast<unsigned char>(std::lround(255.0 * v));
-  }
-}
-
 // `build` fills the renderer and sets its camera; `configure` sets the pass.
 inline int RunAOImageTest(int argc, char* argv[], const std::function<bool(vtkRenderer*)>& build,
   const std::function<void(vtkDeepAmbientObscurancePass*)>& configure, const AVExpectations& e,
@@ -73,26 +59,9 @@ inline int RunAOImageTest(int argc, char* argv[], const std::function<bool(vtkRe
   configure(pass);
   lit->SetPass(pass);
 
-  // The AV viewport: a parallel camera showing image pixel (i, j) at
-  // viewport pixel (i, j).
-  // Black until the first AV is captured (an image actor needs an input).
-  vtkNew<vtkImageData> grey;
-  grey->SetDimensions(W, H, 1);
-  grey->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
-  std::fill_n(static_cast<unsigned char*>(grey->GetScalarPointer()), W * H, 0);
-  vtkNew<vtkImageActor> image;
-  image->SetInputData(grey);
-  image->InterpolateOff();
-  image->GetProperty()->SetColorWindow(255.0);
-  image->GetProperty()->SetColorLevel(127.5);
-  avView->AddActor(image);
-  vtkCamera* camera = avView->GetActiveCamera();
-  camera->ParallelProjectionOn();
-  camera->SetFocalPoint(0.5 * (W - 1), 0.5 * (H - 1), 0.0);
-  camera->SetPosition(0.5 * (W - 1), 0.5 * (H - 1), 1000.0);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetParallelScale(0.5 * H);
-  camera->SetClippingRange(1.0, 2000.0);
+  // The AV viewport: image pixel (i, j) at viewport pixel (i, j), black
+  // until the first AV is captured.
+  vtkSmartPointer<vtkImageData> grey = ShowImagePixelForPixel(avView, W, H, 1);
 
   for (int frame = 0; frame < 3; ++frame)
   {
@@ -102,14 +71,13 @@ inline int RunAOImageTest(int argc, char* argv[], const std::function<bool(vtkRe
   bool ok = pass->CaptureAmbientVisibility(shown, lit);
   if (ok)
   {
-    AVToGrey(shown, grey);
-    grey->Modified();
+    ShowValues(
+      shown->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility), 1.0, grey);
     window->Render();
     ok = pass->CaptureAmbientVisibility(av, lit);
   }
-  if (!ok)
+  if (!DeepGITest::Check(ok, "ambient visibility captured"))
   {
-    std::printf("capture FAILED\n");
     return EXIT_FAILURE;
   }
 
@@ -137,23 +105,24 @@ inline int RunAOImageTest(int argc, char* argv[], const std::function<bool(vtkRe
   const double mean = sum / std::max(surface, 1L);
   const double fu = static_cast<double>(unoccluded) / std::max(surface, 1L);
   const double fd = static_cast<double>(dark) / std::max(surface, 1L);
-  const bool finite = AllFinite(av);
-  std::printf(
-    "AV: %ld surface px (radius %.4g, N %d), mean %.4f (expected %.3f..%.3f), "
-    "unoccluded %.3f (>= %.3f), dark %.3f (>= %.3f), %ld values outside [0, 1], %ld empty "
-    "px not 1, finite: %s, change since the displayed frame %.2e\n",
-    surface, pass->GetEffectiveRadius(), pass->GetNumberOfSamples(), mean, e.MeanMin, e.MeanMax, fu,
-    e.UnoccludedMin, fd, e.DarkMin, outOfRange, emptyNotOne, finite ? "yes" : "no", changed);
-  const bool numbersOk = finite && outOfRange == 0 && emptyNotOne == 0 && surface > W * H / 10 &&
-    mean >= e.MeanMin && mean <= e.MeanMax && fu >= e.UnoccludedMin && fd >= e.DarkMin &&
-    changed <= 1e-6;
-  if (!numbersOk)
-  {
-    std::printf("numeric checks FAILED\n");
-  }
-  const int result = vtkRegressionTestImageThreshold(window, threshold);
+  std::printf("AV: radius %.4g, N %d\n", pass->GetEffectiveRadius(), pass->GetNumberOfSamples());
+  DeepGITest::Check(AllFinite(av), "the captured AV is finite");
+  DeepGITest::Check(outOfRange == 0,
+    DeepGITest::Format("filtered and raw AV in [0, 1] (%ld values outside)", outOfRange));
+  DeepGITest::Check(
+    emptyNotOne == 0, DeepGITest::Format("AV is 1 on empty pixels (%ld are not)", emptyNotOne));
+  DeepGITest::Check(surface > W * H / 10, DeepGITest::Format("%ld surface pixels", surface));
+  DeepGITest::Check(mean >= e.MeanMin && mean <= e.MeanMax,
+    DeepGITest::Format("mean AV over the surface %.4f in %.3f..%.3f", mean, e.MeanMin, e.MeanMax));
+  DeepGITest::Check(fu >= e.UnoccludedMin,
+    DeepGITest::Format("fraction unoccluded (AV > 0.999) %.3f >= %.3f", fu, e.UnoccludedMin));
+  DeepGITest::Check(
+    fd >= e.DarkMin, DeepGITest::Format("fraction dark (AV < 0.8) %.3f >= %.3f", fd, e.DarkMin));
+  DeepGITest::Check(changed <= 1e-6,
+    DeepGITest::Format("the AV shown equals the final frame's (change %.2e <= 1e-6)", changed));
+  CheckRegressionImage(argc, argv, window, threshold);
   pass->ReleaseGraphicsResources(window);
-  return (numbersOk && result == vtkRegressionTester::PASSED) ? EXIT_SUCCESS : EXIT_FAILURE;
+  return DeepGITest::ExitStatus();
 }
 }
 

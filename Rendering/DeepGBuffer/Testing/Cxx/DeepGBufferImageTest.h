@@ -66,19 +66,16 @@ inline int RunLayerImageTest(int argc, char* argv[], const std::function<bool(vt
   layer1->CaptureLayers(capture, deep);
   dz = layer1->GetEffectiveMinimumSeparation();
   SeparationReport separation = CheckSeparation(capture, 1, dz, 1e-6);
-  const bool finite = AllFinite(capture);
-  std::printf("layer 1: %ld pixels, %ld closer than dz = %g, all values finite: %s\n",
-    separation.Pixels, separation.Violations, dz, finite ? "yes" : "no");
-  int result = vtkRegressionTestImageThreshold(window, threshold);
+  DeepGITest::Check(AllFinite(capture), "the captured layers are finite");
+  DeepGITest::Check(separation.Violations == 0,
+    DeepGITest::Format(
+      "layer 1: %ld pixels closer than dz = %g behind layer 0", separation.Violations, dz));
+  DeepGITest::Check(separation.Pixels >= minimumLayer1Pixels,
+    DeepGITest::Format("layer 1: %ld pixels (>= %ld)", separation.Pixels, minimumLayer1Pixels));
+  CheckRegressionImage(argc, argv, window, threshold);
   layer0->ReleaseGraphicsResources(window);
   layer1->ReleaseGraphicsResources(window);
-  const bool numbersOk =
-    finite && separation.Violations == 0 && separation.Pixels >= minimumLayer1Pixels;
-  if (!numbersOk)
-  {
-    std::printf("numeric checks FAILED\n");
-  }
-  return (numbersOk && result == vtkRegressionTester::PASSED) ? EXIT_SUCCESS : EXIT_FAILURE;
+  return DeepGITest::ExitStatus();
 }
 }
 

@@ -1,7 +1,9 @@
 // Helpers shared by the deep G-buffer tests: windows, scenes and numeric
-// checks on captured layers.
+// measurements on captured layers (reported through DeepGITestChecks.h).
 #ifndef DeepGBufferTestUtilities_h
 #define DeepGBufferTestUtilities_h
+
+#include "DeepGITestChecks.h"
 
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
@@ -14,19 +16,23 @@
 #include "vtkDeepGIRenderWindowFactory.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkImageActor.h"
 #include "vtkImageData.h"
+#include "vtkImageProperty.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
+#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -35,36 +41,6 @@
 
 namespace DeepGBufferTest
 {
-// The value following `flag` on the command line, or `fallback`.
-inline std::string Argument(int argc, char* argv[], const char* flag, const char* fallback = "")
-{
-  for (int i = 1; i + 1 < argc; ++i)
-  {
-    if (std::string(argv[i]) == flag)
-    {
-      return argv[i + 1];
-    }
-  }
-  return fallback;
-}
-
-// Test checks: each prints "ok: what" or "FAILED: what"; CheckFailures()
-// counts the failed ones for the test's exit status.
-inline int& CheckFailures()
-{
-  static int failures = 0;
-  return failures;
-}
-
-inline void Check(bool ok, const std::string& what)
-{
-  std::printf("%s: %s\n", ok ? "ok" : "FAILED", what.c_str());
-  if (!ok)
-  {
-    ++CheckFailures();
-  }
-}
-
 // Adds an actor drawing `source`'s output with default properties.
 inline vtkActor* AddSourceActor(vtkRenderer* renderer, vtkAlgorithm* source)
 {
@@ -368,6 +344,61 @@ inline double MaximumColorDifference(vtkImageData* a, vtkImageData* b)
     }
   }
   return maximum;
+}
+
+// Compares the window with the test's baseline image (-V on the command
+// line) as one check. The threshold is VTK 9.1's summed metric (see
+// VTK91-NOTES.md), chosen per test.
+inline bool CheckRegressionImage(int argc, char* argv[], vtkRenderWindow* window, double threshold)
+{
+  const int result = vtkRegressionTester::Test(argc, argv, window, threshold);
+  return DeepGITest::Check(result == vtkRegressionTester::PASSED,
+    DeepGITest::Format("the image matches the baseline (VTK threshold %g)", threshold));
+}
+
+// An 8-bit image of `components` channels, width x height, shown pixel for
+// pixel in `renderer`: nearest-neighbour, colour window 255, and a parallel
+// camera showing image pixel (i, j) at viewport pixel (i, j). It is black
+// until the test writes into it (an image actor needs an input).
+inline vtkSmartPointer<vtkImageData> ShowImagePixelForPixel(
+  vtkRenderer* renderer, int width, int height, int components)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, components);
+  std::fill_n(
+    static_cast<unsigned char*>(image->GetScalarPointer()), components * width * height, 0);
+  vtkNew<vtkImageActor> actor;
+  actor->SetInputData(image);
+  actor->InterpolateOff();
+  actor->GetProperty()->SetColorWindow(255.0);
+  actor->GetProperty()->SetColorLevel(127.5);
+  renderer->AddActor(actor);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  camera->SetFocalPoint(0.5 * (width - 1), 0.5 * (height - 1), 0.0);
+  camera->SetPosition(0.5 * (width - 1), 0.5 * (height - 1), 1000.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetParallelScale(0.5 * height);
+  camera->SetClippingRange(1.0, 2000.0);
+  return image;
+}
+
+// Writes `scale` x `values`, clamped to [0, 1], into the 8-bit image `shown`
+// (as many channels as it has), and marks it modified.
+inline void ShowValues(vtkDataArray* values, double scale, vtkImageData* shown)
+{
+  const int components = shown->GetNumberOfScalarComponents();
+  unsigned char* out = static_cast<unsigned char*>(shown->GetScalarPointer());
+  for (vtkIdType p = 0; p < values->GetNumberOfTuples(); ++p)
+  {
+    for (int c = 0; c < components; ++c)
+    {
+      out[components * p + c] = static_cast<unsigned char>(
+        std::lround(255.0 * std::min(1.0, std::max(0.0, scale * values->GetComponent(p, c)))));
+    }
+  }
+  shown->Modified();
 }
 
 // Reads the colour and depth buffers of a rendered window.

@@ -72,7 +72,7 @@ inline std::vector<double> ReferenceIrradiance(vtkPolyData* scene, vtkRenderer* 
   reference->SetLayer(0);
   if (!reference->Compute(layers))
   {
-    Check(false, "reference computed");
+    DeepGITest::Check(false, "reference computed");
     return {};
   }
   standardError = reference->GetMeanStandardError();

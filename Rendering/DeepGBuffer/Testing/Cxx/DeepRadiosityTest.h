@@ -107,7 +107,7 @@ inline bool RenderFrames(const Scene& scene, vtkDeepRadiosityPass* pass, int fra
   }
   const bool ok = pass->CaptureIrradiance(f.Radiosity, f.Renderer) &&
     pass->GetGBufferPass()->CaptureLayers(f.Layers, f.Renderer);
-  Check(ok, "capture");
+  DeepGITest::Check(ok, "capture");
   return ok;
 }
 

@@ -50,6 +50,7 @@
 #include <vector>
 
 using namespace DeepGBufferTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -605,6 +606,5 @@ int TestDeepAmbientObscurance(int, char*[])
   TestNoBleed();
   TestSecondLayer();
   TestSampleCountsAndRelease();
-  std::printf("%s\n", CheckFailures() ? "FAILED" : "passed");
-  return CheckFailures() ? 1 : 0;
+  return ExitStatus();
 }

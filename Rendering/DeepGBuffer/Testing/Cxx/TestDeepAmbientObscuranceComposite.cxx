@@ -22,6 +22,7 @@
 #include <algorithm>
 
 using namespace DeepGBufferTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -144,6 +145,5 @@ int TestDeepAmbientObscuranceComposite(int, char*[])
   Check(r.EffectiveComposition == Pass::COMPOSITE_MULTIPLY && r.WorstMultiply <= 2.0 &&
       r.Darkening > 5.0,
     "automatic without an ambient term: radiance x AV");
-  std::printf("%s\n", CheckFailures() ? "FAILED" : "passed");
-  return CheckFailures() ? 1 : 0;
+  return ExitStatus();
 }

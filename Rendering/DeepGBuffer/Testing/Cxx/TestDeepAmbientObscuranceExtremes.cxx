@@ -24,6 +24,7 @@
 #include <vector>
 
 using namespace DeepGBufferTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -567,6 +568,5 @@ int TestDeepAmbientObscuranceExtremes(int, char*[])
   }
   TestGrazing();
   TestWindowSizes();
-  std::printf("%s (%d failed checks)\n", CheckFailures() ? "FAILED" : "passed", CheckFailures());
-  return CheckFailures() ? 1 : 0;
+  return ExitStatus();
 }

@@ -30,6 +30,7 @@
 #include <vector>
 
 using namespace DeepGBufferTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -254,6 +255,5 @@ int TestDeepAmbientObscuranceMip(int, char*[])
   TestPyramidContents();
   TestCloseToLevelZero();
   Time();
-  std::printf("%s\n", CheckFailures() ? "FAILED" : "passed");
-  return CheckFailures() ? 1 : 0;
+  return ExitStatus();
 }

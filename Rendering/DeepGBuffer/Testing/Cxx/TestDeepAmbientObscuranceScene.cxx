@@ -39,6 +39,7 @@
 #include <functional>
 
 using namespace DeepGBufferTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -314,6 +315,5 @@ int TestDeepAmbientObscuranceScene(int, char*[])
   Check(both.Right == sphere.Right, "the sphere is drawn the same with the volume present");
   Check(errors.Count == 0 && gbufferErrors.Count == 0, "no errors");
   pass->ReleaseGraphicsResources(window);
-  std::printf("%s\n", CheckFailures() ? "FAILED" : "passed");
-  return CheckFailures() ? 1 : 0;
+  return ExitStatus();
 }

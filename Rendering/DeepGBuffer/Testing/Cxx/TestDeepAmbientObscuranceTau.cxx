@@ -8,6 +8,8 @@
 // radii and intensities are warned about and replaced, and PrintSelf prints
 // every parameter.
 
+#include "DeepGITestChecks.h"
+
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkDeepAmbientObscurancePass.h"
@@ -18,7 +20,12 @@
 #include <limits>
 #include <sstream>
 
-int TestDeepAmbientObscuranceTau(int, char*[])
+namespace
+{
+using DeepGITest::Check;
+using DeepGITest::Format;
+
+void CheckSpiralTurnsEqualListing3()
 {
   // Copied from the paper's text, 15 values per row as printed there.
   const int listing3[] = { 1, 1, 2, 3, 2, 5, 2, 3, 2, 3, 3, 5, 5, 3, 4, 7, 5, 5, 7, 9, 8, 5, 5, 7,
@@ -27,87 +34,66 @@ int TestDeepAmbientObscuranceTau(int, char*[])
     29, 21, 18, 17, 29, 31, 31, 23, 18, 25, 26, 25, 23, 19, 34, 19, 27, 21, 25, 39, 29, 17, 21,
     27 };
   const int count = static_cast<int>(sizeof(listing3) / sizeof(listing3[0]));
-  int failures = 0;
-  if (count != 98 || vtkDeepAmbientObscurancePass::MAXIMUM_NUMBER_OF_SAMPLES != 98)
-  {
-    std::printf("Listing 3 has %d entries, the class allows %d samples (expected 98)\n", count,
-      vtkDeepAmbientObscurancePass::MAXIMUM_NUMBER_OF_SAMPLES);
-    ++failures;
-  }
+  Check(count == 98 && vtkDeepAmbientObscurancePass::MAXIMUM_NUMBER_OF_SAMPLES == 98,
+    Format("Listing 3 has %d entries, the class allows %d samples (98 both)", count,
+      vtkDeepAmbientObscurancePass::MAXIMUM_NUMBER_OF_SAMPLES));
+  int mismatches = 0;
   for (int n = 1; n <= count; ++n)
   {
     const int tau = vtkDeepAmbientObscurancePass::GetSpiralTurns(n);
     if (tau != listing3[n - 1])
     {
       std::printf("tau(%d) = %d, Listing 3 says %d\n", n, tau, listing3[n - 1]);
-      ++failures;
+      ++mismatches;
     }
   }
+  Check(mismatches == 0, Format("tau(1..%d) = Listing 3 (%d differ)", count, mismatches));
   for (int n : { -1, 0, 99, 100 })
   {
-    if (vtkDeepAmbientObscurancePass::GetSpiralTurns(n) != 0)
-    {
-      std::printf("tau(%d) = %d, expected 0 (no value in the paper)\n", n,
-        vtkDeepAmbientObscurancePass::GetSpiralTurns(n));
-      ++failures;
-    }
+    Check(vtkDeepAmbientObscurancePass::GetSpiralTurns(n) == 0,
+      Format("tau(%d) = %d, 0 expected (no value in the paper)", n,
+        vtkDeepAmbientObscurancePass::GetSpiralTurns(n)));
   }
+}
 
-  vtkNew<vtkDeepAmbientObscurancePass> pass;
-  int warnings = 0;
-  vtkNew<vtkCallbackCommand> onWarning;
-  onWarning->SetClientData(&warnings);
-  onWarning->SetCallback(
-    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
-  pass->AddObserver(vtkCommand::WarningEvent, onWarning);
+// N = 99 clamps to 98 and N = 0 to 1, each with one warning.
+void CheckSampleCountClamped(vtkDeepAmbientObscurancePass* pass, const int& warnings)
+{
   pass->SetNumberOfSamples(99);
-  if (pass->GetNumberOfSamples() != 98 || warnings != 1)
-  {
-    std::printf("N = 99 gave %d with %d warnings, expected 98 with 1\n", pass->GetNumberOfSamples(),
-      warnings);
-    ++failures;
-  }
+  Check(pass->GetNumberOfSamples() == 98 && warnings == 1,
+    Format("N = 99 gave %d with %d warnings (98 with 1)", pass->GetNumberOfSamples(), warnings));
   pass->SetNumberOfSamples(0);
-  if (pass->GetNumberOfSamples() != 1 || warnings != 2)
-  {
-    std::printf(
-      "N = 0 gave %d with %d warnings, expected 1 with 2\n", pass->GetNumberOfSamples(), warnings);
-    ++failures;
-  }
+  Check(pass->GetNumberOfSamples() == 1 && warnings == 2,
+    Format("N = 0 gave %d with %d warnings (1 with 2)", pass->GetNumberOfSamples(), warnings));
   pass->SetNumberOfSamples(9);
-  if (pass->GetNumberOfSamples() != 9 || warnings != 2)
-  {
-    std::printf("N = 9 gave %d with %d warnings\n", pass->GetNumberOfSamples(), warnings);
-    ++failures;
-  }
+  Check(pass->GetNumberOfSamples() == 9 && warnings == 2,
+    Format("N = 9 gave %d with %d warnings (9 with 2)", pass->GetNumberOfSamples(), warnings));
+}
+
+// NaN, infinite and negative radii and intensities are warned about and
+// replaced.
+void CheckRadiusAndIntensityValidated(vtkDeepAmbientObscurancePass* pass, const int& warnings)
+{
   const double nan = std::numeric_limits<double>::quiet_NaN();
   pass->SetRadius(2.0);
   pass->SetRadius(nan);
   pass->SetRadius(std::numeric_limits<double>::infinity());
-  if (pass->GetRadius() != 2.0 || pass->GetAutomaticRadius() || warnings != 4)
-  {
-    std::printf("non-finite radius: %g, %d warnings\n", pass->GetRadius(), warnings);
-    ++failures;
-  }
+  Check(pass->GetRadius() == 2.0 && !pass->GetAutomaticRadius() && warnings == 4,
+    Format("non-finite radius ignored: %g, %d warnings", pass->GetRadius(), warnings));
   pass->SetRadius(-1.0);
-  if (pass->GetRadius() != 0.0 || warnings != 5)
-  {
-    std::printf("negative radius: %g, %d warnings\n", pass->GetRadius(), warnings);
-    ++failures;
-  }
+  Check(pass->GetRadius() == 0.0 && warnings == 5,
+    Format("negative radius replaced by 0: %g, %d warnings", pass->GetRadius(), warnings));
   pass->SetIntensity(-2.0);
-  if (pass->GetIntensity() != 0.0 || warnings != 6)
-  {
-    std::printf("negative intensity: %g, %d warnings\n", pass->GetIntensity(), warnings);
-    ++failures;
-  }
+  Check(pass->GetIntensity() == 0.0 && warnings == 6,
+    Format("negative intensity replaced by 0: %g, %d warnings", pass->GetIntensity(), warnings));
   pass->SetIntensity(nan);
-  if (pass->GetIntensity() != 0.0 || warnings != 7)
-  {
-    std::printf("NaN intensity: %g, %d warnings\n", pass->GetIntensity(), warnings);
-    ++failures;
-  }
-  // Presets set exactly their documented values, in one call.
+  Check(pass->GetIntensity() == 0.0 && warnings == 7,
+    Format("NaN intensity replaced by 0: %g, %d warnings", pass->GetIntensity(), warnings));
+}
+
+// Presets set exactly their documented values, in one call.
+void CheckPresetsSetTheirValues(vtkDeepAmbientObscurancePass* pass, const int& warnings)
+{
   const struct
   {
     int Preset, Samples, Blur;
@@ -120,30 +106,24 @@ int TestDeepAmbientObscuranceTau(int, char*[])
   {
     const vtkMTimeType before = pass->GetMTime();
     pass->SetPreset(p.Preset);
-    if (pass->GetNumberOfSamples() != p.Samples || pass->GetBlurRadius() != p.Blur ||
-      pass->GetMipThreshold() != p.Threshold || pass->GetMaximumMipLevel() != p.Levels ||
-      pass->GetMTime() <= before)
-    {
-      std::printf("preset %d does not set its values\n", p.Preset);
-      ++failures;
-    }
+    Check(pass->GetNumberOfSamples() == p.Samples && pass->GetBlurRadius() == p.Blur &&
+        pass->GetMipThreshold() == p.Threshold && pass->GetMaximumMipLevel() == p.Levels &&
+        pass->GetMTime() > before,
+      Format("preset %d sets its values", p.Preset));
   }
   const int warningsBeforeUnknown = warnings;
   pass->SetPreset(7);
-  if (warnings != warningsBeforeUnknown + 1 || pass->GetNumberOfSamples() != 32)
-  {
-    std::printf("an unknown preset must warn and change nothing\n");
-    ++failures;
-  }
+  Check(warnings == warningsBeforeUnknown + 1 && pass->GetNumberOfSamples() == 32,
+    "an unknown preset warns and changes nothing");
   // The deprecated names of an earlier release still work.
   pass->SetQualityToLow();
-  if (pass->GetNumberOfSamples() != 8 ||
-    vtkDeepAmbientObscurancePass::PRESET_HIGH != vtkDeepAmbientObscurancePass::HIGH_QUALITY)
-  {
-    std::printf("the deprecated preset names must still set the presets\n");
-    ++failures;
-  }
-  pass->SetPresetToBalanced();
+  Check(pass->GetNumberOfSamples() == 8 &&
+      vtkDeepAmbientObscurancePass::PRESET_HIGH == vtkDeepAmbientObscurancePass::HIGH_QUALITY,
+    "the deprecated preset names still set the presets");
+}
+
+void CheckPrintSelfPrintsEveryParameter(vtkDeepAmbientObscurancePass* pass)
+{
   std::ostringstream printed;
   pass->Print(printed);
   for (const char* name :
@@ -151,12 +131,27 @@ int TestDeepAmbientObscuranceTau(int, char*[])
       "EffectiveRadius", "Bias", "Epsilon", "Intensity", vtkDeepGICaptureNames::NumberOfSamples,
       "UseSecondLayer", "BlurRadius", "BlurPlaneTolerance", "BlurNormalPower", "Composition" })
   {
-    if (printed.str().find(std::string(name) + ":") == std::string::npos)
-    {
-      std::printf("PrintSelf does not print %s\n", name);
-      ++failures;
-    }
+    Check(printed.str().find(std::string(name) + ":") != std::string::npos,
+      Format("PrintSelf prints %s", name));
   }
-  std::printf("%s\n", failures ? "FAILED" : "tau(1..98) = Listing 3; N = 99 -> 98 with a warning");
-  return failures ? 1 : 0;
+}
+}
+
+int TestDeepAmbientObscuranceTau(int, char*[])
+{
+  CheckSpiralTurnsEqualListing3();
+
+  vtkNew<vtkDeepAmbientObscurancePass> pass;
+  int warnings = 0;
+  vtkNew<vtkCallbackCommand> onWarning;
+  onWarning->SetClientData(&warnings);
+  onWarning->SetCallback(
+    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
+  pass->AddObserver(vtkCommand::WarningEvent, onWarning);
+  CheckSampleCountClamped(pass, warnings);
+  CheckRadiusAndIntensityValidated(pass, warnings);
+  CheckPresetsSetTheirValues(pass, warnings);
+  pass->SetPresetToBalanced();
+  CheckPrintSelfPrintsEveryParameter(pass);
+  return DeepGITest::ExitStatus();
 }

@@ -33,6 +33,7 @@
 #include <vector>
 
 using namespace DeepGBufferTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -417,6 +418,5 @@ int TestDeepAmbientObscuranceTemporal(int, char*[])
   TestConvergence();
   TestMovingCamera();
   TestResets();
-  std::printf("%s\n", CheckFailures() ? "FAILED" : "passed");
-  return CheckFailures() ? 1 : 0;
+  return ExitStatus();
 }

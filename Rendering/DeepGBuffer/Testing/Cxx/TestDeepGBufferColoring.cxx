@@ -34,6 +34,7 @@
 #include <array>
 
 using namespace DeepGBufferTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -77,15 +78,10 @@ void CheckAlbedo(vtkRenderer* renderer, vtkImageData* capture, double x, double 
     a[1], a[2], expected[0], expected[1], expected[2]);
   Check(error <= 2.0 / 255.0, what + " albedo");
 }
-}
 
-int TestDeepGBufferColoring(int, char*[])
+// Actor colour, with the diffuse coefficient: albedo = Kd * colour.
+void AddColouredQuad(vtkRenderer* renderer)
 {
-  auto window = MakeWindow(300, 300);
-  vtkNew<vtkRenderer> renderer;
-  window->AddRenderer(renderer);
-
-  // Actor colour, with the diffuse coefficient: albedo = Kd * colour.
   auto plain = Quad(-1.0, 1.0);
   vtkNew<vtkPolyDataMapper> plainMapper;
   plainMapper->SetInputConnection(plain->GetOutputPort());
@@ -96,15 +92,12 @@ int TestDeepGBufferColoring(int, char*[])
   plainActor->GetProperty()->SetAmbientColor(1.0, 0.5, 0.25);
   plainActor->GetProperty()->SetAmbient(0.2);
   renderer->AddActor(plainActor);
+}
 
-  // Point scalars (all 0.25) through a lookup table, mapped per vertex and
-  // through VTK's colour texture.
-  vtkNew<vtkLookupTable> lut;
-  lut->SetHueRange(0.0, 0.66);
-  lut->SetRange(0.0, 1.0);
-  lut->Build();
-  double lutColor[3];
-  lut->GetColor(0.25, lutColor);
+// Point scalars (all 0.25) through a lookup table, mapped per vertex and
+// through VTK's colour texture.
+void AddScalarQuads(vtkRenderer* renderer, vtkLookupTable* lut)
+{
   for (int interpolateBeforeMapping = 0; interpolateBeforeMapping < 2; ++interpolateBeforeMapping)
   {
     auto quad = Quad(interpolateBeforeMapping ? 1.0 : 0.0, 1.0);
@@ -123,8 +116,11 @@ int TestDeepGBufferColoring(int, char*[])
     actor->GetProperty()->SetDiffuse(1.0);
     renderer->AddActor(actor);
   }
+}
 
-  // An actor texture of one colour.
+// An actor texture of one colour.
+void AddTexturedQuad(vtkRenderer* renderer)
+{
   vtkNew<vtkImageData> textureImage;
   textureImage->SetDimensions(4, 4, 1);
   textureImage->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
@@ -143,8 +139,11 @@ int TestDeepGBufferColoring(int, char*[])
   texturedActor->GetProperty()->SetColor(1.0, 1.0, 1.0);
   texturedActor->GetProperty()->SetDiffuse(1.0);
   renderer->AddActor(texturedActor);
+}
 
-  // A small volume behind the quads and a text overlay.
+// A small volume behind the quads and a text overlay.
+void AddVolumeAndOverlay(vtkRenderer* renderer)
+{
   vtkNew<vtkImageData> volumeImage;
   volumeImage->SetDimensions(16, 16, 16);
   volumeImage->SetSpacing(0.05, 0.05, 0.05);
@@ -170,50 +169,37 @@ int TestDeepGBufferColoring(int, char*[])
   text->GetTextProperty()->SetColor(1.0, 1.0, 1.0);
   text->SetDisplayPosition(10, 10);
   renderer->AddActor2D(text);
+}
 
-  renderer->GetActiveCamera()->SetPosition(0, 0.5, 6);
-  renderer->GetActiveCamera()->SetFocalPoint(0, 0.5, 0);
-  renderer->ResetCameraClippingRange();
-  vtkNew<vtkDeepGBufferPass> pass;
-  renderer->SetPass(pass);
-  window->Render();
-  window->Render();
-  vtkNew<vtkImageData> capture, image;
-  pass->CaptureLayers(capture, renderer);
-  ReadWindow(window, image, nullptr);
-
-  CheckAlbedo(renderer, capture, -1.0, 1.0, { 0.6, 0.3, 0.15 }, "actor colour x diffuse");
+void CheckAmbientLayer(vtkRenderer* renderer, vtkImageData* capture)
+{
+  double world[4] = { -1.0, 1.0, 0.0, 1.0 }, display[3];
+  renderer->SetWorldPoint(world);
+  renderer->WorldToDisplay();
+  renderer->GetDisplayPoint(display);
+  const vtkIdType pixel =
+    static_cast<vtkIdType>(display[1]) * 300 + static_cast<vtkIdType>(display[0]);
+  vtkDataArray* ambient = Layer(capture, vtkDeepGICaptureNames::Ambient, 0);
+  vtkDataArray* radiance = Layer(capture, vtkDeepGICaptureNames::Radiance, 0);
+  const double expected[3] = { 0.2, 0.1, 0.05 };
+  double error = 0.0, leastDirect = 1.0;
+  for (int c = 0; c < 3; ++c)
   {
-    double world[4] = { -1.0, 1.0, 0.0, 1.0 }, display[3];
-    renderer->SetWorldPoint(world);
-    renderer->WorldToDisplay();
-    renderer->GetDisplayPoint(display);
-    const vtkIdType pixel =
-      static_cast<vtkIdType>(display[1]) * 300 + static_cast<vtkIdType>(display[0]);
-    vtkDataArray* ambient = Layer(capture, vtkDeepGICaptureNames::Ambient, 0);
-    vtkDataArray* radiance = Layer(capture, vtkDeepGICaptureNames::Radiance, 0);
-    const double expected[3] = { 0.2, 0.1, 0.05 };
-    double error = 0.0, leastDirect = 1.0;
-    for (int c = 0; c < 3; ++c)
-    {
-      error = std::max(error, std::abs(ambient->GetComponent(pixel, c) - expected[c]));
-      leastDirect =
-        std::min(leastDirect, radiance->GetComponent(pixel, c) - ambient->GetComponent(pixel, c));
-    }
-    std::printf("  ambient (%.3f %.3f %.3f), radiance - ambient >= %.3f\n",
-      ambient->GetComponent(pixel, 0), ambient->GetComponent(pixel, 1),
-      ambient->GetComponent(pixel, 2), leastDirect);
-    // R11F_G11F_B10F keeps 6-7 mantissa bits: 1 % relative.
-    Check(error <= 0.01 * 0.2 && leastDirect > 0.0, "ambient layer = Ka x ambient colour");
+    error = std::max(error, std::abs(ambient->GetComponent(pixel, c) - expected[c]));
+    leastDirect =
+      std::min(leastDirect, radiance->GetComponent(pixel, c) - ambient->GetComponent(pixel, c));
   }
-  CheckAlbedo(renderer, capture, 0.0, 1.0, { lutColor[0], lutColor[1], lutColor[2] },
-    "scalars through a lookup table");
-  CheckAlbedo(renderer, capture, 1.0, 1.0, { lutColor[0], lutColor[1], lutColor[2] },
-    "scalars through VTK's colour texture");
-  CheckAlbedo(renderer, capture, -1.0, 0.0, { 0.2, 0.8, 0.4 }, "actor texture");
+  std::printf("  ambient (%.3f %.3f %.3f), radiance - ambient >= %.3f\n",
+    ambient->GetComponent(pixel, 0), ambient->GetComponent(pixel, 1),
+    ambient->GetComponent(pixel, 2), leastDirect);
+  // R11F_G11F_B10F keeps 6-7 mantissa bits: 1 % relative.
+  Check(error <= 0.01 * 0.2 && leastDirect > 0.0, "ambient layer = Ka x ambient colour");
+}
 
-  // The volume (magenta) is composited where the G-buffer is empty; the
-  // overlay text is white at the bottom left.
+// The volume (magenta) is composited where the G-buffer is empty; the
+// overlay text is white at the bottom left.
+void CheckVolumeAndOverlayDrawn(vtkRenderer* renderer, vtkImageData* image)
+{
   double world[4] = { 0.675, -0.525, -0.6, 1.0 }, display[3];
   renderer->SetWorldPoint(world);
   renderer->WorldToDisplay();
@@ -233,8 +219,11 @@ int TestDeepGBufferColoring(int, char*[])
     }
   }
   Check(bright > 20, "the 2D overlay is drawn");
+}
 
-  // Texture access for consuming passes.
+// Texture access for consuming passes.
+void CheckTextureAccess(vtkRenderWindow* window, vtkRenderer* renderer, vtkDeepGBufferPass* pass)
+{
   vtkOpenGLRenderWindow* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
   bool handles = true;
   for (int q = 0; q < vtkDeepGBufferPass::REFLECTIVITY; ++q)
@@ -253,7 +242,44 @@ int TestDeepGBufferColoring(int, char*[])
   pass->ReleaseGraphicsResources(window);
   Check(pass->GetTextureHandle(renderer, vtkDeepGBufferPass::DEPTH) == 0,
     "no textures after ReleaseGraphicsResources");
+}
+}
 
-  std::printf("%d failure(s)\n", CheckFailures());
-  return CheckFailures() ? 1 : 0;
+int TestDeepGBufferColoring(int, char*[])
+{
+  auto window = MakeWindow(300, 300);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  AddColouredQuad(renderer);
+  vtkNew<vtkLookupTable> lut;
+  lut->SetHueRange(0.0, 0.66);
+  lut->SetRange(0.0, 1.0);
+  lut->Build();
+  double lutColor[3];
+  lut->GetColor(0.25, lutColor);
+  AddScalarQuads(renderer, lut);
+  AddTexturedQuad(renderer);
+  AddVolumeAndOverlay(renderer);
+
+  renderer->GetActiveCamera()->SetPosition(0, 0.5, 6);
+  renderer->GetActiveCamera()->SetFocalPoint(0, 0.5, 0);
+  renderer->ResetCameraClippingRange();
+  vtkNew<vtkDeepGBufferPass> pass;
+  renderer->SetPass(pass);
+  window->Render();
+  window->Render();
+  vtkNew<vtkImageData> capture, image;
+  pass->CaptureLayers(capture, renderer);
+  ReadWindow(window, image, nullptr);
+
+  CheckAlbedo(renderer, capture, -1.0, 1.0, { 0.6, 0.3, 0.15 }, "actor colour x diffuse");
+  CheckAlbedo(renderer, capture, 0.0, 1.0, { lutColor[0], lutColor[1], lutColor[2] },
+    "scalars through a lookup table");
+  CheckAlbedo(renderer, capture, 1.0, 1.0, { lutColor[0], lutColor[1], lutColor[2] },
+    "scalars through VTK's colour texture");
+  CheckAlbedo(renderer, capture, -1.0, 0.0, { 0.2, 0.8, 0.4 }, "actor texture");
+  CheckAmbientLayer(renderer, capture);
+  CheckVolumeAndOverlayDrawn(renderer, image);
+  CheckTextureAccess(window, renderer, pass);
+  return ExitStatus();
 }

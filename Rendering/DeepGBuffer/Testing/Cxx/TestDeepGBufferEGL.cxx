@@ -12,10 +12,9 @@ int TestDeepGBufferEGL(int, char*[])
 {
   vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::Take(
     vtkDeepGIRenderWindowFactory::NewRenderWindow(vtkDeepGIRenderWindowFactory::BACKEND_EGL));
-  if (!window)
+  if (!DeepGITest::Check(window != nullptr, "an EGL render window is created"))
   {
-    std::printf("FAILED: no EGL render window\n");
-    return 1;
+    return EXIT_FAILURE;
   }
   window->SetMultiSamples(0);
   window->SetSize(256, 192);
@@ -41,10 +40,14 @@ int TestDeepGBufferEGL(int, char*[])
   DeepGBufferTest::SeparationReport separation =
     DeepGBufferTest::CheckSeparation(capture, 1, dz, 1e-6);
   const double maximum = DeepGBufferTest::MaximumColorDifference(image, plain);
-  std::printf("EGL: layer 1 %ld px, %ld closer than dz %g; max difference to plain VTK %g\n",
-    separation.Pixels, separation.Violations, dz, maximum);
   pass->ReleaseGraphicsResources(window);
-  const bool ok = captured && DeepGBufferTest::AllFinite(capture) && separation.Violations == 0 &&
-    separation.Pixels > 1000 && maximum <= 1.0;
-  return ok ? 0 : 1;
+  DeepGITest::Check(captured, "the layers are captured");
+  DeepGITest::Check(DeepGBufferTest::AllFinite(capture), "the captured layers are finite");
+  DeepGITest::Check(separation.Violations == 0,
+    DeepGITest::Format("layer 1: %ld pixels closer than dz %g", separation.Violations, dz));
+  DeepGITest::Check(separation.Pixels > 1000,
+    DeepGITest::Format("layer 1: %ld pixels (> 1000)", separation.Pixels));
+  DeepGITest::Check(maximum <= 1.0,
+    DeepGITest::Format("layer 0 matches plain VTK (max difference %g <= 1)", maximum));
+  return DeepGITest::ExitStatus();
 }

@@ -35,6 +35,7 @@
 #include <cstdio>
 
 using namespace DeepRadiosityTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -215,6 +216,5 @@ int TestDeepGBufferLayerExchange(int, char*[])
   CheckEmptyRenderer(window);
   CheckEmptiedLayer(window, renderer);
   CheckSceneBounds(window, renderer);
-  std::printf("%d failure(s)\n", CheckFailures());
-  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ExitStatus();
 }

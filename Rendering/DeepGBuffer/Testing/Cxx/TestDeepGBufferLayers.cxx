@@ -23,6 +23,7 @@
 #include <functional>
 
 using namespace DeepGBufferTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -59,7 +60,7 @@ vtkSmartPointer<vtkRenderWindow> RenderScene(
   return window;
 }
 
-bool CompareWithPlainVTK(const SceneBuilder& build, const char* name)
+void CheckLayerZeroMatchesPlainVTK(const SceneBuilder& build, const char* name)
 {
   vtkNew<vtkDeepGBufferPass> pass;
   auto withPass = RenderScene(build, pass, nullptr);
@@ -84,34 +85,31 @@ bool CompareWithPlainVTK(const SceneBuilder& build, const char* name)
     maxDepth = std::max(maxDepth, std::abs(za->GetTuple1(p) - zb->GetTuple1(p)));
   }
   pass->ReleaseGraphicsResources(withPass);
-  std::printf("%s: layer 0 vs plain VTK: max colour difference %g (of 255) in %ld channels, "
-              "max depth difference %g\n",
-    name, maxColor, colorDiffs, maxDepth);
   // Radiance is stored as RGBA16F (11-bit mantissa): at most one 8-bit
   // level. Depth goes through a 32-bit float texture into the window's
   // 24-bit depth buffer, and the geometry shader path interpolates it in a
   // different order: a few 24-bit levels (2^-24 = 6e-8 each).
   const double depthTolerance = 4.0 / (1 << 24);
-  if (maxColor > 1.0 || maxDepth > depthTolerance)
-  {
-    std::printf("%s: FAILED: layer 0 is not what VTK draws\n", name);
-    return false;
-  }
-  return true;
+  Check(maxColor <= 1.0,
+    Format("%s: layer 0 colour is what VTK draws (max difference %g of 255, in %ld channels)", name,
+      maxColor, colorDiffs));
+  Check(maxDepth <= depthTolerance,
+    Format("%s: layer 0 depth is what VTK draws (max difference %g <= %g)", name, maxDepth,
+      depthTolerance));
 }
 
-bool CheckScene(const SceneBuilder& build, const char* name, double dz)
+// Every oracle builds the layers DEPTH_PEEL builds, in the number of
+// geometry passes it promises.
+void CheckOraclesMatchDepthPeeling(const SceneBuilder& build, const char* name, double dz)
 {
-  bool ok = CompareWithPlainVTK(build, name);
   vtkNew<vtkImageData> reference;
   vtkNew<vtkDeepGBufferPass> peel;
   peel->SetOracleToDepthPeel();
   peel->SetMinimumSeparation(dz);
   auto peelWindow = RenderScene(build, peel, reference);
-  if (!peelWindow)
+  if (!Check(peelWindow != nullptr, Format("%s: the scene is built and captured", name)))
   {
-    std::printf("%s: could not build or capture the scene\n", name);
-    return false;
+    return;
   }
   peel->ReleaseGraphicsResources(peelWindow);
 
@@ -123,17 +121,14 @@ bool CheckScene(const SceneBuilder& build, const char* name, double dz)
     vtkNew<vtkImageData> capture;
     auto window = RenderScene(build, pass, capture);
     const char* oracleName = vtkDeepGBufferPass::GetOracleAsString(oracle);
-    if (!window)
+    if (!Check(window != nullptr, Format("%s/%s: captured", name, oracleName)))
     {
-      std::printf("%s/%s: capture failed\n", name, oracleName);
-      ok = false;
       continue;
     }
     const int geometryPasses = pass->GetLastGeometryPassCount();
     const int effectiveOracle = pass->GetEffectiveOracle();
     pass->ReleaseGraphicsResources(window);
 
-    bool finite = AllFinite(capture);
     SeparationReport separation = CheckSeparation(capture, 1, dz, 1e-6);
     LayerDifference layer0 = CompareLayer(capture, reference, 0, EquivalenceTolerance);
     LayerDifference layer1 = CompareLayer(capture, reference, 1, EquivalenceTolerance, nullptr, dz);
@@ -144,15 +139,16 @@ bool CheckScene(const SceneBuilder& build, const char* name, double dz)
       separation.WorstExcess, layer0.Different(), layer1.Different(), layer1.Compared,
       layer1.MaskMismatches, layer1.DepthMismatches, layer1.Ties);
     const bool singlePass = oracle != vtkDeepGBufferPass::DEPTH_PEEL;
-    if (!finite || separation.Violations != 0 || separation.Pixels < Width * Height / 20 ||
-      layer0.Different() != 0 || layer1.Different() != 0 || effectiveOracle != oracle ||
-      geometryPasses != (singlePass ? 1 : 2))
-    {
-      std::printf("%s/%s: FAILED\n", name, oracleName);
-      ok = false;
-    }
+    const std::string what = std::string(name) + "/" + oracleName;
+    Check(AllFinite(capture), what + ": the layers are finite");
+    Check(separation.Violations == 0, what + ": layer 1 at least dz behind layer 0");
+    Check(separation.Pixels >= Width * Height / 20, what + ": layer 1 covers >= 5 % of the view");
+    Check(layer0.Different() == 0 && layer1.Different() == 0,
+      what + ": layers 0 and 1 equal DEPTH_PEEL's");
+    Check(effectiveOracle == oracle, what + ": the oracle asked for is used");
+    Check(geometryPasses == (singlePass ? 1 : 2),
+      Format("%s: %d geometry pass(es)", what.c_str(), singlePass ? 1 : 2));
   }
-  return ok;
 }
 
 // Pixels of layer 1 that repeat layer 0's surface (depth within 1e-4).
@@ -171,6 +167,29 @@ long DuplicatePixels(vtkImageData* capture)
     }
   }
   return count;
+}
+
+// Minimum separation is what keeps the duplicate faces out of layer 1.
+void CheckSeparationRemovesDuplicateFaces(const SceneBuilder& cornell)
+{
+  for (double dz : { 0.0, 0.05 })
+  {
+    vtkNew<vtkDeepGBufferPass> pass;
+    pass->SetOracleToDepthPeel();
+    pass->SetMinimumSeparation(dz);
+    vtkNew<vtkImageData> capture;
+    auto window = RenderScene(cornell, pass, capture);
+    if (!Check(window != nullptr, Format("cornell-original, dz = %g: captured", dz)))
+    {
+      return;
+    }
+    pass->ReleaseGraphicsResources(window);
+    long duplicates = DuplicatePixels(capture);
+    Check((dz == 0.0) == (duplicates > 0),
+      Format("cornell-original, dz = %g: %ld layer-1 pixels repeat layer 0's surface "
+             "(duplicates only without minimum separation)",
+        dz, duplicates));
+  }
 }
 }
 
@@ -211,30 +230,10 @@ int TestDeepGBufferLayers(int argc, char* argv[])
     return true;
   };
 
-  bool ok = CheckScene(demo, "demo", 0.15);
-  ok = CheckScene(cornell, "cornell-original", 0.05) && ok;
-
-  // Minimum separation is what keeps the duplicate faces out of layer 1.
-  for (double dz : { 0.0, 0.05 })
-  {
-    vtkNew<vtkDeepGBufferPass> pass;
-    pass->SetOracleToDepthPeel();
-    pass->SetMinimumSeparation(dz);
-    vtkNew<vtkImageData> capture;
-    auto window = RenderScene(cornell, pass, capture);
-    if (!window)
-    {
-      return 1;
-    }
-    pass->ReleaseGraphicsResources(window);
-    long duplicates = DuplicatePixels(capture);
-    std::printf(
-      "cornell-original, dz = %g: %ld layer-1 pixels repeat layer 0's surface\n", dz, duplicates);
-    if ((dz == 0.0) != (duplicates > 0))
-    {
-      std::printf("FAILED: duplicates expected only without minimum separation\n");
-      ok = false;
-    }
-  }
-  return ok ? 0 : 1;
+  CheckLayerZeroMatchesPlainVTK(demo, "demo");
+  CheckOraclesMatchDepthPeeling(demo, "demo", 0.15);
+  CheckLayerZeroMatchesPlainVTK(cornell, "cornell-original");
+  CheckOraclesMatchDepthPeeling(cornell, "cornell-original", 0.05);
+  CheckSeparationRemovesDuplicateFaces(cornell);
+  return ExitStatus();
 }

@@ -61,20 +61,17 @@ double AngleDegrees(const double a[3], const double b[3])
   return vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(a, b));
 }
 
-bool CheckStatistics(const char* what, double maximum, double sum, int count)
+void CheckStatistics(const char* what, double maximum, double sum, int count)
 {
   const double mean = sum / count;
-  std::printf("%s: %d directions, max error %.4f deg, mean %.4f deg\n", what, count, maximum, mean);
-  if (!(maximum < MaximumErrorDegrees) || !(mean < MeanErrorDegrees))
-  {
-    std::printf("%s: error bound exceeded (max < %.2f, mean < %.2f required)\n", what,
-      MaximumErrorDegrees, MeanErrorDegrees);
-    return false;
-  }
-  return true;
+  DeepGITest::Check(maximum < MaximumErrorDegrees,
+    DeepGITest::Format(
+      "%s: %d directions, max error %.4f deg < %.2f", what, count, maximum, MaximumErrorDegrees));
+  DeepGITest::Check(mean < MeanErrorDegrees,
+    DeepGITest::Format("%s: mean error %.4f deg < %.2f", what, mean, MeanErrorDegrees));
 }
 
-bool TestCpuCodec()
+void CheckCppCodecAccuracy()
 {
   const int n = 1000000;
   double maximum = 0.0, sum = 0.0;
@@ -98,18 +95,18 @@ bool TestCpuCodec()
     double r[3];
     vtkDeepGBufferPass::EncodeOct16(axis, e);
     vtkDeepGBufferPass::DecodeOct16(e, r);
-    if (AngleDegrees(axis, r) > 1e-9)
+    if (!DeepGITest::Check(AngleDegrees(axis, r) <= 1e-9,
+          DeepGITest::Format("axis (%g %g %g) is exact", axis[0], axis[1], axis[2])))
     {
-      std::printf("axis (%g %g %g) is not exact\n", axis[0], axis[1], axis[2]);
-      return false;
+      return;
     }
   }
-  return CheckStatistics("C++ codec", maximum, sum, n);
+  CheckStatistics("C++ codec", maximum, sum, n);
 }
 
 // Encodes a latitude-longitude grid of directions with the shaders' GLSL into an RG8 target,
 // reads the bytes back and decodes them with the C++ codec.
-bool TestGlslEncoder()
+void CheckGlslEncoderAccuracy()
 {
   const int size = 512;
   const int n = size * size;
@@ -118,10 +115,9 @@ bool TestGlslEncoder()
   window->AddRenderer(renderer);
   window->Render();
   vtkOpenGLRenderWindow* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
-  if (!glWindow)
+  if (!DeepGITest::Check(glWindow != nullptr, "an OpenGL render window"))
   {
-    std::printf("no OpenGL render window\n");
-    return false;
+    return;
   }
   glWindow->MakeCurrent();
 
@@ -157,16 +153,13 @@ bool TestGlslEncoder()
         "  vec3 d = vec3(sin(theta) * cos(phi), sin(theta) * sin(phi), cos(theta));\n"
         "  gl_FragData[0] = vec4(deepEncodeOct16(d), 0.0, 1.0);\n"
         "}\n";
-  bool ok = true;
+  bool ok = false;
   {
     vtkOpenGLQuadHelper quad(
       glWindow, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), "");
-    if (!quad.Program || !quad.Program->GetCompiled())
-    {
-      std::printf("the encoder shader did not compile\n");
-      ok = false;
-    }
-    else
+    ok =
+      DeepGITest::Check(quad.Program && quad.Program->GetCompiled(), "the encoder shader compiles");
+    if (ok)
     {
       glWindow->GetShaderCache()->ReadyShaderProgram(quad.Program);
       quad.Program->SetUniformi("width", size);
@@ -190,7 +183,7 @@ bool TestGlslEncoder()
   fbo->ReleaseGraphicsResources(glWindow);
   if (!ok)
   {
-    return false;
+    return;
   }
 
   // The GPU evaluates the direction in single precision; compare the decoded
@@ -216,19 +209,19 @@ bool TestGlslEncoder()
       }
     }
   }
-  if (byteMismatches)
+  if (!DeepGITest::Check(byteMismatches == 0,
+        DeepGITest::Format(
+          "GLSL and C++ encoders within one level (%d values differ more)", byteMismatches)))
   {
-    std::printf(
-      "GLSL and C++ encoders differ by more than one level on %d values\n", byteMismatches);
-    return false;
+    return;
   }
-  return CheckStatistics("GLSL encoder", maximum, sum, n);
+  CheckStatistics("GLSL encoder", maximum, sum, n);
 }
 }
 
 int TestDeepGBufferOct16(int, char*[])
 {
-  bool ok = TestCpuCodec();
-  ok = TestGlslEncoder() && ok;
-  return ok ? 0 : 1;
+  CheckCppCodecAccuracy();
+  CheckGlslEncoderAccuracy();
+  return DeepGITest::ExitStatus();
 }

@@ -25,6 +25,7 @@
 #include <vector>
 
 using namespace DeepGBufferTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -185,7 +186,6 @@ OracleMotion RunPath(int oracle, double dz)
 int TestDeepGBufferOracleMotion(int, char*[])
 {
   const double dz = 0.15;
-  bool ok = true;
   OracleMotion results[vtkDeepGBufferPass::DELAY + 1];
   for (int oracle = vtkDeepGBufferPass::PREVIOUS; oracle <= vtkDeepGBufferPass::DELAY; ++oracle)
   {
@@ -200,20 +200,16 @@ int TestDeepGBufferOracleMotion(int, char*[])
   const OracleMotion& delay = results[vtkDeepGBufferPass::DELAY];
   const OracleMotion& reproject = results[vtkDeepGBufferPass::REPROJECT];
   const OracleMotion& previous = results[vtkDeepGBufferPass::PREVIOUS];
-  if (delay.Different != 0)
-  {
-    std::printf("FAILED: DELAY must equal DEPTH_PEEL of the frame it shows\n");
-    ok = false;
-  }
-  if (reproject.MeanFraction > MaximumReprojectFraction ||
-    reproject.SilhouetteShare < MinimumReprojectSilhouetteShare ||
-    reproject.MeanFraction > MaximumReprojectToPreviousRatio * previous.MeanFraction)
-  {
-    std::printf("FAILED: REPROJECT must stay below %.2f, concentrated at silhouettes (>= %.0f%%), "
-                "and below %.1f x PREVIOUS\n",
-      MaximumReprojectFraction, 100.0 * MinimumReprojectSilhouetteShare,
-      MaximumReprojectToPreviousRatio);
-    ok = false;
-  }
-  return ok ? 0 : 1;
+  Check(delay.Different == 0,
+    Format("DELAY equals DEPTH_PEEL of the frame it shows (%ld pixels differ)", delay.Different));
+  Check(reproject.MeanFraction <= MaximumReprojectFraction,
+    Format("REPROJECT differs on %.4f of layer 1 per frame (<= %.2f)", reproject.MeanFraction,
+      MaximumReprojectFraction));
+  Check(reproject.SilhouetteShare >= MinimumReprojectSilhouetteShare,
+    Format("REPROJECT's differences concentrated at silhouettes (%.1f%% >= %.0f%%)",
+      100.0 * reproject.SilhouetteShare, 100.0 * MinimumReprojectSilhouetteShare));
+  Check(reproject.MeanFraction <= MaximumReprojectToPreviousRatio * previous.MeanFraction,
+    Format("REPROJECT below %.1f x PREVIOUS (%.4f vs %.4f)", MaximumReprojectToPreviousRatio,
+      reproject.MeanFraction, previous.MeanFraction));
+  return ExitStatus();
 }

@@ -22,6 +22,7 @@
 #include <functional>
 
 using namespace DeepGBufferTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -337,6 +338,5 @@ int TestDeepGBufferRobustness(int, char*[])
   TestEmptyAndChangingScenes();
   TestViewportsAndProjection();
   TestMappersAndTranslucency();
-  std::printf("%d failure(s)\n", CheckFailures());
-  return CheckFailures() ? 1 : 0;
+  return ExitStatus();
 }

@@ -7,6 +7,8 @@
 // probes of the final fragment shader are exercised by the rendering tests
 // named in the header.
 
+#include "DeepGITestChecks.h"
+
 #include "vtkDeepGBufferShaderTokens.h"
 
 #include <cstdio>
@@ -22,13 +24,10 @@ extern const char* vtkPointGaussianGS;
 
 namespace
 {
-int Failures = 0;
-
 void Expect(const char* shader, const char* shaderName, const char* token)
 {
-  const bool found = std::strstr(shader, token) != nullptr;
-  std::printf("%s: %s has \"%s\"\n", found ? "ok" : "FAILED", shaderName, token);
-  Failures += found ? 0 : 1;
+  DeepGITest::Check(
+    std::strstr(shader, token) != nullptr, DeepGITest::Format("%s has \"%s\"", shaderName, token));
 }
 }
 
@@ -49,9 +48,7 @@ int TestDeepGBufferShaderTokens(int, char*[])
     Expect(vtkPointGaussianGS, "vtkPointGaussianGS", token);
   }
   // The check itself can fail: a token VTK does not have is reported missing.
-  const bool detects = std::strstr(vtkPolyDataFS, "//VTK::NoSuchHook::Impl") == nullptr;
-  std::printf("%s: a token that VTK lacks is not found\n", detects ? "ok" : "FAILED");
-  Failures += detects ? 0 : 1;
-  std::printf("%d failure(s)\n", Failures);
-  return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  DeepGITest::Check(std::strstr(vtkPolyDataFS, "//VTK::NoSuchHook::Impl") == nullptr,
+    "a token that VTK lacks is not found");
+  return DeepGITest::ExitStatus();
 }

@@ -50,6 +50,7 @@
 #include <cmath>
 
 using namespace DeepRadiosityTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -204,6 +205,162 @@ void RenderGBuffer(vtkDeepGBufferPass* pass, bool spot, int frames, vtkImageData
     shadows->ReleaseGraphicsResources(window);
   }
 }
+
+// Both layers: shadowed and lit floor in the cone, the shadows where the
+// box blocks the light, ambient unshadowed.
+void CheckShadowedFloor(vtkImageData* layers)
+{
+  for (int layer = 0; layer < 2; ++layer)
+  {
+    FloorStats st = Classify(layers, layer);
+    std::printf("layer %d: %ld floor pixels in the cone, %ld shadowed (%ld where the box does not "
+                "block the light), %ld lit, ambient wrong at %ld\n",
+      layer, st.Floor, st.Shadowed, st.FalseShadows, st.Lit, st.BadAmbient);
+    const std::string l = "layer " + std::to_string(layer) + ": ";
+    Check(st.Shadowed >= (layer == 0 ? 300 : 50), l + "shadowed floor pixels");
+    Check(st.Lit >= (layer == 0 ? 3000 : 50), l + "lit floor pixels");
+    Check(st.FalseShadows == 0, l + "the shadowed pixels lie in the box's shadow");
+    Check(st.BadAmbient == 0, l + "ambient 0.1 in light and shadow");
+  }
+}
+
+// The other oracles draw the layers through the same shadow hooks: the
+// same shadowed floor (layer 0 drawn the same way: bit-identical counts;
+// layer 1 within 10 % of REPROJECT's).
+void CheckOraclesCastTheSameShadows(vtkImageData* layers)
+{
+  const FloorStats reference0 = Classify(layers, 0), reference1 = Classify(layers, 1);
+  for (int oracle : { vtkDeepGBufferPass::DEPTH_PEEL, vtkDeepGBufferPass::PREVIOUS,
+         vtkDeepGBufferPass::PREDICT, vtkDeepGBufferPass::DELAY })
+  {
+    vtkNew<vtkDeepGBufferPass> other;
+    other->SetOracle(oracle);
+    vtkNew<vtkImageData> captured;
+    vtkNew<vtkShadowMapPass> otherShadows;
+    other->SetShadowMapPass(otherShadows);
+    RenderGBuffer(other, true, 3, captured, nullptr, otherShadows);
+    const FloorStats l0 = Classify(captured, 0), l1 = Classify(captured, 1);
+    std::printf("%s: layer 0 %ld shadowed, layer 1 %ld shadowed of %ld\n",
+      vtkDeepGBufferPass::GetOracleAsString(oracle), l0.Shadowed, l1.Shadowed, l1.Floor);
+    Check(l0.Shadowed == reference0.Shadowed && l0.FalseShadows == 0 &&
+        std::abs(l1.Shadowed - reference1.Shadowed) <= reference1.Shadowed / 10 &&
+        l1.FalseShadows == 0,
+      std::string(vtkDeepGBufferPass::GetOracleAsString(oracle)) + ": the same shadows");
+  }
+}
+
+// Layer 0 against VTK's own shadow pipeline.
+void CheckLayerZeroMatchesVTKShadows(vtkImageData* layers)
+{
+  auto vtkWindow = MakeWindow(200, 150);
+  vtkNew<vtkRenderer> vtkRen;
+  vtkWindow->AddRenderer(vtkRen);
+  ShadowScene(vtkRen);
+  vtkRen->ResetCameraClippingRange();
+  vtkNew<vtkShadowMapPass> vtkShadows;
+  vtkNew<vtkRenderPassCollection> steps;
+  steps->AddItem(vtkShadows->GetShadowMapBakerPass());
+  steps->AddItem(vtkShadows);
+  vtkNew<vtkSequencePass> sequence;
+  sequence->SetPasses(steps);
+  vtkNew<vtkCameraPass> cameraPass;
+  cameraPass->SetDelegatePass(sequence);
+  vtkRen->SetPass(cameraPass);
+  vtkWindow->Render();
+  vtkNew<vtkImageData> rgb;
+  ReadWindow(vtkWindow, rgb, nullptr);
+  vtkDataArray* colors = rgb->GetPointData()->GetScalars();
+  vtkDataArray* radiance = Layer(layers, vtkDeepGICaptureNames::Radiance, 0);
+  vtkDataArray* valid = Layer(layers, vtkDeepGICaptureNames::Valid, 0);
+  long compared = 0, different = 0;
+  double worst = 0.0;
+  for (vtkIdType p = 0; p < colors->GetNumberOfTuples(); ++p)
+  {
+    if (valid->GetComponent(p, 0) == 0)
+    {
+      continue;
+    }
+    ++compared;
+    double d = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      const double mine = std::min(1.0, radiance->GetComponent(p, c)) * 255.0;
+      d = std::max(d, std::abs(mine - colors->GetComponent(p, c)));
+    }
+    worst = std::max(worst, d);
+    different += d > 2.0 ? 1 : 0;
+  }
+  std::printf("layer 0 against VTK's shadows: %ld of %ld pixels differ by > 2/255 (largest "
+              "%.1f/255)\n",
+    different, compared, worst);
+  Check(
+    compared > 10000 && different <= compared / 200, "layer 0 radiance is VTK's shadowed image");
+  vtkShadows->ReleaseGraphicsResources(vtkWindow);
+}
+
+// Shadowed direct light enters the radiosity as B(Y): red light in the shadow.
+void CheckLightBleedsIntoShadow()
+{
+  vtkNew<vtkDeepRadiosityPass> radiosity;
+  vtkNew<vtkShadowMapPass> radiosityShadows;
+  radiosity->GetGBufferPass()->SetShadowMapPass(radiosityShadows);
+  Frame f;
+  RenderFrames([](vtkRenderer* r) { ShadowScene(r); }, radiosity, 10, f, 200, 150);
+  long n = 0;
+  double red = 0.0, green = 0.0, direct = 0.0;
+  for (int j = 0; j < f.Height; ++j)
+  {
+    for (int i = 0; i < f.Width; ++i)
+    {
+      double p[3];
+      if (!WorldPosition(f.Layers, 0, i, j, p) || SpotDirect(p) <= 0.0 || p[2] > -1.2)
+      {
+        continue;
+      }
+      const double d = Direct(f.Layers, 0, static_cast<vtkIdType>(j) * f.Width + i);
+      if (d >= 0.05 * SpotDirect(p))
+      {
+        continue;
+      }
+      ++n;
+      red += At(f.Radiosity,
+        vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0), i, j, 0);
+      green += At(f.Radiosity,
+        vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0), i, j, 1);
+      direct = std::max(direct, d);
+    }
+  }
+  red /= std::max(1L, n);
+  green /= std::max(1L, n);
+  std::printf("shadowed floor near the red wall: %ld pixels, largest direct %.4f, mean L_ind "
+              "red %.4f green %.4f\n",
+    n, direct, red, green);
+  Check(n >= 50, "shadowed floor near the red wall is seen");
+  Check(red > 0.01 && red > 2.0 * green, "red light bleeds into the shadow");
+  Check(AllFinite(f.Radiosity), "finite radiosity");
+  radiosity->ReleaseGraphicsResources(f.Window);
+}
+
+// Without shadows nothing changes.
+void CheckWithoutShadowsNothingChanges()
+{
+  vtkNew<vtkDeepGBufferPass> plain, lost, headlit, headlitPlain;
+  vtkNew<vtkImageData> a, b, c, d;
+  RenderGBuffer(plain, true, 4, a);
+  vtkNew<vtkShadowMapPass> s1, s2;
+  lost->SetShadowMapPass(s1);
+  RenderGBuffer(
+    lost, true, 4, b, [&]() { lost->SetShadowMapPass(nullptr); }, s1);
+  Check(SameArrays(a, b), "shadow pass removed: bit-identical layers");
+  const FloorStats unshadowed = Classify(a, 1);
+  std::printf("without shadows, layer 1: %ld floor pixels in the cone, %ld dark\n",
+    unshadowed.Floor, unshadowed.Shadowed);
+  Check(unshadowed.Shadowed == 0, "without shadow maps no floor pixel of layer 1 is dark");
+  headlit->SetShadowMapPass(s2);
+  RenderGBuffer(headlit, false, 4, c);
+  RenderGBuffer(headlitPlain, false, 4, d);
+  Check(SameArrays(c, d), "no shadowing light: bit-identical layers");
+}
 }
 
 int TestDeepGBufferShadows(int, char*[])
@@ -229,40 +386,8 @@ int TestDeepGBufferShadows(int, char*[])
   Check(gbuffer->CaptureLayers(layers, renderer), "capture with shadows");
   Check(AllFinite(layers), "finite layers");
   Check(gbuffer->GetEffectiveNumberOfLayers() == 2, "two layers");
-  for (int layer = 0; layer < 2; ++layer)
-  {
-    FloorStats st = Classify(layers, layer);
-    std::printf("layer %d: %ld floor pixels in the cone, %ld shadowed (%ld where the box does not "
-                "block the light), %ld lit, ambient wrong at %ld\n",
-      layer, st.Floor, st.Shadowed, st.FalseShadows, st.Lit, st.BadAmbient);
-    const std::string l = "layer " + std::to_string(layer) + ": ";
-    Check(st.Shadowed >= (layer == 0 ? 300 : 50), l + "shadowed floor pixels");
-    Check(st.Lit >= (layer == 0 ? 3000 : 50), l + "lit floor pixels");
-    Check(st.FalseShadows == 0, l + "the shadowed pixels lie in the box's shadow");
-    Check(st.BadAmbient == 0, l + "ambient 0.1 in light and shadow");
-  }
-
-  // The other oracles draw the layers through the same shadow hooks: the
-  // same shadowed floor (layer 0 drawn the same way: bit-identical counts;
-  // layer 1 within 10 % of REPROJECT's).
-  const FloorStats reference0 = Classify(layers, 0), reference1 = Classify(layers, 1);
-  for (int oracle : { vtkDeepGBufferPass::DEPTH_PEEL, vtkDeepGBufferPass::PREVIOUS,
-         vtkDeepGBufferPass::PREDICT, vtkDeepGBufferPass::DELAY })
-  {
-    vtkNew<vtkDeepGBufferPass> other;
-    other->SetOracle(oracle);
-    vtkNew<vtkImageData> captured;
-    vtkNew<vtkShadowMapPass> otherShadows;
-    other->SetShadowMapPass(otherShadows);
-    RenderGBuffer(other, true, 3, captured, nullptr, otherShadows);
-    const FloorStats l0 = Classify(captured, 0), l1 = Classify(captured, 1);
-    std::printf("%s: layer 0 %ld shadowed, layer 1 %ld shadowed of %ld\n",
-      vtkDeepGBufferPass::GetOracleAsString(oracle), l0.Shadowed, l1.Shadowed, l1.Floor);
-    Check(l0.Shadowed == reference0.Shadowed && l0.FalseShadows == 0 &&
-        std::abs(l1.Shadowed - reference1.Shadowed) <= reference1.Shadowed / 10 &&
-        l1.FalseShadows == 0,
-      std::string(vtkDeepGBufferPass::GetOracleAsString(oracle)) + ": the same shadows");
-  }
+  CheckShadowedFloor(layers);
+  CheckOraclesCastTheSameShadows(layers);
 
   // ReleaseGraphicsResources, then the same frames again: the shadow maps
   // are baked anew (VTK's baker alone would not) and the layers are the same.
@@ -277,117 +402,12 @@ int TestDeepGBufferShadows(int, char*[])
       "after ReleaseGraphicsResources: the same shadowed layers");
   }
 
-  // Layer 0 against VTK's own shadow pipeline.
-  {
-    auto vtkWindow = MakeWindow(200, 150);
-    vtkNew<vtkRenderer> vtkRen;
-    vtkWindow->AddRenderer(vtkRen);
-    ShadowScene(vtkRen);
-    vtkRen->ResetCameraClippingRange();
-    vtkNew<vtkShadowMapPass> vtkShadows;
-    vtkNew<vtkRenderPassCollection> steps;
-    steps->AddItem(vtkShadows->GetShadowMapBakerPass());
-    steps->AddItem(vtkShadows);
-    vtkNew<vtkSequencePass> sequence;
-    sequence->SetPasses(steps);
-    vtkNew<vtkCameraPass> cameraPass;
-    cameraPass->SetDelegatePass(sequence);
-    vtkRen->SetPass(cameraPass);
-    vtkWindow->Render();
-    vtkNew<vtkImageData> rgb;
-    ReadWindow(vtkWindow, rgb, nullptr);
-    vtkDataArray* colors = rgb->GetPointData()->GetScalars();
-    vtkDataArray* radiance = Layer(layers, vtkDeepGICaptureNames::Radiance, 0);
-    vtkDataArray* valid = Layer(layers, vtkDeepGICaptureNames::Valid, 0);
-    long compared = 0, different = 0;
-    double worst = 0.0;
-    for (vtkIdType p = 0; p < colors->GetNumberOfTuples(); ++p)
-    {
-      if (valid->GetComponent(p, 0) == 0)
-      {
-        continue;
-      }
-      ++compared;
-      double d = 0.0;
-      for (int c = 0; c < 3; ++c)
-      {
-        const double mine = std::min(1.0, radiance->GetComponent(p, c)) * 255.0;
-        d = std::max(d, std::abs(mine - colors->GetComponent(p, c)));
-      }
-      worst = std::max(worst, d);
-      different += d > 2.0 ? 1 : 0;
-    }
-    std::printf("layer 0 against VTK's shadows: %ld of %ld pixels differ by > 2/255 (largest "
-                "%.1f/255)\n",
-      different, compared, worst);
-    Check(
-      compared > 10000 && different <= compared / 200, "layer 0 radiance is VTK's shadowed image");
-    vtkShadows->ReleaseGraphicsResources(vtkWindow);
-  }
-
-  // Shadowed direct light enters the radiosity as B(Y): red light in the shadow.
-  {
-    vtkNew<vtkDeepRadiosityPass> radiosity;
-    vtkNew<vtkShadowMapPass> radiosityShadows;
-    radiosity->GetGBufferPass()->SetShadowMapPass(radiosityShadows);
-    Frame f;
-    RenderFrames([](vtkRenderer* r) { ShadowScene(r); }, radiosity, 10, f, 200, 150);
-    long n = 0;
-    double red = 0.0, green = 0.0, direct = 0.0;
-    for (int j = 0; j < f.Height; ++j)
-    {
-      for (int i = 0; i < f.Width; ++i)
-      {
-        double p[3];
-        if (!WorldPosition(f.Layers, 0, i, j, p) || SpotDirect(p) <= 0.0 || p[2] > -1.2)
-        {
-          continue;
-        }
-        const double d = Direct(f.Layers, 0, static_cast<vtkIdType>(j) * f.Width + i);
-        if (d >= 0.05 * SpotDirect(p))
-        {
-          continue;
-        }
-        ++n;
-        red += At(f.Radiosity,
-          vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0), i, j, 0);
-        green += At(f.Radiosity,
-          vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0), i, j, 1);
-        direct = std::max(direct, d);
-      }
-    }
-    red /= std::max(1L, n);
-    green /= std::max(1L, n);
-    std::printf("shadowed floor near the red wall: %ld pixels, largest direct %.4f, mean L_ind "
-                "red %.4f green %.4f\n",
-      n, direct, red, green);
-    Check(n >= 50, "shadowed floor near the red wall is seen");
-    Check(red > 0.01 && red > 2.0 * green, "red light bleeds into the shadow");
-    Check(AllFinite(f.Radiosity), "finite radiosity");
-    radiosity->ReleaseGraphicsResources(f.Window);
-  }
+  CheckLayerZeroMatchesVTKShadows(layers);
+  CheckLightBleedsIntoShadow();
   Check(errors.Count == 0 && shadowErrors.Count == 0 && bakerErrors.Count == 0,
     "no errors (OpenGL errors included) from the G-buffer, the shadow pass and its baker");
+  CheckWithoutShadowsNothingChanges();
 
-  // Without shadows nothing changes.
-  {
-    vtkNew<vtkDeepGBufferPass> plain, lost, headlit, headlitPlain;
-    vtkNew<vtkImageData> a, b, c, d;
-    RenderGBuffer(plain, true, 4, a);
-    vtkNew<vtkShadowMapPass> s1, s2;
-    lost->SetShadowMapPass(s1);
-    RenderGBuffer(
-      lost, true, 4, b, [&]() { lost->SetShadowMapPass(nullptr); }, s1);
-    Check(SameArrays(a, b), "shadow pass removed: bit-identical layers");
-    const FloorStats unshadowed = Classify(a, 1);
-    std::printf("without shadows, layer 1: %ld floor pixels in the cone, %ld dark\n",
-      unshadowed.Floor, unshadowed.Shadowed);
-    Check(unshadowed.Shadowed == 0, "without shadow maps no floor pixel of layer 1 is dark");
-    headlit->SetShadowMapPass(s2);
-    RenderGBuffer(headlit, false, 4, c);
-    RenderGBuffer(headlitPlain, false, 4, d);
-    Check(SameArrays(c, d), "no shadowing light: bit-identical layers");
-  }
   gbuffer->ReleaseGraphicsResources(window);
-  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ExitStatus();
 }

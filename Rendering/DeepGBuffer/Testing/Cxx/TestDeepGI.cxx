@@ -49,6 +49,7 @@
 #include <vector>
 
 using namespace DeepRadiosityTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -611,6 +612,5 @@ int TestDeepGI(int, char*[])
   CheckSkipLogic();
   CheckAssembly();
   CheckConverge();
-  std::printf("%d failure(s)\n", CheckFailures());
-  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ExitStatus();
 }

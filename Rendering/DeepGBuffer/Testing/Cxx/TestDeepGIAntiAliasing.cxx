@@ -23,6 +23,7 @@
 #include <cmath>
 
 using namespace DeepGBufferTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -131,5 +132,5 @@ int TestDeepGIAntiAliasing(int, char*[])
   Check(fxaaError <= 0.8 * plainError, "UseFXAA: edge error at most 0.8 of the unfiltered one");
   Check(multisampledError <= 0.8 * plainError,
     "multisampled window: edge error at most 0.8 of the unfiltered one");
-  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ExitStatus();
 }

@@ -15,6 +15,7 @@
 // resize have the new size and are not blank.
 
 #include "DeepGITestData.h"
+#include "DeepGITestHeadsq.h"
 #include "DeepRadiosityTest.h"
 
 #include "vtkColorTransferFunction.h"
@@ -36,6 +37,7 @@
 #include <vector>
 
 using namespace DeepRadiosityTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -81,39 +83,11 @@ double Brightest(vtkImageData* image)
   }
   return m;
 }
-}
 
-int TestDeepGIComposition(int argc, char* argv[])
+// Left: the headsq skin (opaque, ambient 0.2), the same volume drawn by
+// vtkSmartVolumeMapper beside it, a translucent sphere and a 2D text, FXAA on.
+void AddHeadScene(Composed& s, vtkAlgorithm* reader)
 {
-  const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepGIComposition");
-  if (!DeepGITestData::Require(data,
-        { "volumes/headsq/quarter.nhdr", "volumes/headsq/quarter.1", "volumes/headsq/quarter.93" },
-        "TestDeepGIComposition"))
-  {
-    return EXIT_FAILURE;
-  }
-  vtkNew<vtkVolume16Reader> reader;
-  reader->SetFilePrefix((data + "/volumes/headsq/quarter").c_str());
-  reader->SetDataDimensions(64, 64);
-  reader->SetImageRange(1, 93);
-  reader->SetDataByteOrderToLittleEndian();
-  reader->SetDataSpacing(3.2, 3.2, 1.5);
-  reader->Update();
-  if (reader->GetOutput()->GetNumberOfPoints() == 0)
-  {
-    std::printf("could not read %s/volumes/headsq/quarter\n", data.c_str());
-    return EXIT_FAILURE;
-  }
-
-  Composed s;
-  s.Window = MakeWindow(240, 160);
-  s.Left->SetViewport(0.0, 0.0, 0.5, 1.0);
-  s.Right->SetViewport(0.5, 0.0, 1.0, 1.0);
-  s.Left->SetBackground(0.1, 0.1, 0.15);
-  s.Right->SetBackground(0.15, 0.1, 0.1);
-  s.Window->AddRenderer(s.Left);
-  s.Window->AddRenderer(s.Right);
-
   vtkNew<vtkFlyingEdges3D> skin;
   skin->SetInputConnection(reader->GetOutputPort());
   skin->SetValue(0, 500.0);
@@ -157,7 +131,11 @@ int TestDeepGIComposition(int argc, char* argv[])
   s.Left->ResetCamera();
   s.Left->UseFXAAOn();
   s.Left->SetPass(s.LeftPass);
+}
 
+// Right: a lit box on a specular floor (every effect).
+void AddBoxScene(Composed& s)
+{
   const double f0[3] = { -2, 0, 2 }, f1[3] = { 2, 0, 2 }, f2[3] = { -2, 0, -2 };
   vtkActor* floor = Diffuse(AddQuad(s.Right, f0, f1, f2), 0.9, 0.9, 0.9);
   floor->GetProperty()->SetSpecular(0.5);
@@ -168,46 +146,40 @@ int TestDeepGIComposition(int argc, char* argv[])
   SetCamera(s.Right, 3, 2.5, 4, 0, 0.3, 0);
   s.Right->ResetCameraClippingRange();
   s.Right->SetPass(s.RightPass);
+}
 
-  std::vector<std::unique_ptr<EventCounter>> errors;
-  const std::vector<vtkObject*> watched = { s.Window.Get(), s.Left.Get(), s.Right.Get(),
-    s.LeftPass.Get(), s.RightPass.Get(), s.LeftPass->GetGBufferPass(),
-    s.LeftPass->GetAmbientObscurancePass(), s.LeftPass->GetRadiosityPass(),
-    s.LeftPass->GetReflectionPass(), s.RightPass->GetGBufferPass(),
-    s.RightPass->GetAmbientObscurancePass(), s.RightPass->GetRadiosityPass(),
-    s.RightPass->GetReflectionPass(), volumeMapper.Get() };
-  for (vtkObject* o : watched)
+// Counts the error events of the window, the renderers, every pass and the
+// volume mapper.
+struct ErrorWatch
+{
+  explicit ErrorWatch(Composed& s)
   {
-    errors.emplace_back(new EventCounter(o, vtkCommand::ErrorEvent));
+    const std::vector<vtkObject*> watched = { s.Window.Get(), s.Left.Get(), s.Right.Get(),
+      s.LeftPass.Get(), s.RightPass.Get(), s.LeftPass->GetGBufferPass(),
+      s.LeftPass->GetAmbientObscurancePass(), s.LeftPass->GetRadiosityPass(),
+      s.LeftPass->GetReflectionPass(), s.RightPass->GetGBufferPass(),
+      s.RightPass->GetAmbientObscurancePass(), s.RightPass->GetRadiosityPass(),
+      s.RightPass->GetReflectionPass(), s.Volume->GetMapper() };
+    for (vtkObject* o : watched)
+    {
+      this->Counters.emplace_back(new EventCounter(o, vtkCommand::ErrorEvent));
+    }
   }
-  auto errorCount = [&]()
+  int Count() const
   {
     int n = 0;
-    for (auto& e : errors)
+    for (auto& e : this->Counters)
     {
       n += e->Count;
     }
     return n;
-  };
-
-  for (int k = 0; k < 3; ++k)
-  {
-    s.Window->Render();
   }
-  vtkNew<vtkImageData> full;
-  ReadWindow(s.Window, full, nullptr);
-  const int leftEffects = s.LeftPass->GetLastFrameEffects();
-  const int rightEffects = s.RightPass->GetLastFrameEffects();
-  std::printf("left: %s, right: %s, errors %d\n",
-    vtkDeepGIPass::GetEffectsAsString(leftEffects).c_str(),
-    vtkDeepGIPass::GetEffectsAsString(rightEffects).c_str(), errorCount());
-  Check(errorCount() == 0, "no error events");
-  Check((leftEffects & (vtkDeepGIPass::AMBIENT_OBSCURANCE | vtkDeepGIPass::RADIOSITY)) ==
-      (vtkDeepGIPass::AMBIENT_OBSCURANCE | vtkDeepGIPass::RADIOSITY),
-    "left: AO and radiosity run under the volume and the translucent sphere");
-  Check((rightEffects & 7) == 7, "right: every effect runs");
+  std::vector<std::unique_ptr<EventCounter>> Counters;
+};
 
-  // Each of the volume, the translucent sphere and the text shows.
+// Each of the volume, the translucent sphere and the text changes the image.
+void CheckEveryPropIsDrawn(Composed& s, vtkImageData* full)
+{
   auto without = [&](vtkProp* prop, const char* what)
   {
     prop->VisibilityOff();
@@ -223,7 +195,11 @@ int TestDeepGIComposition(int argc, char* argv[])
   without(s.Volume, "volume");
   without(s.Sphere, "translucent sphere");
   without(s.Text, "text");
+}
 
+// After a resize the images have the new size and are not blank.
+void CheckResizeRenders(Composed& s, const ErrorWatch& errors)
+{
   s.Window->SetSize(200, 140);
   s.Window->Render();
   s.Window->Render();
@@ -231,10 +207,14 @@ int TestDeepGIComposition(int argc, char* argv[])
   ReadWindow(s.Window, resized, nullptr);
   const int* dims = resized->GetDimensions();
   std::printf("resized: %d x %d, brightest %.0f, errors %d\n", dims[0], dims[1], Brightest(resized),
-    errorCount());
+    errors.Count());
   Check(dims[0] == 200 && dims[1] == 140 && Brightest(resized) > 100, "resize renders");
-  Check(errorCount() == 0, "no error events after the resize");
+  Check(errors.Count() == 0, "no error events after the resize");
+}
 
+// ReleaseGraphicsResources, then rendering again works.
+void CheckRenderAfterRelease(Composed& s, const ErrorWatch& errors)
+{
   s.LeftPass->ReleaseGraphicsResources(s.Window);
   s.RightPass->ReleaseGraphicsResources(s.Window);
   s.Window->Render();
@@ -242,13 +222,63 @@ int TestDeepGIComposition(int argc, char* argv[])
   vtkNew<vtkImageData> again;
   ReadWindow(s.Window, again, nullptr);
   std::printf("after ReleaseGraphicsResources: brightest %.0f, errors %d, effects %s / %s\n",
-    Brightest(again), errorCount(),
+    Brightest(again), errors.Count(),
     vtkDeepGIPass::GetEffectsAsString(s.LeftPass->GetLastFrameEffects()).c_str(),
     vtkDeepGIPass::GetEffectsAsString(s.RightPass->GetLastFrameEffects()).c_str());
   Check(
-    errorCount() == 0 && Brightest(again) > 100 && (s.RightPass->GetLastFrameEffects() & 7) == 7,
+    errors.Count() == 0 && Brightest(again) > 100 && (s.RightPass->GetLastFrameEffects() & 7) == 7,
     "ReleaseGraphicsResources then render works");
+}
+}
+
+int TestDeepGIComposition(int argc, char* argv[])
+{
+  const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepGIComposition");
+  if (!DeepGITestData::Require(data,
+        { "volumes/headsq/quarter.nhdr", "volumes/headsq/quarter.1", "volumes/headsq/quarter.93" },
+        "TestDeepGIComposition"))
+  {
+    return EXIT_FAILURE;
+  }
+  vtkSmartPointer<vtkVolume16Reader> reader = DeepGITestData::ReadHeadsq(data);
+  if (!reader)
+  {
+    return EXIT_FAILURE;
+  }
+
+  Composed s;
+  s.Window = MakeWindow(240, 160);
+  s.Left->SetViewport(0.0, 0.0, 0.5, 1.0);
+  s.Right->SetViewport(0.5, 0.0, 1.0, 1.0);
+  s.Left->SetBackground(0.1, 0.1, 0.15);
+  s.Right->SetBackground(0.15, 0.1, 0.1);
+  s.Window->AddRenderer(s.Left);
+  s.Window->AddRenderer(s.Right);
+
+  AddHeadScene(s, reader);
+  AddBoxScene(s);
+  const ErrorWatch errors(s);
+
+  for (int k = 0; k < 3; ++k)
+  {
+    s.Window->Render();
+  }
+  vtkNew<vtkImageData> full;
+  ReadWindow(s.Window, full, nullptr);
+  const int leftEffects = s.LeftPass->GetLastFrameEffects();
+  const int rightEffects = s.RightPass->GetLastFrameEffects();
+  std::printf("left: %s, right: %s, errors %d\n",
+    vtkDeepGIPass::GetEffectsAsString(leftEffects).c_str(),
+    vtkDeepGIPass::GetEffectsAsString(rightEffects).c_str(), errors.Count());
+  Check(errors.Count() == 0, "no error events");
+  Check((leftEffects & (vtkDeepGIPass::AMBIENT_OBSCURANCE | vtkDeepGIPass::RADIOSITY)) ==
+      (vtkDeepGIPass::AMBIENT_OBSCURANCE | vtkDeepGIPass::RADIOSITY),
+    "left: AO and radiosity run under the volume and the translucent sphere");
+  Check((rightEffects & 7) == 7, "right: every effect runs");
+  CheckEveryPropIsDrawn(s, full);
+  CheckResizeRenders(s, errors);
+  CheckRenderAfterRelease(s, errors);
   s.LeftPass->ReleaseGraphicsResources(s.Window);
   s.RightPass->ReleaseGraphicsResources(s.Window);
-  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ExitStatus();
 }

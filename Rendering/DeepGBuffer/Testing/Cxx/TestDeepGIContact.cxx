@@ -38,6 +38,7 @@
 #include <vector>
 
 using namespace DeepGBufferTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -224,5 +225,5 @@ int TestDeepGIContact(int, char*[])
     Check(s.Visibility / s.Count < 0.9, "the reference occludes the contact");
     Check(s.ObscuranceOnly / s.Count < -8.0 / 255.0, "obscurance darkens the contact");
   }
-  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ExitStatus();
 }

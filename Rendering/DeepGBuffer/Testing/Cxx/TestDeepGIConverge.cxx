@@ -36,6 +36,7 @@
 #include <signal.h>
 
 using namespace DeepRadiosityTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -307,6 +308,5 @@ int TestDeepGIConverge(int, char*[])
   CheckAbort();
   CheckInterrupt();
   CheckWrappers();
-  std::printf("%d failure(s)\n", CheckFailures());
-  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ExitStatus();
 }

@@ -30,6 +30,7 @@
 #include <algorithm>
 
 using namespace DeepGBufferTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -117,8 +118,7 @@ int TestDeepGIDemoImage(int argc, char* argv[])
     "brightened fraction in the measured range");
   Check(background == 0, "background untouched");
   Check(lastChange < 0.6, "converged after 20 frames");
-  const int result = vtkRegressionTestImageThreshold(window, 0.5);
+  CheckRegressionImage(argc, argv, window, 0.5);
   gi->ReleaseGraphicsResources(window);
-  return (CheckFailures() == 0 && result == vtkRegressionTester::PASSED) ? EXIT_SUCCESS
-                                                                         : EXIT_FAILURE;
+  return ExitStatus();
 }

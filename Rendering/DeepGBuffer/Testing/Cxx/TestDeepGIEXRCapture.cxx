@@ -21,6 +21,7 @@
 #include <cstring>
 
 using namespace DeepGBufferTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -143,5 +144,5 @@ int TestDeepGIEXRCapture(int argc, char* argv[])
   Check(x && y && x->GetNumberOfValues() == y->GetNumberOfValues() &&
       std::memcmp(x->GetPointer(0), y->GetPointer(0), sizeof(float) * x->GetNumberOfValues()) == 0,
     "the reference gives identical obscurance on the reloaded capture");
-  return CheckFailures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  return ExitStatus();
 }

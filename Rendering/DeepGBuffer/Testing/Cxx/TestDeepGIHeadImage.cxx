@@ -21,6 +21,7 @@
 // skin, eq. 1's broad grey shadow); the volume changes 7664 px.
 
 #include "DeepGITestData.h"
+#include "DeepGITestHeadsq.h"
 #include "DeepRadiosityTest.h"
 
 #include "vtkColorTransferFunction.h"
@@ -35,6 +36,7 @@
 #include "vtkVolumeProperty.h"
 
 using namespace DeepRadiosityTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -52,16 +54,9 @@ int TestDeepGIHeadImage(int argc, char* argv[])
   {
     return EXIT_FAILURE;
   }
-  vtkNew<vtkVolume16Reader> reader;
-  reader->SetFilePrefix((data + "/volumes/headsq/quarter").c_str());
-  reader->SetDataDimensions(64, 64);
-  reader->SetImageRange(1, 93);
-  reader->SetDataByteOrderToLittleEndian();
-  reader->SetDataSpacing(3.2, 3.2, 1.5);
-  reader->Update();
-  if (reader->GetOutput()->GetNumberOfPoints() == 0)
+  vtkSmartPointer<vtkVolume16Reader> reader = DeepGITestData::ReadHeadsq(data);
+  if (!reader)
   {
-    std::printf("could not read %s/volumes/headsq/quarter\n", data.c_str());
     return EXIT_FAILURE;
   }
 
@@ -171,8 +166,7 @@ int TestDeepGIHeadImage(int argc, char* argv[])
   Check(change >= MEAN_LOW && change <= MEAN_HIGH, "mean change vs plain in the measured range");
   Check(changedFraction >= FRACTION_LOW && changedFraction <= FRACTION_HIGH,
     "changed fraction in the measured range");
-  const int result = vtkRegressionTestImageThreshold(window, 0.5);
+  CheckRegressionImage(argc, argv, window, 0.5);
   gi->ReleaseGraphicsResources(window);
-  return (CheckFailures() == 0 && result == vtkRegressionTester::PASSED) ? EXIT_SUCCESS
-                                                                         : EXIT_FAILURE;
+  return ExitStatus();
 }

@@ -27,6 +27,7 @@
 #include <vector>
 
 using namespace DeepGBufferTest;
+using namespace DeepGITest;
 
 int TestDeepGIReferenceIrradianceLighting(int, char*[])
 {
@@ -160,5 +161,5 @@ int TestDeepGIReferenceIrradianceLighting(int, char*[])
     std::printf("scene lights only: %ld of %ld pixels within tolerance\n", passed, pixels);
     Check(passed < 0.5 * pixels, "the camera-attached lights are needed for the match");
   }
-  return CheckFailures() ? EXIT_FAILURE : EXIT_SUCCESS;
+  return ExitStatus();
 }

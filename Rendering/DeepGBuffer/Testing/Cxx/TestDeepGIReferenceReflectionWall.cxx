@@ -23,6 +23,7 @@
 #include <vector>
 
 using namespace DeepGBufferTest;
+using namespace DeepGITest;
 
 int TestDeepGIReferenceReflectionWall(int, char*[])
 {
@@ -161,5 +162,5 @@ int TestDeepGIReferenceReflectionWall(int, char*[])
   Check(std::none_of(checked.begin(), checked.end(),
           [&](vtkIdType p) { return shortHits->GetComponent(p, 0) > 0; }),
     "no floor hit within 0.04");
-  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ExitStatus();
 }

@@ -22,6 +22,7 @@
 #include <string>
 
 using namespace DeepRadiosityTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -170,6 +171,5 @@ void CheckSharedPass()
 int TestDeepGISharedPass(int, char*[])
 {
   CheckSharedPass();
-  std::printf("%d failure(s)\n", CheckFailures());
-  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ExitStatus();
 }

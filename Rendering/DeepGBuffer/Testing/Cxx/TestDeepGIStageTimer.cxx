@@ -25,6 +25,7 @@
 #include <thread>
 
 using namespace DeepRadiosityTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -47,9 +48,8 @@ void Sleep(int milliseconds)
   std::this_thread::sleep_for(std::chrono::milliseconds(milliseconds));
 }
 
-bool CheckTimerAlone()
+void CheckTimerAlone()
 {
-  bool ok = true;
   vtkNew<vtkDeepGIStageTimer> timer;
   timer->StopStage(); // nothing runs: no effect
   const auto start = std::chrono::steady_clock::now();
@@ -67,39 +67,24 @@ bool CheckTimerAlone()
   const double outer = timer->GetStageMilliseconds(0), inner = timer->GetStageMilliseconds(1);
   std::printf("timer alone: outer %.1f ms (60 slept), inner %.1f ms (60 slept), %.1f ms in all\n",
     outer, inner, elapsed);
-  if (timer->GetNumberOfStages() != 2 || std::strcmp(timer->GetStageName(0), "outer") != 0 ||
-    std::strcmp(timer->GetStageName(1), "inner") != 0 || timer->GetStageCount(0) != 1 ||
-    timer->GetStageCount(1) != 2)
-  {
-    std::printf("FAIL: stages, order or counts wrong\n");
-    ok = false;
-  }
+  Check(timer->GetNumberOfStages() == 2 && std::strcmp(timer->GetStageName(0), "outer") == 0 &&
+      std::strcmp(timer->GetStageName(1), "inner") == 0 && timer->GetStageCount(0) == 1 &&
+      timer->GetStageCount(1) == 2,
+    "timer alone: stages, their order and counts");
   // Sleeping lasts at least as long as asked, and exclusive times add up to
   // at most the time of the whole sequence (the inner stage counted in the
   // outer one too would exceed it by 60 ms); no upper bound on a sleep.
-  if (!(outer >= 59.0 && inner >= 59.0 && outer + inner <= elapsed))
-  {
-    std::printf("FAIL: nested times are not exclusive\n");
-    ok = false;
-  }
-  if (timer->GetStageName(2) != nullptr || timer->GetStageMilliseconds(-1) != 0.0 ||
-    std::abs(timer->GetTotalMilliseconds() - outer - inner) > 1e-9)
-  {
-    std::printf("FAIL: out-of-range stage or total\n");
-    ok = false;
-  }
+  Check(outer >= 59.0 && inner >= 59.0 && outer + inner <= elapsed,
+    "timer alone: nested times are exclusive");
+  Check(timer->GetStageName(2) == nullptr && timer->GetStageMilliseconds(-1) == 0.0 &&
+      std::abs(timer->GetTotalMilliseconds() - outer - inner) <= 1e-9,
+    "timer alone: out-of-range stages are empty, the total is the sum");
   timer->Reset();
-  if (timer->GetNumberOfStages() != 0)
-  {
-    std::printf("FAIL: Reset kept stages\n");
-    ok = false;
-  }
-  return ok;
+  Check(timer->GetNumberOfStages() == 0, "timer alone: Reset removes the stages");
 }
 
-bool CheckPassStages(vtkRenderWindow* window, vtkDeepGIPass* gi)
+void CheckPassStages(vtkRenderWindow* window, vtkDeepGIPass* gi)
 {
-  bool ok = true;
   vtkNew<vtkDeepGIStageTimer> timer;
   gi->GetGBufferPass()->SetStageTimer(timer);
   const int frames = 3;
@@ -123,31 +108,19 @@ bool CheckPassStages(vtkRenderWindow* window, vtkDeepGIPass* gi)
   for (const char* name : expected)
   {
     const int i = StageIndex(timer, name);
-    if (i < 0 || timer->GetStageCount(i) != frames || !(timer->GetStageMilliseconds(i) > 0.0))
-    {
-      std::printf("FAIL: stage '%s' not timed in each of %d frames\n", name, frames);
-      ok = false;
-    }
+    Check(i >= 0 && timer->GetStageCount(i) == frames && timer->GetStageMilliseconds(i) > 0.0,
+      Format("stage '%s' timed in each of %d frames", name, frames));
   }
-  if (!(timer->GetTotalMilliseconds() <= elapsed))
-  {
-    std::printf(
-      "FAIL: stages total %.1f ms > frames %.1f ms\n", timer->GetTotalMilliseconds(), elapsed);
-    ok = false;
-  }
+  Check(timer->GetTotalMilliseconds() <= elapsed,
+    Format("stages total %.1f ms <= frames %.1f ms", timer->GetTotalMilliseconds(), elapsed));
   timer->Reset();
   window->Render();
-  if (timer->GetNumberOfStages() != 0)
-  {
-    std::printf("FAIL: a detached timer timed stages\n");
-    ok = false;
-  }
-  return ok;
+  Check(timer->GetNumberOfStages() == 0, "a detached timer times no stage");
 }
 
 // The G-buffer's bytes for its last frame's layers, and whether the GI
 // pass reports the sum of its passes.
-bool CheckBytesOfFrame(vtkDeepGIPass* gi, const char* when)
+void CheckBytesOfFrame(vtkDeepGIPass* gi, const char* when)
 {
   vtkDeepGBufferPass* gbuffer = gi->GetGBufferPass();
   const vtkTypeInt64 layers = gbuffer->GetEffectiveNumberOfLayers();
@@ -160,34 +133,27 @@ bool CheckBytesOfFrame(vtkDeepGIPass* gi, const char* when)
   std::printf("%s: %lld layers, G-buffer %lld bytes (%lld expected), GI %lld bytes\n", when,
     static_cast<long long>(layers), static_cast<long long>(gbuffer->GetTextureBytes()),
     static_cast<long long>(expected), static_cast<long long>(gi->GetTextureBytes()));
-  if (gbuffer->GetTextureBytes() != expected || gi->GetTextureBytes() != sum ||
-    !(gi->GetRadiosityPass()->GetTextureBytes() > 0) ||
-    !(gi->GetAmbientObscurancePass()->GetTextureBytes() > 0))
-  {
-    std::printf("FAIL: texture bytes %s\n", when);
-    return false;
-  }
-  return true;
+  Check(gbuffer->GetTextureBytes() == expected && gi->GetTextureBytes() == sum &&
+      gi->GetRadiosityPass()->GetTextureBytes() > 0 &&
+      gi->GetAmbientObscurancePass()->GetTextureBytes() > 0,
+    Format("texture bytes %s: the G-buffer's as expected, GI's the sum of its passes", when));
 }
 
-bool CheckTextureBytes(vtkRenderWindow* window, vtkDeepGIPass* gi)
+void CheckTextureBytes(vtkRenderWindow* window, vtkDeepGIPass* gi)
 {
-  bool ok = CheckBytesOfFrame(gi, "rendered");
+  CheckBytesOfFrame(gi, "rendered");
   gi->ReleaseGraphicsResources(window);
-  if (gi->GetTextureBytes() != 0)
-  {
-    std::printf("FAIL: %lld bytes after ReleaseGraphicsResources\n",
-      static_cast<long long>(gi->GetTextureBytes()));
-    ok = false;
-  }
+  Check(gi->GetTextureBytes() == 0,
+    Format("%lld bytes after ReleaseGraphicsResources (0)",
+      static_cast<long long>(gi->GetTextureBytes())));
   window->Render();
-  return CheckBytesOfFrame(gi, "released and rendered again") && ok;
+  CheckBytesOfFrame(gi, "released and rendered again");
 }
 }
 
 int TestDeepGIStageTimer(int, char*[])
 {
-  bool ok = CheckTimerAlone();
+  CheckTimerAlone();
   vtkSmartPointer<vtkRenderWindow> window = MakeWindow(W, H);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
@@ -196,8 +162,8 @@ int TestDeepGIStageTimer(int, char*[])
   gi->GetAmbientObscurancePass()->SetComposition(vtkDeepAmbientObscurancePass::COMPOSITE_MULTIPLY);
   renderer->SetPass(gi);
   window->Render();
-  ok = CheckPassStages(window, gi) && ok;
-  ok = CheckTextureBytes(window, gi) && ok;
+  CheckPassStages(window, gi);
+  CheckTextureBytes(window, gi);
   gi->ReleaseGraphicsResources(window);
-  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ExitStatus();
 }

@@ -41,6 +41,7 @@
 #include <initializer_list>
 
 using namespace DeepRadiosityTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -421,6 +422,5 @@ int TestDeepGuardBand(int, char*[])
   TestExactness();
   TestResolve();
   TestBadValues();
-  std::printf("%d check(s) failed\n", CheckFailures());
-  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ExitStatus();
 }

@@ -15,6 +15,7 @@
 #include <string>
 
 using namespace DeepGBufferTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -102,6 +103,5 @@ int TestDeepGuardBandLimits(int, char*[])
 {
   CheckPixels();
   CheckRendered();
-  std::printf("%d check(s) failed\n", CheckFailures());
-  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ExitStatus();
 }

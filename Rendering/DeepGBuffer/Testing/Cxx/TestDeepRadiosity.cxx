@@ -39,6 +39,7 @@
 #include <vector>
 
 using namespace DeepRadiosityTest;
+using namespace DeepGITest;
 
 // A composite pass of its own, as vtkDeepGIPass will be: its opaque step
 // builds the layers, calls UpdateRadiosity, binds INDIRECT_RADIANCE and
@@ -738,6 +739,5 @@ int TestDeepRadiosity(int, char*[])
   TestFallback();
   TestExternalComposite();
   TestPresets();
-  std::printf("%d check(s) failed\n", CheckFailures());
-  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ExitStatus();
 }

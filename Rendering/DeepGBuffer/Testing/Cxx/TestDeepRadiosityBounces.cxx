@@ -31,6 +31,7 @@
 #include <vector>
 
 using namespace DeepRadiosityTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -421,6 +422,5 @@ int TestDeepRadiosityBounces(int, char*[])
   TestMotion();
   TestRenderers();
   TestRestart();
-  std::printf("%d check(s) failed\n", CheckFailures());
-  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ExitStatus();
 }

@@ -43,6 +43,7 @@
 #include <utility>
 
 using namespace DeepRadiosityReferenceTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -140,5 +141,5 @@ int TestDeepRadiosityConfidence(int argc, char* argv[])
       std::string(scene) + ": relative error of the lowest confidence quarter > " +
         std::to_string(MinimumRatio) + " x that of the highest");
   }
-  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ExitStatus();
 }

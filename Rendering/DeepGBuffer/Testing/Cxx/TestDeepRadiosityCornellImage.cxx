@@ -38,6 +38,7 @@
 #include <algorithm>
 
 using namespace DeepRadiosityTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -57,31 +58,16 @@ struct Region
   }
   double Mean(int c) const { return this->Sum[c] / std::max(1L, this->Pixels); }
 };
-}
 
-int TestDeepRadiosityCornellImage(int argc, char* argv[])
+// Loads the Cornell box into `lit` with its lamp's light at `exposure`
+// times its physical intensity; false (with a message) when that fails.
+bool PopulateCornellBox(const std::string& data, vtkRenderer* lit, double exposure)
 {
-  const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepRadiosityCornellImage");
-  if (!DeepGITestData::Require(data,
-        { "scenes/cornell-original/CornellBox-Original.obj",
-          "scenes/cornell-original/CornellBox-Original.mtl" },
-        "TestDeepRadiosityCornellImage"))
-  {
-    return EXIT_FAILURE;
-  }
-  constexpr int W = 256, H = 256, frames = 20;
-  constexpr double Exposure = 4.0;
-  auto window = MakeWindow(2 * W, H);
-  vtkNew<vtkRenderer> lit, view;
-  lit->SetViewport(0.0, 0.0, 0.5, 1.0);
-  view->SetViewport(0.5, 0.0, 1.0, 1.0);
-  window->AddRenderer(lit);
-  window->AddRenderer(view);
   vtkNew<vtkDeepGBufferSceneLoader> loader;
   if (!loader->Load((data + "/scenes/cornell-original/CornellBox-Original.obj").c_str()))
   {
     std::printf("could not load the Cornell box from %s\n", data.c_str());
-    return EXIT_FAILURE;
+    return false;
   }
   loader->Populate(lit);
   loader->ResetCamera(lit);
@@ -92,64 +78,26 @@ int TestDeepRadiosityCornellImage(int argc, char* argv[])
   if (!lampLight || lit->GetLights()->GetNumberOfItems() != 1)
   {
     std::printf("Populate did not add the lamp's light\n");
-    return EXIT_FAILURE;
+    return false;
   }
-  lampLight->SetIntensity(Exposure * lampLight->GetIntensity());
-  vtkNew<vtkDeepRadiosityPass> pass;
-  pass->SetPresetToBalanced();
-  pass->SetTemporalAlpha(0.0);
-  // A gather radius of 0.3 of the diagonal (1.06, half the room): with the
-  // default 0.1 the walls' colour reaches only 0.35 into the white surfaces.
-  pass->SetAutomaticRadiusFraction(0.3);
-  lit->SetPass(pass);
+  lampLight->SetIntensity(exposure * lampLight->GetIntensity());
+  return true;
+}
 
-  // The L_ind viewport: a parallel camera showing pixel (i, j) at (i, j).
-  vtkNew<vtkImageData> rgb;
-  rgb->SetDimensions(W, H, 1);
-  rgb->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  std::fill_n(static_cast<unsigned char*>(rgb->GetScalarPointer()), 3 * W * H, 0);
-  vtkNew<vtkImageActor> image;
-  image->SetInputData(rgb);
-  image->InterpolateOff();
-  image->GetProperty()->SetColorWindow(255.0);
-  image->GetProperty()->SetColorLevel(127.5);
-  view->AddActor(image);
-  vtkCamera* camera = view->GetActiveCamera();
-  camera->ParallelProjectionOn();
-  camera->SetFocalPoint(0.5 * (W - 1), 0.5 * (H - 1), 0.0);
-  camera->SetPosition(0.5 * (W - 1), 0.5 * (H - 1), 1000.0);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetParallelScale(0.5 * H);
-  camera->SetClippingRange(1.0, 2000.0);
+// The regions the checks measure, over both layers.
+struct CornellRegions
+{
+  Region Lamp, Ceiling, TowardsRed, TowardsGreen, All;
+};
 
-  for (int k = 0; k < frames; ++k)
-  {
-    window->Render();
-  }
-  vtkNew<vtkImageData> radiosity, layers;
-  if (!pass->CaptureIrradiance(radiosity, lit) ||
-    !pass->GetGBufferPass()->CaptureLayers(layers, lit))
-  {
-    std::printf("capture FAILED\n");
-    return EXIT_FAILURE;
-  }
-  {
-    vtkDataArray* l = radiosity->GetPointData()->GetArray(
-      vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0).c_str());
-    unsigned char* out = static_cast<unsigned char*>(rgb->GetScalarPointer());
-    for (vtkIdType p = 0; p < l->GetNumberOfTuples(); ++p)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        out[3 * p + c] = static_cast<unsigned char>(
-          std::lround(255.0 * std::min(1.0, std::max(0.0, 4.0 * l->GetComponent(p, c)))));
-      }
-    }
-    rgb->Modified();
-  }
-  window->Render();
-
-  Region lamp, ceiling, towardsRed, towardsGreen, all;
+CornellRegions MeasureRegions(vtkImageData* layers, vtkImageData* radiosity, int W, int H)
+{
+  CornellRegions regions;
+  Region& lamp = regions.Lamp;
+  Region& ceiling = regions.Ceiling;
+  Region& towardsRed = regions.TowardsRed;
+  Region& towardsGreen = regions.TowardsGreen;
+  Region& all = regions.All;
   for (int layer = 0; layer < 2; ++layer)
   {
     const std::string j = "_" + std::to_string(layer);
@@ -207,32 +155,108 @@ int TestDeepRadiosityCornellImage(int argc, char* argv[])
   std::printf("all surfaces: %ld px, mean L_ind (%.4f, %.4f, %.4f)\n", all.Pixels, all.Mean(0),
     all.Mean(1), all.Mean(2));
 
+  return regions;
+}
+
+// The lamp's direct radiance RADIANCE - AMBIENT is Ke / max(Ke).
+void CheckLampIsEmissive(const Region& lamp)
+{
+  Check(lamp.Pixels > 50 && std::abs(lamp.Mean(0) - 1.0) < 2e-3 &&
+      std::abs(lamp.Mean(1) - 12.0 / 17.0) < 2e-3 && std::abs(lamp.Mean(2) - 4.0 / 17.0) < 2e-3,
+    "the lamp's direct radiance is Ke / max(Ke)");
+}
+
+// The ceiling beside the lamp gets no direct light but L_ind > 0, in the
+// measured range, as is the mean over every surface.
+void CheckCeilingLitIndirectly(const CornellRegions& r)
+{
+  // RADIANCE - AMBIENT of an unlit surface is the rounding of AMBIENT's
+  // R11G11B10F (5-6 mantissa bits: 2.3e-3 at 0.0725) against RGBA16F.
+  Check(r.Ceiling.Pixels > 500 && r.Ceiling.Largest < 3e-3, "no direct light on the ceiling");
+  Check(r.Ceiling.Mean(0) > 0.01 && r.Ceiling.Mean(1) > 0.005 && r.Ceiling.Mean(2) > 0.001,
+    "L_ind > 0 on the ceiling");
+  auto near = [](double value, double measured)
+  { return std::abs(value - measured) <= 0.2 * measured; };
+  Check(near(r.Ceiling.Mean(0), 0.0406) && near(r.Ceiling.Mean(1), 0.0225) &&
+      near(r.Ceiling.Mean(2), 0.0044),
+    "ceiling L_ind in the measured range");
+  Check(near(r.All.Mean(0), 0.0489) && near(r.All.Mean(1), 0.0272) && near(r.All.Mean(2), 0.0063),
+    "mean L_ind in the measured range");
+}
+
+// Colour bleeding: the box faces that look at the red wall get red light,
+// those that look at the green wall greener light.
+void CheckColourBleeding(const CornellRegions& r)
+{
+  Check(
+    r.TowardsRed.Pixels > 200 && r.TowardsGreen.Pixels > 200, "box faces on both sides are seen");
+  Check(r.TowardsRed.Mean(0) > 4.0 * r.TowardsRed.Mean(1),
+    "faces towards the red wall get red light (L_ind red / green > 4)");
+  Check(r.TowardsGreen.Mean(0) < r.TowardsGreen.Mean(1),
+    "faces towards the green wall get greener light (red / green < 1)");
+}
+}
+
+int TestDeepRadiosityCornellImage(int argc, char* argv[])
+{
+  const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepRadiosityCornellImage");
+  if (!DeepGITestData::Require(data,
+        { "scenes/cornell-original/CornellBox-Original.obj",
+          "scenes/cornell-original/CornellBox-Original.mtl" },
+        "TestDeepRadiosityCornellImage"))
+  {
+    return EXIT_FAILURE;
+  }
+  constexpr int W = 256, H = 256, frames = 20;
+  constexpr double Exposure = 4.0;
+  auto window = MakeWindow(2 * W, H);
+  vtkNew<vtkRenderer> lit, view;
+  lit->SetViewport(0.0, 0.0, 0.5, 1.0);
+  view->SetViewport(0.5, 0.0, 1.0, 1.0);
+  window->AddRenderer(lit);
+  window->AddRenderer(view);
+  if (!PopulateCornellBox(data, lit, Exposure))
+  {
+    return EXIT_FAILURE;
+  }
+  vtkNew<vtkDeepRadiosityPass> pass;
+  pass->SetPresetToBalanced();
+  pass->SetTemporalAlpha(0.0);
+  // A gather radius of 0.3 of the diagonal (1.06, half the room): with the
+  // default 0.1 the walls' colour reaches only 0.35 into the white surfaces.
+  pass->SetAutomaticRadiusFraction(0.3);
+  lit->SetPass(pass);
+
+  // The L_ind viewport: image pixel (i, j) at viewport pixel (i, j).
+  vtkSmartPointer<vtkImageData> rgb = ShowImagePixelForPixel(view, W, H, 3);
+
+  for (int k = 0; k < frames; ++k)
+  {
+    window->Render();
+  }
+  vtkNew<vtkImageData> radiosity, layers;
+  if (!pass->CaptureIrradiance(radiosity, lit) ||
+    !pass->GetGBufferPass()->CaptureLayers(layers, lit))
+  {
+    Check(false, "the irradiance and the layers are captured");
+    return EXIT_FAILURE;
+  }
+  {
+    vtkDataArray* l = radiosity->GetPointData()->GetArray(
+      vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0).c_str());
+    ShowValues(l, 4.0, rgb);
+  }
+  window->Render();
+
+  const CornellRegions regions = MeasureRegions(layers, radiosity, W, H);
   Check(AllFinite(radiosity) && AllFinite(layers), "finite captures (no NaN)");
   Check(Minimum(radiosity,
           vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0)) >= 0.0,
     "L_ind >= 0");
-  Check(lamp.Pixels > 50 && std::abs(lamp.Mean(0) - 1.0) < 2e-3 &&
-      std::abs(lamp.Mean(1) - 12.0 / 17.0) < 2e-3 && std::abs(lamp.Mean(2) - 4.0 / 17.0) < 2e-3,
-    "the lamp's direct radiance is Ke / max(Ke)");
-  // RADIANCE - AMBIENT of an unlit surface is the rounding of AMBIENT's
-  // R11G11B10F (5-6 mantissa bits: 2.3e-3 at 0.0725) against RGBA16F.
-  Check(ceiling.Pixels > 500 && ceiling.Largest < 3e-3, "no direct light on the ceiling");
-  Check(ceiling.Mean(0) > 0.01 && ceiling.Mean(1) > 0.005 && ceiling.Mean(2) > 0.001,
-    "L_ind > 0 on the ceiling");
-  auto near = [](double value, double measured)
-  { return std::abs(value - measured) <= 0.2 * measured; };
-  Check(
-    near(ceiling.Mean(0), 0.0406) && near(ceiling.Mean(1), 0.0225) && near(ceiling.Mean(2), 0.0044),
-    "ceiling L_ind in the measured range");
-  Check(near(all.Mean(0), 0.0489) && near(all.Mean(1), 0.0272) && near(all.Mean(2), 0.0063),
-    "mean L_ind in the measured range");
-  Check(towardsRed.Pixels > 200 && towardsGreen.Pixels > 200, "box faces on both sides are seen");
-  Check(towardsRed.Mean(0) > 4.0 * towardsRed.Mean(1),
-    "faces towards the red wall get red light (L_ind red / green > 4)");
-  Check(towardsGreen.Mean(0) < towardsGreen.Mean(1),
-    "faces towards the green wall get greener light (red / green < 1)");
-  const int result = vtkRegressionTestImageThreshold(window, 0.5);
+  CheckLampIsEmissive(regions.Lamp);
+  CheckCeilingLitIndirectly(regions);
+  CheckColourBleeding(regions);
+  CheckRegressionImage(argc, argv, window, 0.5);
   pass->ReleaseGraphicsResources(window);
-  return (CheckFailures() == 0 && result == vtkRegressionTester::PASSED) ? EXIT_SUCCESS
-                                                                         : EXIT_FAILURE;
+  return ExitStatus();
 }

@@ -28,6 +28,7 @@
 #include <algorithm>
 
 using namespace DeepRadiosityTest;
+using namespace DeepGITest;
 
 // Scale of the L_ind view: the mean L_ind (0.130) times 2 is about 66/255,
 // so the indirect light is visible in the baseline without clipping most
@@ -55,24 +56,8 @@ int TestDeepRadiosityDemoImage(int argc, char* argv[])
   pass->SetDamping(0.5);
   lit->SetPass(pass);
 
-  // The L_ind viewport: a parallel camera showing pixel (i, j) at (i, j).
-  vtkNew<vtkImageData> rgb;
-  rgb->SetDimensions(W, H, 1);
-  rgb->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  std::fill_n(static_cast<unsigned char*>(rgb->GetScalarPointer()), 3 * W * H, 0);
-  vtkNew<vtkImageActor> image;
-  image->SetInputData(rgb);
-  image->InterpolateOff();
-  image->GetProperty()->SetColorWindow(255.0);
-  image->GetProperty()->SetColorLevel(127.5);
-  view->AddActor(image);
-  vtkCamera* camera = view->GetActiveCamera();
-  camera->ParallelProjectionOn();
-  camera->SetFocalPoint(0.5 * (W - 1), 0.5 * (H - 1), 0.0);
-  camera->SetPosition(0.5 * (W - 1), 0.5 * (H - 1), 1000.0);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetParallelScale(0.5 * H);
-  camera->SetClippingRange(1.0, 2000.0);
+  // The L_ind viewport: image pixel (i, j) at viewport pixel (i, j).
+  vtkSmartPointer<vtkImageData> rgb = ShowImagePixelForPixel(view, W, H, 3);
 
   vtkNew<vtkImageData> first, shown, last;
   window->Render();
@@ -86,16 +71,7 @@ int TestDeepRadiosityDemoImage(int argc, char* argv[])
   {
     vtkDataArray* l = shown->GetPointData()->GetArray(
       vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::IndirectRadiance, 0).c_str());
-    unsigned char* out = static_cast<unsigned char*>(rgb->GetScalarPointer());
-    for (vtkIdType p = 0; p < l->GetNumberOfTuples(); ++p)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        out[3 * p + c] = static_cast<unsigned char>(
-          std::lround(255.0 * std::min(1.0, std::max(0.0, ShownScale * l->GetComponent(p, c)))));
-      }
-    }
-    rgb->Modified();
+    ShowValues(l, ShownScale, rgb);
     window->Render();
     ok = pass->CaptureIrradiance(last, lit);
   }
@@ -154,8 +130,7 @@ int TestDeepRadiosityDemoImage(int argc, char* argv[])
   Check(fraction >= 0.55 && fraction <= 0.82, "fraction with confidence > 0.25 (0.685)");
   Check(growth >= 1.12 && growth <= 1.33, "bounces add light (x 1.223)");
   Check(changed <= 1e-5 * std::max(largest, 1.0), "converged: the image shows the final L_ind");
-  const int result = vtkRegressionTestImageThreshold(window, 0.5);
+  CheckRegressionImage(argc, argv, window, 0.5);
   pass->ReleaseGraphicsResources(window);
-  return (CheckFailures() == 0 && result == vtkRegressionTester::PASSED) ? EXIT_SUCCESS
-                                                                         : EXIT_FAILURE;
+  return ExitStatus();
 }

@@ -23,6 +23,7 @@
 #include <cstdio>
 
 using namespace DeepRadiosityReferenceTest;
+using namespace DeepGITest;
 
 int TestDeepRadiosityEstimator(int, char*[])
 {
@@ -109,5 +110,5 @@ int TestDeepRadiosityEstimator(int, char*[])
   Check(std::string(vtkDeepRadiosityPass::GetEstimatorAsString(vtkDeepRadiosityPass::ALL_TAPS)) ==
       "ALL_TAPS",
     "estimator name");
-  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ExitStatus();
 }

@@ -27,6 +27,7 @@
 #include <limits>
 
 using namespace DeepRadiosityTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -414,6 +415,5 @@ int TestDeepRadiosityExtremes(int, char*[])
   TestClosedBox();
   TestOneLayer();
   TestBadParameters();
-  std::printf("%d check(s) failed\n", CheckFailures());
-  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ExitStatus();
 }

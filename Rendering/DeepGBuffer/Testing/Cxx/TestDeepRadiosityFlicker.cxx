@@ -37,6 +37,7 @@
 #include <cstdio>
 
 using namespace DeepGBufferTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -203,5 +204,5 @@ int TestDeepRadiosityFlicker(int, char*[])
     "flicker without the temporal filter > " + std::to_string(MinimumGain) + " x with it");
   Check(filtered.All <= GuardBandTolerance * noGuardBand.All,
     "the guard band does not increase the flicker");
-  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ExitStatus();
 }

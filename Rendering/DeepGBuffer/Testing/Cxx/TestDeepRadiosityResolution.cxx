@@ -29,6 +29,7 @@
 #include <cmath>
 
 using namespace DeepRadiosityTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -187,6 +188,5 @@ int TestDeepRadiosityResolution(int, char*[])
   clamped->SetResolutionDivisor(-3);
   Check(high == 2 && clamped->GetResolutionDivisor() == 1 && warnings.Count == 2,
     "divisors outside 1..2 clamped with a warning");
-  std::printf("%d check(s) failed\n", CheckFailures());
-  return CheckFailures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return ExitStatus();
 }

@@ -18,6 +18,7 @@
 #include "vtkRegressionTestImage.h"
 
 using namespace DeepGBufferTest;
+using namespace DeepGITest;
 
 int TestDeepReflectionDemoImage(int argc, char* argv[])
 {
@@ -90,9 +91,7 @@ int TestDeepReflectionDemoImage(int argc, char* argv[])
   Check(
     traced >= 0.2 * 300 * 225 && hits >= traced / 2, "the floor and the sphere reflect the room");
 
-  const int result = vtkRegressionTestImageThreshold(window, 0.5);
+  CheckRegressionImage(argc, argv, window, 0.5);
   pass->ReleaseGraphicsResources(window);
-  std::printf("%d failure(s)\n", CheckFailures());
-  return (CheckFailures() == 0 && result == vtkRegressionTester::PASSED) ? EXIT_SUCCESS
-                                                                         : EXIT_FAILURE;
+  return ExitStatus();
 }

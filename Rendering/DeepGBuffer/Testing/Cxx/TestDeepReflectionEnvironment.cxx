@@ -31,6 +31,7 @@
 
 using namespace DeepGBufferTest;
 using namespace DeepReflectionTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -105,24 +106,11 @@ Comparison Compare(vtkImageData* reflections,
   }
   return result;
 }
-}
 
-int TestDeepReflectionEnvironment(int, char*[])
+// The environment: float RGB, colour = texel centre (u, v) and 0.25.
+vtkSmartPointer<vtkImageData> MakeEnvironmentImage()
 {
-  auto window = MakeWindow(200, 150);
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(0.2, 0.4, 0.6);
-  window->AddRenderer(renderer);
-  MakeMirror(AddQuad(renderer, { -50, 0, 50 }, { 50, 0, 50 }, { -50, 0, -50 }));
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(0.3, 2.0, 4.0);
-  camera->SetFocalPoint(0.0, 0.0, -4.0);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetViewAngle(50.0);
-  renderer->ResetCameraClippingRange();
-
-  // The environment: float RGB, colour = texel centre (u, v) and 0.25.
-  vtkNew<vtkImageData> image;
+  auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(EnvWidth, EnvHeight, 1);
   vtkNew<vtkFloatArray> texels;
   texels->SetNumberOfComponents(3);
@@ -135,31 +123,32 @@ int TestDeepReflectionEnvironment(int, char*[])
     }
   }
   image->GetPointData()->SetScalars(texels);
-  vtkNew<vtkTexture> environment;
-  environment->SetInputData(image);
-  environment->SetColorModeToDirectScalars(); // float texels stay float (VTK's rule)
-  environment->InterpolateOff();
-  renderer->SetEnvironmentTexture(environment);
+  return image;
+}
 
-  vtkNew<vtkDeepReflectionPass> pass;
-  renderer->SetPass(pass);
-  window->Render();
+// The texel VTK's image-based lighting convention gives for the world
+// direction r.
+Vector Equirectangular(const Vector& r, const Vector&)
+{
+  const double u = std::atan2(r[2], r[0]) / (2.0 * vtkMath::Pi()) + 0.5;
+  const double v = std::asin(std::min(1.0, std::max(-1.0, r[1]))) / vtkMath::Pi() + 0.5;
+  const int i = std::min(EnvWidth - 1, static_cast<int>(std::floor(u * EnvWidth)));
+  const int j = std::min(EnvHeight - 1, static_cast<int>(std::floor(v * EnvHeight)));
+  return { (i + 0.5) / EnvWidth, (j + 0.5) / EnvHeight, 0.25 };
+}
 
+const double ExactTolerance[3] = { 1e-3, 1e-3, 1e-3 };
+// One texel of slack: the shader reflects about the Oct16 normal.
+const double OneTexel[3] = { 1.0 / EnvWidth + 1e-3, 1.0 / EnvHeight + 1e-3, 1e-3 };
+
+// (1) The equirectangular environment, through the exact and the stored
+// normals.
+void CheckEquirectangularEnvironment(vtkRenderer* renderer, vtkDeepReflectionPass* pass)
+{
   vtkNew<vtkImageData> reflections;
   pass->CaptureReflections(reflections, renderer);
   Check(AllFinite(reflections), "reflection capture is finite");
-  auto equirectangular = [](const Vector& r, const Vector&) -> Vector
-  {
-    const double u = std::atan2(r[2], r[0]) / (2.0 * vtkMath::Pi()) + 0.5;
-    const double v = std::asin(std::min(1.0, std::max(-1.0, r[1]))) / vtkMath::Pi() + 0.5;
-    const int i = std::min(EnvWidth - 1, static_cast<int>(std::floor(u * EnvWidth)));
-    const int j = std::min(EnvHeight - 1, static_cast<int>(std::floor(v * EnvHeight)));
-    return { (i + 0.5) / EnvWidth, (j + 0.5) / EnvHeight, 0.25 };
-  };
-  // One texel of slack: the shader reflects about the Oct16 normal.
-  const double exact[3] = { 1e-3, 1e-3, 1e-3 };
-  const double oneTexel[3] = { 1.0 / EnvWidth + 1e-3, 1.0 / EnvHeight + 1e-3, 1e-3 };
-  Comparison c = Compare(reflections, equirectangular, oneTexel);
+  const Comparison c = Compare(reflections, Equirectangular, OneTexel);
   std::printf("equirectangular: %ld traced pixels, %ld environment, %ld exact texel, %ld within "
               "one texel\n",
     c.Pixels, c.Environment, c.Exact, c.Near);
@@ -172,19 +161,24 @@ int TestDeepReflectionEnvironment(int, char*[])
   vtkNew<vtkImageData> layers;
   pass->GetGBufferPass()->CaptureLayers(layers, renderer);
   const Comparison decoded = Compare(
-    reflections, equirectangular, oneTexel, Layer(layers, vtkDeepGICaptureNames::Normal, 0));
+    reflections, Equirectangular, OneTexel, Layer(layers, vtkDeepGICaptureNames::Normal, 0));
   std::printf(
     "about the G-buffer's normals: %ld of %ld exact texel\n", decoded.Exact, decoded.Pixels);
   Check(decoded.Exact >= 0.995 * decoded.Pixels,
     "99.5 % show exactly the texel of the direction about the stored normal");
+}
 
-  // The same environment at 4x through an OpenEXR file (plain R, G, B
-  // channels: the array is named "RGB").
+// (1b) The same environment at 4x through an OpenEXR file (plain R, G, B
+// channels: the array is named "RGB").
+void CheckOpenEXREnvironment(
+  vtkRenderWindow* window, vtkRenderer* renderer, vtkDeepReflectionPass* pass, vtkImageData* image)
+{
+  vtkTexture* environment = renderer->GetEnvironmentTexture();
   {
     vtkNew<vtkImageData> hdr;
     hdr->SetDimensions(EnvWidth, EnvHeight, 1);
     vtkNew<vtkFloatArray> hdrTexels;
-    hdrTexels->DeepCopy(texels);
+    hdrTexels->DeepCopy(image->GetPointData()->GetScalars());
     hdrTexels->SetName("RGB");
     for (vtkIdType v = 0; v < hdrTexels->GetNumberOfValues(); ++v)
     {
@@ -206,12 +200,12 @@ int TestDeepReflectionEnvironment(int, char*[])
     window->Render();
     vtkNew<vtkImageData> hdrReflections;
     pass->CaptureReflections(hdrReflections, renderer);
-    auto scaled = [&equirectangular](const Vector& r, const Vector& rc) -> Vector
+    auto scaled = [](const Vector& r, const Vector& rc) -> Vector
     {
-      const Vector e = equirectangular(r, rc);
+      const Vector e = Equirectangular(r, rc);
       return { 4.0 * e[0], 4.0 * e[1], 4.0 * e[2] };
     };
-    const double fourTexels[3] = { 4.0 * oneTexel[0], 4.0 * oneTexel[1], 4.0 * oneTexel[2] };
+    const double fourTexels[3] = { 4.0 * OneTexel[0], 4.0 * OneTexel[1], 4.0 * OneTexel[2] };
     const Comparison h = Compare(hdrReflections, scaled, fourTexels);
     double range[2];
     hdrReflections->GetPointData()
@@ -224,11 +218,15 @@ int TestDeepReflectionEnvironment(int, char*[])
       "the OpenEXR environment's radiance, above 1, is reflected");
     renderer->SetEnvironmentTexture(environment);
   }
+}
 
-  // A cube map: one colour per face (GL's face order +x, -x, +y, -y, +z,
-  // -z); the face is the largest component of e (its sign), e reflected
-  // about the stored normal. Pixels whose direction lies within 0.001 of a
-  // face border are left out (float rounding decides there).
+// (2) A cube map: one colour per face (GL's face order +x, -x, +y, -y, +z,
+// -z); the face is the largest component of e (its sign), e reflected
+// about the stored normal. Pixels whose direction lies within 0.001 of a
+// face border are left out (float rounding decides there).
+void CheckCubeMapEnvironment(
+  vtkRenderWindow* window, vtkRenderer* renderer, vtkDeepReflectionPass* pass)
+{
   const double faceColors[6][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 1, 0 }, { 0, 1, 1 },
     { 1, 0, 1 } };
   vtkNew<vtkTexture> cube;
@@ -249,10 +247,12 @@ int TestDeepReflectionEnvironment(int, char*[])
   }
   renderer->SetEnvironmentTexture(cube);
   // A steeper view, so that mirror directions cross from the -z face to +y.
+  vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetPosition(0.3, 4.0, 2.0);
   camera->SetFocalPoint(0.0, 0.0, 0.0);
   renderer->ResetCameraClippingRange();
   window->Render();
+  vtkNew<vtkImageData> reflections, layers;
   pass->CaptureReflections(reflections, renderer);
   long borderPixels = 0;
   long faceCount[6] = { 0, 0, 0, 0, 0, 0 };
@@ -277,7 +277,8 @@ int TestDeepReflectionEnvironment(int, char*[])
     return { c[0], c[1], c[2] };
   };
   pass->GetGBufferPass()->CaptureLayers(layers, renderer);
-  c = Compare(reflections, cubeFace, exact, Layer(layers, vtkDeepGICaptureNames::Normal, 0));
+  const Comparison c =
+    Compare(reflections, cubeFace, ExactTolerance, Layer(layers, vtkDeepGICaptureNames::Normal, 0));
   std::printf("cube map: %ld of %ld pixels exact (%ld near a face border)\n", c.Exact, c.Pixels,
     borderPixels);
   std::printf("  pixels per face +x -x +y -y +z -z: %ld %ld %ld %ld %ld %ld\n", faceCount[0],
@@ -285,21 +286,31 @@ int TestDeepReflectionEnvironment(int, char*[])
   Check(c.Pixels > 10000 && c.Exact + borderPixels == c.Pixels && borderPixels < 0.05 * c.Pixels &&
       faceCount[2] > 1000 && faceCount[5] > 1000,
     "a cube map environment gives the face of the mirror direction (+y and -z faces seen)");
+}
 
-  // No environment texture: the background colour.
+// (3) No environment texture: the background colour.
+void CheckBackgroundWithoutEnvironment(
+  vtkRenderWindow* window, vtkRenderer* renderer, vtkDeepReflectionPass* pass)
+{
   renderer->SetEnvironmentTexture(nullptr);
   window->Render();
+  vtkNew<vtkImageData> reflections;
   pass->CaptureReflections(reflections, renderer);
   auto plain = [](const Vector&, const Vector&) -> Vector { return { 0.2, 0.4, 0.6 }; };
-  c = Compare(reflections, plain, exact);
+  const Comparison c = Compare(reflections, plain, ExactTolerance);
   std::printf("background: %ld of %ld pixels exact\n", c.Exact, c.Pixels);
   Check(c.Pixels > 10000 && c.Exact == c.Pixels,
     "without an environment texture: the background colour");
+}
 
-  // Gradient background: Background at the bottom, Background2 at the top.
+// (4) Gradient background: Background at the bottom, Background2 at the top.
+void CheckGradientBackground(
+  vtkRenderWindow* window, vtkRenderer* renderer, vtkDeepReflectionPass* pass)
+{
   renderer->GradientBackgroundOn();
   renderer->SetBackground2(1.0, 0.0, 0.0);
   window->Render();
+  vtkNew<vtkImageData> reflections;
   pass->CaptureReflections(reflections, renderer);
   auto gradient = [](const Vector&, const Vector& rc) -> Vector
   {
@@ -307,13 +318,17 @@ int TestDeepReflectionEnvironment(int, char*[])
     return { 0.2 + t * 0.8, 0.4 - t * 0.4, 0.6 - t * 0.6 };
   };
   const double gradientTolerance[3] = { 0.01, 0.01, 0.01 };
-  c = Compare(reflections, gradient, gradientTolerance);
+  const Comparison c = Compare(reflections, gradient, gradientTolerance);
   std::printf("gradient: %ld of %ld pixels within 0.01\n", c.Near, c.Pixels);
   Check(c.Pixels > 10000 && c.Near == c.Pixels,
     "gradient background follows the ray's camera-space elevation");
+}
 
-  // A float environment in VTK's default colour mode is mapped to 8 bits
-  // through a lookup table by VTK: one warning says so.
+// A float environment in VTK's default colour mode is mapped to 8 bits
+// through a lookup table by VTK: one warning says so.
+void CheckMappedFloatEnvironmentWarns(
+  vtkRenderWindow* window, vtkRenderer* renderer, vtkDeepReflectionPass* pass, vtkImageData* image)
+{
   EventCounter warnings(pass, vtkCommand::WarningEvent);
   vtkNew<vtkTexture> mapped;
   mapped->SetInputData(image);
@@ -321,8 +336,39 @@ int TestDeepReflectionEnvironment(int, char*[])
   window->Render();
   window->Render();
   Check(warnings.Count == 1, "one warning for a float environment that VTK maps to 8 bits");
+}
+}
 
+int TestDeepReflectionEnvironment(int, char*[])
+{
+  auto window = MakeWindow(200, 150);
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(0.2, 0.4, 0.6);
+  window->AddRenderer(renderer);
+  MakeMirror(AddQuad(renderer, { -50, 0, 50 }, { 50, 0, 50 }, { -50, 0, -50 }));
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0.3, 2.0, 4.0);
+  camera->SetFocalPoint(0.0, 0.0, -4.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetViewAngle(50.0);
+  renderer->ResetCameraClippingRange();
+
+  auto image = MakeEnvironmentImage();
+  vtkNew<vtkTexture> environment;
+  environment->SetInputData(image);
+  environment->SetColorModeToDirectScalars(); // float texels stay float (VTK's rule)
+  environment->InterpolateOff();
+  renderer->SetEnvironmentTexture(environment);
+  vtkNew<vtkDeepReflectionPass> pass;
+  renderer->SetPass(pass);
+  window->Render();
+
+  CheckEquirectangularEnvironment(renderer, pass);
+  CheckOpenEXREnvironment(window, renderer, pass, image);
+  CheckCubeMapEnvironment(window, renderer, pass);
+  CheckBackgroundWithoutEnvironment(window, renderer, pass);
+  CheckGradientBackground(window, renderer, pass);
+  CheckMappedFloatEnvironmentWarns(window, renderer, pass, image);
   pass->ReleaseGraphicsResources(window);
-  std::printf("%d failure(s)\n", CheckFailures());
-  return CheckFailures() ? 1 : 0;
+  return ExitStatus();
 }

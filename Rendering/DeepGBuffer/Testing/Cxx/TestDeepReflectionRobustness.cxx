@@ -23,6 +23,7 @@
 
 using namespace DeepGBufferTest;
 using namespace DeepReflectionTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -76,107 +77,115 @@ Summary Summarize(vtkDeepReflectionPass* pass, vtkRenderer* renderer, vtkImageDa
   return s;
 }
 
+// 1. Nothing reflects (VTK's default Specular 0): exactly the G-buffer's image.
+void CheckNothingReflectiveDrawsTheGBufferImage(vtkRenderWindow* window, vtkRenderer* renderer,
+  vtkDeepReflectionPass* pass, vtkImageData* plainImage)
+{
+  vtkNew<vtkImageData> reflectionImage;
+  renderer->SetPass(pass);
+  window->Render();
+  ReadWindow(window, reflectionImage, nullptr);
+  Check(!pass->GetLastFrameTraced(), "no reflective prop: no rays traced");
+  Check(!pass->GetGBufferPass()->GetWriteReflectivity() &&
+      pass->GetGBufferPass()->GetTextureHandle(renderer, vtkDeepGBufferPass::REFLECTIVITY) == 0,
+    "no reflective prop: no REFLECTIVITY texture");
+  const double difference = MaximumColorDifference(plainImage, reflectionImage);
+  std::printf("largest colour difference to vtkDeepGBufferPass: %g\n", difference);
+  Check(difference == 0.0, "no reflective prop: the image equals vtkDeepGBufferPass's exactly");
+  // The debug display of REFLECTIVITY falls back to RADIANCE when it is not written.
+  pass->GetGBufferPass()->SetDisplayQuantity(vtkDeepGBufferPass::REFLECTIVITY);
+  window->Render();
+  vtkNew<vtkImageData> fallbackImage;
+  ReadWindow(window, fallbackImage, nullptr);
+  Check(MaximumColorDifference(plainImage, fallbackImage) == 0.0,
+    "display of an unwritten REFLECTIVITY shows RADIANCE");
+  pass->GetGBufferPass()->SetDisplayQuantity(vtkDeepGBufferPass::RADIANCE);
 }
 
-int TestDeepReflectionRobustness(int, char*[])
+// Materials that cannot reflect: lighting off, black specular colour, PBR
+// roughness 1. A smooth metal reflects; when it stops, the texture is freed
+// again.
+void CheckOnlyReflectiveMaterialsTrace(
+  vtkRenderWindow* window, vtkRenderer* renderer, vtkDeepReflectionPass* pass, vtkActor* floor)
 {
-  // 1. Nothing reflects (VTK's default Specular 0): exactly the G-buffer's image.
+  floor->GetProperty()->SetSpecular(1.0);
+  floor->GetProperty()->LightingOff();
+  window->Render();
+  const bool unlit = pass->GetLastFrameTraced();
+  floor->GetProperty()->LightingOn();
+  floor->GetProperty()->SetSpecularColor(0.0, 0.0, 0.0);
+  window->Render();
+  const bool black = pass->GetLastFrameTraced();
+  floor->GetProperty()->SetInterpolationToPBR();
+  floor->GetProperty()->SetRoughness(1.0);
+  window->Render();
+  const bool rough = pass->GetLastFrameTraced();
+  Check(
+    !unlit && !black && !rough, "unlit, black-specular and roughness-1 PBR props do not reflect");
+
+  // A smooth metal reflects; when it stops, the texture is freed again.
+  floor->GetProperty()->SetRoughness(0.0);
+  floor->GetProperty()->SetMetallic(1.0);
+  floor->GetProperty()->SetColor(0.8, 0.8, 0.8);
+  window->Render();
+  vtkNew<vtkImageData> capture;
+  const Summary metal = Summarize(pass, renderer, capture);
+  double pbrReflectivity = 0.0;
+  vtkDataArray* reflectivity =
+    capture->GetPointData()->GetArray(vtkDeepGICaptureNames::Reflectivity);
+  for (vtkIdType p = 0; p < reflectivity->GetNumberOfTuples(); ++p)
   {
-    auto window = MakeWindow(160, 120);
-    vtkNew<vtkRenderer> renderer;
-    renderer->SetBackground(0.3, 0.3, 0.4);
-    window->AddRenderer(renderer);
-    vtkActor* floor = BuildScene(renderer, false);
-    vtkNew<vtkDeepGBufferPass> plain;
-    renderer->SetPass(plain);
-    window->Render();
-    vtkNew<vtkImageData> plainImage, reflectionImage;
-    ReadWindow(window, plainImage, nullptr);
-
-    vtkNew<vtkDeepReflectionPass> pass;
-    renderer->SetPass(pass);
-    window->Render();
-    ReadWindow(window, reflectionImage, nullptr);
-    Check(!pass->GetLastFrameTraced(), "no reflective prop: no rays traced");
-    Check(!pass->GetGBufferPass()->GetWriteReflectivity() &&
-        pass->GetGBufferPass()->GetTextureHandle(renderer, vtkDeepGBufferPass::REFLECTIVITY) == 0,
-      "no reflective prop: no REFLECTIVITY texture");
-    const double difference = MaximumColorDifference(plainImage, reflectionImage);
-    std::printf("largest colour difference to vtkDeepGBufferPass: %g\n", difference);
-    Check(difference == 0.0, "no reflective prop: the image equals vtkDeepGBufferPass's exactly");
-    // The debug display of REFLECTIVITY falls back to RADIANCE when it is not written.
-    pass->GetGBufferPass()->SetDisplayQuantity(vtkDeepGBufferPass::REFLECTIVITY);
-    window->Render();
-    vtkNew<vtkImageData> fallbackImage;
-    ReadWindow(window, fallbackImage, nullptr);
-    Check(MaximumColorDifference(plainImage, fallbackImage) == 0.0,
-      "display of an unwritten REFLECTIVITY shows RADIANCE");
-    pass->GetGBufferPass()->SetDisplayQuantity(vtkDeepGBufferPass::RADIANCE);
-
-    // Materials that cannot reflect: lighting off, black specular colour, PBR roughness 1.
-    floor->GetProperty()->SetSpecular(1.0);
-    floor->GetProperty()->LightingOff();
-    window->Render();
-    const bool unlit = pass->GetLastFrameTraced();
-    floor->GetProperty()->LightingOn();
-    floor->GetProperty()->SetSpecularColor(0.0, 0.0, 0.0);
-    window->Render();
-    const bool black = pass->GetLastFrameTraced();
-    floor->GetProperty()->SetInterpolationToPBR();
-    floor->GetProperty()->SetRoughness(1.0);
-    window->Render();
-    const bool rough = pass->GetLastFrameTraced();
-    Check(
-      !unlit && !black && !rough, "unlit, black-specular and roughness-1 PBR props do not reflect");
-
-    // A smooth metal reflects; when it stops, the texture is freed again.
-    floor->GetProperty()->SetRoughness(0.0);
-    floor->GetProperty()->SetMetallic(1.0);
-    floor->GetProperty()->SetColor(0.8, 0.8, 0.8);
-    window->Render();
-    vtkNew<vtkImageData> capture;
-    const Summary metal = Summarize(pass, renderer, capture);
-    double pbrReflectivity = 0.0;
-    vtkDataArray* reflectivity =
-      capture->GetPointData()->GetArray(vtkDeepGICaptureNames::Reflectivity);
-    for (vtkIdType p = 0; p < reflectivity->GetNumberOfTuples(); ++p)
-    {
-      pbrReflectivity = std::max(pbrReflectivity, reflectivity->GetComponent(p, 0));
-    }
-    std::printf("PBR metal, roughness 0, base colour 0.8: %ld traced, reflectivity %.4f\n",
-      metal.Traced, pbrReflectivity);
-    // F0 = mix(0.04, 0.8, 1) = 0.8, (1 - 0)^2 = 1: 0.8 in RGBA8 is 204 / 255.
-    Check(pass->GetLastFrameTraced() && metal.Traced > 1000 &&
-        std::abs(pbrReflectivity - 204.0 / 255.0) < 1e-6,
-      "a PBR metal reflects with F0 = base colour");
-    // The result texture for composite passes.
-    vtkTextureUnitManager* units =
-      vtkOpenGLRenderWindow::SafeDownCast(window)->GetTextureUnitManager();
-    const int unit = pass->ActivateReflectionTexture(renderer);
-    const bool bound = unit >= 0 && units->IsAllocated(unit);
-    pass->DeactivateReflectionTexture(renderer);
-    Check(pass->GetReflectionTextureHandle(renderer) != 0 && bound && !units->IsAllocated(unit),
-      "the reflection texture can be activated and deactivated");
-    floor->GetProperty()->SetRoughness(1.0);
-    window->Render();
-    Check(!pass->GetLastFrameTraced() &&
-        pass->GetGBufferPass()->GetTextureHandle(renderer, vtkDeepGBufferPass::REFLECTIVITY) == 0,
-      "when nothing reflects any more, REFLECTIVITY is freed");
-    Check(pass->GetReflectionTextureHandle(renderer) == 0 &&
-        pass->ActivateReflectionTexture(renderer) == -1,
-      "... and the pass keeps no reflection texture");
-    pass->ReleaseGraphicsResources(window);
-    plain->ReleaseGraphicsResources(window);
+    pbrReflectivity = std::max(pbrReflectivity, reflectivity->GetComponent(p, 0));
   }
+  std::printf("PBR metal, roughness 0, base colour 0.8: %ld traced, reflectivity %.4f\n",
+    metal.Traced, pbrReflectivity);
+  // F0 = mix(0.04, 0.8, 1) = 0.8, (1 - 0)^2 = 1: 0.8 in RGBA8 is 204 / 255.
+  Check(pass->GetLastFrameTraced() && metal.Traced > 1000 &&
+      std::abs(pbrReflectivity - 204.0 / 255.0) < 1e-6,
+    "a PBR metal reflects with F0 = base colour");
+  // The result texture for composite passes.
+  vtkTextureUnitManager* units =
+    vtkOpenGLRenderWindow::SafeDownCast(window)->GetTextureUnitManager();
+  const int unit = pass->ActivateReflectionTexture(renderer);
+  const bool bound = unit >= 0 && units->IsAllocated(unit);
+  pass->DeactivateReflectionTexture(renderer);
+  Check(pass->GetReflectionTextureHandle(renderer) != 0 && bound && !units->IsAllocated(unit),
+    "the reflection texture can be activated and deactivated");
+  floor->GetProperty()->SetRoughness(1.0);
+  window->Render();
+  Check(!pass->GetLastFrameTraced() &&
+      pass->GetGBufferPass()->GetTextureHandle(renderer, vtkDeepGBufferPass::REFLECTIVITY) == 0,
+    "when nothing reflects any more, REFLECTIVITY is freed");
+  Check(pass->GetReflectionTextureHandle(renderer) == 0 &&
+      pass->ActivateReflectionTexture(renderer) == -1,
+    "... and the pass keeps no reflection texture");
+}
 
-  // 2. Bad parameters.
+// Without a reflective prop the pass draws what vtkDeepGBufferPass draws.
+void CheckNonReflectiveScenes()
+{
   auto window = MakeWindow(160, 120);
   vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(0.3, 0.3, 0.4);
   window->AddRenderer(renderer);
-  BuildScene(renderer, true);
+  vtkActor* floor = BuildScene(renderer, false);
+  vtkNew<vtkDeepGBufferPass> plain;
+  renderer->SetPass(plain);
+  window->Render();
+  vtkNew<vtkImageData> plainImage;
+  ReadWindow(window, plainImage, nullptr);
   vtkNew<vtkDeepReflectionPass> pass;
-  renderer->SetPass(pass);
-  EventCounter warnings(pass, vtkCommand::WarningEvent);
+  CheckNothingReflectiveDrawsTheGBufferImage(window, renderer, pass, plainImage);
+  CheckOnlyReflectiveMaterialsTrace(window, renderer, pass, floor);
+  pass->ReleaseGraphicsResources(window);
+  plain->ReleaseGraphicsResources(window);
+}
+
+// 2. Bad parameters: a warning and a clamped value, and every capture stays
+// finite.
+void CheckBadParametersAreClamped(vtkRenderWindow* window, vtkRenderer* renderer,
+  vtkDeepReflectionPass* pass, EventCounter& warnings)
+{
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
 
@@ -224,14 +233,19 @@ int TestDeepReflectionRobustness(int, char*[])
   std::printf("distance inf, stride 1e6 px: %ld traced, %ld hits, %ld environment\n", s.Traced,
     s.Hits, s.Environment);
   Check(s.Finite && s.Hits > 100, "infinite distance: finite captures and hits");
+}
 
-  // Defaults again, for the reference of the next checks.
+// With the default settings, the wall and sphere are reflected, and the
+// debug display of REFLECTIVITY shows white (1) on the mirror, black
+// elsewhere. `before` receives the capture.
+void CheckDefaultReflectionsAndDisplay(
+  vtkRenderWindow* window, vtkRenderer* renderer, vtkDeepReflectionPass* pass, vtkImageData* before)
+{
   pass->AutomaticMaximumDistanceOn();
   pass->SetNumberOfSteps(64);
   pass->SetPixelStride(2.0);
   window->Render();
-  vtkNew<vtkImageData> before, after;
-  s = Summarize(pass, renderer, before);
+  const Summary s = Summarize(pass, renderer, before);
   Check(s.Finite && s.Hits > 1000, "default settings: the wall and sphere are reflected");
 
   // The debug display of REFLECTIVITY: white (1) on the mirror, black elsewhere.
@@ -260,8 +274,14 @@ int TestDeepReflectionRobustness(int, char*[])
     static_cast<long>(tracedMask->GetNumberOfTuples()), displayTraced);
   Check(displayOk == tracedMask->GetNumberOfTuples(),
     "REFLECTIVITY display: 1 on the mirror, 0 elsewhere");
+}
 
-  // 3. ReleaseGraphicsResources, then render again: the same result.
+// 3. ReleaseGraphicsResources, then render again: the same result; a
+// resize reallocates the targets.
+void CheckReleaseAndResize(
+  vtkRenderWindow* window, vtkRenderer* renderer, vtkDeepReflectionPass* pass, vtkImageData* before)
+{
+  vtkNew<vtkImageData> after;
   pass->ReleaseGraphicsResources(window);
   window->Render();
   Summarize(pass, renderer, after);
@@ -279,8 +299,12 @@ int TestDeepReflectionRobustness(int, char*[])
   Check(small.Finite && smallDims[0] == 120 && smallDims[1] == 90 && small.Hits > 500,
     "after a resize the reflections follow the new size");
   window->SetSize(160, 120);
+}
 
-  // 4. Two renderers sharing the pass: the left one has a mirror, the right one not.
+// 4. Two renderers sharing the pass: the left one has a mirror, the right one not.
+void CheckRenderersKeepTheirOwnReflections(
+  vtkRenderWindow* window, vtkRenderer* renderer, vtkDeepReflectionPass* pass)
+{
   renderer->SetViewport(0.0, 0.0, 0.5, 1.0);
   vtkNew<vtkRenderer> right;
   right->SetViewport(0.5, 0.0, 1.0, 1.0);
@@ -299,6 +323,25 @@ int TestDeepReflectionRobustness(int, char*[])
   Check(dims[0] == 80 && dims[1] == 120 && l.Hits > 500 && r.Traced == 0 &&
       rightCapture->GetFieldData()->GetArray(vtkDeepGICaptureNames::Traced)->GetTuple1(0) == 0,
     "each renderer keeps its own reflections");
+}
+}
+
+int TestDeepReflectionRobustness(int, char*[])
+{
+  CheckNonReflectiveScenes();
+
+  auto window = MakeWindow(160, 120);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  BuildScene(renderer, true);
+  vtkNew<vtkDeepReflectionPass> pass;
+  renderer->SetPass(pass);
+  EventCounter warnings(pass, vtkCommand::WarningEvent);
+  CheckBadParametersAreClamped(window, renderer, pass, warnings);
+  vtkNew<vtkImageData> before;
+  CheckDefaultReflectionsAndDisplay(window, renderer, pass, before);
+  CheckReleaseAndResize(window, renderer, pass, before);
+  CheckRenderersKeepTheirOwnReflections(window, renderer, pass);
   Check(warnings.Count == 9, "no further warnings");
 
   std::ostringstream printed;
@@ -307,6 +350,5 @@ int TestDeepReflectionRobustness(int, char*[])
       printed.str().find("RefinementSteps") != std::string::npos,
     "PrintSelf prints the parameters and the frame's state");
   pass->ReleaseGraphicsResources(window);
-  std::printf("%d failure(s)\n", CheckFailures());
-  return CheckFailures() ? 1 : 0;
+  return ExitStatus();
 }

@@ -15,6 +15,7 @@
 
 using namespace DeepGBufferTest;
 using namespace DeepReflectionTest;
+using namespace DeepGITest;
 
 namespace
 {
@@ -115,6 +116,5 @@ int TestDeepReflectionSecondLayer(int, char*[])
     "without layer 1 those rays fall back to the background colour");
 
   pass->ReleaseGraphicsResources(window);
-  std::printf("%d failure(s)\n", CheckFailures());
-  return CheckFailures() ? 1 : 0;
+  return ExitStatus();
 }
