@@ -7,6 +7,7 @@
 
 #include "DeepGITestChecks.h"
 
+#include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkDeepGICaptureNames.h"
 #include "vtkDoubleArray.h"
@@ -41,13 +42,34 @@ public:
   int Warnings = 0;
 };
 
+/// Stores a camera's ViewMatrix and ProjectionMatrix (16 values each) in the
+/// field data of `capture`, as vtkDeepGBufferPass::CaptureLayers does.
+inline void AddCameraMatrices(vtkImageData* capture, vtkMatrix4x4* view, vtkMatrix4x4* projection)
+{
+  for (auto m : { std::make_pair(vtkDeepGICaptureNames::ViewMatrix, view),
+         std::make_pair(vtkDeepGICaptureNames::ProjectionMatrix, projection) })
+  {
+    vtkNew<vtkDoubleArray> values;
+    values->SetName(m.first);
+    values->SetNumberOfComponents(16);
+    values->InsertNextTuple(&m.second->Element[0][0]);
+    capture->GetFieldData()->AddArray(values);
+  }
+}
+
 /// A w x h capture with layer 0 only: the arrays Depth_0, Normal_0 (3
 /// components), Albedo_0 (3) and Valid_0, for the caller to fill, and the
-/// field data ViewMatrix and ProjectionMatrix of the given camera.
+/// field data ViewMatrix and ProjectionMatrix of `camera` at the aspect
+/// w / h. InverseView and InverseProjection turn pixels back into rays.
 struct Layer0Capture
 {
-  Layer0Capture(int w, int h, vtkMatrix4x4* view, vtkMatrix4x4* projection)
+  Layer0Capture(int w, int h, vtkCamera* camera)
   {
+    this->View->DeepCopy(camera->GetModelViewTransformMatrix());
+    this->Projection->DeepCopy(
+      camera->GetProjectionTransformMatrix(static_cast<double>(w) / h, -1, 1));
+    vtkMatrix4x4::Invert(this->View, this->InverseView);
+    vtkMatrix4x4::Invert(this->Projection, this->InverseProjection);
     this->Image->SetDimensions(w, h, 1);
     const vtkIdType n = static_cast<vtkIdType>(w) * h;
     vtkPointData* pd = this->Image->GetPointData();
@@ -66,20 +88,13 @@ struct Layer0Capture
     this->Valid->SetName(vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0).c_str());
     this->Valid->SetNumberOfTuples(n);
     pd->AddArray(this->Valid);
-    for (auto m : { std::make_pair(vtkDeepGICaptureNames::ViewMatrix, view),
-           std::make_pair(vtkDeepGICaptureNames::ProjectionMatrix, projection) })
-    {
-      vtkNew<vtkDoubleArray> values;
-      values->SetName(m.first);
-      values->SetNumberOfComponents(16);
-      values->InsertNextTuple(&m.second->Element[0][0]);
-      this->Image->GetFieldData()->AddArray(values);
-    }
+    AddCameraMatrices(this->Image, this->View, this->Projection);
   }
 
   vtkSmartPointer<vtkImageData> Image = vtkSmartPointer<vtkImageData>::New();
   vtkNew<vtkFloatArray> Depth, Normal, Albedo;
   vtkNew<vtkUnsignedCharArray> Valid;
+  vtkNew<vtkMatrix4x4> View, Projection, InverseView, InverseProjection;
 };
 
 /// View factor from a differential area to a parallel rectangle at height

@@ -69,14 +69,10 @@ vtkSmartPointer<vtkImageData> MakeCapture(std::vector<std::array<double, 3>>& po
   camera->SetViewUp(0, 1, 0);
   camera->SetViewAngle(40.0);
   camera->SetClippingRange(0.1, 2.0 * CameraHeight);
-  vtkMatrix4x4* view = camera->GetModelViewTransformMatrix();
-  vtkMatrix4x4* projection =
-    camera->GetProjectionTransformMatrix(static_cast<double>(Width) / Height, -1, 1);
-  vtkNew<vtkMatrix4x4> inverseView, inverseProjection;
-  vtkMatrix4x4::Invert(view, inverseView);
-  vtkMatrix4x4::Invert(projection, inverseProjection);
-
-  Layer0Capture capture(Width, Height, view, projection);
+  Layer0Capture capture(Width, Height, camera);
+  vtkMatrix4x4* view = capture.View;
+  vtkMatrix4x4* inverseView = capture.InverseView;
+  vtkMatrix4x4* inverseProjection = capture.InverseProjection;
   vtkFloatArray* depth = capture.Depth;
   vtkFloatArray* normal = capture.Normal;
   vtkFloatArray* albedo = capture.Albedo;

@@ -126,14 +126,10 @@ vtkSmartPointer<vtkImageData> MakeCapture(const Frame& f, int w, int h, double c
   camera->SetViewUp(0, 1, 0);
   camera->SetViewAngle(40.0);
   camera->SetClippingRange(0.1 * height * f.Scale, 2.0 * height * f.Scale);
-  vtkMatrix4x4* view = camera->GetModelViewTransformMatrix();
-  vtkMatrix4x4* projection =
-    camera->GetProjectionTransformMatrix(static_cast<double>(w) / h, -1, 1);
-  vtkNew<vtkMatrix4x4> inverseView, inverseProjection;
-  vtkMatrix4x4::Invert(view, inverseView);
-  vtkMatrix4x4::Invert(projection, inverseProjection);
-
-  Layer0Capture capture(w, h, view, projection);
+  Layer0Capture capture(w, h, camera);
+  vtkMatrix4x4* view = capture.View;
+  vtkMatrix4x4* inverseView = capture.InverseView;
+  vtkMatrix4x4* inverseProjection = capture.InverseProjection;
   vtkFloatArray* depth = capture.Depth;
   vtkFloatArray* normal = capture.Normal;
   vtkFloatArray* alb = capture.Albedo;

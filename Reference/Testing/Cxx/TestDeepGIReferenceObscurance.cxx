@@ -17,6 +17,7 @@
 //     1e4 * size away from the origin): same AV within noise;
 //  6. bad input: errors, no crash.
 
+#include "DeepGIReferenceTestUtilities.h"
 #include "DeepGITestChecks.h"
 
 #include "vtkCamera.h"
@@ -51,20 +52,6 @@ namespace
 {
 using DeepGITest::Check;
 using DeepGITest::Format;
-
-class ErrorCounter : public vtkCommand
-{
-public:
-  static ErrorCounter* New() { return new ErrorCounter; }
-  void Execute(vtkObject*, unsigned long event, void*) override
-  {
-    if (event == vtkCommand::ErrorEvent)
-    {
-      ++this->Errors;
-    }
-  }
-  int Errors = 0;
-};
 
 // Geometry of a test: floor z = 0 (x >= WallX), optional walls x = WallX and
 // y = WallY (floor side y >= WallY), everything extending Extent from the
@@ -201,15 +188,7 @@ vtkSmartPointer<vtkImageData> MakeCapture(const Setup& s, int w, int h, double c
   capture->GetPointData()->AddArray(depth);
   capture->GetPointData()->AddArray(normal);
   capture->GetPointData()->AddArray(valid);
-  for (auto m : { std::make_pair(vtkDeepGICaptureNames::ViewMatrix, view),
-         std::make_pair(vtkDeepGICaptureNames::ProjectionMatrix, projection) })
-  {
-    vtkNew<vtkDoubleArray> values;
-    values->SetName(m.first);
-    values->SetNumberOfComponents(16);
-    values->InsertNextTuple(&m.second->Element[0][0]);
-    capture->GetFieldData()->AddArray(values);
-  }
+  DeepGIReferenceTest::AddCameraMatrices(capture, view, projection);
   return capture;
 }
 
@@ -472,7 +451,7 @@ void CheckScaleInvariance(const Setup& wall,
 // 6. Bad input: errors, no crash.
 void CheckBadInputIsRefused(vtkPolyData* scene, vtkImageData* wallCapture)
 {
-  vtkNew<ErrorCounter> errors;
+  vtkNew<DeepGIReferenceTest::EventCounter> errors;
   vtkNew<vtkDeepGIReferenceObscurance> bad;
   bad->AddObserver(vtkCommand::ErrorEvent, errors);
   Check(!bad->Compute(wallCapture) && errors->Errors == 1, "null scene: error");

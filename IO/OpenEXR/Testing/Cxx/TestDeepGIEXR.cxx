@@ -261,15 +261,7 @@ vtkSmartPointer<vtkImageData> MakeCapture(int w, int h)
   capture->GetFieldData()->AddArray(separation);
   capture->GetFieldData()->AddArray(layers);
   capture->GetFieldData()->AddArray(oracle);
-  for (auto m : { std::make_pair(vtkDeepGICaptureNames::ViewMatrix, view),
-         std::make_pair(vtkDeepGICaptureNames::ProjectionMatrix, projection) })
-  {
-    vtkNew<vtkDoubleArray> values;
-    values->SetName(m.first);
-    values->SetNumberOfComponents(16);
-    values->InsertNextTuple(&m.second->Element[0][0]);
-    capture->GetFieldData()->AddArray(values);
-  }
+  AddCameraMatrices(capture, view, projection);
   return capture;
 }
 }
