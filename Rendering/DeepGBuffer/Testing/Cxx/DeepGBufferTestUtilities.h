@@ -8,9 +8,11 @@
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkCubeSource.h"
 #include "vtkDataArray.h"
+#include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIRenderWindowFactory.h"
@@ -21,6 +23,7 @@
 #include "vtkImageProperty.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
@@ -29,7 +32,10 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
+#include "vtkSmartVolumeMapper.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
@@ -73,6 +79,63 @@ inline vtkActor* AddBox(vtkRenderer* renderer, const double center[3], const dou
   cube->SetYLength(size[1]);
   cube->SetZLength(size[2]);
   return AddSourceActor(renderer, cube);
+}
+
+// Populates `renderer` with the demo scene (vtkDeepGBufferDemoScene) of
+// about `triangles` triangles, seen from its default view.
+inline bool AddDemoScene(vtkRenderer* renderer, int triangles = 20000)
+{
+  vtkNew<vtkDeepGBufferDemoScene> scene;
+  scene->SetTargetNumberOfTriangles(triangles);
+  scene->Populate(renderer);
+  scene->SetCameraToDefaultView(renderer->GetActiveCamera());
+  renderer->ResetCameraClippingRange();
+  return true;
+}
+
+// A corner: floor y = 0 (x in [-4, 4], z in [-2, 4]) and wall z = -2 (height
+// 4), optionally a 1 x 1.5 x 1 box in front of the wall (two layers where
+// the box hides the floor and the wall), seen from (0, 2.5, 4) at 40 degrees.
+inline void AddCornerScene(vtkRenderer* renderer, bool box)
+{
+  const double floor[3][3] = { { -4, 0, 4 }, { 4, 0, 4 }, { -4, 0, -2 } };
+  AddQuad(renderer, floor[0], floor[1], floor[2]);
+  const double wall[3][3] = { { -4, 0, -2 }, { 4, 0, -2 }, { -4, 4, -2 } };
+  AddQuad(renderer, wall[0], wall[1], wall[2]);
+  if (box)
+  {
+    const double center[3] = { 0.5, 0.75, 0.0 }, size[3] = { 1.0, 1.5, 1.0 };
+    AddBox(renderer, center, size);
+  }
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0.0, 2.5, 4.0);
+  camera->SetFocalPoint(0.0, 0.3, -1.5);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetViewAngle(40.0);
+}
+
+// Draws the bone of a CT volume (headsq: values above 1000) in `volume`
+// through vtkSmartVolumeMapper: transparent up to 1000, `boneColor` at 1150
+// turning white at 3926, opacity `opacity` at 1400 rising to twice that at
+// 3926. Returns the mapper.
+inline vtkSmartVolumeMapper* ShowBone(
+  vtkVolume* volume, vtkAlgorithm* reader, const double boneColor[3], double opacity)
+{
+  vtkNew<vtkSmartVolumeMapper> mapper;
+  mapper->SetInputConnection(reader->GetOutputPort());
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0.0, 0.0, 0.0, 0.0);
+  color->AddRGBPoint(1150.0, boneColor[0], boneColor[1], boneColor[2]);
+  color->AddRGBPoint(3926.0, 1.0, 1.0, 1.0);
+  vtkNew<vtkPiecewiseFunction> opacities;
+  opacities->AddPoint(0.0, 0.0);
+  opacities->AddPoint(1000.0, 0.0);
+  opacities->AddPoint(1400.0, opacity);
+  opacities->AddPoint(3926.0, 2.0 * opacity);
+  volume->SetMapper(mapper);
+  volume->GetProperty()->SetColor(color);
+  volume->GetProperty()->SetScalarOpacity(opacities);
+  return mapper;
 }
 
 // A camera at p looking at f, y up, 40 degree view angle (parallel scale 3).

@@ -13,20 +13,10 @@
 // that is all 1 or all dark.
 
 #include "DeepAmbientObscuranceImageTest.h"
-#include "vtkDeepGBufferDemoScene.h"
 
 int TestDeepAmbientObscuranceDemoImage(int argc, char* argv[])
 {
   return DeepGBufferTest::RunAOImageTest(
-    argc, argv,
-    [](vtkRenderer* renderer)
-    {
-      vtkNew<vtkDeepGBufferDemoScene> scene;
-      scene->SetTargetNumberOfTriangles(20000);
-      scene->Populate(renderer);
-      scene->SetCameraToDefaultView(renderer->GetActiveCamera());
-      renderer->ResetCameraClippingRange();
-      return true;
-    },
+    argc, argv, [](vtkRenderer* renderer) { return DeepGBufferTest::AddDemoScene(renderer); },
     [](vtkDeepAmbientObscurancePass*) {}, { 0.887, 0.947, 0.27, 0.11 }, 0.5);
 }

@@ -18,11 +18,9 @@
 #include "DeepGBufferTestUtilities.h"
 
 #include "vtkCamera.h"
-#include "vtkCubeSource.h"
 #include "vtkDeepAmbientObscurancePass.h"
 #include "vtkDeepGICaptureNames.h"
 #include "vtkFieldData.h"
-#include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
 
 #include <algorithm>
@@ -34,33 +32,6 @@ using namespace DeepGITest;
 
 namespace
 {
-// Floor, wall and a box in front of the wall (two layers where the box hides
-// the floor and the wall).
-void Scene(vtkRenderer* renderer)
-{
-  vtkNew<vtkPlaneSource> floor;
-  floor->SetOrigin(-4, 0, 4);
-  floor->SetPoint1(4, 0, 4);
-  floor->SetPoint2(-4, 0, -2);
-  AddSourceActor(renderer, floor);
-  vtkNew<vtkPlaneSource> wall;
-  wall->SetOrigin(-4, 0, -2);
-  wall->SetPoint1(4, 0, -2);
-  wall->SetPoint2(-4, 4, -2);
-  AddSourceActor(renderer, wall);
-  vtkNew<vtkCubeSource> box;
-  box->SetCenter(0.5, 0.75, 0.0);
-  box->SetXLength(1.0);
-  box->SetYLength(1.5);
-  box->SetZLength(1.0);
-  AddSourceActor(renderer, box);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(0.0, 2.5, 4.0);
-  camera->SetFocalPoint(0.0, 0.3, -1.5);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetViewAngle(40.0);
-}
-
 struct Frame
 {
   vtkSmartPointer<vtkRenderWindow> Window;
@@ -73,7 +44,7 @@ Frame Render(vtkDeepAmbientObscurancePass* pass, int width, int height, int fram
   f.Window = MakeWindow(width, height);
   f.Renderer = vtkSmartPointer<vtkRenderer>::New();
   f.Window->AddRenderer(f.Renderer);
-  Scene(f.Renderer);
+  AddCornerScene(f.Renderer, true);
   f.Renderer->ResetCameraClippingRange();
   f.Renderer->SetPass(pass);
   for (int i = 0; i < frames; ++i)

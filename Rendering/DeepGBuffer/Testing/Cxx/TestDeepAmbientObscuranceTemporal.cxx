@@ -19,13 +19,11 @@
 #include "DeepGBufferTestUtilities.h"
 
 #include "vtkCamera.h"
-#include "vtkCubeSource.h"
 #include "vtkDeepAmbientObscurancePass.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDeepGICaptureNames.h"
 #include "vtkFieldData.h"
 #include "vtkMatrix4x4.h"
-#include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
 
 #include <algorithm>
@@ -37,35 +35,6 @@ using namespace DeepGITest;
 
 namespace
 {
-// Floor and wall (the corner), optionally a box in front of the wall.
-void Scene(vtkRenderer* renderer, bool box)
-{
-  vtkNew<vtkPlaneSource> floor;
-  floor->SetOrigin(-4, 0, 4);
-  floor->SetPoint1(4, 0, 4);
-  floor->SetPoint2(-4, 0, -2);
-  AddSourceActor(renderer, floor);
-  vtkNew<vtkPlaneSource> wall;
-  wall->SetOrigin(-4, 0, -2);
-  wall->SetPoint1(4, 0, -2);
-  wall->SetPoint2(-4, 4, -2);
-  AddSourceActor(renderer, wall);
-  if (box)
-  {
-    vtkNew<vtkCubeSource> cube;
-    cube->SetCenter(0.5, 0.75, 0.0);
-    cube->SetXLength(1.0);
-    cube->SetYLength(1.5);
-    cube->SetZLength(1.0);
-    AddSourceActor(renderer, cube);
-  }
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(0.0, 2.5, 4.0);
-  camera->SetFocalPoint(0.0, 0.3, -1.5);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetViewAngle(40.0);
-}
-
 struct Frame
 {
   vtkSmartPointer<vtkRenderWindow> Window;
@@ -78,7 +47,7 @@ Frame Setup(vtkDeepAmbientObscurancePass* pass, int width, int height, bool box)
   f.Window = MakeWindow(width, height);
   f.Renderer = vtkSmartPointer<vtkRenderer>::New();
   f.Window->AddRenderer(f.Renderer);
-  Scene(f.Renderer, box);
+  AddCornerScene(f.Renderer, box);
   f.Renderer->ResetCameraClippingRange();
   f.Renderer->SetPass(pass);
   return f;

@@ -5,20 +5,10 @@
 // pixels on edges to differ after llvmpipe or driver updates).
 
 #include "DeepGBufferImageTest.h"
-#include "vtkDeepGBufferDemoScene.h"
 
 int TestDeepGBufferDemoImage(int argc, char* argv[])
 {
   return DeepGBufferTest::RunLayerImageTest(
-    argc, argv,
-    [](vtkRenderer* renderer)
-    {
-      vtkNew<vtkDeepGBufferDemoScene> scene;
-      scene->SetTargetNumberOfTriangles(20000);
-      scene->Populate(renderer);
-      scene->SetCameraToDefaultView(renderer->GetActiveCamera());
-      renderer->ResetCameraClippingRange();
-      return true;
-    },
-    0.15, 10000, 0.5);
+    argc, argv, [](vtkRenderer* renderer) { return DeepGBufferTest::AddDemoScene(renderer); }, 0.15,
+    10000, 0.5);
 }

@@ -20,11 +20,7 @@ int TestDeepGBufferEGL(int, char*[])
   window->SetSize(256, 192);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
-  vtkNew<vtkDeepGBufferDemoScene> scene;
-  scene->SetTargetNumberOfTriangles(10000);
-  scene->Populate(renderer);
-  scene->SetCameraToDefaultView(renderer->GetActiveCamera());
-  renderer->ResetCameraClippingRange();
+  DeepGBufferTest::AddDemoScene(renderer, 10000);
   window->Render();
   vtkNew<vtkImageData> plain;
   DeepGBufferTest::ReadWindow(window, plain, nullptr);

@@ -206,11 +206,7 @@ int TestDeepGBufferLayers(int argc, char* argv[])
 
   SceneBuilder demo = [](vtkRenderWindow*, vtkRenderer* renderer)
   {
-    vtkNew<vtkDeepGBufferDemoScene> scene;
-    scene->SetTargetNumberOfTriangles(20000);
-    scene->Populate(renderer);
-    scene->SetCameraToDefaultView(renderer->GetActiveCamera());
-    renderer->ResetCameraClippingRange();
+    AddDemoScene(renderer);
     return true;
   };
   SceneBuilder cornell = [data](vtkRenderWindow*, vtkRenderer* renderer)

@@ -94,20 +94,8 @@ void AddHeadScene(Composed& s, vtkAlgorithm* reader)
   vtkActor* skinActor = AddSourceActor(s.Left, skin);
   skinActor->GetProperty()->SetColor(0.9, 0.75, 0.65);
   skinActor->GetProperty()->SetAmbient(0.2);
-  vtkNew<vtkSmartVolumeMapper> volumeMapper;
-  volumeMapper->SetInputConnection(reader->GetOutputPort());
-  vtkNew<vtkColorTransferFunction> color;
-  color->AddRGBPoint(0.0, 0.0, 0.0, 0.0);
-  color->AddRGBPoint(1150.0, 1.0, 1.0, 0.9);
-  color->AddRGBPoint(3926.0, 1.0, 1.0, 1.0);
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(0.0, 0.0);
-  opacity->AddPoint(1000.0, 0.0);
-  opacity->AddPoint(1400.0, 0.3);
-  opacity->AddPoint(3926.0, 0.6);
-  s.Volume->SetMapper(volumeMapper);
-  s.Volume->GetProperty()->SetColor(color);
-  s.Volume->GetProperty()->SetScalarOpacity(opacity);
+  const double boneColor[3] = { 1.0, 1.0, 0.9 };
+  ShowBone(s.Volume, reader, boneColor, 0.3);
   // Beside the skin (the bone inside it is hidden by the opaque skin, as
   // it should be: the volume composes against layer 0's depth).
   s.Volume->SetPosition(210.0, 0.0, 0.0);

@@ -43,11 +43,7 @@ vtkSmartPointer<vtkRenderWindow> DemoWindow(vtkRenderer* renderer)
   auto window = MakeWindow(W, H);
   renderer->SetBackground(0.1, 0.1, 0.15);
   window->AddRenderer(renderer);
-  vtkNew<vtkDeepGBufferDemoScene> scene;
-  scene->SetTargetNumberOfTriangles(20000);
-  scene->Populate(renderer);
-  scene->SetCameraToDefaultView(renderer->GetActiveCamera());
-  renderer->ResetCameraClippingRange();
+  AddDemoScene(renderer);
   return window;
 }
 }

@@ -73,21 +73,9 @@ int TestDeepGIHeadImage(int argc, char* argv[])
   skinActor->GetProperty()->SetAmbient(0.2);
   skinActor->GetProperty()->SetOpacity(1.0);
 
-  vtkNew<vtkSmartVolumeMapper> volumeMapper;
-  volumeMapper->SetInputConnection(reader->GetOutputPort());
-  vtkNew<vtkColorTransferFunction> color;
-  color->AddRGBPoint(0.0, 0.0, 0.0, 0.0);
-  color->AddRGBPoint(1150.0, 0.9, 0.9, 1.0);
-  color->AddRGBPoint(3926.0, 1.0, 1.0, 1.0);
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(0.0, 0.0);
-  opacity->AddPoint(1000.0, 0.0);
-  opacity->AddPoint(1400.0, 0.25);
-  opacity->AddPoint(3926.0, 0.5);
   vtkNew<vtkVolume> volume;
-  volume->SetMapper(volumeMapper);
-  volume->GetProperty()->SetColor(color);
-  volume->GetProperty()->SetScalarOpacity(opacity);
+  const double boneColor[3] = { 0.9, 0.9, 1.0 };
+  vtkSmartVolumeMapper* volumeMapper = ShowBone(volume, reader, boneColor, 0.25);
   volume->GetProperty()->ShadeOff();
   // The translucent volume sits beside the skin so both are seen.
   volume->SetPosition(210.0, 0.0, 0.0);

@@ -46,11 +46,7 @@ int TestDeepRadiosityDemoImage(int argc, char* argv[])
   view->SetBackground(0.1, 0.1, 0.15);
   window->AddRenderer(lit);
   window->AddRenderer(view);
-  vtkNew<vtkDeepGBufferDemoScene> scene;
-  scene->SetTargetNumberOfTriangles(20000);
-  scene->Populate(lit);
-  scene->SetCameraToDefaultView(lit->GetActiveCamera());
-  lit->ResetCameraClippingRange();
+  AddDemoScene(lit);
   vtkNew<vtkDeepRadiosityPass> pass;
   pass->SetTemporalAlpha(0.0);
   pass->SetDamping(0.5);
