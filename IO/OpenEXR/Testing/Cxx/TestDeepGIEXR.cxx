@@ -264,67 +264,63 @@ vtkSmartPointer<vtkImageData> MakeCapture(int w, int h)
   AddCameraMatrices(capture, view, projection);
   return capture;
 }
+
+// The written file, checked with OpenEXR directly: names, types, windows,
+// and the file's top row is VTK's last row.
+void CheckFloatFileLayout(const std::string& floatFile, vtkImageData* image, int w, int h)
+{
+  Imf::InputFile file(floatFile.c_str());
+  const Imf::ChannelList& channels = file.header().channels();
+  int count = 0;
+  bool allFloat = true;
+  for (auto it = channels.begin(); it != channels.end(); ++it)
+  {
+    ++count;
+    allFloat = allFloat && it.channel().type == Imf::FLOAT;
+  }
+  Check(count == 4 + 1 + 3 + 6 + 2 + 3 + 1, "FLOAT: 20 channels (" + std::to_string(count) + ")");
+  Check(allFloat, "FLOAT: every channel is FLOAT");
+  for (const char* name : { "Radiance_0.R", "Radiance_0.A", "Depth_0.Y", "R", "G", "B", "Many.5",
+         "Pair.G", "Normal_0.B", "Valid_0.Y" })
+  {
+    Check(channels.findChannel(name) != nullptr, std::string("channel ") + name);
+  }
+  const Imath::Box2i window = file.header().dataWindow();
+  Check(window.min.x == 3 && window.min.y == 2 && window.max.x == 3 + w - 1 &&
+      window.max.y == 2 + h - 1 && file.header().displayWindow() == window,
+    "data and display windows from the origin");
+  Check(file.header().compression() == Imf::ZIP_COMPRESSION, "ZIP compression");
+  std::vector<float> depth(static_cast<size_t>(w) * h);
+  Imf::FrameBuffer frameBuffer;
+  frameBuffer.insert("Depth_0.Y", Imf::Slice::Make(Imf::FLOAT, depth.data(), window));
+  file.setFrameBuffer(frameBuffer);
+  file.readPixels(window.min.y, window.max.y);
+  auto d = vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Depth, 0).c_str()));
+  bool flipped = true;
+  for (int x = 0; x < w; ++x)
+  {
+    flipped = flipped && depth[x] == d->GetValue(static_cast<vtkIdType>(h - 1) * w + x) &&
+      depth[static_cast<size_t>(h - 1) * w + x] == d->GetValue(x);
+  }
+  Check(flipped, "the file's top row is VTK's last row");
 }
 
-int TestDeepGIEXR(int argc, char* argv[])
+// 1. FLOAT round trip: every float value bit-identical; returns the image
+// written to `floatFile`.
+vtkSmartPointer<vtkImageData> CheckFloatRoundTrip(const std::string& floatFile, int w, int h)
 {
-  std::string directory = ".";
-  for (int i = 1; i + 1 < argc; ++i)
-  {
-    if (std::string(argv[i]) == "-T")
-    {
-      directory = argv[i + 1];
-    }
-  }
-  const int w = 7, h = 5;
-
-  // 1. FLOAT round trip.
-  const std::string floatFile = directory + "/TestDeepGIEXR-float.exr";
   auto image = MakeImage(w, h, false);
   Check(Write(image, floatFile, vtkDeepGIEXRWriter::FLOAT), "FLOAT: written");
   Check(vtkDeepGIEXRReader::CanReadFile(floatFile.c_str()), "CanReadFile on the written file");
   CompareImages(image, Read(floatFile), false, "FLOAT round trip");
-  {
-    // The file itself: names, types, windows, and the file's top row is
-    // VTK's last row.
-    Imf::InputFile file(floatFile.c_str());
-    const Imf::ChannelList& channels = file.header().channels();
-    int count = 0;
-    bool allFloat = true;
-    for (auto it = channels.begin(); it != channels.end(); ++it)
-    {
-      ++count;
-      allFloat = allFloat && it.channel().type == Imf::FLOAT;
-    }
-    Check(count == 4 + 1 + 3 + 6 + 2 + 3 + 1, "FLOAT: 20 channels (" + std::to_string(count) + ")");
-    Check(allFloat, "FLOAT: every channel is FLOAT");
-    for (const char* name : { "Radiance_0.R", "Radiance_0.A", "Depth_0.Y", "R", "G", "B", "Many.5",
-           "Pair.G", "Normal_0.B", "Valid_0.Y" })
-    {
-      Check(channels.findChannel(name) != nullptr, std::string("channel ") + name);
-    }
-    const Imath::Box2i window = file.header().dataWindow();
-    Check(window.min.x == 3 && window.min.y == 2 && window.max.x == 3 + w - 1 &&
-        window.max.y == 2 + h - 1 && file.header().displayWindow() == window,
-      "data and display windows from the origin");
-    Check(file.header().compression() == Imf::ZIP_COMPRESSION, "ZIP compression");
-    std::vector<float> depth(static_cast<size_t>(w) * h);
-    Imf::FrameBuffer frameBuffer;
-    frameBuffer.insert("Depth_0.Y", Imf::Slice::Make(Imf::FLOAT, depth.data(), window));
-    file.setFrameBuffer(frameBuffer);
-    file.readPixels(window.min.y, window.max.y);
-    auto d = vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray(
-      vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Depth, 0).c_str()));
-    bool flipped = true;
-    for (int x = 0; x < w; ++x)
-    {
-      flipped = flipped && depth[x] == d->GetValue(static_cast<vtkIdType>(h - 1) * w + x) &&
-        depth[static_cast<size_t>(h - 1) * w + x] == d->GetValue(x);
-    }
-    Check(flipped, "the file's top row is VTK's last row");
-  }
+  CheckFloatFileLayout(floatFile, image, w, h);
+  return image;
+}
 
-  // 2. HALF round trip.
+// 2. HALF round trip: |a - b| <= 2^-11 |a| + 2^-24 for every value.
+void CheckHalfRoundTrip(const std::string& directory, int w, int h)
+{
   const std::string halfFile = directory + "/TestDeepGIEXR-half.exr";
   auto halfImage = MakeImage(w, h, true);
   Check(Write(halfImage, halfFile, vtkDeepGIEXRWriter::HALF), "HALF: written");
@@ -334,225 +330,255 @@ int TestDeepGIEXR(int argc, char* argv[])
       "HALF: channels are HALF");
   }
   CompareImages(halfImage, Read(halfFile), true, "HALF round trip");
+}
 
-  // 3. A tiled file with half and uint channels and an offset data window.
+// 3. A tiled file with half and uint channels and an offset data window,
+// written with OpenEXR directly, is read into the documented arrays.
+void CheckTiledFileRead(const std::string& directory)
+{
   const std::string tiledFile = directory + "/TestDeepGIEXR-tiled.exr";
+  const int tw = 6, th = 4;
+  Imath::Box2i display(Imath::V2i(0, 0), Imath::V2i(19, 9));
+  Imath::Box2i data(Imath::V2i(5, 3), Imath::V2i(5 + tw - 1, 3 + th - 1));
+  Imf::Header header(display, data);
+  for (const char* c : { "R", "G", "B", "A" })
   {
-    const int tw = 6, th = 4;
-    Imath::Box2i display(Imath::V2i(0, 0), Imath::V2i(19, 9));
-    Imath::Box2i data(Imath::V2i(5, 3), Imath::V2i(5 + tw - 1, 3 + th - 1));
-    Imf::Header header(display, data);
-    for (const char* c : { "R", "G", "B", "A" })
-    {
-      header.channels().insert(c, Imf::Channel(Imf::HALF));
-    }
-    header.channels().insert("id.Y", Imf::Channel(Imf::UINT));
-    header.channels().insert("Z", Imf::Channel(Imf::FLOAT));
-    header.setTileDescription(Imf::TileDescription(4, 4));
-    std::vector<half> rgba(static_cast<size_t>(tw) * th * 4);
-    std::vector<uint32_t> id(static_cast<size_t>(tw) * th);
-    std::vector<float> z(static_cast<size_t>(tw) * th);
-    for (int y = 0; y < th; ++y)
-    {
-      for (int x = 0; x < tw; ++x)
-      {
-        const size_t p = static_cast<size_t>(y) * tw + x;
-        for (int c = 0; c < 4; ++c)
-        {
-          rgba[4 * p + c] = half(0.25f * c + 0.125f * x + 0.0625f * y); // exact in half
-        }
-        id[p] = 16777216u - static_cast<uint32_t>(p); // exact in float up to 2^24
-        z[p] = 100.0f * y + x;
-      }
-    }
-    Imf::FrameBuffer frameBuffer;
-    const char* names[4] = { "R", "G", "B", "A" };
-    for (int c = 0; c < 4; ++c)
-    {
-      frameBuffer.insert(names[c],
-        Imf::Slice::Make(
-          Imf::HALF, rgba.data() + c, data, 4 * sizeof(half), 4 * sizeof(half) * tw));
-    }
-    frameBuffer.insert("id.Y", Imf::Slice::Make(Imf::UINT, id.data(), data));
-    frameBuffer.insert("Z", Imf::Slice::Make(Imf::FLOAT, z.data(), data));
-    {
-      Imf::TiledOutputFile file(tiledFile.c_str(), header);
-      file.setFrameBuffer(frameBuffer);
-      file.writeTiles(0, file.numXTiles() - 1, 0, file.numYTiles() - 1);
-    }
-    auto read = Read(tiledFile);
-    int dims[3];
-    read->GetDimensions(dims);
-    double origin[3];
-    read->GetOrigin(origin);
-    auto rgbaArray = vtkFloatArray::SafeDownCast(read->GetPointData()->GetArray("RGBA"));
-    auto idArray = vtkFloatArray::SafeDownCast(read->GetPointData()->GetArray("id"));
-    auto zArray = vtkFloatArray::SafeDownCast(read->GetPointData()->GetArray("Z"));
-    Check(dims[0] == tw && dims[1] == th, "tiled: dimensions of the data window");
-    // File (x, y) -> VTK (x, 0 + 9 - y): the data window's last row y = 6 is
-    // VTK y = 3.
-    Check(origin[0] == 5 && origin[1] == 3, "tiled: origin (5, 3) from the data window");
-    Check(rgbaArray && rgbaArray->GetNumberOfComponents() == 4 &&
-        read->GetPointData()->GetScalars() == rgbaArray,
-      "tiled: R G B A -> active scalars \"RGBA\"");
-    Check(idArray && idArray->GetNumberOfComponents() == 1 && zArray, "tiled: \"id\" and \"Z\"");
-    int bad = 0;
-    for (int y = 0; rgbaArray && idArray && zArray && y < th; ++y)
-    {
-      for (int x = 0; x < tw; ++x)
-      {
-        const size_t p = static_cast<size_t>(y) * tw + x;
-        const vtkIdType v = static_cast<vtkIdType>(th - 1 - y) * tw + x; // flipped
-        for (int c = 0; c < 4; ++c)
-        {
-          bad += rgbaArray->GetTypedComponent(v, c) != static_cast<float>(rgba[4 * p + c]);
-        }
-        bad += idArray->GetValue(v) != static_cast<float>(id[p]);
-        bad += zArray->GetValue(v) != z[p];
-      }
-    }
-    Check(bad == 0,
-      "tiled: half, uint and float values exact, rows flipped (" + std::to_string(bad) +
-        " differ)");
+    header.channels().insert(c, Imf::Channel(Imf::HALF));
   }
-
-  // 4. Capture round trip.
+  header.channels().insert("id.Y", Imf::Channel(Imf::UINT));
+  header.channels().insert("Z", Imf::Channel(Imf::FLOAT));
+  header.setTileDescription(Imf::TileDescription(4, 4));
+  std::vector<half> rgba(static_cast<size_t>(tw) * th * 4);
+  std::vector<uint32_t> id(static_cast<size_t>(tw) * th);
+  std::vector<float> z(static_cast<size_t>(tw) * th);
+  for (int y = 0; y < th; ++y)
   {
-    const std::string captureFile = directory + "/TestDeepGIEXR-capture.exr";
-    auto capture = MakeCapture(24, 16);
-    Check(Write(capture, captureFile, vtkDeepGIEXRWriter::FLOAT), "capture: written");
-    auto read = Read(captureFile);
-    CompareImages(capture, read, false, "capture round trip");
-    vtkFieldData* fd = read->GetFieldData();
-    auto separation =
-      vtkDoubleArray::SafeDownCast(fd->GetArray(vtkDeepGICaptureNames::MinimumSeparation));
-    auto layers = vtkIntArray::SafeDownCast(fd->GetArray(vtkDeepGICaptureNames::NumberOfLayers));
-    auto oracle = vtkStringArray::SafeDownCast(fd->GetAbstractArray(vtkDeepGICaptureNames::Oracle));
-    Check(separation && separation->GetValue(0) == 0.123456789012345,
-      "capture: MinimumSeparation (double) exact");
-    Check(layers && layers->GetValue(0) == 2, "capture: NumberOfLayers (int)");
-    Check(oracle && oracle->GetValue(0) == "REPROJECT", "capture: Oracle (string)");
-    for (const char* name :
-      { vtkDeepGICaptureNames::ViewMatrix, vtkDeepGICaptureNames::ProjectionMatrix })
+    for (int x = 0; x < tw; ++x)
     {
-      vtkDataArray* a = capture->GetFieldData()->GetArray(name);
-      vtkDataArray* b = fd->GetArray(name);
-      bool same = b && b->GetNumberOfComponents() == 16;
-      for (int k = 0; same && k < 16; ++k)
+      const size_t p = static_cast<size_t>(y) * tw + x;
+      for (int c = 0; c < 4; ++c)
       {
-        same = a->GetComponent(0, k) == b->GetComponent(0, k);
+        rgba[4 * p + c] = half(0.25f * c + 0.125f * x + 0.0625f * y); // exact in half
       }
-      Check(same, std::string("capture: ") + name + " exact");
+      id[p] = 16777216u - static_cast<uint32_t>(p); // exact in float up to 2^24
+      z[p] = 100.0f * y + x;
     }
-    // The reloaded capture drives the reference exactly like the original.
-    vtkNew<vtkPolyData> scene;
-    vtkNew<vtkPoints> points;
-    vtkNew<vtkCellArray> polys;
-    const double box[8][3] = { { 0, 0, 0 }, { 0.5, 0, 0 }, { 0.5, 0.5, 0 }, { 0, 0.5, 0 },
-      { 0, 0, 0.5 }, { 0.5, 0, 0.5 }, { 0.5, 0.5, 0.5 }, { 0, 0.5, 0.5 } };
-    for (const auto& p : box)
-    {
-      points->InsertNextPoint(p);
-    }
-    const vtkIdType faces[5][4] = { { 4, 5, 6, 7 }, { 0, 1, 5, 4 }, { 1, 2, 6, 5 }, { 2, 3, 7, 6 },
-      { 3, 0, 4, 7 } };
-    for (const auto& f : faces)
-    {
-      polys->InsertNextCell(4, f);
-    }
-    scene->SetPoints(points);
-    scene->SetPolys(polys);
-    vtkNew<vtkDeepGIReferenceObscurance> a, b;
-    for (vtkDeepGIReferenceObscurance* r : { a.Get(), b.Get() })
-    {
-      r->SetScene(scene);
-      r->SetSamplesPerPixel(16);
-    }
-    a->Compute(capture);
-    b->Compute(read);
-    auto av = vtkFloatArray::SafeDownCast(a->GetOutput()->GetPointData()->GetArray("Obscurance"));
-    auto bv = vtkFloatArray::SafeDownCast(b->GetOutput()->GetPointData()->GetArray("Obscurance"));
-    Check(av && bv && av->GetNumberOfValues() == bv->GetNumberOfValues() &&
-        std::memcmp(
-          av->GetPointer(0), bv->GetPointer(0), sizeof(float) * av->GetNumberOfValues()) == 0 &&
-        a->GetMeanStandardError() > 0,
-      "capture: the reference gives identical obscurance on the reloaded capture");
   }
-
-  // 5. Bad input.
+  Imf::FrameBuffer frameBuffer;
+  const char* names[4] = { "R", "G", "B", "A" };
+  for (int c = 0; c < 4; ++c)
   {
-    vtkNew<EventCounter> events;
-    vtkNew<vtkDeepGIEXRReader> reader;
-    reader->AddObserver(vtkCommand::ErrorEvent, events);
-    // The executive adds its own "returned failure" error to each reader error.
-    vtkNew<EventCounter> executiveEvents;
-    reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executiveEvents);
-    reader->SetFileName((directory + "/no-such-file.exr").c_str());
-    reader->Update();
-    Check(events->Errors >= 1 && reader->GetOutput()->GetNumberOfPoints() == 0,
-      "missing file: error, empty output");
-    const std::string text = directory + "/TestDeepGIEXR-not-exr.exr";
-    std::ofstream(text) << "this is not an OpenEXR file\n";
-    const int before = events->Errors;
-    reader->SetFileName(text.c_str());
-    reader->Update();
-    Check(events->Errors > before && reader->GetOutput()->GetNumberOfPoints() == 0 &&
-        !vtkDeepGIEXRReader::CanReadFile(text.c_str()),
-      "not an EXR file: error, empty output");
-    // A truncated EXR file: the header is fine, the pixels are not.
-    const std::string truncated = directory + "/TestDeepGIEXR-truncated.exr";
-    {
-      std::ifstream in(floatFile, std::ios::binary);
-      std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-      std::ofstream(truncated, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
-    }
-    const int beforeTruncated = events->Errors;
-    reader->SetFileName(truncated.c_str());
-    reader->Update();
-    Check(events->Errors > beforeTruncated, "truncated EXR file: error");
-    reader->SetFileName(nullptr);
-    const int beforeEmpty = events->Errors;
-    reader->Update();
-    Check(events->Errors > beforeEmpty, "no file name: error");
-
-    vtkNew<EventCounter> writerEvents;
-    vtkNew<vtkDeepGIEXRWriter> writer;
-    writer->AddObserver(vtkCommand::ErrorEvent, writerEvents);
-    writer->AddObserver(vtkCommand::WarningEvent, writerEvents);
-    writer->SetFileName((directory + "/no-such-directory/x.exr").c_str());
-    Check(writer->Write() == 0 && writerEvents->Errors == 1, "no input: error");
-    writer->SetInputData(image);
-    Check(writer->Write() == 0 && writerEvents->Errors == 2, "unwritable path: error");
-    writer->SetFileName((directory + "/TestDeepGIEXR-bad.exr").c_str());
-    vtkNew<vtkImageData> empty;
-    writer->SetInputData(empty);
-    Check(writer->Write() == 0 && writerEvents->Errors == 3, "empty image: error");
-    vtkNew<vtkImageData> volume;
-    volume->SetDimensions(2, 2, 2);
-    vtkNew<vtkFloatArray> values;
-    values->SetName("v");
-    values->SetNumberOfTuples(8);
-    values->FillValue(1.0f);
-    volume->GetPointData()->AddArray(values);
-    writer->SetInputData(volume);
-    Check(writer->Write() == 0 && writerEvents->Errors == 4, "3D image: error");
-    vtkNew<vtkImageData> strings;
-    strings->SetDimensions(2, 2, 1);
-    vtkNew<vtkStringArray> names;
-    names->SetName("names");
-    names->SetNumberOfValues(4);
-    strings->GetPointData()->AddArray(names);
-    writer->SetInputData(strings);
-    Check(writer->Write() == 0 && writerEvents->Errors == 5 && writerEvents->Warnings == 1,
-      "only a string array: a warning and an error");
-    writer->SetInputData(image);
-    writer->SetFileName(nullptr);
-    Check(writer->Write() == 0 && writerEvents->Errors == 6, "no file name: error");
-    writer->SetPixelType(7);
-    Check(writer->GetPixelType() == vtkDeepGIEXRWriter::FLOAT, "PixelType clamped");
-    writer->Print(std::cout);
-    reader->Print(std::cout);
+    frameBuffer.insert(names[c],
+      Imf::Slice::Make(Imf::HALF, rgba.data() + c, data, 4 * sizeof(half), 4 * sizeof(half) * tw));
   }
+  frameBuffer.insert("id.Y", Imf::Slice::Make(Imf::UINT, id.data(), data));
+  frameBuffer.insert("Z", Imf::Slice::Make(Imf::FLOAT, z.data(), data));
+  {
+    Imf::TiledOutputFile file(tiledFile.c_str(), header);
+    file.setFrameBuffer(frameBuffer);
+    file.writeTiles(0, file.numXTiles() - 1, 0, file.numYTiles() - 1);
+  }
+  auto read = Read(tiledFile);
+  int dims[3];
+  read->GetDimensions(dims);
+  double origin[3];
+  read->GetOrigin(origin);
+  auto rgbaArray = vtkFloatArray::SafeDownCast(read->GetPointData()->GetArray("RGBA"));
+  auto idArray = vtkFloatArray::SafeDownCast(read->GetPointData()->GetArray("id"));
+  auto zArray = vtkFloatArray::SafeDownCast(read->GetPointData()->GetArray("Z"));
+  Check(dims[0] == tw && dims[1] == th, "tiled: dimensions of the data window");
+  // File (x, y) -> VTK (x, 0 + 9 - y): the data window's last row y = 6 is
+  // VTK y = 3.
+  Check(origin[0] == 5 && origin[1] == 3, "tiled: origin (5, 3) from the data window");
+  Check(rgbaArray && rgbaArray->GetNumberOfComponents() == 4 &&
+      read->GetPointData()->GetScalars() == rgbaArray,
+    "tiled: R G B A -> active scalars \"RGBA\"");
+  Check(idArray && idArray->GetNumberOfComponents() == 1 && zArray, "tiled: \"id\" and \"Z\"");
+  int bad = 0;
+  for (int y = 0; rgbaArray && idArray && zArray && y < th; ++y)
+  {
+    for (int x = 0; x < tw; ++x)
+    {
+      const size_t p = static_cast<size_t>(y) * tw + x;
+      const vtkIdType v = static_cast<vtkIdType>(th - 1 - y) * tw + x; // flipped
+      for (int c = 0; c < 4; ++c)
+      {
+        bad += rgbaArray->GetTypedComponent(v, c) != static_cast<float>(rgba[4 * p + c]);
+      }
+      bad += idArray->GetValue(v) != static_cast<float>(id[p]);
+      bad += zArray->GetValue(v) != z[p];
+    }
+  }
+  Check(bad == 0,
+    "tiled: half, uint and float values exact, rows flipped (" + std::to_string(bad) + " differ)");
+}
 
+// A box (five faces) on the floor the capture of MakeCapture looks at.
+vtkSmartPointer<vtkPolyData> BoxScene()
+{
+  auto scene = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> polys;
+  const double box[8][3] = { { 0, 0, 0 }, { 0.5, 0, 0 }, { 0.5, 0.5, 0 }, { 0, 0.5, 0 },
+    { 0, 0, 0.5 }, { 0.5, 0, 0.5 }, { 0.5, 0.5, 0.5 }, { 0, 0.5, 0.5 } };
+  for (const auto& p : box)
+  {
+    points->InsertNextPoint(p);
+  }
+  const vtkIdType faces[5][4] = { { 4, 5, 6, 7 }, { 0, 1, 5, 4 }, { 1, 2, 6, 5 }, { 2, 3, 7, 6 },
+    { 3, 0, 4, 7 } };
+  for (const auto& f : faces)
+  {
+    polys->InsertNextCell(4, f);
+  }
+  scene->SetPoints(points);
+  scene->SetPolys(polys);
+  return scene;
+}
+
+// 4. A G-buffer capture round trip: identical arrays and field data, and
+// vtkDeepGIReferenceObscurance gives bit-identical results on the original
+// and the reloaded capture.
+void CheckCaptureRoundTrip(const std::string& directory)
+{
+  const std::string captureFile = directory + "/TestDeepGIEXR-capture.exr";
+  auto capture = MakeCapture(24, 16);
+  Check(Write(capture, captureFile, vtkDeepGIEXRWriter::FLOAT), "capture: written");
+  auto read = Read(captureFile);
+  CompareImages(capture, read, false, "capture round trip");
+  vtkFieldData* fd = read->GetFieldData();
+  auto separation =
+    vtkDoubleArray::SafeDownCast(fd->GetArray(vtkDeepGICaptureNames::MinimumSeparation));
+  auto layers = vtkIntArray::SafeDownCast(fd->GetArray(vtkDeepGICaptureNames::NumberOfLayers));
+  auto oracle = vtkStringArray::SafeDownCast(fd->GetAbstractArray(vtkDeepGICaptureNames::Oracle));
+  Check(separation && separation->GetValue(0) == 0.123456789012345,
+    "capture: MinimumSeparation (double) exact");
+  Check(layers && layers->GetValue(0) == 2, "capture: NumberOfLayers (int)");
+  Check(oracle && oracle->GetValue(0) == "REPROJECT", "capture: Oracle (string)");
+  for (const char* name :
+    { vtkDeepGICaptureNames::ViewMatrix, vtkDeepGICaptureNames::ProjectionMatrix })
+  {
+    vtkDataArray* a = capture->GetFieldData()->GetArray(name);
+    vtkDataArray* b = fd->GetArray(name);
+    bool same = b && b->GetNumberOfComponents() == 16;
+    for (int k = 0; same && k < 16; ++k)
+    {
+      same = a->GetComponent(0, k) == b->GetComponent(0, k);
+    }
+    Check(same, std::string("capture: ") + name + " exact");
+  }
+  // The reloaded capture drives the reference exactly like the original.
+  vtkSmartPointer<vtkPolyData> scene = BoxScene();
+  vtkNew<vtkDeepGIReferenceObscurance> a, b;
+  for (vtkDeepGIReferenceObscurance* r : { a.Get(), b.Get() })
+  {
+    r->SetScene(scene);
+    r->SetSamplesPerPixel(16);
+  }
+  a->Compute(capture);
+  b->Compute(read);
+  auto av = vtkFloatArray::SafeDownCast(a->GetOutput()->GetPointData()->GetArray("Obscurance"));
+  auto bv = vtkFloatArray::SafeDownCast(b->GetOutput()->GetPointData()->GetArray("Obscurance"));
+  Check(av && bv && av->GetNumberOfValues() == bv->GetNumberOfValues() &&
+      std::memcmp(av->GetPointer(0), bv->GetPointer(0), sizeof(float) * av->GetNumberOfValues()) ==
+        0 &&
+      a->GetMeanStandardError() > 0,
+    "capture: the reference gives identical obscurance on the reloaded capture");
+}
+
+// 5a. Bad input to the reader: a missing file, not an EXR file, a truncated
+// one, no file name: errors, no crash.
+void CheckReaderRefusesBadFiles(const std::string& directory, const std::string& floatFile)
+{
+  vtkNew<EventCounter> events;
+  vtkNew<vtkDeepGIEXRReader> reader;
+  reader->AddObserver(vtkCommand::ErrorEvent, events);
+  // The executive adds its own "returned failure" error to each reader error.
+  vtkNew<EventCounter> executiveEvents;
+  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executiveEvents);
+  reader->SetFileName((directory + "/no-such-file.exr").c_str());
+  reader->Update();
+  Check(events->Errors >= 1 && reader->GetOutput()->GetNumberOfPoints() == 0,
+    "missing file: error, empty output");
+  const std::string text = directory + "/TestDeepGIEXR-not-exr.exr";
+  std::ofstream(text) << "this is not an OpenEXR file\n";
+  const int before = events->Errors;
+  reader->SetFileName(text.c_str());
+  reader->Update();
+  Check(events->Errors > before && reader->GetOutput()->GetNumberOfPoints() == 0 &&
+      !vtkDeepGIEXRReader::CanReadFile(text.c_str()),
+    "not an EXR file: error, empty output");
+  // A truncated EXR file: the header is fine, the pixels are not.
+  const std::string truncated = directory + "/TestDeepGIEXR-truncated.exr";
+  {
+    std::ifstream in(floatFile, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::ofstream(truncated, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  }
+  const int beforeTruncated = events->Errors;
+  reader->SetFileName(truncated.c_str());
+  reader->Update();
+  Check(events->Errors > beforeTruncated, "truncated EXR file: error");
+  reader->SetFileName(nullptr);
+  const int beforeEmpty = events->Errors;
+  reader->Update();
+  Check(events->Errors > beforeEmpty, "no file name: error");
+  reader->Print(std::cout);
+}
+
+// 5b. Bad input to the writer: no input, an unwritable path, empty and 3D
+// images, no numeric arrays, no file name: errors, no crash.
+void CheckWriterRefusesBadInput(const std::string& directory, vtkImageData* image)
+{
+  vtkNew<EventCounter> writerEvents;
+  vtkNew<vtkDeepGIEXRWriter> writer;
+  writer->AddObserver(vtkCommand::ErrorEvent, writerEvents);
+  writer->AddObserver(vtkCommand::WarningEvent, writerEvents);
+  writer->SetFileName((directory + "/no-such-directory/x.exr").c_str());
+  Check(writer->Write() == 0 && writerEvents->Errors == 1, "no input: error");
+  writer->SetInputData(image);
+  Check(writer->Write() == 0 && writerEvents->Errors == 2, "unwritable path: error");
+  writer->SetFileName((directory + "/TestDeepGIEXR-bad.exr").c_str());
+  vtkNew<vtkImageData> empty;
+  writer->SetInputData(empty);
+  Check(writer->Write() == 0 && writerEvents->Errors == 3, "empty image: error");
+  vtkNew<vtkImageData> volume;
+  volume->SetDimensions(2, 2, 2);
+  vtkNew<vtkFloatArray> values;
+  values->SetName("v");
+  values->SetNumberOfTuples(8);
+  values->FillValue(1.0f);
+  volume->GetPointData()->AddArray(values);
+  writer->SetInputData(volume);
+  Check(writer->Write() == 0 && writerEvents->Errors == 4, "3D image: error");
+  vtkNew<vtkImageData> strings;
+  strings->SetDimensions(2, 2, 1);
+  vtkNew<vtkStringArray> names;
+  names->SetName("names");
+  names->SetNumberOfValues(4);
+  strings->GetPointData()->AddArray(names);
+  writer->SetInputData(strings);
+  Check(writer->Write() == 0 && writerEvents->Errors == 5 && writerEvents->Warnings == 1,
+    "only a string array: a warning and an error");
+  writer->SetInputData(image);
+  writer->SetFileName(nullptr);
+  Check(writer->Write() == 0 && writerEvents->Errors == 6, "no file name: error");
+  writer->SetPixelType(7);
+  Check(writer->GetPixelType() == vtkDeepGIEXRWriter::FLOAT, "PixelType clamped");
+  writer->Print(std::cout);
+}
+}
+
+int TestDeepGIEXR(int argc, char* argv[])
+{
+  const std::string directory = Argument(argc, argv, "-T", ".");
+  const int w = 7, h = 5;
+  const std::string floatFile = directory + "/TestDeepGIEXR-float.exr";
+  vtkSmartPointer<vtkImageData> image = CheckFloatRoundTrip(floatFile, w, h);
+  CheckHalfRoundTrip(directory, w, h);
+  CheckTiledFileRead(directory);
+  CheckCaptureRoundTrip(directory);
+  CheckReaderRefusesBadFiles(directory, floatFile);
+  CheckWriterRefusesBadInput(directory, image);
   return ExitStatus();
 }
