@@ -71,9 +71,8 @@ int TestDeepRadiosityDemoImage(int argc, char* argv[])
     window->Render();
     ok = pass->CaptureIrradiance(last, lit);
   }
-  if (!ok)
+  if (!Check(ok, "the irradiance of the first, shown and last frames is captured"))
   {
-    std::printf("capture FAILED\n");
     return EXIT_FAILURE;
   }
 
