@@ -272,8 +272,9 @@ public:
    * - SOLID_ANGLE: sum B (w.n_X) dOmega_i with dOmega_i the solid angle,
    *   seen from X, of the surface patch a tap stands for (its screen ring
    *   2 pi h_i r_p / N pixels^2, projected to Y's depth and tilt, times
-   *   (-w.n_Y) / |Y - X|^2, at most 2 pi): the form-factor sum of the
-   *   visible surfaces; it reads n_Y even without UseNormalTest.
+   *   (-w.n_Y) / |Y - X|^2), with E at most 2 pi max B as with eq. 4: the
+   *   form-factor sum of the visible surfaces; it reads n_Y even without
+   *   UseNormalTest.
    * Default SOLID_ANGLE: against the ray-traced one-bounce irradiance
    * limited to r its RMSE is 2.6x to 6.8x lower than eq. 4's at BALANCED
    * and HIGH_QUALITY on the three scenes of

@@ -28,9 +28,12 @@
 //     2 pi h_i r_p / N pixels^2 (the spiral puts one tap per ring of width
 //     r_p / N), times the world area of a pixel at Y's distance, divided by
 //     |n_Y . view| (the patch is tilted away from the view; at least 0.1),
-//     times (-w.n_Y) / |Y - X|^2; when the dOmega_i of the accepted taps
-//     add up to more than the hemisphere's 2 pi (taps next to X), they are
-//     scaled to 2 pi, so that E never exceeds 2 pi max B, as with eq. 4.
+//     times (-w.n_Y) / |Y - X|^2. Its mean over the spiral's rotations is
+//     the light of the whole disc, but a tap next to X (a wall meeting X's
+//     surface) can stand for far more than the hemisphere; E is capped at
+//     2 pi max B over the accepted taps, the bound of eq. 4, which cuts
+//     such outliers without scaling down every pixel whose dOmega_i add up
+//     to more than 2 pi.
 //=========================================================================
 
 in vec2 texCoord;
@@ -93,7 +96,7 @@ void main()
 
   vec3 sum[2] = vec3[2](vec3(0.0), vec3(0.0));
   float used[2] = float[2](0.0, 0.0);
-  float omegaSum[2] = float[2](0.0, 0.0); // SOLID_ANGLE: sum of dOmega_i
+  vec3 maxB[2] = vec3[2](vec3(0.0), vec3(0.0)); // of the accepted taps
   for (int i = 0; i < deepSamples; ++i)
   {
     float h;
@@ -152,8 +155,8 @@ void main()
       // The passing candidate with the larger contribution |B (w.n_X)|.
       float bestScore = 0.0;
       vec3 best = vec3(0.0);
-      float bestWeight = 0.0; // SOLID_ANGLE: area (-w.n_Y) of the best candidate
-      float bestDistance2 = 1.0;
+      vec3 bestB = vec3(0.0);
+      float bestOmega = 0.0; // SOLID_ANGLE: dOmega_i of the best candidate
       for (int k = 0; k < 2; ++k)
       {
         vec3 v = Y[k] - X[j];
@@ -176,17 +179,15 @@ void main()
         {
           bestScore = score;
           best = c;
-          bestWeight = area[k] * max(-cosY, 0.0);
-          bestDistance2 = vv;
+          bestB = B[k];
+          bestOmega = area[k] * max(-cosY, 0.0) / vv;
         }
       }
       if (bestScore > 0.0)
       {
-        // dOmega_i = area (-w.n_Y) / |Y - X|^2.
-        float omega = solidAngle ? bestWeight / bestDistance2 : 0.0;
-        sum[j] += solidAngle ? best * omega : best;
+        sum[j] += solidAngle ? best * bestOmega : best;
         used[j] += 1.0;
-        omegaSum[j] += omega;
+        maxB[j] = max(maxB[j], bestB);
       }
     }
   }
@@ -194,10 +195,8 @@ void main()
   {
     // Equation 4 (or the chosen estimator) and the confidence M / N.
     float norm = deepEstimator == DEEP_ESTIMATOR_ACCEPTED_TAPS ? used[j] : float(deepSamples);
-    float solidAngleScale = omegaSum[j] > 2.0 * deepPi ? 2.0 * deepPi / omegaSum[j] : 1.0;
     vec3 E = used[j] > 0.0
-      ? (deepEstimator == DEEP_ESTIMATOR_SOLID_ANGLE ? solidAngleScale * sum[j]
-                                                     : (2.0 * deepPi / norm) * sum[j])
+      ? (solidAngle ? min(sum[j], 2.0 * deepPi * maxB[j]) : (2.0 * deepPi / norm) * sum[j])
       : vec3(0.0);
     vec4 result = valid[j] ? vec4(E, used[j] / float(deepSamples)) : vec4(0.0);
     if (j == 0)

@@ -9,7 +9,7 @@
 //   (converged), and every L_ind stays below the bound
 //   2 rho D / (1 - 2 rho delta) = 8 D (D the largest direct radiance): E
 //   is at most 2 pi max B with every estimator (the default SOLID_ANGLE
-//   scales its solid angles to at most 2 pi), so L <= 2 rho max B and
+//   caps E there), so L <= 2 rho max B and
 //   B <= D + delta L. With alpha = 0.85 (jittered taps) the same bound holds
 //   and frames 90..100 differ by < 1 %. Layer-1 pixels gain light from the
 //   bounces too (propagation across layers);
