@@ -276,7 +276,7 @@ public:
    *   form-factor sum of the visible surfaces; it reads n_Y even without
    *   UseNormalTest.
    * Default SOLID_ANGLE: against the ray-traced one-bounce irradiance
-   * limited to r its RMSE is 2.6x to 6.8x lower than eq. 4's at BALANCED
+   * limited to r its RMSE is 2.6x to 6.4x lower than eq. 4's at BALANCED
    * and HIGH_QUALITY on the three scenes of
    * Documentation/benchmark-radiosity.md without emitters (1.2x to 1.4x on
    * the lamp-lit Cornell box), where eq. 4 is 2.4x to 5.6x too bright on
