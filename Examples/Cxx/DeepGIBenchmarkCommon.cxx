@@ -512,4 +512,17 @@ bool WriteErrorTimePlots(const char* program, const std::string& output, const s
   }
   return true;
 }
+
+bool WriteResults(const char* program, const AccuracyOptions& o, const std::string& stem,
+  const std::string& markdown, const std::string& csv, const ErrorTimePlots& plots)
+{
+  if (!WriteTables(program, o.Output, stem, markdown, csv) ||
+    !WriteErrorTimePlots(program, o.Output, stem, o.Backend, plots))
+  {
+    return false;
+  }
+  std::printf("\nwrote %s/%s.{md,csv}, %s/%s-plot.png\n", o.Output.c_str(), stem.c_str(),
+    o.Output.c_str(), stem.c_str());
+  return true;
+}
 }

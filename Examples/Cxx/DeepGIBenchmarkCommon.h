@@ -25,24 +25,43 @@ namespace DeepGIBenchmark
 bool Report(const char* program, const std::string& what);
 
 /// The options of the accuracy benchmarks (deepgi-benchmark-ao and
-/// deepgi-benchmark-radiosity), whose values each benchmark's defaults set.
+/// deepgi-benchmark-radiosity).
 struct AccuracyOptions
 {
-  int Width = 0;          // --size: the timing size
-  int Height = 0;         //
-  int AccuracyWidth = 0;  // --accuracy-size: the size of the error measurement
-  int AccuracyHeight = 0; //
-  int Frames = 0;         // --frames: timed frames per method and round
-  int Rounds = 0;         // --rounds: rounds over all methods
-  int Warmup = 0;         // untimed frames before each method's timed ones
-  int Samples = 0;        // --samples: reference rays per pixel
-  double RadiusFraction = 0.0;
+  struct Size
+  {
+    int Width;
+    int Height;
+  };
+  /// A benchmark's defaults: the timing and the accuracy sizes, the timed
+  /// and the warm-up frames per method and round, the reference's rays per
+  /// pixel, the scenes and the methods (a comma list).
+  AccuracyOptions(Size timing, Size accuracy, int frames, int warmup, int samples,
+    const std::vector<std::string>& scenes, const std::string& methods)
+    : Width(timing.Width)
+    , Height(timing.Height)
+    , AccuracyWidth(accuracy.Width)
+    , AccuracyHeight(accuracy.Height)
+    , Frames(frames)
+    , Warmup(warmup)
+    , Samples(samples)
+    , Scenes(scenes)
+    , MethodList(methods)
+  {
+  }
+  int Width, Height;                 // --size: the timing size
+  int AccuracyWidth, AccuracyHeight; // --accuracy-size: the size of the error measurement
+  int Frames;                        // --frames: timed frames per method and round
+  int Rounds = 2;                    // --rounds: rounds over all methods
+  int Warmup;                        // untimed frames before each method's timed ones
+  int Samples;                       // --samples: reference rays per pixel
+  double RadiusFraction = 0.0;       // --radius-fraction
   int Backend = vtkDeepGIRenderWindowFactory::BACKEND_AUTO;
   std::string Output = "output";
   std::string Data;
   std::vector<std::string> Scenes;
   bool ScenesGiven = false; // --scenes was on the command line
-  std::string MethodList;   // --methods, the benchmark's default list unless given
+  std::string MethodList;   // --methods
   bool ErrorMaps = true;    // false with --no-error-maps
 };
 
@@ -196,12 +215,54 @@ struct ErrorTimePlots
   std::vector<PlotPoint> Points;
 };
 
+/// The error-against-time plots `title` of an accuracy benchmark's
+/// `results` (each with its Scene, its method M and FrameMs) of `methods`
+/// (each with its Name) on `scenes` (each with its Name): `familyOf(method)`
+/// names the method's curve, `errorOf(result)` is the error on the y axis.
+template <typename Method, typename Scene, typename Result, typename FamilyOf, typename ErrorOf>
+ErrorTimePlots MakeErrorTimePlots(const std::string& title, const std::string& yTitle,
+  const std::vector<Method>& methods, const std::vector<Scene>& scenes,
+  const std::vector<Result>& results, FamilyOf familyOf, ErrorOf errorOf);
+
 /// Writes OUTPUT/STEM-plot.png (every method's frame time and error,
 /// averaged over the scenes) and OUTPUT/STEM-plot-SCENE.png for each scene
 /// (its name through FileTag) with WritePlot; false, with "PROGRAM: reason"
 /// on stderr, when it cannot.
 bool WriteErrorTimePlots(const char* program, const std::string& output, const std::string& stem,
   int backend, const ErrorTimePlots& plots);
+
+/// The stages of an accuracy benchmark, which RunAccuracyBenchmark runs in
+/// this order.
+template <typename Options, typename Measurements>
+struct AccuracyBenchmark
+{
+  const char* Program;
+  const char* Stem; // of the output files: STEM.md, STEM.csv, STEM-plot.png, ...
+  /// Reads the command line; false, with the reason on stderr, when it is
+  /// not valid (then the usage is printed).
+  bool (*ParseOptions)(int argc, char* argv[], Options& o);
+  void (*Usage)();
+  /// Measures one of Options::Scenes (accuracy, then time); false, with the
+  /// reason on stderr, when it cannot.
+  bool (*MeasureScene)(const Options& o, const std::string& scene, Measurements& measured);
+  std::string (*Markdown)(const Options& o, const Measurements& measured);
+  std::string (*Csv)(const Measurements& measured);
+  ErrorTimePlots (*Plots)(const Options& o, const Measurements& measured);
+};
+
+/// Runs `benchmark`'s stages: parses the command line, checks the outputs
+/// (before the hours of measuring), measures every scene in turn, then
+/// writes the tables and plots (WriteResults). Returns main's exit status:
+/// 2 for an invalid command line, 1 when a measurement or an output fails.
+template <typename Options, typename Measurements>
+int RunAccuracyBenchmark(
+  const AccuracyBenchmark<Options, Measurements>& benchmark, int argc, char* argv[]);
+
+/// An accuracy benchmark's outputs: WriteTables, then WriteErrorTimePlots,
+/// then where they are on stdout; false, with "PROGRAM: reason" on stderr,
+/// when they cannot be written.
+bool WriteResults(const char* program, const AccuracyOptions& o, const std::string& stem,
+  const std::string& markdown, const std::string& csv, const ErrorTimePlots& plots);
 
 //------------------------------------------------------------------------------
 template <typename Method>
@@ -224,6 +285,61 @@ bool ParseMethodList(const char* program, const std::string& list,
     methods.push_back(m);
   }
   return true;
+}
+
+template <typename Method, typename Scene, typename Result, typename FamilyOf, typename ErrorOf>
+ErrorTimePlots MakeErrorTimePlots(const std::string& title, const std::string& yTitle,
+  const std::vector<Method>& methods, const std::vector<Scene>& scenes,
+  const std::vector<Result>& results, FamilyOf familyOf, ErrorOf errorOf)
+{
+  ErrorTimePlots plots;
+  plots.Title = title;
+  plots.XTitle = "frame time [ms] (median)";
+  plots.YTitle = yTitle;
+  for (const Method& m : methods)
+  {
+    plots.Methods.emplace_back(m.Name, familyOf(m));
+  }
+  for (const Scene& s : scenes)
+  {
+    plots.Scenes.push_back(s.Name);
+  }
+  for (const Result& r : results)
+  {
+    plots.Points.push_back({ r.Scene, r.M.Name, familyOf(r.M), r.FrameMs, errorOf(r) });
+  }
+  return plots;
+}
+
+template <typename Options, typename Measurements>
+int RunAccuracyBenchmark(
+  const AccuracyBenchmark<Options, Measurements>& benchmark, int argc, char* argv[])
+{
+  Options options;
+  if (!benchmark.ParseOptions(argc, argv, options))
+  {
+    benchmark.Usage();
+    return 2;
+  }
+  // The outputs are checked before the hours of measuring.
+  if (!PrepareOutputs(benchmark.Program, options.Output, options.ErrorMaps))
+  {
+    return 1;
+  }
+  Measurements measured;
+  for (const std::string& scene : options.Scenes)
+  {
+    if (!benchmark.MeasureScene(options, scene, measured))
+    {
+      return 1;
+    }
+  }
+  const std::string markdown = benchmark.Markdown(options, measured);
+  const std::string csv = benchmark.Csv(measured);
+  return WriteResults(benchmark.Program, options, benchmark.Stem, markdown, csv,
+           benchmark.Plots(options, measured))
+    ? 0
+    : 1;
 }
 }
 

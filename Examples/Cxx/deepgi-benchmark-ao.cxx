@@ -135,6 +135,12 @@ struct Method
   int Estimator = -1; // ours: vtkDeepAmbientObscurancePass::EstimatorType, or -1 (default)
 };
 
+/// The plots' curve of `m`: its family, or its own for a named setting.
+std::string CurveOf(const Method& m)
+{
+  return m.Family.empty() ? m.Name : m.Family;
+}
+
 /// Width of the frame's border, as a fraction of the height, on which the
 /// guard band's effect is measured separately.
 constexpr double BorderFraction = 0.1;
@@ -206,19 +212,11 @@ bool ParseMethod(const std::string& spec, Method& m)
 struct Options : AccuracyOptions
 {
   Options()
+    : AccuracyOptions({ 640, 480 }, { 320, 240 }, 7, 3, 256,
+        std::vector<std::string>(std::begin(SceneNames), std::end(SceneNames)), DefaultMethods)
   {
-    this->Width = 640;
-    this->Height = 480;
-    this->AccuracyWidth = 320;
-    this->AccuracyHeight = 240;
-    this->Frames = 7;
-    this->Rounds = 2;
-    this->Warmup = 3;
-    this->Samples = 256;
     this->RadiusFraction = 0.05;
     this->Data = DEEPGI_DATA_DIR;
-    this->Scenes.assign(std::begin(SceneNames), std::end(SceneNames));
-    this->MethodList = DefaultMethods;
   }
   // The user's own scenes ("mesh:PATH" or "volume:ISO:PATH"), measured after
   // the built-in ones named with --scenes (none unless --scenes is given).
@@ -1108,59 +1106,25 @@ std::string SecondLayerSection(const Measurements& measured)
   return md.str();
 }
 
-/// RMSE (gamma-calibrated) against time, one curve per method family.
-bool WritePlots(const Options& o, const Measurements& measured)
+/// The markdown file (also printed on stdout).
+std::string Markdown(const Options& o, const Measurements& measured)
 {
-  ErrorTimePlots plots;
-  plots.Title = "Ambient obscurance: error vs time";
-  plots.XTitle = "frame time [ms] (median)";
-  plots.YTitle = "RMSE of AV vs ray-traced reference (gamma-calibrated)";
-  for (const Method& m : o.Methods)
-  {
-    plots.Methods.emplace_back(m.Name, m.Family.empty() ? m.Name : m.Family);
-  }
-  for (const SceneInfo& s : measured.Scenes)
-  {
-    plots.Scenes.push_back(s.Name);
-  }
-  for (const Result& r : measured.Results)
-  {
-    plots.Points.push_back(
-      { r.Scene, r.M.Name, r.M.Family.empty() ? r.M.Name : r.M.Family, r.FrameMs, r.A.CRmse });
-  }
-  return WriteErrorTimePlots(Program, o.Output, "benchmark-ao", o.Backend, plots);
+  return SceneTable(o, measured) + ResultTable(measured) + GoalsSection(measured) +
+    BorderSection(measured) + SecondLayerSection(measured);
+}
+
+/// RMSE of AV (gamma-calibrated) against the frame time, one curve per method family.
+ErrorTimePlots Plots(const Options& o, const Measurements& measured)
+{
+  return MakeErrorTimePlots("Ambient obscurance: error vs time",
+    "RMSE of AV vs ray-traced reference (gamma-calibrated)", o.Methods, measured.Scenes,
+    measured.Results, CurveOf, [](const Result& r) { return r.A.CRmse; });
 }
 }
 
 int main(int argc, char* argv[])
 {
-  Options options;
-  if (!ParseOptions(argc, argv, options))
-  {
-    Usage();
-    return 2;
-  }
-  // The outputs are checked before the hours of measuring.
-  if (!PrepareOutputs(Program, options.Output, options.ErrorMaps))
-  {
-    return 1;
-  }
-  Measurements measured;
-  for (const std::string& sceneSpec : options.Scenes)
-  {
-    if (!MeasureScene(options, sceneSpec, measured))
-    {
-      return 1;
-    }
-  }
-  const std::string markdown = SceneTable(options, measured) + ResultTable(measured) +
-    GoalsSection(measured) + BorderSection(measured) + SecondLayerSection(measured);
-  if (!WriteTables(Program, options.Output, "benchmark-ao", markdown, Csv(measured)) ||
-    !WritePlots(options, measured))
-  {
-    return 1;
-  }
-  std::printf("\nwrote %s/benchmark-ao.{md,csv}, %s/benchmark-ao-plot.png\n",
-    options.Output.c_str(), options.Output.c_str());
-  return 0;
+  const AccuracyBenchmark<Options, Measurements> stages{ Program, "benchmark-ao", ParseOptions,
+    Usage, MeasureScene, Markdown, Csv, Plots };
+  return RunAccuracyBenchmark(stages, argc, argv);
 }
