@@ -31,6 +31,37 @@ namespace DeepGIBenchmark
 {
 namespace
 {
+/// --data DIR, --backend NAME (auto, x11, egl), --output DIR (not empty).
+/// Returns false with `error` set when `arg` is one of them and `value` is
+/// invalid; other options are ignored.
+bool ParseSharedOption(const std::string& arg, const std::string& value, std::string& data,
+  int& backend, std::string& output, std::string& error)
+{
+  if (arg == "--data")
+  {
+    data = value;
+  }
+  else if (arg == "--backend")
+  {
+    backend = vtkDeepGIRenderWindowFactory::GetBackendFromString(value.c_str());
+    if (backend < 0)
+    {
+      error = "unknown backend '" + value + "' (auto, x11, egl)";
+      return false;
+    }
+  }
+  else if (arg == "--output")
+  {
+    if (value.empty())
+    {
+      error = "--output needs a directory";
+      return false;
+    }
+    output = value;
+  }
+  return true;
+}
+
 /// "a, b, c"
 std::string JoinWithCommas(const std::vector<std::string>& items)
 {
@@ -151,34 +182,6 @@ bool ParseAccuracyOptions(
     {
       return Report(commandLine.Program, error);
     }
-  }
-  return true;
-}
-
-bool ParseSharedOption(const std::string& arg, const std::string& value, std::string& data,
-  int& backend, std::string& output, std::string& error)
-{
-  if (arg == "--data")
-  {
-    data = value;
-  }
-  else if (arg == "--backend")
-  {
-    backend = vtkDeepGIRenderWindowFactory::GetBackendFromString(value.c_str());
-    if (backend < 0)
-    {
-      error = "unknown backend '" + value + "' (auto, x11, egl)";
-      return false;
-    }
-  }
-  else if (arg == "--output")
-  {
-    if (value.empty())
-    {
-      error = "--output needs a directory";
-      return false;
-    }
-    output = value;
   }
   return true;
 }

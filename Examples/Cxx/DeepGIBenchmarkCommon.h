@@ -96,12 +96,6 @@ bool ParseMethodList(const char* program, const std::string& list,
   bool (*parse)(const std::string&, Method&), const std::string& syntax,
   std::vector<Method>& methods);
 
-/// The options every benchmark shares: --data DIR, --backend NAME (auto,
-/// x11, egl), --output DIR (not empty). Returns false with `error` set when
-/// `arg` is one of them and `value` is invalid; other options are ignored.
-bool ParseSharedOption(const std::string& arg, const std::string& value, std::string& data,
-  int& backend, std::string& output, std::string& error);
-
 /// `s` cut at every `sep` (empty fields kept, a trailing separator dropped).
 std::vector<std::string> Split(const std::string& s, char sep);
 
