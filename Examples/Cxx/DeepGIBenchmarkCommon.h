@@ -6,6 +6,7 @@
 #define DeepGIBenchmarkCommon_h
 
 #include "vtkDeepGIRenderWindowFactory.h"
+#include "vtkRenderWindow.h"
 #include "vtkSmartPointer.h"
 
 #include <chrono>
@@ -16,7 +17,6 @@
 #include <vector>
 
 class vtkRenderPass;
-class vtkRenderWindow;
 class vtkRenderer;
 
 namespace DeepGIBenchmark
@@ -150,6 +150,16 @@ bool OpenView(const char* program, int backend, int width, int height, View& vie
 std::vector<std::vector<double>> TimePassesInRounds(const View& view,
   const std::vector<vtkRenderPass*>& passes, int rounds, int warmup, int frames,
   const std::function<void(int)>& prepare = nullptr);
+
+/// The frame times of an accuracy benchmark at its timing size (--size):
+/// `baselines` (nullptr: VTK without a pass), then every method's pass,
+/// timed in rounds (TimePassesInRounds with --rounds, --frames and the
+/// warm-up). Each method's median into its result's FrameMs (`results` in
+/// the order of `passes`); returns the baselines' medians.
+template <typename Pass, typename Result>
+std::vector<double> TimeMethods(const View& view, const AccuracyOptions& o,
+  std::vector<vtkRenderPass*> baselines, const std::vector<vtkSmartPointer<Pass>>& passes,
+  std::vector<Result>& results);
 
 /// The "OpenGL renderer string" of `window`'s capabilities ("unknown" when
 /// it reports none).
@@ -303,6 +313,31 @@ ErrorTimePlots MakeErrorTimePlots(const std::string& title, const std::string& y
     plots.Points.push_back({ r.Scene, r.M.Name, familyOf(r.M), r.FrameMs, errorOf(r) });
   }
   return plots;
+}
+
+template <typename Pass, typename Result>
+std::vector<double> TimeMethods(const View& view, const AccuracyOptions& o,
+  std::vector<vtkRenderPass*> baselines, const std::vector<vtkSmartPointer<Pass>>& passes,
+  std::vector<Result>& results)
+{
+  view.Window->SetSize(o.Width, o.Height);
+  const size_t baselineCount = baselines.size();
+  for (const auto& pass : passes)
+  {
+    baselines.push_back(pass);
+  }
+  const std::vector<std::vector<double>> ms =
+    TimePassesInRounds(view, baselines, o.Rounds, o.Warmup, o.Frames);
+  for (size_t k = 0; k < results.size(); ++k)
+  {
+    results[k].FrameMs = Median(ms[baselineCount + k]);
+  }
+  std::vector<double> medians;
+  for (size_t k = 0; k < baselineCount; ++k)
+  {
+    medians.push_back(Median(ms[k]));
+  }
+  return medians;
 }
 
 template <typename Options, typename Measurements>

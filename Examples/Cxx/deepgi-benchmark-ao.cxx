@@ -821,27 +821,6 @@ bool MeasureAccuracy(const Options& o, const View& view,
   return true;
 }
 
-/// Median frame times at the timing size: VTK without a pass, the
-/// two-layer G-buffer alone, then every method (into `results`).
-std::vector<double> TimeMethods(const Options& o, const View& view,
-  const std::vector<vtkSmartPointer<vtkRenderPass>>& passes, vtkDeepGBufferPass* gbuffer,
-  std::vector<Result>& results)
-{
-  view.Window->SetSize(o.Width, o.Height);
-  std::vector<vtkRenderPass*> timed = { nullptr, gbuffer };
-  for (const auto& pass : passes)
-  {
-    timed.push_back(pass);
-  }
-  const std::vector<std::vector<double>> ms =
-    TimePassesInRounds(view, timed, o.Rounds, o.Warmup, o.Frames);
-  for (size_t k = 0; k < results.size(); ++k)
-  {
-    results[k].FrameMs = Median(ms[k + 2]);
-  }
-  return { Median(ms[0]), Median(ms[1]) };
-}
-
 /// Accuracy, then time, of every method on the scene `sceneSpec`.
 bool MeasureScene(const Options& o, const std::string& sceneSpec, Measurements& measured)
 {
@@ -870,7 +849,7 @@ bool MeasureScene(const Options& o, const std::string& sceneSpec, Measurements& 
   {
     return false;
   }
-  const std::vector<double> plainMs = TimeMethods(o, view, passes, gbuffer, results);
+  const std::vector<double> plainMs = TimeMethods(view, o, { nullptr, gbuffer }, passes, results);
   measured.Results.insert(measured.Results.end(), results.begin(), results.end());
   const PixelMasks& px = frame.Pixels;
   measured.Scenes.push_back(

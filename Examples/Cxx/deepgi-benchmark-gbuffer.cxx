@@ -183,7 +183,7 @@ std::vector<Method> MakeMethods()
 
 /// Every method's frame times along the scene's camera path, all methods in
 /// each round, and its geometry submissions per frame.
-void TimeMethods(
+void TimeAlongCameraPath(
   const Options& o, const View& view, vtkDeepGBufferDemoScene* scene, std::vector<Method>& methods)
 {
   std::vector<vtkRenderPass*> passes;
@@ -304,7 +304,7 @@ int main(int argc, char* argv[])
   scene->SetTargetNumberOfTriangles(options.Triangles);
   scene->Populate(view.Renderer);
   std::vector<Method> methods = MakeMethods();
-  TimeMethods(options, view, scene, methods);
+  TimeAlongCameraPath(options, view, scene, methods);
   const std::string device = OpenGLRendererName(view.Window);
   std::string csv;
   const std::string markdown =

@@ -793,27 +793,6 @@ bool MeasureBounces(const Options& o, const View& view, vtkDeepGBufferPass* gbuf
   return true;
 }
 
-/// Median frame times at the timing size: the one- and two-layer G-buffers
-/// alone, then every method (into `results`).
-std::vector<double> TimeMethods(const Options& o, const View& view,
-  const std::vector<vtkSmartPointer<vtkDeepRadiosityPass>>& passes, GBuffers& gbuffers,
-  std::vector<Result>& results)
-{
-  view.Window->SetSize(o.Width, o.Height);
-  std::vector<vtkRenderPass*> timed = { gbuffers.OneLayer, gbuffers.TwoLayers };
-  for (const auto& pass : passes)
-  {
-    timed.push_back(pass);
-  }
-  const std::vector<std::vector<double>> ms =
-    TimePassesInRounds(view, timed, o.Rounds, o.Warmup, o.Frames);
-  for (size_t k = 0; k < results.size(); ++k)
-  {
-    results[k].FrameMs = Median(ms[k + 2]);
-  }
-  return { Median(ms[0]), Median(ms[1]) };
-}
-
 /// Accuracy, multiple bounces, then time of every method on `sceneName`.
 bool MeasureScene(const Options& o, const std::string& sceneName, Measurements& measured)
 {
@@ -851,7 +830,8 @@ bool MeasureScene(const Options& o, const std::string& sceneName, Measurements& 
   {
     return false;
   }
-  const std::vector<double> gbufferMs = TimeMethods(o, view, passes, gbuffers, results);
+  const std::vector<double> gbufferMs =
+    TimeMethods(view, o, { gbuffers.OneLayer, gbuffers.TwoLayers }, passes, results);
   measured.Results.insert(measured.Results.end(), results.begin(), results.end());
   measured.Scenes.push_back({ sceneName, geometry->GetNumberOfPolys(), frame.Radius,
     frame.MeanReference, frame.MeanReferenceUnlimited, frame.ReferenceError, frame.ReferenceSeconds,
