@@ -41,12 +41,10 @@
 #include "vtkDeepGBufferSceneLoader.h"
 #include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIReferenceObscurance.h"
-#include "vtkDeepGIRenderWindowFactory.h"
 #include "vtkDeepRadiosityPass.h"
 #include "vtkImageData.h"
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
-#include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
@@ -533,6 +531,8 @@ struct AccuracyFrame
   double ReferenceError = 0.0; // the reference's mean standard error
 };
 
+/// `frames` still frames through `pass` (nullptr: VTK's own rendering),
+/// finished on the GPU.
 void RenderStill(const View& view, vtkRenderPass* pass, int frames)
 {
   view.Renderer->SetPass(pass);
@@ -543,6 +543,7 @@ void RenderStill(const View& view, vtkRenderPass* pass, int frames)
   view.Window->WaitForCompletion();
 }
 
+/// The diagonal of `geometry`'s bounds, the unit of --radius-fraction.
 double Diagonal(vtkPolyData* geometry)
 {
   double bounds[6];

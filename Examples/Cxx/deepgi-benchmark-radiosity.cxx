@@ -51,7 +51,6 @@
 #include "vtkDeepGBufferSceneLoader.h"
 #include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIReferenceIrradiance.h"
-#include "vtkDeepGIRenderWindowFactory.h"
 #include "vtkDeepRadiosityPass.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
