@@ -41,12 +41,10 @@
 #include "vtkDeepGBufferSceneLoader.h"
 #include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIReferenceObscurance.h"
-#include "vtkDeepGIRenderWindowFactory.h"
 #include "vtkDeepRadiosityPass.h"
 #include "vtkImageData.h"
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
-#include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
@@ -77,29 +75,7 @@ namespace
 using namespace DeepGIBenchmark;
 const char* const Program = "deepgi-benchmark-ao";
 
-struct Options
-{
-  int Width = 640;
-  int Height = 480;
-  int AccuracyWidth = 320;
-  int AccuracyHeight = 240;
-  int Frames = 7;
-  int Rounds = 2;
-  int Warmup = 3;
-  int Samples = 256;
-  double RadiusFraction = 0.05;
-  int Backend = vtkDeepGIRenderWindowFactory::BACKEND_AUTO;
-  std::string Output = "output";
-  std::string Data = DEEPGI_DATA_DIR;
-  // The user's own scenes ("mesh:PATH" or "volume:ISO:PATH"), measured after
-  // the built-in ones named with --scenes (none unless --scenes is given).
-  std::vector<std::string> Files;
-  bool ScenesGiven = false;
-  std::string PendingVolume; // a --volume waiting for its --iso
-  std::vector<std::string> Scenes = { "demo", "demo-columns", "cornell-lucy", "dragon", "headsq" };
-  std::vector<std::string> Methods;
-  bool ErrorMaps = true;
-};
+const char* const SceneNames[] = { "demo", "demo-columns", "cornell-lucy", "dragon", "headsq" };
 
 // Default methods: families (SSAO kernel sizes, ours 1 layer / 2 layers at
 // several N with BlurRadius 4) and named settings of ours.
@@ -156,6 +132,12 @@ struct Method
   double GuardBand = 0.0;               // ours: the G-buffer's guard band
   int Estimator = -1; // ours: vtkDeepAmbientObscurancePass::EstimatorType, or -1 (default)
 };
+
+/// The plots' curve of `m`: its family, or its own for a named setting.
+std::string CurveOf(const Method& m)
+{
+  return m.Family.empty() ? m.Name : m.Family;
+}
 
 /// Width of the frame's border, as a fraction of the height, on which the
 /// guard band's effect is measured separately.
@@ -225,18 +207,31 @@ bool ParseMethod(const std::string& spec, Method& m)
   return false;
 }
 
+struct Options : AccuracyOptions
+{
+  Options()
+    : AccuracyOptions({ 640, 480 }, { 320, 240 }, 7, 3, 256,
+        std::vector<std::string>(std::begin(SceneNames), std::end(SceneNames)), DefaultMethods)
+  {
+    this->RadiusFraction = 0.05;
+    this->Data = DEEPGI_DATA_DIR;
+  }
+  // The user's own scenes ("mesh:PATH" or "volume:ISO:PATH"), measured after
+  // the built-in ones named with --scenes (none unless --scenes is given).
+  std::vector<std::string> Files;
+  std::string PendingVolume; // a --volume waiting for its --iso
+  std::vector<Method> Methods;
+};
+
 /// --mesh FILE, --scene FILE (any file vtkDeepGBufferSceneLoader reads),
 /// --volume FILE --iso V: one scene each, checked for a readable file here.
-template <typename Bad>
-bool ParseSceneFileOption(const std::string& arg, const std::string& value, Options& o, Bad bad)
+bool ParseSceneFileOption(
+  const std::string& arg, const std::string& value, Options& o, std::string& error)
 {
-  if (arg != "--mesh" && arg != "--scene" && arg != "--volume" && arg != "--iso")
-  {
-    return true;
-  }
   if (arg != "--iso" && !vtksys::SystemTools::FileExists(value, true))
   {
-    return bad(arg + ": no such file '" + value + "'");
+    error = arg + ": no such file '" + value + "'";
+    return false;
   }
   if (arg == "--iso")
   {
@@ -244,11 +239,13 @@ bool ParseSceneFileOption(const std::string& arg, const std::string& value, Opti
     const double iso = std::strtod(value.c_str(), &end);
     if (o.PendingVolume.empty())
     {
-      return bad("--iso needs a --volume before it");
+      error = "--iso needs a --volume before it";
+      return false;
     }
     if (value.empty() || *end || !std::isfinite(iso))
     {
-      return bad("--iso needs a finite number, got '" + value + "'");
+      error = "--iso needs a finite number, got '" + value + "'";
+      return false;
     }
     o.Files.push_back("volume:" + value + ":" + o.PendingVolume);
     o.PendingVolume.clear();
@@ -257,7 +254,8 @@ bool ParseSceneFileOption(const std::string& arg, const std::string& value, Opti
   {
     if (!o.PendingVolume.empty())
     {
-      return bad("--volume " + o.PendingVolume + " needs --iso V after it");
+      error = "--volume " + o.PendingVolume + " needs --iso V after it";
+      return false;
     }
     o.PendingVolume = value;
   }
@@ -270,119 +268,28 @@ bool ParseSceneFileOption(const std::string& arg, const std::string& value, Opti
 
 bool ParseOptions(int argc, char* argv[], Options& o)
 {
-  std::string methods = DefaultMethods;
-  auto bad = [](const std::string& what)
+  const CommandLine commandLine{ Program, Usage,
+    std::vector<std::string>(std::begin(SceneNames), std::end(SceneNames)),
+    { "--mesh", "--scene", "--volume", "--iso" },
+    [&o](const std::string& arg, const std::string& value, std::string& error)
+    { return ParseSceneFileOption(arg, value, o, error); } };
+  if (!ParseAccuracyOptions(argc, argv, commandLine, o))
   {
-    std::fprintf(stderr, "%s: %s\n", Program, what.c_str());
     return false;
-  };
-  for (int i = 1; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h")
-    {
-      Usage();
-      std::exit(0);
-    }
-    if (arg == "--no-error-maps")
-    {
-      o.ErrorMaps = false;
-      continue;
-    }
-    static const char* const withValue[] = { "--size", "--accuracy-size", "--frames", "--rounds",
-      "--samples", "--radius-fraction", "--scenes", "--methods", "--data", "--backend", "--output",
-      "--mesh", "--scene", "--volume", "--iso" };
-    if (std::find_if(std::begin(withValue), std::end(withValue),
-          [&](const char* s) { return arg == s; }) == std::end(withValue))
-    {
-      return bad("unknown option " + arg);
-    }
-    if (i + 1 >= argc)
-    {
-      return bad(arg + " needs a value");
-    }
-    const std::string value = argv[++i];
-    if (arg == "--size" && !ParseSize(value, o.Width, o.Height))
-    {
-      return bad("--size needs WxH with 16..8192 pixels per side, got '" + value + "'");
-    }
-    if (arg == "--accuracy-size" && !ParseSize(value, o.AccuracyWidth, o.AccuracyHeight))
-    {
-      return bad("--accuracy-size needs WxH with 16..8192 pixels per side, got '" + value + "'");
-    }
-    if (arg == "--frames" && (!ParseInt(value, o.Frames) || o.Frames < 1 || o.Frames > 10000))
-    {
-      return bad("--frames needs an integer 1..10000, got '" + value + "'");
-    }
-    if (arg == "--rounds" && (!ParseInt(value, o.Rounds) || o.Rounds < 1 || o.Rounds > 100))
-    {
-      return bad("--rounds needs an integer 1..100, got '" + value + "'");
-    }
-    if (arg == "--samples" && (!ParseInt(value, o.Samples) || o.Samples < 1 || o.Samples > 1048576))
-    {
-      return bad("--samples needs an integer 1..1048576, got '" + value + "'");
-    }
-    if (arg == "--radius-fraction" && !ParseFraction(value, o.RadiusFraction))
-    {
-      return bad("--radius-fraction needs a number in (0, 1], got '" + value + "'");
-    }
-    if (arg == "--scenes")
-    {
-      o.ScenesGiven = true;
-      o.Scenes = Split(value, ',');
-      if (o.Scenes.empty())
-      {
-        return bad("--scenes needs at least one scene");
-      }
-      for (const std::string& s : o.Scenes)
-      {
-        if (s != "demo" && s != "demo-columns" && s != "cornell-lucy" && s != "dragon" &&
-          s != "headsq")
-        {
-          return bad(
-            "unknown scene '" + s + "' (demo, demo-columns, cornell-lucy, dragon, headsq)");
-        }
-      }
-    }
-    if (arg == "--methods")
-    {
-      methods = value;
-    }
-    if (!ParseSceneFileOption(arg, value, o, bad))
-    {
-      return false;
-    }
-    std::string error;
-    if (!ParseSharedOption(arg, value, o.Data, o.Backend, o.Output, error))
-    {
-      return bad(error);
-    }
   }
   if (!o.PendingVolume.empty())
   {
-    return bad("--volume " + o.PendingVolume + " needs --iso V after it");
+    return Report(Program, "--volume " + o.PendingVolume + " needs --iso V after it");
   }
   if (!o.Files.empty())
   {
     o.Scenes = o.ScenesGiven ? o.Scenes : std::vector<std::string>();
     o.Scenes.insert(o.Scenes.end(), o.Files.begin(), o.Files.end());
   }
-  o.Methods = Split(methods, ',');
-  if (o.Methods.empty())
-  {
-    return bad("--methods needs at least one method");
-  }
-  for (const std::string& m : o.Methods)
-  {
-    Method parsed;
-    if (!ParseMethod(m, parsed))
-    {
-      return bad("unknown method '" + m +
-        "' (ssao:K, ours1:N[:B][:E], ours2:N[:B][:E], ours2nc:N[:B][:E], ours2gb:N[:B][:E], low, "
-        "medium, high; E: sa or eq1)");
-    }
-  }
-  return true;
+  return ParseMethodList(Program, o.MethodList, ParseMethod,
+    "ssao:K, ours1:N[:B][:E], ours2:N[:B][:E], ours2nc:N[:B][:E], ours2gb:N[:B][:E], low, "
+    "medium, high; E: sa or eq1",
+    o.Methods);
 }
 
 /// Luminance (0..1) of the window's last frame, bottom row first.
@@ -436,9 +343,6 @@ struct SecondLayerEffect
 
 /// AV difference above which a pixel counts as changed by the second layer.
 constexpr double SecondLayerChange = 0.02;
-
-const char* const TimeAxis = "frame time [ms] (median)";
-const char* const ErrorAxis = "RMSE of AV vs ray-traced reference (gamma-calibrated)";
 
 struct ErrorStats
 {
@@ -585,369 +489,405 @@ bool LoadScene(const Options& o, const std::string& name, vtkRenderer* renderer,
   return true;
 }
 
+/// One scene's row of the first table.
+struct SceneInfo
+{
+  std::string Name;
+  vtkIdType Triangles;
+  double Radius, RefError, PlainMs, GBufferMs;
+  long Valid, Excluded, Layer1;
+  double ReferenceSeconds;
+};
+
+/// Everything measured, in the order of the scenes.
+struct Measurements
+{
+  std::vector<Result> Results;
+  std::vector<SecondLayerEffect> Effects;
+  std::vector<SceneInfo> Scenes;
+  std::string Device = "unknown";
+};
+
+/// The pixels of the accuracy frame the errors are measured on.
+struct PixelMasks
+{
+  std::vector<unsigned char> Valid;  // layer 0 valid, both plain luminances > 0.05
+  std::vector<unsigned char> Layer1; // valid, and layer 1 exists
+  std::vector<unsigned char> Border; // valid, within BorderFraction of the frame's edge
+  long ValidCount = 0, Excluded = 0, Layer1Count = 0, BorderCount = 0;
+};
+
+/// The still frame at the accuracy size that every method is measured on.
+struct AccuracyFrame
+{
+  std::string Scene;
+  int Width = 0, Height = 0;
+  std::vector<float> PlainVTK;     // luminance without any pass (for vtkSSAOPass)
+  std::vector<float> PlainGBuffer; // luminance of the G-buffer pass alone (for ours)
+  vtkSmartPointer<vtkImageData> Capture = vtkSmartPointer<vtkImageData>::New(); // its layers
+  PixelMasks Pixels;
+  std::vector<float> Reference; // ray-traced AV of layer 0
+  double ReferenceSeconds = 0.0;
+  double ReferenceError = 0.0; // the reference's mean standard error
+};
+
+/// `frames` still frames through `pass` (nullptr: VTK's own rendering),
+/// finished on the GPU.
+void RenderStill(const View& view, vtkRenderPass* pass, int frames)
+{
+  view.Renderer->SetPass(pass);
+  for (int f = 0; f < frames; ++f)
+  {
+    view.Window->Render();
+  }
+  view.Window->WaitForCompletion();
 }
 
-int main(int argc, char* argv[])
+/// The diagonal of `geometry`'s bounds, the unit of --radius-fraction.
+double Diagonal(vtkPolyData* geometry)
 {
-  Options options;
-  if (!ParseOptions(argc, argv, options))
-  {
-    Usage();
-    return 2;
-  }
-  std::vector<Method> methods;
-  for (const std::string& spec : options.Methods)
-  {
-    Method m;
-    ParseMethod(spec, m);
-    methods.push_back(m);
-  }
+  double bounds[6];
+  geometry->GetBounds(bounds);
+  return std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+}
 
-  // The outputs are checked before the hours of measuring.
-  std::string outputError;
-  if (!DeepGIOutput::PrepareDirectory(options.Output, outputError) ||
-    (options.ErrorMaps && !DeepGIOutput::PrepareDirectory(options.Output + "/errors", outputError)))
+/// Every method's pass, in the order of `methods`, with radius `r`.
+std::vector<vtkSmartPointer<vtkRenderPass>> MakePasses(const std::vector<Method>& methods, double r)
+{
+  std::vector<vtkSmartPointer<vtkRenderPass>> passes;
+  for (const Method& m : methods)
   {
-    std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
-    return 1;
+    if (m.Kind == 0)
+    {
+      auto ssao = vtkSmartPointer<vtkSSAOPass>::New();
+      ssao->SetDelegatePass(vtkSmartPointer<vtkRenderStepsPass>::New());
+      ssao->SetRadius(r);
+      ssao->SetBias(0.02 * r); // VTK's default ratio Bias / Radius = 0.01 / 0.5
+      ssao->SetKernelSize(static_cast<unsigned int>(m.Parameter));
+      ssao->SetBlur(true);
+      passes.push_back(ssao);
+      continue;
+    }
+    auto ao = vtkSmartPointer<vtkDeepAmbientObscurancePass>::New();
+    ao->SetRadius(r);
+    if (m.Preset >= 0)
+    {
+      ao->SetPreset(m.Preset);
+    }
+    else
+    {
+      ao->SetNumberOfSamples(m.Parameter);
+      ao->SetBlurRadius(m.Blur);
+    }
+    if (m.Estimator >= 0)
+    {
+      ao->SetEstimator(m.Estimator);
+    }
+    ao->SetUseSecondLayer(m.Layers == 2);
+    ao->GetGBufferPass()->SetNumberOfLayers(m.Layers);
+    ao->GetGBufferPass()->SetDeepLayerBackfaceCulling(m.DeepLayerBackfaceCulling);
+    ao->GetGBufferPass()->SetGuardBand(m.GuardBand);
+    passes.push_back(ao);
   }
+  return passes;
+}
 
+/// The pixels of `frame` whose errors count, from its capture and plain
+/// luminances.
+PixelMasks ClassifyPixels(const AccuracyFrame& frame)
+{
+  const int w = frame.Width, h = frame.Height;
+  const size_t np = static_cast<size_t>(w) * h;
+  PixelMasks px;
+  px.Valid.assign(np, 0);
+  px.Layer1.assign(np, 0);
+  px.Border.assign(np, 0);
+  const int borderWidth = static_cast<int>(std::lround(BorderFraction * h));
+  vtkDataArray* valid0 = frame.Capture->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0).c_str());
+  vtkDataArray* valid1 = frame.Capture->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 1).c_str());
+  for (size_t i = 0; i < np; ++i)
+  {
+    if (!valid0 || !(valid0->GetComponent(i, 0) > 0))
+    {
+      continue;
+    }
+    if (!(frame.PlainVTK[i] > 0.05f && frame.PlainGBuffer[i] > 0.05f))
+    {
+      ++px.Excluded;
+      continue;
+    }
+    px.Valid[i] = 1;
+    ++px.ValidCount;
+    const int x = static_cast<int>(i % w), y = static_cast<int>(i / w);
+    if (x < borderWidth || y < borderWidth || x >= w - borderWidth || y >= h - borderWidth)
+    {
+      px.Border[i] = 1;
+      ++px.BorderCount;
+    }
+    if (valid1 && valid1->GetComponent(i, 0) > 0)
+    {
+      px.Layer1[i] = 1;
+      ++px.Layer1Count;
+    }
+  }
+  return px;
+}
+
+/// The plain frames (VTK's, then the G-buffer pass's), the G-buffer capture
+/// and its pixel masks; the OpenGL renderer's name into `device` once known.
+bool CaptureAccuracyFrame(
+  const View& view, vtkDeepGBufferPass* gbuffer, AccuracyFrame& frame, std::string& device)
+{
+  RenderStill(view, nullptr, 2);
+  if (device == "unknown")
+  {
+    device = OpenGLRendererName(view.Window);
+  }
+  frame.PlainVTK = GrabLuminance(view.Window);
+  RenderStill(view, gbuffer, 3); // the oracle gets a history at the still camera
+  frame.PlainGBuffer = GrabLuminance(view.Window);
+  if (!gbuffer->CaptureLayers(frame.Capture, view.Renderer))
+  {
+    return Report(Program, "the G-buffer capture failed on " + frame.Scene);
+  }
+  frame.Pixels = ClassifyPixels(frame);
+  return true;
+}
+
+/// vtkDeepGIReferenceObscurance on the frame's capture (layer 0).
+bool ComputeReference(const Options& o, vtkPolyData* geometry, double r, AccuracyFrame& frame)
+{
+  vtkNew<vtkDeepGIReferenceObscurance> reference;
+  reference->SetScene(geometry);
+  reference->SetRadius(r);
+  // The quantity itself (eq. 2 with beta = epsilon = 0), not the
+  // regularised form the screen-space estimators use.
+  reference->SetBias(0.0);
+  reference->SetEpsilon(0.0);
+  reference->SetSamplesPerPixel(o.Samples);
+  const auto start = std::chrono::steady_clock::now();
+  if (!reference->Compute(frame.Capture))
+  {
+    return Report(Program, "the reference failed on " + frame.Scene);
+  }
+  frame.ReferenceSeconds = SecondsSince(start);
+  frame.ReferenceError = reference->GetMeanStandardError();
+  vtkDataArray* av =
+    reference->GetOutput()->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility);
+  frame.Reference.assign(frame.PlainVTK.size(), 1.0f);
+  for (size_t i = 0; i < frame.Reference.size(); ++i)
+  {
+    frame.Reference[i] = static_cast<float>(av->GetComponent(i, 0));
+  }
+  return true;
+}
+
+/// Mean |AV - the pass's own captured AV| over the valid pixels (-1 when
+/// the pass cannot capture it).
+double CaptureDifference(vtkDeepAmbientObscurancePass* ao, vtkRenderer* renderer,
+  const std::vector<float>& av, const PixelMasks& px)
+{
+  vtkNew<vtkImageData> captured;
+  if (!ao->CaptureAmbientVisibility(captured, renderer))
+  {
+    return -1;
+  }
+  vtkDataArray* cav = captured->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility);
+  double diff = 0;
+  for (size_t i = 0; i < av.size(); ++i)
+  {
+    if (px.Valid[i])
+    {
+      diff += std::fabs(av[i] - cav->GetComponent(i, 0));
+    }
+  }
+  return px.ValidCount ? diff / px.ValidCount : 0.0;
+}
+
+/// Method `m`'s still frame through `pass`: its AV (into `av`) and errors
+/// against the reference, raw and calibrated.
+Result MeasureMethod(const View& view, const Method& m, vtkRenderPass* pass,
+  const AccuracyFrame& frame, std::vector<float>& av)
+{
+  const PixelMasks& px = frame.Pixels;
+  const std::vector<float>& ref = frame.Reference;
+  RenderStill(view, pass, 3);
+  const std::vector<float> lum = GrabLuminance(view.Window);
+  const std::vector<float>& plain = m.Kind == 0 ? frame.PlainVTK : frame.PlainGBuffer;
+  av.assign(lum.size(), 1.0f);
+  double sumAV = 0;
+  for (size_t i = 0; i < av.size(); ++i)
+  {
+    if (px.Valid[i])
+    {
+      av[i] = std::min(1.0f, std::max(0.0f, lum[i] / plain[i]));
+      sumAV += av[i];
+    }
+  }
+  Result res;
+  res.Scene = frame.Scene;
+  res.M = m;
+  res.A.MeanAV = px.ValidCount ? sumAV / px.ValidCount : 0.0;
+  if (m.Kind == 1)
+  {
+    res.A.CaptureDifference =
+      CaptureDifference(vtkDeepAmbientObscurancePass::SafeDownCast(pass), view.Renderer, av, px);
+  }
+  const ErrorStats raw = Errors(av, ref, px.Valid, px.Layer1, 1.0);
+  res.A.Rmse = raw.Rmse;
+  res.A.Mae = raw.Mae;
+  res.A.RmseLayer1 = raw.RmseLayer1;
+  res.A.Gamma = FitGamma(av, ref, px.Valid, px.Layer1);
+  const ErrorStats cal = Errors(av, ref, px.Valid, px.Layer1, res.A.Gamma);
+  res.A.CRmse = cal.Rmse;
+  res.A.CMae = cal.Mae;
+  res.A.CRmseLayer1 = cal.RmseLayer1;
+  res.A.CRmseBorder = Errors(av, ref, px.Border, px.Border, res.A.Gamma).Rmse;
+  res.A.BorderPixels = px.BorderCount;
+  return res;
+}
+
+/// The error map of AV - AV_ref (colour map 0..0.5).
+bool WriteAVErrorMap(
+  const Options& o, const Method& m, const AccuracyFrame& frame, const std::vector<float>& av)
+{
+  std::vector<float> error(av.size());
+  for (size_t i = 0; i < av.size(); ++i)
+  {
+    error[i] = av[i] - frame.Reference[i];
+  }
+  std::string message;
+  if (!WriteErrorMap(ErrorMapFile(o.Output, frame.Scene, m.Name), frame.Width, frame.Height, error,
+        frame.Pixels.Valid, 0.5, message))
+  {
+    return Report(Program, message);
+  }
+  return true;
+}
+
+/// For every two-layer setting and every one-layer setting with the same N
+/// and BlurRadius: the pixels where the second layer changes AV.
+void CompareLayers(const std::vector<Method>& methods, const AccuracyFrame& frame,
+  const std::vector<Result>& results, const std::vector<std::vector<float>>& av,
+  std::vector<SecondLayerEffect>& effects)
+{
+  const PixelMasks& px = frame.Pixels;
+  for (size_t two = 0; two < methods.size(); ++two)
+  {
+    const Method& m2 = methods[two];
+    for (size_t one = 0; one < methods.size() && m2.Kind == 1 && m2.Layers == 2; ++one)
+    {
+      const Method& m1 = methods[one];
+      if (m1.Kind != 1 || m1.Layers != 1 || m1.Parameter != m2.Parameter || m1.Blur != m2.Blur)
+      {
+        continue;
+      }
+      std::vector<unsigned char> changed(px.Valid.size(), 0);
+      SecondLayerEffect e{ frame.Scene, m2.Name, m1.Name, 0, px.ValidCount };
+      for (size_t i = 0; i < changed.size(); ++i)
+      {
+        if (px.Valid[i] && std::fabs(av[two][i] - av[one][i]) > SecondLayerChange)
+        {
+          changed[i] = 1;
+          ++e.Changed;
+        }
+      }
+      e.RmseOne = Errors(av[one], frame.Reference, changed, changed, results[one].A.Gamma).Rmse;
+      e.RmseTwo = Errors(av[two], frame.Reference, changed, changed, results[two].A.Gamma).Rmse;
+      effects.push_back(e);
+    }
+  }
+}
+
+/// Every method's accuracy on `frame` (into `results`, with its error map),
+/// then the second layer's effects.
+bool MeasureAccuracy(const Options& o, const View& view,
+  const std::vector<vtkSmartPointer<vtkRenderPass>>& passes, const AccuracyFrame& frame,
+  std::vector<Result>& results, std::vector<SecondLayerEffect>& effects)
+{
+  std::vector<std::vector<float>> av(o.Methods.size());
+  for (size_t k = 0; k < o.Methods.size(); ++k)
+  {
+    results.push_back(MeasureMethod(view, o.Methods[k], passes[k], frame, av[k]));
+    if (o.ErrorMaps && !WriteAVErrorMap(o, o.Methods[k], frame, av[k]))
+    {
+      return false;
+    }
+  }
+  CompareLayers(o.Methods, frame, results, av, effects);
+  return true;
+}
+
+/// Accuracy, then time, of every method on the scene `sceneSpec`.
+bool MeasureScene(const Options& o, const std::string& sceneSpec, Measurements& measured)
+{
+  View view;
+  SceneSetup scene;
+  vtkSmartPointer<vtkObject> keep;
+  if (!OpenView(Program, o.Backend, o.AccuracyWidth, o.AccuracyHeight, view) ||
+    !LoadScene(o, sceneSpec, view.Renderer, scene, keep))
+  {
+    return false;
+  }
+  const double r = o.RadiusFraction * Diagonal(scene.Geometry);
+  const std::vector<vtkSmartPointer<vtkRenderPass>> passes = MakePasses(o.Methods, r);
+  vtkNew<vtkDeepGBufferPass> gbuffer;
+  gbuffer->SetNumberOfLayers(2);
+
+  AccuracyFrame frame;
+  // The built-in scene's name, or the user's file name (its iso-value).
+  frame.Scene = scene.Name;
+  frame.Width = o.AccuracyWidth;
+  frame.Height = o.AccuracyHeight;
   std::vector<Result> results;
-  std::vector<SecondLayerEffect> effects;
-  struct SceneInfo
+  if (!CaptureAccuracyFrame(view, gbuffer, frame, measured.Device) ||
+    !ComputeReference(o, scene.Geometry, r, frame) ||
+    !MeasureAccuracy(o, view, passes, frame, results, measured.Effects))
   {
-    std::string Name;
-    vtkIdType Triangles;
-    double Radius, RefError, PlainMs, GBufferMs;
-    long Valid, Excluded, Layer1;
-    double ReferenceSeconds;
-  };
-  std::vector<SceneInfo> infos;
-  std::string device = "unknown";
-
-  for (const std::string& sceneSpec : options.Scenes)
-  {
-    vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::Take(
-      vtkDeepGIRenderWindowFactory::NewRenderWindow(options.Backend));
-    if (!window)
-    {
-      std::fprintf(stderr, "%s: no render window for this backend\n", Program);
-      return 1;
-    }
-    window->SetMultiSamples(0);
-    window->SetSize(options.AccuracyWidth, options.AccuracyHeight);
-    vtkNew<vtkRenderer> renderer;
-    window->AddRenderer(renderer);
-    SceneSetup scene;
-    vtkSmartPointer<vtkObject> keep;
-    if (!LoadScene(options, sceneSpec, renderer, scene, keep))
-    {
-      return 1;
-    }
-    // The built-in scene's name, or the user's file name (its iso-value).
-    const std::string sceneName = scene.Name;
-    double bounds[6];
-    scene.Geometry->GetBounds(bounds);
-    const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
-      (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
-      (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
-    const double r = options.RadiusFraction * diagonal;
-
-    // The passes of every method.
-    std::vector<vtkSmartPointer<vtkRenderPass>> passes;
-    std::vector<vtkSmartPointer<vtkRenderStepsPass>> steps;
-    for (const Method& m : methods)
-    {
-      if (m.Kind == 0)
-      {
-        auto basic = vtkSmartPointer<vtkRenderStepsPass>::New();
-        auto ssao = vtkSmartPointer<vtkSSAOPass>::New();
-        ssao->SetDelegatePass(basic);
-        ssao->SetRadius(r);
-        ssao->SetBias(0.02 * r); // VTK's default ratio Bias / Radius = 0.01 / 0.5
-        ssao->SetKernelSize(static_cast<unsigned int>(m.Parameter));
-        ssao->SetBlur(true);
-        steps.push_back(basic);
-        passes.push_back(ssao);
-      }
-      else
-      {
-        auto ao = vtkSmartPointer<vtkDeepAmbientObscurancePass>::New();
-        ao->SetRadius(r);
-        if (m.Preset >= 0)
-        {
-          ao->SetPreset(m.Preset);
-        }
-        else
-        {
-          ao->SetNumberOfSamples(m.Parameter);
-          ao->SetBlurRadius(m.Blur);
-        }
-        if (m.Estimator >= 0)
-        {
-          ao->SetEstimator(m.Estimator);
-        }
-        ao->SetUseSecondLayer(m.Layers == 2);
-        ao->GetGBufferPass()->SetNumberOfLayers(m.Layers);
-        ao->GetGBufferPass()->SetDeepLayerBackfaceCulling(m.DeepLayerBackfaceCulling);
-        ao->GetGBufferPass()->SetGuardBand(m.GuardBand);
-        passes.push_back(ao);
-      }
-    }
-    auto gbuffer = vtkSmartPointer<vtkDeepGBufferPass>::New();
-    gbuffer->SetNumberOfLayers(2);
-
-    auto renderStill = [&](vtkRenderPass* pass, int frames)
-    {
-      renderer->SetPass(pass);
-      for (int f = 0; f < frames; ++f)
-      {
-        window->Render();
-      }
-      window->WaitForCompletion();
-    };
-
-    // ---- accuracy ----
-    const int w = options.AccuracyWidth, h = options.AccuracyHeight;
-    renderStill(nullptr, 2);
-    if (device == "unknown")
-    {
-      if (auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window))
-      {
-        std::istringstream lines(gl->ReportCapabilities());
-        std::string line;
-        while (std::getline(lines, line))
-        {
-          if (line.find("OpenGL renderer string") != std::string::npos)
-          {
-            device = line.substr(line.find(':') + 1);
-            device.erase(0, device.find_first_not_of(' '));
-          }
-        }
-      }
-    }
-    const std::vector<float> plainVTK = GrabLuminance(window);
-    renderStill(gbuffer, 3); // the oracle gets a history at the still camera
-    const std::vector<float> plainGB = GrabLuminance(window);
-    vtkNew<vtkImageData> capture;
-    if (!gbuffer->CaptureLayers(capture, renderer))
-    {
-      std::fprintf(stderr, "%s: the G-buffer capture failed on %s\n", Program, sceneName.c_str());
-      return 1;
-    }
-    const size_t np = static_cast<size_t>(w) * h;
-    std::vector<unsigned char> mask(np, 0), layer1(np, 0), border(np, 0);
-    const int borderWidth = static_cast<int>(std::lround(BorderFraction * h));
-    long nBorder = 0;
-    vtkDataArray* valid0 = capture->GetPointData()->GetArray(
-      vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0).c_str());
-    vtkDataArray* valid1 = capture->GetPointData()->GetArray(
-      vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 1).c_str());
-    long nValid = 0, nExcluded = 0, nLayer1 = 0;
-    for (size_t i = 0; i < np; ++i)
-    {
-      if (valid0 && valid0->GetComponent(i, 0) > 0)
-      {
-        if (plainVTK[i] > 0.05f && plainGB[i] > 0.05f)
-        {
-          mask[i] = 1;
-          ++nValid;
-          const int x = static_cast<int>(i % w), y = static_cast<int>(i / w);
-          if (x < borderWidth || y < borderWidth || x >= w - borderWidth || y >= h - borderWidth)
-          {
-            border[i] = 1;
-            ++nBorder;
-          }
-          if (valid1 && valid1->GetComponent(i, 0) > 0)
-          {
-            layer1[i] = 1;
-            ++nLayer1;
-          }
-        }
-        else
-        {
-          ++nExcluded;
-        }
-      }
-    }
-
-    vtkNew<vtkDeepGIReferenceObscurance> reference;
-    reference->SetScene(scene.Geometry);
-    reference->SetRadius(r);
-    // The quantity itself (eq. 2 with beta = epsilon = 0), not the
-    // regularised form the screen-space estimators use.
-    reference->SetBias(0.0);
-    reference->SetEpsilon(0.0);
-    reference->SetSamplesPerPixel(options.Samples);
-    const auto refStart = std::chrono::steady_clock::now();
-    if (!reference->Compute(capture))
-    {
-      std::fprintf(stderr, "%s: the reference failed on %s\n", Program, sceneName.c_str());
-      return 1;
-    }
-    const double refSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - refStart).count();
-    std::vector<float> ref(np, 1.0f);
-    vtkDataArray* refAV =
-      reference->GetOutput()->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility);
-    for (size_t i = 0; i < np; ++i)
-    {
-      ref[i] = static_cast<float>(refAV->GetComponent(i, 0));
-    }
-
-    std::vector<Result> sceneResults;
-    std::vector<std::vector<float>> sceneAV(methods.size());
-    for (size_t k = 0; k < methods.size(); ++k)
-    {
-      const Method& m = methods[k];
-      renderStill(passes[k], 3);
-      const std::vector<float> lum = GrabLuminance(window);
-      const std::vector<float>& plain = m.Kind == 0 ? plainVTK : plainGB;
-      std::vector<float> av(np, 1.0f);
-      double sumAV = 0;
-      for (size_t i = 0; i < np; ++i)
-      {
-        if (mask[i])
-        {
-          av[i] = std::min(1.0f, std::max(0.0f, lum[i] / plain[i]));
-          sumAV += av[i];
-        }
-      }
-      Result res;
-      res.Scene = sceneName;
-      res.M = m;
-      res.A.MeanAV = nValid ? sumAV / nValid : 0.0;
-      if (m.Kind == 1)
-      {
-        vtkNew<vtkImageData> captured;
-        auto* ao = vtkDeepAmbientObscurancePass::SafeDownCast(passes[k]);
-        if (ao->CaptureAmbientVisibility(captured, renderer))
-        {
-          vtkDataArray* cav =
-            captured->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility);
-          double diff = 0;
-          for (size_t i = 0; i < np; ++i)
-          {
-            if (mask[i])
-            {
-              diff += std::fabs(av[i] - cav->GetComponent(i, 0));
-            }
-          }
-          res.A.CaptureDifference = nValid ? diff / nValid : 0.0;
-        }
-      }
-      const ErrorStats raw = Errors(av, ref, mask, layer1, 1.0);
-      res.A.Rmse = raw.Rmse;
-      res.A.Mae = raw.Mae;
-      res.A.RmseLayer1 = raw.RmseLayer1;
-      res.A.Gamma = FitGamma(av, ref, mask, layer1);
-      const ErrorStats cal = Errors(av, ref, mask, layer1, res.A.Gamma);
-      res.A.CRmse = cal.Rmse;
-      res.A.CMae = cal.Mae;
-      res.A.CRmseLayer1 = cal.RmseLayer1;
-      res.A.CRmseBorder = Errors(av, ref, border, border, res.A.Gamma).Rmse;
-      res.A.BorderPixels = nBorder;
-      if (options.ErrorMaps)
-      {
-        std::vector<float> error(np);
-        for (size_t i = 0; i < np; ++i)
-        {
-          error[i] = av[i] - ref[i];
-        }
-        if (!WriteErrorMap(
-              options.Output + "/errors/" + FileTag(sceneName) + "-" + FileTag(m.Name) + ".png", w,
-              h, error, mask, 0.5, outputError))
-        {
-          std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
-          return 1;
-        }
-      }
-      sceneResults.push_back(res);
-      sceneAV[k] = av;
-    }
-
-    for (size_t two = 0; two < methods.size(); ++two)
-    {
-      const Method& m2 = methods[two];
-      for (size_t one = 0; one < methods.size() && m2.Kind == 1 && m2.Layers == 2; ++one)
-      {
-        const Method& m1 = methods[one];
-        if (m1.Kind != 1 || m1.Layers != 1 || m1.Parameter != m2.Parameter || m1.Blur != m2.Blur)
-        {
-          continue;
-        }
-        std::vector<unsigned char> changed(np, 0);
-        SecondLayerEffect e{ sceneName, m2.Name, m1.Name, 0, nValid };
-        for (size_t i = 0; i < np; ++i)
-        {
-          if (mask[i] && std::fabs(sceneAV[two][i] - sceneAV[one][i]) > SecondLayerChange)
-          {
-            changed[i] = 1;
-            ++e.Changed;
-          }
-        }
-        e.RmseOne = Errors(sceneAV[one], ref, changed, changed, sceneResults[one].A.Gamma).Rmse;
-        e.RmseTwo = Errors(sceneAV[two], ref, changed, changed, sceneResults[two].A.Gamma).Rmse;
-        effects.push_back(e);
-      }
-    }
-
-    // ---- time ----
-    window->SetSize(options.Width, options.Height);
-    std::vector<std::vector<double>> ms(methods.size() + 2);
-    for (int round = 0; round < options.Rounds; ++round)
-    {
-      for (size_t k = 0; k < methods.size() + 2; ++k)
-      {
-        vtkRenderPass* pass =
-          k == 0 ? nullptr : (k == 1 ? gbuffer.GetPointer() : passes[k - 2].GetPointer());
-        renderer->SetPass(pass);
-        const std::vector<double> t = TimeFrames(
-          [&]()
-          {
-            window->Render();
-            window->WaitForCompletion();
-          },
-          options.Warmup, options.Frames);
-        ms[k].insert(ms[k].end(), t.begin(), t.end());
-      }
-    }
-    for (size_t k = 0; k < methods.size(); ++k)
-    {
-      sceneResults[k].FrameMs = Median(ms[k + 2]);
-      results.push_back(sceneResults[k]);
-    }
-    infos.push_back(
-      { sceneName, scene.Geometry->GetNumberOfPolys(), r, reference->GetMeanStandardError(),
-        Median(ms[0]), Median(ms[1]), nValid, nExcluded, nLayer1, refSeconds });
-    renderer->SetPass(nullptr);
-    for (auto& p : passes)
-    {
-      p->ReleaseGraphicsResources(window);
-    }
-    gbuffer->ReleaseGraphicsResources(window);
-    std::fprintf(stderr, "%s: scene %s done\n", Program, sceneName.c_str());
+    return false;
   }
+  const std::vector<double> plainMs = TimeMethods(view, o, { nullptr, gbuffer }, passes, results);
+  measured.Results.insert(measured.Results.end(), results.begin(), results.end());
+  const PixelMasks& px = frame.Pixels;
+  measured.Scenes.push_back(
+    { frame.Scene, scene.Geometry->GetNumberOfPolys(), r, frame.ReferenceError, plainMs[0],
+      plainMs[1], px.ValidCount, px.Excluded, px.Layer1Count, frame.ReferenceSeconds });
 
-  // ---- tables ----
-  std::ostringstream md, csv;
+  view.Renderer->SetPass(nullptr);
+  for (const auto& pass : passes)
+  {
+    pass->ReleaseGraphicsResources(view.Window);
+  }
+  gbuffer->ReleaseGraphicsResources(view.Window);
+  std::fprintf(stderr, "%s: scene %s done\n", Program, frame.Scene.c_str());
+  return true;
+}
+
+/// The settings of the run and the table of the scenes.
+std::string SceneTable(const Options& o, const Measurements& measured)
+{
+  std::ostringstream md;
   md
-    << "Accuracy at " << options.AccuracyWidth << "x" << options.AccuracyHeight << ", time at "
-    << options.Width << "x" << options.Height << " (median of " << options.Frames * options.Rounds
-    << " frames per method, " << options.Rounds << " rounds, after " << options.Warmup
-    << " warm-up frames per round); OpenGL renderer: " << device << ".\n"
-    << "r = " << options.RadiusFraction
+    << "Accuracy at " << o.AccuracyWidth << "x" << o.AccuracyHeight << ", time at " << o.Width
+    << "x" << o.Height << " (median of " << o.Frames * o.Rounds << " frames per method, "
+    << o.Rounds << " rounds, after " << o.Warmup
+    << " warm-up frames per round); OpenGL renderer: " << measured.Device << ".\n"
+    << "r = " << o.RadiusFraction
     << " x scene diagonal for every method; vtkSSAOPass: Radius r, Bias 0.02 r, Blur on; "
        "ours: Radius r and the pass's defaults (Bias 0.01 r, Epsilon 1e-4 r^2, estimator "
        "SOLID_ANGLE unless the method says otherwise); reference: Embree, "
-    << options.Samples
+    << o.Samples
     << " rays per pixel, beta = eps = 0 (the obscurance itself), on the G-buffer capture of the "
        "same frame (layer 0).\nAV of a method = luminance(method) / luminance(plain) on white "
        "ambient-only surfaces (plain = VTK for vtkSSAOPass, the G-buffer pass alone for ours).\n\n";
   md << "| scene | triangles | r | valid px | excluded px | layer-1 px | reference std. error | "
         "reference [s] | VTK frame [ms] | G-buffer (2 layers) frame [ms] "
         "|\n|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const SceneInfo& s : infos)
+  for (const SceneInfo& s : measured.Scenes)
   {
     char b[512];
     std::snprintf(b, sizeof(b),
@@ -956,28 +896,53 @@ int main(int argc, char* argv[])
       s.ReferenceSeconds, s.PlainMs, s.GBufferMs);
     md << b;
   }
+  return md.str();
+}
+
+/// Frame time of VTK without a pass on `scene`.
+double PlainMs(const Measurements& measured, const std::string& scene)
+{
+  double plainMs = 0;
+  for (const SceneInfo& s : measured.Scenes)
+  {
+    if (s.Name == scene)
+    {
+      plainMs = s.PlainMs;
+    }
+  }
+  return plainMs;
+}
+
+/// The table of every scene and method.
+std::string ResultTable(const Measurements& measured)
+{
+  std::ostringstream md;
   md << "\n| scene | method | frame [ms] | AO cost [ms] | RMSE | MAE | RMSE layer-1 px | gamma | "
         "RMSE cal. | MAE cal. | RMSE cal. layer-1 px | mean AV | ratio vs captured AV |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  csv << "scene,method,family,kind,samples,layers,blur,frame_ms,ao_cost_ms,rmse,mae,rmse_layer1,"
-         "gamma,rmse_cal,mae_cal,rmse_cal_layer1,mean_av,capture_difference\n";
-  for (const Result& r : results)
+  for (const Result& r : measured.Results)
   {
-    double plainMs = 0;
-    for (const SceneInfo& s : infos)
-    {
-      if (s.Name == r.Scene)
-      {
-        plainMs = s.PlainMs;
-      }
-    }
     char b[1024];
     std::snprintf(b, sizeof(b),
       "| %s | %s | %.2f | %.2f | %.4f | %.4f | %.4f | %.2f | %.4f | %.4f | %.4f | %.3f | %s |\n",
-      r.Scene.c_str(), r.M.Name.c_str(), r.FrameMs, r.FrameMs - plainMs, r.A.Rmse, r.A.Mae,
-      r.A.RmseLayer1, r.A.Gamma, r.A.CRmse, r.A.CMae, r.A.CRmseLayer1, r.A.MeanAV,
-      r.A.CaptureDifference < 0 ? "" : Fmt("%.4f", r.A.CaptureDifference).c_str());
+      r.Scene.c_str(), r.M.Name.c_str(), r.FrameMs, r.FrameMs - PlainMs(measured, r.Scene),
+      r.A.Rmse, r.A.Mae, r.A.RmseLayer1, r.A.Gamma, r.A.CRmse, r.A.CMae, r.A.CRmseLayer1,
+      r.A.MeanAV, r.A.CaptureDifference < 0 ? "" : Fmt("%.4f", r.A.CaptureDifference).c_str());
     md << b;
+  }
+  return md.str();
+}
+
+/// The CSV file: a row per scene and method.
+std::string Csv(const Measurements& measured)
+{
+  std::ostringstream csv;
+  csv << "scene,method,family,kind,samples,layers,blur,frame_ms,ao_cost_ms,rmse,mae,rmse_layer1,"
+         "gamma,rmse_cal,mae_cal,rmse_cal_layer1,mean_av,capture_difference\n";
+  for (const Result& r : measured.Results)
+  {
+    const double plainMs = PlainMs(measured, r.Scene);
+    char b[1024];
     std::snprintf(b, sizeof(b),
       // Text fields are quoted: method names may contain commas.
       "\"%s\",\"%s\",\"%s\",%s,%d,%d,%d,%.4f,%.4f,%.5f,%.5f,%.5f,%.4f,%.5f,%.5f,%.5f,%.4f,%s\n",
@@ -987,8 +952,82 @@ int main(int argc, char* argv[])
       r.A.MeanAV, r.A.CaptureDifference < 0 ? "" : Fmt("%.5f", r.A.CaptureDifference).c_str());
     csv << b;
   }
+  return csv.str();
+}
 
-  // ---- goals ----
+/// Goal 1 on `scene`: for every SSAO setting, the best two-layer RMSE at
+/// no more than its time over its RMSE; the worst of them against 0.6.
+std::string GoalOne(const std::vector<Result>& results, const std::string& scene,
+  const std::function<double(const Result&)>& rmse)
+{
+  std::ostringstream g1;
+  double worst = -1;
+  bool missing = false;
+  for (const Result& a : results)
+  {
+    if (a.Scene != scene || a.M.Kind != 0)
+    {
+      continue;
+    }
+    double best = -1;    // best 2-layer RMSE at <= a's time
+    double bestAny = -1; // best 2-layer RMSE at any time
+    for (const Result& b : results)
+    {
+      if (b.Scene == scene && b.M.Kind == 1 && b.M.Layers == 2)
+      {
+        best = b.FrameMs <= a.FrameMs && (best < 0 || rmse(b) < best) ? rmse(b) : best;
+        bestAny = bestAny < 0 || rmse(b) < bestAny ? rmse(b) : bestAny;
+      }
+    }
+    if (best < 0)
+    {
+      missing = true;
+      g1 << a.M.Name << ": no 2-layer setting as fast";
+      if (bestAny >= 0)
+      {
+        g1 << " (at any time: " << Fmt("%.2f", bestAny / std::max(1e-9, rmse(a))) << ")";
+      }
+      g1 << "; ";
+      continue;
+    }
+    const double ratio = best / std::max(1e-9, rmse(a));
+    g1 << a.M.Name << ": " << Fmt("%.2f", ratio) << "; ";
+    worst = std::max(worst, ratio);
+  }
+  return (worst < 0 ? std::string("n/a") : Fmt("%.2f", worst)) +
+    (worst >= 0 && worst <= 0.6 && !missing ? " (met)" : " (missed)") + " [" + g1.str() + "]";
+}
+
+/// Goal 2 on `scene`: per N, the layer-1 RMSE of two layers over one layer
+/// (<= 0.8) and the time ratio (<= 1.3).
+std::string GoalTwo(const std::vector<Result>& results, const std::string& scene,
+  const std::function<double(const Result&)>& rmse1)
+{
+  std::ostringstream g2;
+  for (const Result& two : results)
+  {
+    if (two.Scene != scene || two.M.Kind != 1 || two.M.Layers != 2)
+    {
+      continue;
+    }
+    for (const Result& one : results)
+    {
+      if (one.Scene == scene && one.M.Kind == 1 && one.M.Layers == 1 &&
+        one.M.Parameter == two.M.Parameter && one.M.Blur == two.M.Blur)
+      {
+        const double er = rmse1(two) / std::max(1e-9, rmse1(one));
+        const double tr = two.FrameMs / std::max(1e-9, one.FrameMs);
+        g2 << two.M.Name << ": " << Fmt("%.2f", er) << " / " << Fmt("%.2f", tr)
+           << (er <= 0.8 && tr <= 1.3 ? " met" : " missed") << "; ";
+      }
+    }
+  }
+  return g2.str();
+}
+
+std::string GoalsSection(const Measurements& measured)
+{
+  std::ostringstream md;
   md << "\n### Goals\n\n";
   // Raw errors are what a user sees; the calibrated ones fit an exponent per
   // method and scene against the reference, which no user can do.
@@ -1002,164 +1041,70 @@ int main(int argc, char* argv[])
     md << "| scene | goal 1: worst over SSAO settings of (best 2-layer RMSE at <= its time) / "
           "SSAO RMSE (goal <= 0.6) | goal 2: per N, layer-1 RMSE 2 layers / 1 layer (goal <= 0.8) "
           "and time ratio (goal <= 1.3) |\n|---|---|---|\n";
-    for (const SceneInfo& s : infos)
+    for (const SceneInfo& s : measured.Scenes)
     {
-      std::ostringstream g1, g2;
-      double worst = -1;
-      bool missing = false;
-      for (const Result& a : results)
-      {
-        if (a.Scene != s.Name || a.M.Kind != 0)
-        {
-          continue;
-        }
-        double best = -1;
-        for (const Result& b : results)
-        {
-          if (b.Scene == s.Name && b.M.Kind == 1 && b.M.Layers == 2 && b.FrameMs <= a.FrameMs &&
-            (best < 0 || rmse(b) < best))
-          {
-            best = rmse(b);
-          }
-        }
-        double bestAny = -1; // best 2-layer RMSE at any time
-        for (const Result& b : results)
-        {
-          if (b.Scene == s.Name && b.M.Kind == 1 && b.M.Layers == 2 &&
-            (bestAny < 0 || rmse(b) < bestAny))
-          {
-            bestAny = rmse(b);
-          }
-        }
-        if (best < 0)
-        {
-          missing = true;
-          g1 << a.M.Name << ": no 2-layer setting as fast";
-          if (bestAny >= 0)
-          {
-            g1 << " (at any time: " << Fmt("%.2f", bestAny / std::max(1e-9, rmse(a))) << ")";
-          }
-          g1 << "; ";
-          continue;
-        }
-        const double ratio = best / std::max(1e-9, rmse(a));
-        g1 << a.M.Name << ": " << Fmt("%.2f", ratio) << "; ";
-        worst = std::max(worst, ratio);
-      }
-      std::string g1s = (worst < 0 ? std::string("n/a") : Fmt("%.2f", worst)) +
-        (worst >= 0 && worst <= 0.6 && !missing ? " (met)" : " (missed)") + " [" + g1.str() + "]";
-      for (const Result& two : results)
-      {
-        if (two.Scene != s.Name || two.M.Kind != 1 || two.M.Layers != 2)
-        {
-          continue;
-        }
-        for (const Result& one : results)
-        {
-          if (one.Scene == s.Name && one.M.Kind == 1 && one.M.Layers == 1 &&
-            one.M.Parameter == two.M.Parameter && one.M.Blur == two.M.Blur)
-          {
-            const double er = rmse1(two) / std::max(1e-9, rmse1(one));
-            const double tr = two.FrameMs / std::max(1e-9, one.FrameMs);
-            g2 << two.M.Name << ": " << Fmt("%.2f", er) << " / " << Fmt("%.2f", tr)
-               << (er <= 0.8 && tr <= 1.3 ? " met" : " missed") << "; ";
-          }
-        }
-      }
-      md << "| " << s.Name << " | " << g1s << " | " << g2.str() << " |\n";
+      md << "| " << s.Name << " | " << GoalOne(measured.Results, s.Name, rmse) << " | "
+         << GoalTwo(measured.Results, s.Name, rmse1) << " |\n";
     }
   }
+  return md.str();
+}
 
+std::string BorderSection(const Measurements& measured)
+{
+  std::ostringstream md;
   md << "\n### The frame's border\n\n"
      << "Calibrated RMSE on all valid pixels and on those within " << BorderFraction
      << " of the height of the frame's edge, where the screen-space methods lack the "
         "occluders outside the view unless the G-buffer has a guard band.\n\n"
      << "| scene | method | frame [ms] | RMSE cal. | RMSE cal. border | border px |\n"
         "|---|---|---|---|---|---|\n";
-  for (const Result& r : results)
+  for (const Result& r : measured.Results)
   {
     md << "| " << r.Scene << " | " << r.M.Name << " | " << Fmt("%.2f", r.FrameMs) << " | "
        << Fmt("%.4f", r.A.CRmse) << " | " << Fmt("%.4f", r.A.CRmseBorder) << " | "
        << r.A.BorderPixels << " |\n";
   }
+  return md.str();
+}
 
+std::string SecondLayerSection(const Measurements& measured)
+{
+  std::ostringstream md;
   md << "\n### Where the second layer changes AV\n\n"
      << "Pixels where a two-layer setting's AV differs by more than " << SecondLayerChange
      << " from the one-layer setting with the same N and BlurRadius, and the calibrated RMSE "
         "of both on those pixels only.\n\n"
      << "| scene | two layers | one layer | changed px | of valid px | RMSE cal. 1 layer | "
         "RMSE cal. 2 layers |\n|---|---|---|---|---|---|---|\n";
-  for (const SecondLayerEffect& e : effects)
+  for (const SecondLayerEffect& e : measured.Effects)
   {
     md << "| " << e.Scene << " | " << e.TwoLayers << " | " << e.OneLayer << " | " << e.Changed
        << " | " << e.Valid << " | " << Fmt("%.4f", e.RmseOne) << " | " << Fmt("%.4f", e.RmseTwo)
        << " |\n";
   }
+  return md.str();
+}
 
-  std::fputs(md.str().c_str(), stdout);
-  if (!DeepGIOutput::WriteText(options.Output + "/benchmark-ao.md", md.str(), outputError) ||
-    !DeepGIOutput::WriteText(options.Output + "/benchmark-ao.csv", csv.str(), outputError))
-  {
-    std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
-    return 1;
-  }
+/// The markdown file (also printed on stdout).
+std::string Markdown(const Options& o, const Measurements& measured)
+{
+  return SceneTable(o, measured) + ResultTable(measured) + GoalsSection(measured) +
+    BorderSection(measured) + SecondLayerSection(measured);
+}
 
-  // ---- plots ----
-  std::vector<std::string> families;
-  for (const Method& m : methods)
-  {
-    const std::string f = m.Family.empty() ? m.Name : m.Family;
-    if (std::find(families.begin(), families.end(), f) == families.end())
-    {
-      families.push_back(f);
-    }
-  }
-  Curves mean;
-  for (size_t k = 0; k < methods.size(); ++k)
-  {
-    double t = 0, e = 0;
-    int n = 0;
-    for (const Result& r : results)
-    {
-      if (r.M.Name == methods[k].Name)
-      {
-        t += r.FrameMs;
-        e += r.A.CRmse;
-        ++n;
-      }
-    }
-    const std::string f = methods[k].Family.empty() ? methods[k].Name : methods[k].Family;
-    if (n)
-    {
-      mean[f].push_back({ t / n, e / n });
-    }
-  }
-  if (!WritePlot(options.Output + "/benchmark-ao-plot.png",
-        "Ambient obscurance: error vs time (mean over scenes)", TimeAxis, ErrorAxis, families, mean,
-        options.Backend, outputError))
-  {
-    std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
-    return 1;
-  }
-  for (const SceneInfo& s : infos)
-  {
-    Curves curves;
-    for (const Result& r : results)
-    {
-      if (r.Scene == s.Name)
-      {
-        curves[r.M.Family.empty() ? r.M.Name : r.M.Family].push_back({ r.FrameMs, r.A.CRmse });
-      }
-    }
-    if (!WritePlot(options.Output + "/benchmark-ao-plot-" + FileTag(s.Name) + ".png",
-          "Ambient obscurance: error vs time, " + s.Name, TimeAxis, ErrorAxis, families, curves,
-          options.Backend, outputError))
-    {
-      std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
-      return 1;
-    }
-  }
-  std::printf("\nwrote %s/benchmark-ao.{md,csv}, %s/benchmark-ao-plot.png\n",
-    options.Output.c_str(), options.Output.c_str());
-  return 0;
+/// RMSE of AV (gamma-calibrated) against the frame time, one curve per method family.
+ErrorTimePlots Plots(const Options& o, const Measurements& measured)
+{
+  return MakeErrorTimePlots("Ambient obscurance: error vs time",
+    "RMSE of AV vs ray-traced reference (gamma-calibrated)", o.Methods, measured.Scenes,
+    measured.Results, CurveOf, [](const Result& r) { return r.A.CRmse; });
+}
+}
+
+int main(int argc, char* argv[])
+{
+  const AccuracyBenchmark<Options, Measurements> stages{ Program, "benchmark-ao", ParseOptions,
+    Usage, MeasureScene, Markdown, Csv, Plots };
+  return RunAccuracyBenchmark(stages, argc, argv);
 }

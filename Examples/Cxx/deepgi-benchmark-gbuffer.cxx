@@ -17,7 +17,7 @@
 // machine affect them alike, and the median frame time of each is reported
 // with the second layer's cost, (T2 - T1), as a ratio of the first layer's T1.
 
-#include "DeepGIOutput.h"
+#include "DeepGIBenchmarkCommon.h"
 
 #include "vtkCamera.h"
 #include "vtkDeepGBufferDemoScene.h"
@@ -25,13 +25,10 @@
 #include "vtkDeepGIRenderWindowFactory.h"
 #include "vtkDeepRadiosityPass.h"
 #include "vtkNew.h"
-#include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -40,6 +37,12 @@
 
 namespace
 {
+using namespace DeepGIBenchmark;
+const char* const Program = "deepgi-benchmark-gbuffer";
+
+/// Frames of the demo scene's camera path: the timed frames follow it.
+constexpr int PathFrames = 120;
+
 struct Options
 {
   long long Triangles = 1200000;
@@ -74,7 +77,7 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     {
       if (i + 1 >= argc)
       {
-        std::fprintf(stderr, "deepgi-benchmark-gbuffer: %s needs a value\n", what);
+        std::fprintf(stderr, "%s: %s needs a value\n", Program, what);
         return nullptr;
       }
       return argv[++i];
@@ -116,8 +119,7 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     {
       if (!value)
       {
-        std::fprintf(
-          stderr, "deepgi-benchmark-gbuffer: unknown or incomplete option %s\n", arg.c_str());
+        std::fprintf(stderr, "%s: unknown or incomplete option %s\n", Program, arg.c_str());
       }
       return false;
     }
@@ -125,8 +127,7 @@ bool ParseOptions(int argc, char* argv[], Options& o)
   if (o.Triangles < 1 || o.Width < 1 || o.Height < 1 || o.Frames < 1 || o.Rounds < 1 ||
     o.Backend < 0)
   {
-    std::fprintf(stderr, "deepgi-benchmark-gbuffer: invalid option value\n");
-    return false;
+    return Report(Program, "invalid option value");
   }
   return true;
 }
@@ -150,46 +151,10 @@ struct Method
   int GeometryPasses = 0;
 };
 
-double Median(std::vector<double> v)
+/// VTK without the pass, one layer, two layers with each oracle, and two
+/// layers with REPROJECT and a guard band; each G-buffer pass made.
+std::vector<Method> MakeMethods()
 {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-}
-
-int main(int argc, char* argv[])
-{
-  Options options;
-  if (!ParseOptions(argc, argv, options))
-  {
-    Usage();
-    return 2;
-  }
-  // The outputs are checked before the measuring.
-  std::string outputError;
-  if (!DeepGIOutput::PrepareDirectory(options.Output, outputError))
-  {
-    std::fprintf(stderr, "deepgi-benchmark-gbuffer: %s\n", outputError.c_str());
-    return 1;
-  }
-
-  vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::Take(
-    vtkDeepGIRenderWindowFactory::NewRenderWindow(options.Backend));
-  if (!window)
-  {
-    std::fprintf(stderr, "deepgi-benchmark-gbuffer: no render window for this backend\n");
-    return 1;
-  }
-  window->SetMultiSamples(0);
-  window->SetSize(options.Width, options.Height);
-  vtkNew<vtkRenderer> renderer;
-  window->AddRenderer(renderer);
-  vtkNew<vtkDeepGBufferDemoScene> scene;
-  scene->SetTargetNumberOfTriangles(options.Triangles);
-  scene->Populate(renderer);
-  const int pathFrames = 120;
-
   std::vector<Method> methods;
   methods.emplace_back("VTK without the pass", 0);
   methods.emplace_back("G-buffer, 1 layer", 1);
@@ -213,62 +178,46 @@ int main(int argc, char* argv[])
       m.Pass->SetGuardBand(m.GuardBand);
     }
   }
+  return methods;
+}
 
-  for (int round = 0; round < options.Rounds; ++round)
+/// Every method's frame times along the scene's camera path, all methods in
+/// each round, and its geometry submissions per frame.
+void TimeAlongCameraPath(
+  const Options& o, const View& view, vtkDeepGBufferDemoScene* scene, std::vector<Method>& methods)
+{
+  std::vector<vtkRenderPass*> passes;
+  for (const Method& m : methods)
   {
-    for (Method& m : methods)
+    passes.push_back(m.Pass);
+  }
+  // Warm-up frames compile the shaders and fill the oracle's history.
+  const std::vector<std::vector<double>> ms =
+    TimePassesInRounds(view, passes, o.Rounds, o.Warmup, o.Frames,
+      [&view, scene](int f)
+      {
+        scene->SetCameraToPathFrame(view.Renderer->GetActiveCamera(), f, PathFrames);
+        view.Renderer->ResetCameraClippingRange();
+      });
+  for (size_t k = 0; k < methods.size(); ++k)
+  {
+    methods[k].Milliseconds = ms[k];
+    if (methods[k].Pass)
     {
-      renderer->SetPass(m.Pass);
-      // Warm-up frames compile the shaders and fill the oracle's history.
-      for (int f = 0; f < options.Warmup + options.Frames; ++f)
-      {
-        scene->SetCameraToPathFrame(renderer->GetActiveCamera(), f, pathFrames);
-        renderer->ResetCameraClippingRange();
-        const auto start = std::chrono::steady_clock::now();
-        window->Render();
-        window->WaitForCompletion();
-        const auto stop = std::chrono::steady_clock::now();
-        if (f >= options.Warmup)
-        {
-          m.Milliseconds.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
-        }
-      }
-      if (m.Pass)
-      {
-        m.GeometryPasses = m.Pass->GetLastGeometryPassCount();
-      }
+      methods[k].GeometryPasses = methods[k].Pass->GetLastGeometryPassCount();
     }
   }
+}
 
-  int major = 0, minor = 0;
-  vtkOpenGLRenderWindow* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
-  if (glWindow)
-  {
-    glWindow->GetOpenGLVersion(major, minor);
-  }
-  const std::string renderer_name =
-    glWindow ? glWindow->ReportCapabilities() : std::string("unknown");
-  std::string device = "unknown";
-  {
-    std::istringstream lines(renderer_name);
-    std::string line;
-    while (std::getline(lines, line))
-    {
-      if (line.find("OpenGL renderer string") != std::string::npos)
-      {
-        device = line.substr(line.find(':') + 1);
-        device.erase(0, device.find_first_not_of(' '));
-      }
-    }
-  }
-
-  const double vtkOnly = Median(methods[0].Milliseconds);
+/// The run's settings and a row per method; the CSV file's rows into `csv`.
+std::string MethodTable(const Options& o, vtkDeepGBufferDemoScene* scene, const std::string& device,
+  const std::vector<Method>& methods, std::string& csvText)
+{
   const double firstLayer = Median(methods[1].Milliseconds);
   std::ostringstream md, csv;
-  md << "Demo scene, " << scene->GetNumberOfTriangles() << " triangles, " << options.Width << "x"
-     << options.Height << ", camera moving along the scene's path; median of "
-     << options.Frames * options.Rounds << " frames per method (" << options.Rounds
-     << " rounds); OpenGL renderer: " << device << ".\n\n";
+  md << "Demo scene, " << scene->GetNumberOfTriangles() << " triangles, " << o.Width << "x"
+     << o.Height << ", camera moving along the scene's path; median of " << o.Frames * o.Rounds
+     << " frames per method (" << o.Rounds << " rounds); OpenGL renderer: " << device << ".\n\n";
   md << "| method | geometry submissions | frame [ms] | second layer [ms] | second layer / first "
         "layer |\n";
   md << "|---|---|---|---|---|\n";
@@ -295,12 +244,23 @@ int main(int argc, char* argv[])
       m.GeometryPasses, t, second, second / firstLayer);
     csv << buffer;
   }
+  csvText = csv.str();
+  return md.str();
+}
+
+/// The first layer's cost against VTK without the pass (with the paper's
+/// figures), and the guard band's cost against REPROJECT without it.
+std::string Summary(const Options& o, const std::vector<Method>& methods)
+{
+  const double vtkOnly = Median(methods[0].Milliseconds);
+  const double firstLayer = Median(methods[1].Milliseconds);
+  char buffer[512];
   std::snprintf(buffer, sizeof(buffer),
     "\nFirst layer (1-layer G-buffer) %.1f ms = %.2f x VTK without the pass (%.1f ms).\n"
     "Paper (Table 5, GTX 980, 1080p): REPROJECT adds about 0.4-0.6 of the first layer's cost "
     "and is about twice as fast as depth peeling.\n",
     firstLayer, firstLayer / vtkOnly, vtkOnly);
-  md << buffer;
+  std::string text = buffer;
   double reproject = 0.0, guarded = 0.0;
   int guardPixels = 0;
   for (const Method& m : methods)
@@ -317,25 +277,44 @@ int main(int argc, char* argv[])
   std::snprintf(buffer, sizeof(buffer),
     "Guard band %g (%d pixels per side: %.2f x the pixels): 2 layers, REPROJECT %.1f ms = %.2f x "
     "without it (%.1f ms).\n",
-    guardBand, guardPixels,
-    static_cast<double>(options.Width + 2 * guardPixels) * (options.Height + 2 * guardPixels) /
-      (static_cast<double>(options.Width) * options.Height),
+    vtkDeepRadiosityPass::DEFAULT_GUARD_BAND, guardPixels,
+    static_cast<double>(o.Width + 2 * guardPixels) * (o.Height + 2 * guardPixels) /
+      (static_cast<double>(o.Width) * o.Height),
     guarded, reproject > 0.0 ? guarded / reproject : 0.0, reproject);
-  md << buffer;
+  return text + buffer;
+}
+}
 
-  std::fputs(md.str().c_str(), stdout);
+int main(int argc, char* argv[])
+{
+  Options options;
+  if (!ParseOptions(argc, argv, options))
+  {
+    Usage();
+    return 2;
+  }
+  // The outputs are checked before the measuring.
+  View view;
+  if (!PrepareOutputs(Program, options.Output, false) ||
+    !OpenView(Program, options.Backend, options.Width, options.Height, view))
+  {
+    return 1;
+  }
+  vtkNew<vtkDeepGBufferDemoScene> scene;
+  scene->SetTargetNumberOfTriangles(options.Triangles);
+  scene->Populate(view.Renderer);
+  std::vector<Method> methods = MakeMethods();
+  TimeAlongCameraPath(options, view, scene, methods);
+  const std::string device = OpenGLRendererName(view.Window);
+  std::string csv;
+  const std::string markdown =
+    MethodTable(options, scene, device, methods, csv) + Summary(options, methods);
   for (Method& m : methods)
   {
     if (m.Pass)
     {
-      m.Pass->ReleaseGraphicsResources(window);
+      m.Pass->ReleaseGraphicsResources(view.Window);
     }
   }
-  if (!DeepGIOutput::WriteText(options.Output + "/benchmark-gbuffer.md", md.str(), outputError) ||
-    !DeepGIOutput::WriteText(options.Output + "/benchmark-gbuffer.csv", csv.str(), outputError))
-  {
-    std::fprintf(stderr, "deepgi-benchmark-gbuffer: %s\n", outputError.c_str());
-    return 1;
-  }
-  return 0;
+  return WriteTables(Program, options.Output, "benchmark-gbuffer", markdown, csv) ? 0 : 1;
 }

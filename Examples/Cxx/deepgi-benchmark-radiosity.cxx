@@ -51,7 +51,6 @@
 #include "vtkDeepGBufferSceneLoader.h"
 #include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIReferenceIrradiance.h"
-#include "vtkDeepGIRenderWindowFactory.h"
 #include "vtkDeepRadiosityPass.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
@@ -82,26 +81,6 @@ namespace
 using namespace DeepGIBenchmark;
 const char* const Program = "deepgi-benchmark-radiosity";
 const char* const SceneNames[] = { "demo", "cornell-lucy", "cornell-original", "dragon" };
-
-struct Options
-{
-  int Width = 320;
-  int Height = 240;
-  int AccuracyWidth = 200;
-  int AccuracyHeight = 150;
-  int Frames = 5;
-  int Rounds = 2;
-  int Warmup = 2;
-  int Samples = 64;
-  int Backend = vtkDeepGIRenderWindowFactory::BACKEND_AUTO;
-  std::string Output = "output";
-  std::string Data = DEEPGI_DATA_DIR;
-  std::vector<std::string> Scenes = { "demo", "cornell-lucy", "cornell-original", "dragon" };
-  std::vector<std::string> Methods;
-  bool ErrorMaps = true;
-  int Bounces = 4;
-  double RadiusFraction = 0.0; // > 0: every pass's AutomaticRadiusFraction; 0: the pass's default
-};
 
 // Still frames of the multi-bounce measurement: frame t adds bounce t, so
 // after 20 frames the remaining terms are (delta rho K)^20, far below the
@@ -211,108 +190,36 @@ bool ParseMethod(const std::string& spec, Method& m)
   return true;
 }
 
+struct Options : AccuracyOptions
+{
+  // RadiusFraction: > 0: every pass's AutomaticRadiusFraction; 0 (the
+  // default): the pass's own.
+  Options()
+    : AccuracyOptions({ 320, 240 }, { 200, 150 }, 5, 2, 64,
+        std::vector<std::string>(std::begin(SceneNames), std::end(SceneNames)), DefaultMethods)
+  {
+    this->Data = DEEPGI_DATA_DIR;
+  }
+  int Bounces = 4;
+  std::vector<Method> Methods;
+};
+
 bool ParseOptions(int argc, char* argv[], Options& o)
 {
-  std::string methods = DefaultMethods;
-  auto bad = [](const std::string& what)
-  {
-    std::fprintf(stderr, "%s: %s\n", Program, what.c_str());
-    return false;
-  };
-  for (int i = 1; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h")
+  const CommandLine commandLine{ Program, Usage,
+    std::vector<std::string>(std::begin(SceneNames), std::end(SceneNames)), { "--bounces" },
+    [&o](const std::string&, const std::string& value, std::string& error)
     {
-      Usage();
-      std::exit(0);
-    }
-    if (arg == "--no-error-maps")
-    {
-      o.ErrorMaps = false;
-      continue;
-    }
-    static const char* const withValue[] = { "--size", "--accuracy-size", "--frames", "--rounds",
-      "--samples", "--radius-fraction", "--scenes", "--methods", "--bounces", "--data", "--backend",
-      "--output" };
-    if (std::find_if(std::begin(withValue), std::end(withValue),
-          [&](const char* s) { return arg == s; }) == std::end(withValue))
-    {
-      return bad("unknown option " + arg);
-    }
-    if (i + 1 >= argc)
-    {
-      return bad(arg + " needs a value");
-    }
-    const std::string value = argv[++i];
-    if (arg == "--size" && !ParseSize(value, o.Width, o.Height))
-    {
-      return bad("--size needs WxH with 16..8192 pixels per side, got '" + value + "'");
-    }
-    if (arg == "--accuracy-size" && !ParseSize(value, o.AccuracyWidth, o.AccuracyHeight))
-    {
-      return bad("--accuracy-size needs WxH with 16..8192 pixels per side, got '" + value + "'");
-    }
-    if (arg == "--frames" && (!ParseInt(value, o.Frames) || o.Frames < 1 || o.Frames > 10000))
-    {
-      return bad("--frames needs an integer 1..10000, got '" + value + "'");
-    }
-    if (arg == "--rounds" && (!ParseInt(value, o.Rounds) || o.Rounds < 1 || o.Rounds > 100))
-    {
-      return bad("--rounds needs an integer 1..100, got '" + value + "'");
-    }
-    if (arg == "--samples" && (!ParseInt(value, o.Samples) || o.Samples < 1 || o.Samples > 1048576))
-    {
-      return bad("--samples needs an integer 1..1048576, got '" + value + "'");
-    }
-    if (arg == "--radius-fraction" && !ParseFraction(value, o.RadiusFraction))
-    {
-      return bad("--radius-fraction needs a number in (0, 1], got '" + value + "'");
-    }
-    if (arg == "--bounces" && (!ParseInt(value, o.Bounces) || o.Bounces < 0 || o.Bounces > 16))
-    {
-      return bad("--bounces needs an integer 0..16, got '" + value + "'");
-    }
-    if (arg == "--scenes")
-    {
-      o.Scenes = Split(value, ',');
-      if (o.Scenes.empty())
+      if (!ParseInt(value, o.Bounces) || o.Bounces < 0 || o.Bounces > 16)
       {
-        return bad("--scenes needs at least one scene");
+        error = "--bounces needs an integer 0..16, got '" + value + "'";
+        return false;
       }
-      for (const std::string& s : o.Scenes)
-      {
-        if (std::find(std::begin(SceneNames), std::end(SceneNames), s) == std::end(SceneNames))
-        {
-          return bad("unknown scene '" + s + "' (demo, cornell-lucy, cornell-original, dragon)");
-        }
-      }
-    }
-    if (arg == "--methods")
-    {
-      methods = value;
-    }
-    std::string error;
-    if (!ParseSharedOption(arg, value, o.Data, o.Backend, o.Output, error))
-    {
-      return bad(error);
-    }
-  }
-  o.Methods = Split(methods, ',');
-  if (o.Methods.empty())
-  {
-    return bad("--methods needs at least one method");
-  }
-  for (const std::string& m : o.Methods)
-  {
-    Method parsed;
-    if (!ParseMethod(m, parsed))
-    {
-      return bad(
-        "unknown method '" + m + "' (L:P[:nt][:n|sa][:gb], L 1 or 2, P hp, balanced or hq)");
-    }
-  }
-  return true;
+      return true;
+    } };
+  return ParseAccuracyOptions(argc, argv, commandLine, o) &&
+    ParseMethodList(Program, o.MethodList, ParseMethod,
+      "L:P[:nt][:n|sa][:gb], L 1 or 2, P hp, balanced or hq", o.Methods);
 }
 
 /// Luminance of the RGB array `name` of `image` per pixel (0 if absent).
@@ -543,391 +450,420 @@ struct SceneInfo
   double GBuffer1Ms, GBuffer2Ms;
   long Valid, Layer1;
 };
+
+/// Everything measured, in the order of the scenes.
+struct Measurements
+{
+  std::vector<Result> Results;
+  std::vector<BounceResult> Bounces;
+  std::vector<SceneInfo> Scenes;
+};
+
+/// One G-buffer per layer count, shared by the methods that use it, and
+/// a two-layer one with the default guard band for the "gb" methods.
+struct GBuffers
+{
+  GBuffers()
+  {
+    this->OneLayer->SetNumberOfLayers(1);
+    this->TwoLayers->SetNumberOfLayers(2);
+    this->TwoLayersGuarded->SetNumberOfLayers(2);
+    this->TwoLayersGuarded->SetGuardBand(vtkDeepRadiosityPass::DEFAULT_GUARD_BAND);
+  }
+  vtkNew<vtkDeepGBufferPass> OneLayer, TwoLayers, TwoLayersGuarded;
+};
+
+/// The still frame at the accuracy size that every method is measured on,
+/// and the ray-traced one-bounce irradiance of its layer 0.
+struct AccuracyFrame
+{
+  std::string Scene;
+  int Width = 0, Height = 0;
+  vtkSmartPointer<vtkImageData> Capture = vtkSmartPointer<vtkImageData>::New(); // two layers
+  std::vector<unsigned char> Valid;                                             // layer 0 valid
+  std::vector<unsigned char> Layer1; // valid, and layer 1 exists
+  std::vector<unsigned char> Border; // valid, within BorderFraction of the frame's edge
+  long ValidCount = 0, Layer1Count = 0;
+  double Radius = 0.0;                              // the passes' effective gather radius r
+  std::vector<float> Reference, ReferenceUnlimited; // luminance of E_ref,r and of E_ref
+  double MeanReference = 0.0, MeanReferenceUnlimited = 0.0;
+  double ReferenceError = 0.0, ReferenceSeconds = 0.0;
+};
+
+/// Mean of `values` over the pixels of `mask` (`count` of them).
+double MaskedMean(
+  const std::vector<float>& values, const std::vector<unsigned char>& mask, long count)
+{
+  double sum = 0;
+  for (size_t i = 0; i < values.size(); ++i)
+  {
+    sum += mask[i] ? values[i] : 0.0;
+  }
+  return sum / std::max(1L, count);
 }
 
-int main(int argc, char* argv[])
+/// Every method's pass, in the order of the methods.
+std::vector<vtkSmartPointer<vtkDeepRadiosityPass>> MakePasses(const Options& o, GBuffers& gbuffers)
 {
-  Options options;
-  if (!ParseOptions(argc, argv, options))
+  std::vector<vtkSmartPointer<vtkDeepRadiosityPass>> passes;
+  for (const Method& m : o.Methods)
   {
-    Usage();
-    return 2;
+    auto pass = vtkSmartPointer<vtkDeepRadiosityPass>::New();
+    pass->SetGBufferPass(m.Layers == 1 ? gbuffers.OneLayer.GetPointer()
+        : m.GuardBand                  ? gbuffers.TwoLayersGuarded.GetPointer()
+                                       : gbuffers.TwoLayers.GetPointer());
+    pass->SetPreset(m.Preset);
+    // Table 2's configurations as the paper runs them: every texel
+    // gathers (HIGH_PERFORMANCE's reduced grid is measured by
+    // deepgi_benchmark_frame.py and the image benchmark).
+    pass->SetResolutionDivisor(1);
+    pass->SetUseNormalTest(m.NormalTest);
+    pass->SetEstimator(m.Estimator);
+    pass->SetDamping(0.0);
+    pass->SetTemporalAlpha(0.0);
+    if (o.RadiusFraction > 0.0)
+    {
+      pass->SetAutomaticRadiusFraction(o.RadiusFraction);
+    }
+    passes.push_back(pass);
   }
-  std::vector<Method> methods;
-  for (const std::string& spec : options.Methods)
-  {
-    Method m;
-    ParseMethod(spec, m);
-    methods.push_back(m);
-  }
-  // The outputs are checked before the hours of measuring.
-  std::string outputError;
-  if (!DeepGIOutput::PrepareDirectory(options.Output, outputError) ||
-    (options.ErrorMaps && !DeepGIOutput::PrepareDirectory(options.Output + "/errors", outputError)))
-  {
-    std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
-    return 1;
-  }
+  return passes;
+}
 
+/// The two-layer G-buffer's capture of a still frame and its pixel masks.
+bool CaptureAccuracyFrame(const View& view, vtkDeepGBufferPass* gbuffer, AccuracyFrame& frame)
+{
+  view.Renderer->SetPass(gbuffer);
+  view.Window->Render();
+  if (!gbuffer->CaptureLayers(frame.Capture, view.Renderer))
+  {
+    return Report(Program, "the G-buffer capture failed on " + frame.Scene);
+  }
+  const int w = frame.Width, h = frame.Height;
+  const size_t np = static_cast<size_t>(w) * h;
+  const std::vector<float> valid0 =
+    Scalar(frame.Capture, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0).c_str());
+  const std::vector<float> valid1 =
+    Scalar(frame.Capture, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 1).c_str());
+  frame.Valid.assign(np, 0);
+  frame.Layer1.assign(np, 0);
+  frame.Border.assign(np, 0);
+  const int borderWidth = static_cast<int>(std::lround(BorderFraction * h));
+  for (size_t i = 0; i < np; ++i)
+  {
+    const int x = static_cast<int>(i % w), y = static_cast<int>(i / w);
+    frame.Valid[i] = valid0[i] > 0;
+    frame.Layer1[i] = frame.Valid[i] && valid1[i] > 0;
+    frame.Border[i] = frame.Valid[i] &&
+      (x < borderWidth || y < borderWidth || x >= w - borderWidth || y >= h - borderWidth);
+    frame.ValidCount += frame.Valid[i];
+    frame.Layer1Count += frame.Layer1[i];
+  }
+  return true;
+}
+
+/// Every method's still frame (the radius is the same automatic r).
+bool CaptureStillFrames(const View& view,
+  const std::vector<vtkSmartPointer<vtkDeepRadiosityPass>>& passes, const std::string& scene,
+  std::vector<vtkSmartPointer<vtkImageData>>& captures)
+{
+  for (const auto& pass : passes)
+  {
+    view.Renderer->SetPass(pass);
+    view.Window->Render();
+    auto c = vtkSmartPointer<vtkImageData>::New();
+    if (!pass->CaptureIrradiance(c, view.Renderer))
+    {
+      return Report(Program, "the radiosity capture failed on " + scene);
+    }
+    captures.push_back(c);
+  }
+  return true;
+}
+
+/// The luminance of the reference's indirect irradiance with
+/// MaximumDistance r (`limited`, its mean standard error in
+/// `limitedError`) and unlimited, on the frame's capture.
+bool ComputeLimitedAndUnlimited(vtkDeepGIReferenceIrradiance* reference, const AccuracyFrame& frame,
+  std::vector<float>& limited, std::vector<float>& unlimited, double& limitedError)
+{
+  reference->SetMaximumDistance(frame.Radius);
+  if (!reference->Compute(frame.Capture))
+  {
+    return Report(Program, "the reference failed on " + frame.Scene);
+  }
+  limited = Luminance(reference->GetOutput(), "IndirectIrradiance");
+  limitedError = reference->GetMeanStandardError();
+  reference->SetMaximumDistance(VTK_DOUBLE_MAX);
+  if (!reference->Compute(frame.Capture))
+  {
+    return Report(Program, "the reference failed on " + frame.Scene);
+  }
+  unlimited = Luminance(reference->GetOutput(), "IndirectIrradiance");
+  return true;
+}
+
+/// The one-bounce reference of the frame, limited to r and unlimited.
+bool ComputeReference(const Options& o, vtkPolyData* geometry, vtkRenderer* renderer,
+  vtkDeepGIReferenceIrradiance* reference, AccuracyFrame& frame)
+{
+  // The loaders' scene polydata carry the cell arrays the reference reads:
+  // "Colors" and "Diffuse", and for emitters (cornell-original's lamp)
+  // "Emission", the colour the lamp is drawn with, so the reference sees
+  // the same sources as the pass's B(Y) = Radiance - Ambient.
+  reference->SetScene(geometry);
+  reference->SetEmissionArrayName("Emission");
+  reference->SetLightsFromRenderer(renderer);
+  reference->SetSamplesPerPixel(o.Samples);
+  reference->SetLayer(0);
+  const auto start = std::chrono::steady_clock::now();
+  if (!ComputeLimitedAndUnlimited(
+        reference, frame, frame.Reference, frame.ReferenceUnlimited, frame.ReferenceError))
+  {
+    return false;
+  }
+  frame.ReferenceSeconds = SecondsSince(start);
+  frame.MeanReference = MaskedMean(frame.Reference, frame.Valid, frame.ValidCount);
+  frame.MeanReferenceUnlimited =
+    MaskedMean(frame.ReferenceUnlimited, frame.Valid, frame.ValidCount);
+  return true;
+}
+
+/// Method `m`'s errors from its still frame's capture `c`: E (layer 0,
+/// after the filter) against both references, on all valid pixels, on
+/// layer 1's and on the border's; eq. 4 against dividing by N; error by
+/// confidence. The error map of E - E_ref,r into `error`.
+Result MeasureMethod(
+  const Method& m, vtkImageData* c, const AccuracyFrame& frame, std::vector<float>& error)
+{
+  const std::vector<float>& ref = frame.Reference;
+  const std::vector<float> e =
+    Luminance(c, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 0).c_str());
+  const std::vector<float> conf =
+    Scalar(c, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Confidence, 0).c_str());
+  const std::vector<float> raw =
+    Luminance(c, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::RawIrradiance, 0).c_str());
+  const std::vector<float> rawConf =
+    Scalar(c, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::RawConfidence, 0).c_str());
+  const size_t np = e.size();
+  std::vector<float> eN(np), rawN(np);
+  error.resize(np);
+  for (size_t i = 0; i < np; ++i)
+  {
+    eN[i] = e[i] * conf[i];
+    rawN[i] = raw[i] * rawConf[i];
+    error[i] = e[i] - ref[i];
+  }
+  Result res;
+  res.Scene = frame.Scene;
+  res.M = m;
+  res.Radius = frame.Radius;
+  res.Limited = Errors(e, ref, frame.Valid);
+  res.Unlimited = Errors(e, frame.ReferenceUnlimited, frame.Valid);
+  res.Layer1 = Errors(e, ref, frame.Layer1);
+  res.Border = Errors(e, ref, frame.Border);
+  res.BorderUnlimited = Errors(e, frame.ReferenceUnlimited, frame.Border);
+  res.RawM = Errors(raw, ref, frame.Valid);
+  res.RawN = Errors(rawN, ref, frame.Valid);
+  res.FilteredN = Errors(eN, ref, frame.Valid);
+  const auto byConfidence = ErrorByConfidence(e, ref, conf, frame.Valid);
+  res.LowConfidenceError = byConfidence.first;
+  res.HighConfidenceError = byConfidence.second;
+  return res;
+}
+
+/// Every method's accuracy (into `results`), with its error map.
+bool MeasureAccuracy(const Options& o, const std::vector<vtkSmartPointer<vtkImageData>>& captures,
+  const AccuracyFrame& frame, std::vector<Result>& results)
+{
+  for (size_t k = 0; k < o.Methods.size(); ++k)
+  {
+    std::vector<float> error;
+    results.push_back(MeasureMethod(o.Methods[k], captures[k], frame, error));
+    std::string message;
+    if (o.ErrorMaps &&
+      !WriteErrorMap(ErrorMapFile(o.Output, frame.Scene, o.Methods[k].Name), frame.Width,
+        frame.Height, error, frame.Valid, 2.0 * std::max(1e-6, frame.MeanReference), message))
+    {
+      return Report(Program, message);
+    }
+  }
+  return true;
+}
+
+/// The last of a series of still frames of one pass.
+struct StillSeries
+{
+  std::vector<float> Last; // luminance of E in the last frame
+  double Change = 0;       // RMS change of E from the frame before, over the mean E
+  int UnchangedFrom = 0;   // the first frame that did not change E at all (0: none)
+};
+
+/// `frames` still frames of a fresh two-layer SOLID_ANGLE BALANCED pass on
+/// `gbuffer` (the one with the guard band) with Damping `delta`.
+bool RenderStillSeries(const Options& o, const View& view, vtkDeepGBufferPass* gbuffer,
+  const AccuracyFrame& frame, double delta, int frames, StillSeries& series)
+{
+  vtkNew<vtkDeepRadiosityPass> pass;
+  pass->SetGBufferPass(gbuffer);
+  pass->SetPreset(vtkDeepRadiosityPass::BALANCED);
+  pass->SetEstimator(vtkDeepRadiosityPass::SOLID_ANGLE);
+  pass->SetUseNormalTest(true);
+  pass->SetDamping(delta);
+  pass->SetTemporalAlpha(0.0);
+  if (o.RadiusFraction > 0.0)
+  {
+    pass->SetAutomaticRadiusFraction(o.RadiusFraction);
+  }
+  view.Renderer->SetPass(pass);
+  bool ok = true;
+  std::vector<float> before;
+  const long valid = std::max(1L, frame.ValidCount);
+  for (int f = 1; f <= frames && ok; ++f)
+  {
+    view.Window->Render();
+    vtkNew<vtkImageData> c;
+    ok = pass->CaptureIrradiance(c, view.Renderer);
+    before.swap(series.Last);
+    series.Last =
+      Luminance(c, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 0).c_str());
+    if (f > 1)
+    {
+      double d2 = 0, sum = 0;
+      for (size_t i = 0; i < series.Last.size(); ++i)
+      {
+        const float d = series.Last[i] - before[i];
+        d2 += frame.Valid[i] ? d * d : 0.0;
+        sum += frame.Valid[i] ? series.Last[i] : 0.0;
+      }
+      series.Change = std::sqrt(d2 / valid) / std::max(1e-12, sum / valid);
+      series.UnchangedFrom = d2 == 0.0 && series.UnchangedFrom == 0 ? f : series.UnchangedFrom;
+    }
+  }
+  view.Renderer->SetPass(nullptr);
+  pass->ReleaseGraphicsResources(view.Window);
+  return ok || Report(Program, "the radiosity capture failed on " + frame.Scene);
+}
+
+/// The converged damped bounces (Damping 1 and 0.5) against the reference
+/// with NumberOfBounces = --bounces, and the first frame with Damping 0
+/// against the one-bounce reference.
+bool MeasureBounces(const Options& o, const View& view, vtkDeepGBufferPass* gbuffer,
+  vtkDeepGIReferenceIrradiance* reference, const AccuracyFrame& frame,
+  std::vector<BounceResult>& bounces)
+{
+  StillSeries single;
+  if (!RenderStillSeries(o, view, gbuffer, frame, 0.0, 1, single))
+  {
+    return false;
+  }
+  const Stats oneBounce = Errors(single.Last, frame.Reference, frame.Valid);
+  for (double delta : { 1.0, 0.5 })
+  {
+    BounceResult b;
+    b.Scene = frame.Scene;
+    b.Damping = delta;
+    b.OneBounce = oneBounce;
+    StillSeries series;
+    if (!RenderStillSeries(o, view, gbuffer, frame, delta, BounceFrames, series))
+    {
+      return false;
+    }
+    b.Change = series.Change;
+    b.UnchangedFrom = series.UnchangedFrom;
+    b.MeanPass = MaskedMean(series.Last, frame.Valid, frame.ValidCount);
+    const auto start = std::chrono::steady_clock::now();
+    reference->SetNumberOfBounces(o.Bounces);
+    reference->SetBounceDamping(delta);
+    std::vector<float> refN, refNAll;
+    if (!ComputeLimitedAndUnlimited(reference, frame, refN, refNAll, b.ReferenceError))
+    {
+      return false;
+    }
+    b.ReferenceSeconds = SecondsSince(start);
+    b.MeanReference = MaskedMean(refN, frame.Valid, frame.ValidCount);
+    b.MeanReferenceUnlimited = MaskedMean(refNAll, frame.Valid, frame.ValidCount);
+    b.Limited = Errors(series.Last, refN, frame.Valid);
+    b.Unlimited = Errors(series.Last, refNAll, frame.Valid);
+    bounces.push_back(b);
+  }
+  reference->SetNumberOfBounces(1);
+  reference->SetBounceDamping(1.0);
+  return true;
+}
+
+/// Accuracy, multiple bounces, then time of every method on `sceneName`.
+bool MeasureScene(const Options& o, const std::string& sceneName, Measurements& measured)
+{
+  View view;
+  if (!OpenView(Program, o.Backend, o.AccuracyWidth, o.AccuracyHeight, view))
+  {
+    return false;
+  }
+  view.Renderer->SetBackground(0.0, 0.0, 0.0);
+  vtkSmartPointer<vtkObject> keep;
+  vtkSmartPointer<vtkPolyData> geometry = LoadScene(o, sceneName, view.Renderer, keep);
+  if (!geometry)
+  {
+    return false;
+  }
+  GBuffers gbuffers;
+  const std::vector<vtkSmartPointer<vtkDeepRadiosityPass>> passes = MakePasses(o, gbuffers);
+  AccuracyFrame frame;
+  frame.Scene = sceneName;
+  frame.Width = o.AccuracyWidth;
+  frame.Height = o.AccuracyHeight;
+  std::vector<vtkSmartPointer<vtkImageData>> captures;
+  if (!CaptureAccuracyFrame(view, gbuffers.TwoLayers, frame) ||
+    !CaptureStillFrames(view, passes, sceneName, captures))
+  {
+    return false;
+  }
+  frame.Radius = passes.front()->GetEffectiveRadius();
+  vtkNew<vtkDeepGIReferenceIrradiance> reference;
   std::vector<Result> results;
-  std::vector<SceneInfo> infos;
-  std::vector<BounceResult> bounceResults;
-  for (const std::string& sceneName : options.Scenes)
+  if (!ComputeReference(o, geometry, view.Renderer, reference, frame) ||
+    !MeasureAccuracy(o, captures, frame, results) ||
+    (o.Bounces > 0 &&
+      !MeasureBounces(o, view, gbuffers.TwoLayersGuarded, reference, frame, measured.Bounces)))
   {
-    vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::Take(
-      vtkDeepGIRenderWindowFactory::NewRenderWindow(options.Backend));
-    if (!window)
-    {
-      std::fprintf(stderr, "%s: no render window for this backend\n", Program);
-      return 1;
-    }
-    window->SetMultiSamples(0);
-    window->SetOffScreenRendering(1);
-    window->SetSize(options.AccuracyWidth, options.AccuracyHeight);
-    vtkNew<vtkRenderer> renderer;
-    renderer->SetBackground(0.0, 0.0, 0.0);
-    window->AddRenderer(renderer);
-    vtkSmartPointer<vtkObject> keep;
-    vtkSmartPointer<vtkPolyData> geometry = LoadScene(options, sceneName, renderer, keep);
-    if (!geometry)
-    {
-      return 1;
-    }
-
-    // One G-buffer per layer count, shared by the methods that use it, and
-    // a two-layer one with the default guard band for the "gb" methods.
-    vtkNew<vtkDeepGBufferPass> gbuffer1, gbuffer2, gbuffer2Guard;
-    gbuffer1->SetNumberOfLayers(1);
-    gbuffer2->SetNumberOfLayers(2);
-    gbuffer2Guard->SetNumberOfLayers(2);
-    gbuffer2Guard->SetGuardBand(vtkDeepRadiosityPass::DEFAULT_GUARD_BAND);
-    std::vector<vtkSmartPointer<vtkDeepRadiosityPass>> passes;
-    for (const Method& m : methods)
-    {
-      auto pass = vtkSmartPointer<vtkDeepRadiosityPass>::New();
-      pass->SetGBufferPass(m.Layers == 1 ? gbuffer1.GetPointer()
-          : m.GuardBand                  ? gbuffer2Guard.GetPointer()
-                                         : gbuffer2.GetPointer());
-      pass->SetPreset(m.Preset);
-      // Table 2's configurations as the paper runs them: every texel
-      // gathers (HIGH_PERFORMANCE's reduced grid is measured by
-      // deepgi_benchmark_frame.py and the image benchmark).
-      pass->SetResolutionDivisor(1);
-      pass->SetUseNormalTest(m.NormalTest);
-      pass->SetEstimator(m.Estimator);
-      pass->SetDamping(0.0);
-      pass->SetTemporalAlpha(0.0);
-      if (options.RadiusFraction > 0.0)
-      {
-        pass->SetAutomaticRadiusFraction(options.RadiusFraction);
-      }
-      passes.push_back(pass);
-    }
-
-    // ---- accuracy ----
-    renderer->SetPass(gbuffer2);
-    window->Render();
-    vtkNew<vtkImageData> capture;
-    if (!gbuffer2->CaptureLayers(capture, renderer))
-    {
-      std::fprintf(stderr, "%s: the G-buffer capture failed on %s\n", Program, sceneName.c_str());
-      return 1;
-    }
-    const int w = options.AccuracyWidth, h = options.AccuracyHeight;
-    const size_t np = static_cast<size_t>(w) * h;
-    const std::vector<float> valid0 =
-      Scalar(capture, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0).c_str());
-    const std::vector<float> valid1 =
-      Scalar(capture, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 1).c_str());
-    std::vector<unsigned char> mask(np, 0), layer1(np, 0), border(np, 0);
-    long nValid = 0, nLayer1 = 0;
-    const int borderWidth = static_cast<int>(std::lround(BorderFraction * h));
-    for (size_t i = 0; i < np; ++i)
-    {
-      const int x = static_cast<int>(i % w), y = static_cast<int>(i / w);
-      mask[i] = valid0[i] > 0;
-      layer1[i] = mask[i] && valid1[i] > 0;
-      border[i] = mask[i] &&
-        (x < borderWidth || y < borderWidth || x >= w - borderWidth || y >= h - borderWidth);
-      nValid += mask[i];
-      nLayer1 += layer1[i];
-    }
-
-    // Every method's still frame (the radius is the same automatic r).
-    std::vector<vtkSmartPointer<vtkImageData>> captures;
-    for (auto& pass : passes)
-    {
-      renderer->SetPass(pass);
-      window->Render();
-      auto c = vtkSmartPointer<vtkImageData>::New();
-      if (!pass->CaptureIrradiance(c, renderer))
-      {
-        std::fprintf(
-          stderr, "%s: the radiosity capture failed on %s\n", Program, sceneName.c_str());
-        return 1;
-      }
-      captures.push_back(c);
-    }
-    const double r = passes.front()->GetEffectiveRadius();
-
-    vtkNew<vtkDeepGIReferenceIrradiance> reference;
-    // The loaders' scene polydata carry the cell arrays the reference reads:
-    // "Colors" and "Diffuse", and for emitters (cornell-original's lamp)
-    // "Emission", the colour the lamp is drawn with, so the reference sees
-    // the same sources as the pass's B(Y) = Radiance - Ambient.
-    reference->SetScene(geometry);
-    reference->SetEmissionArrayName("Emission");
-    reference->SetLightsFromRenderer(renderer);
-    reference->SetSamplesPerPixel(options.Samples);
-    reference->SetLayer(0);
-    const auto refStart = std::chrono::steady_clock::now();
-    reference->SetMaximumDistance(r);
-    if (!reference->Compute(capture))
-    {
-      std::fprintf(stderr, "%s: the reference failed on %s\n", Program, sceneName.c_str());
-      return 1;
-    }
-    const std::vector<float> ref = Luminance(reference->GetOutput(), "IndirectIrradiance");
-    const double refError = reference->GetMeanStandardError();
-    reference->SetMaximumDistance(VTK_DOUBLE_MAX);
-    if (!reference->Compute(capture))
-    {
-      std::fprintf(stderr, "%s: the reference failed on %s\n", Program, sceneName.c_str());
-      return 1;
-    }
-    const std::vector<float> refAll = Luminance(reference->GetOutput(), "IndirectIrradiance");
-    const double refSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - refStart).count();
-    double meanRef = 0, meanRefAll = 0;
-    for (size_t i = 0; i < np; ++i)
-    {
-      meanRef += mask[i] ? ref[i] : 0.0;
-      meanRefAll += mask[i] ? refAll[i] : 0.0;
-    }
-    meanRef /= std::max(1L, nValid);
-    meanRefAll /= std::max(1L, nValid);
-
-    std::vector<Result> sceneResults;
-    for (size_t k = 0; k < methods.size(); ++k)
-    {
-      vtkImageData* c = captures[k];
-      const std::vector<float> e =
-        Luminance(c, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 0).c_str());
-      const std::vector<float> conf =
-        Scalar(c, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Confidence, 0).c_str());
-      const std::vector<float> raw =
-        Luminance(c, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::RawIrradiance, 0).c_str());
-      const std::vector<float> rawConf =
-        Scalar(c, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::RawConfidence, 0).c_str());
-      std::vector<float> eN(np), rawN(np), error(np);
-      for (size_t i = 0; i < np; ++i)
-      {
-        eN[i] = e[i] * conf[i];
-        rawN[i] = raw[i] * rawConf[i];
-        error[i] = e[i] - ref[i];
-      }
-      Result res;
-      res.Scene = sceneName;
-      res.M = methods[k];
-      res.Radius = r;
-      res.Limited = Errors(e, ref, mask);
-      res.Unlimited = Errors(e, refAll, mask);
-      res.Layer1 = Errors(e, ref, layer1);
-      res.Border = Errors(e, ref, border);
-      res.BorderUnlimited = Errors(e, refAll, border);
-      res.RawM = Errors(raw, ref, mask);
-      res.RawN = Errors(rawN, ref, mask);
-      res.FilteredN = Errors(eN, ref, mask);
-      const auto byConfidence = ErrorByConfidence(e, ref, conf, mask);
-      res.LowConfidenceError = byConfidence.first;
-      res.HighConfidenceError = byConfidence.second;
-      if (options.ErrorMaps)
-      {
-        if (!WriteErrorMap(
-              options.Output + "/errors/" + sceneName + "-" + FileTag(methods[k].Name) + ".png", w,
-              h, error, mask, 2.0 * std::max(1e-6, meanRef), outputError))
-        {
-          std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
-          return 1;
-        }
-      }
-      sceneResults.push_back(res);
-    }
-
-    // ---- multiple bounces ----
-    if (options.Bounces > 0)
-    {
-      // `frames` still frames of a fresh two-layer SOLID_ANGLE BALANCED pass
-      // with the guard band and Damping `delta`: the luminance of E in the
-      // last frame, the RMS change of E from the frame before over the mean
-      // E, and the first frame that did not change E at all (0: none).
-      auto still = [&](double delta, int frames, std::vector<float>& last, double& change,
-                     int& unchangedFrom) -> bool
-      {
-        vtkNew<vtkDeepRadiosityPass> pass;
-        pass->SetGBufferPass(gbuffer2Guard);
-        pass->SetPreset(vtkDeepRadiosityPass::BALANCED);
-        pass->SetEstimator(vtkDeepRadiosityPass::SOLID_ANGLE);
-        pass->SetUseNormalTest(true);
-        pass->SetDamping(delta);
-        pass->SetTemporalAlpha(0.0);
-        if (options.RadiusFraction > 0.0)
-        {
-          pass->SetAutomaticRadiusFraction(options.RadiusFraction);
-        }
-        renderer->SetPass(pass);
-        bool ok = true;
-        change = 0;
-        unchangedFrom = 0;
-        std::vector<float> before;
-        for (int f = 1; f <= frames && ok; ++f)
-        {
-          window->Render();
-          vtkNew<vtkImageData> c;
-          ok = pass->CaptureIrradiance(c, renderer);
-          before.swap(last);
-          last = Luminance(
-            c, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 0).c_str());
-          if (f > 1)
-          {
-            double d2 = 0, sum = 0;
-            for (size_t i = 0; i < np; ++i)
-            {
-              d2 += mask[i] ? (last[i] - before[i]) * (last[i] - before[i]) : 0.0;
-              sum += mask[i] ? last[i] : 0.0;
-            }
-            change =
-              std::sqrt(d2 / std::max(1L, nValid)) / std::max(1e-12, sum / std::max(1L, nValid));
-            unchangedFrom = d2 == 0.0 && unchangedFrom == 0 ? f : unchangedFrom;
-          }
-        }
-        renderer->SetPass(nullptr);
-        pass->ReleaseGraphicsResources(window);
-        if (!ok)
-        {
-          std::fprintf(
-            stderr, "%s: the radiosity capture failed on %s\n", Program, sceneName.c_str());
-        }
-        return ok;
-      };
-      std::vector<float> single;
-      double unusedChange;
-      int unusedFrame;
-      if (!still(0.0, 1, single, unusedChange, unusedFrame))
-      {
-        return 1;
-      }
-      const Stats oneBounce = Errors(single, ref, mask);
-      for (double delta : { 1.0, 0.5 })
-      {
-        BounceResult b;
-        b.Scene = sceneName;
-        b.Damping = delta;
-        b.OneBounce = oneBounce;
-        std::vector<float> e;
-        if (!still(delta, BounceFrames, e, b.Change, b.UnchangedFrom))
-        {
-          return 1;
-        }
-        for (size_t i = 0; i < np; ++i)
-        {
-          b.MeanPass += mask[i] ? e[i] : 0.0;
-        }
-        b.MeanPass /= std::max(1L, nValid);
-        const auto start = std::chrono::steady_clock::now();
-        reference->SetNumberOfBounces(options.Bounces);
-        reference->SetBounceDamping(delta);
-        reference->SetMaximumDistance(r);
-        if (!reference->Compute(capture))
-        {
-          std::fprintf(stderr, "%s: the reference failed on %s\n", Program, sceneName.c_str());
-          return 1;
-        }
-        const std::vector<float> refN = Luminance(reference->GetOutput(), "IndirectIrradiance");
-        b.ReferenceError = reference->GetMeanStandardError();
-        reference->SetMaximumDistance(VTK_DOUBLE_MAX);
-        if (!reference->Compute(capture))
-        {
-          std::fprintf(stderr, "%s: the reference failed on %s\n", Program, sceneName.c_str());
-          return 1;
-        }
-        const std::vector<float> refNAll = Luminance(reference->GetOutput(), "IndirectIrradiance");
-        b.ReferenceSeconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        for (size_t i = 0; i < np; ++i)
-        {
-          b.MeanReference += mask[i] ? refN[i] : 0.0;
-          b.MeanReferenceUnlimited += mask[i] ? refNAll[i] : 0.0;
-        }
-        b.MeanReference /= std::max(1L, nValid);
-        b.MeanReferenceUnlimited /= std::max(1L, nValid);
-        b.Limited = Errors(e, refN, mask);
-        b.Unlimited = Errors(e, refNAll, mask);
-        bounceResults.push_back(b);
-      }
-      reference->SetNumberOfBounces(1);
-      reference->SetBounceDamping(1.0);
-    }
-
-    // ---- time ----
-    window->SetSize(options.Width, options.Height);
-    std::vector<std::vector<double>> ms(methods.size() + 2);
-    for (int round = 0; round < options.Rounds; ++round)
-    {
-      for (size_t k = 0; k < methods.size() + 2; ++k)
-      {
-        vtkRenderPass* pass = nullptr;
-        if (k < 2)
-        {
-          pass = k == 0 ? gbuffer1.GetPointer() : gbuffer2.GetPointer();
-        }
-        else
-        {
-          pass = passes[k - 2];
-        }
-        renderer->SetPass(pass);
-        const std::vector<double> t = TimeFrames(
-          [&]()
-          {
-            window->Render();
-            window->WaitForCompletion();
-          },
-          options.Warmup, options.Frames);
-        ms[k].insert(ms[k].end(), t.begin(), t.end());
-      }
-    }
-    for (size_t k = 0; k < methods.size(); ++k)
-    {
-      sceneResults[k].FrameMs = Median(ms[k + 2]);
-      results.push_back(sceneResults[k]);
-    }
-    infos.push_back({ sceneName, geometry->GetNumberOfPolys(), r, meanRef, meanRefAll, refError,
-      refSeconds, Median(ms[0]), Median(ms[1]), nValid, nLayer1 });
-    renderer->SetPass(nullptr);
-    for (auto& p : passes)
-    {
-      p->ReleaseGraphicsResources(window);
-    }
-    gbuffer1->ReleaseGraphicsResources(window);
-    gbuffer2->ReleaseGraphicsResources(window);
-    gbuffer2Guard->ReleaseGraphicsResources(window);
-    std::fprintf(stderr, "%s: scene %s done\n", Program, sceneName.c_str());
+    return false;
   }
+  const std::vector<double> gbufferMs =
+    TimeMethods(view, o, { gbuffers.OneLayer, gbuffers.TwoLayers }, passes, results);
+  measured.Results.insert(measured.Results.end(), results.begin(), results.end());
+  measured.Scenes.push_back({ sceneName, geometry->GetNumberOfPolys(), frame.Radius,
+    frame.MeanReference, frame.MeanReferenceUnlimited, frame.ReferenceError, frame.ReferenceSeconds,
+    gbufferMs[0], gbufferMs[1], frame.ValidCount, frame.Layer1Count });
 
-  // ---- tables ----
-  std::ostringstream md, csv;
-  md << "Accuracy at " << options.AccuracyWidth << "x" << options.AccuracyHeight << ", time at "
-     << options.Width << "x" << options.Height << " (median of " << options.Frames * options.Rounds
-     << " frames per method, " << options.Rounds << " rounds, after " << options.Warmup
+  view.Renderer->SetPass(nullptr);
+  for (const auto& pass : passes)
+  {
+    pass->ReleaseGraphicsResources(view.Window);
+  }
+  gbuffers.OneLayer->ReleaseGraphicsResources(view.Window);
+  gbuffers.TwoLayers->ReleaseGraphicsResources(view.Window);
+  gbuffers.TwoLayersGuarded->ReleaseGraphicsResources(view.Window);
+  std::fprintf(stderr, "%s: scene %s done\n", Program, sceneName.c_str());
+  return true;
+}
+
+/// The settings of the run and the table of the scenes.
+std::string SceneTable(const Options& o, const Measurements& measured)
+{
+  std::ostringstream md;
+  md << "Accuracy at " << o.AccuracyWidth << "x" << o.AccuracyHeight << ", time at " << o.Width
+     << "x" << o.Height << " (median of " << o.Frames * o.Rounds << " frames per method, "
+     << o.Rounds << " rounds, after " << o.Warmup
      << " warm-up frames per round). Single bounce: Damping 0, TemporalAlpha 0. Errors on the "
         "luminance of the irradiance E (layer 0, after the bilateral filter) against "
         "vtkDeepGIReferenceIrradiance ("
-     << options.Samples
+     << o.Samples
      << " rays per pixel) with MaximumDistance = r (E_ref,r) and unlimited (E_ref).\n\n";
   md << "| scene | triangles | r | valid px | layer-1 px | mean E_ref,r | mean E_ref | reference "
         "std. error | reference [s] | G-buffer 1 layer [ms] | G-buffer 2 layers [ms] |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const SceneInfo& s : infos)
+  for (const SceneInfo& s : measured.Scenes)
   {
     char b[512];
     std::snprintf(b, sizeof(b),
@@ -937,16 +873,17 @@ int main(int argc, char* argv[])
       s.GBuffer2Ms);
     md << b;
   }
+  return md.str();
+}
+
+/// The table of every scene and method.
+std::string ResultTable(const Measurements& measured)
+{
+  std::ostringstream md;
   md << "\n| scene | method | frame [ms] | RMSE vs E_ref,r | MAE | bias | rel. error | RMSE "
         "layer-1 px | RMSE vs E_ref | bias vs E_ref | rel. error vs E_ref |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  csv << "scene,method,family,layers,preset,normal_test,estimator,frame_ms,radius,rmse,mae,bias,"
-         "relative,"
-         "rmse_layer1,rmse_unlimited,mae_unlimited,bias_unlimited,relative_unlimited,"
-         "rmse_raw_m,bias_raw_m,rmse_raw_n,bias_raw_n,rmse_filtered_n,bias_filtered_n,"
-         "mae_low_confidence,mae_high_confidence,guard_band,rmse_border,bias_border,"
-         "rmse_border_unlimited\n";
-  for (const Result& r : results)
+  for (const Result& r : measured.Results)
   {
     char b[1024];
     std::snprintf(b, sizeof(b),
@@ -954,6 +891,23 @@ int main(int argc, char* argv[])
       r.Scene.c_str(), r.M.Name.c_str(), r.FrameMs, r.Limited.Rmse, r.Limited.Mae, r.Limited.Bias,
       r.Limited.Relative, r.Layer1.Rmse, r.Unlimited.Rmse, r.Unlimited.Bias, r.Unlimited.Relative);
     md << b;
+  }
+  return md.str();
+}
+
+/// The CSV file: a row per scene and method.
+std::string Csv(const Measurements& measured)
+{
+  std::ostringstream csv;
+  csv << "scene,method,family,layers,preset,normal_test,estimator,frame_ms,radius,rmse,mae,bias,"
+         "relative,"
+         "rmse_layer1,rmse_unlimited,mae_unlimited,bias_unlimited,relative_unlimited,"
+         "rmse_raw_m,bias_raw_m,rmse_raw_n,bias_raw_n,rmse_filtered_n,bias_filtered_n,"
+         "mae_low_confidence,mae_high_confidence,guard_band,rmse_border,bias_border,"
+         "rmse_border_unlimited\n";
+  for (const Result& r : measured.Results)
+  {
+    char b[1024];
     std::snprintf(b, sizeof(b),
       "\"%s\",\"%s\",\"%s\",%d,%d,%d,%d,%.4f,%.5g,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,"
       "%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%d,%.5f,%.5f,%.5f\n",
@@ -965,14 +919,19 @@ int main(int argc, char* argv[])
       r.M.GuardBand ? 1 : 0, r.Border.Rmse, r.Border.Bias, r.BorderUnlimited.Rmse);
     csv << b;
   }
+  return csv.str();
+}
 
+std::string EstimatorSection(const Measurements& measured)
+{
+  std::ostringstream md;
   md << "\n### Estimator: eq. 4 (divide by M) against dividing by N\n\n"
      << "Same frames; E_N = E_M x M / N (raw: this frame's gather before any filter; filtered: "
         "\"Irradiance_0\" x \"Confidence_0\"). Errors against E_ref,r.\n\n"
      << "| scene | method | RMSE raw /M | bias raw /M | RMSE raw /N | bias raw /N | RMSE "
         "filtered /M | RMSE filtered /N | bias filtered /N "
         "|\n|---|---|---|---|---|---|---|---|---|\n";
-  for (const Result& r : results)
+  for (const Result& r : measured.Results)
   {
     if (r.M.Estimator != vtkDeepRadiosityPass::ACCEPTED_TAPS)
     {
@@ -984,12 +943,17 @@ int main(int argc, char* argv[])
       r.Limited.Rmse, r.FilteredN.Rmse, r.FilteredN.Bias);
     md << b;
   }
+  return md.str();
+}
 
+std::string ConfidenceSection(const Measurements& measured)
+{
+  std::ostringstream md;
   md << "\n### Error against confidence\n\n"
      << "Mean |E - E_ref,r| over the valid pixels in the lowest and in the highest quartile of "
         "the filtered confidence M / N.\n\n"
      << "| scene | method | lowest quartile | highest quartile | ratio |\n|---|---|---|---|---|\n";
-  for (const Result& r : results)
+  for (const Result& r : measured.Results)
   {
     char b[512];
     std::snprintf(b, sizeof(b), "| %s | %s | %.4f | %.4f | %.2f |\n", r.Scene.c_str(),
@@ -997,7 +961,12 @@ int main(int argc, char* argv[])
       r.LowConfidenceError / std::max(1e-9, r.HighConfidenceError));
     md << b;
   }
+  return md.str();
+}
 
+std::string GuardBandSection(const Measurements& measured)
+{
+  std::ostringstream md;
   md << "\n### Guard band\n\n"
      << "Two layers, SOLID_ANGLE, each preset, without and with a guard band of "
      << vtkDeepRadiosityPass::DEFAULT_GUARD_BAND
@@ -1006,7 +975,7 @@ int main(int argc, char* argv[])
      << BorderFraction << " of the height of the frame's edge.\n\n"
      << "| scene | method | frame [ms] | RMSE vs E_ref,r | RMSE border | bias border | RMSE "
         "border vs E_ref | border px |\n|---|---|---|---|---|---|---|---|\n";
-  for (const Result& r : results)
+  for (const Result& r : measured.Results)
   {
     if (r.M.Layers != 2 || !r.M.NormalTest || r.M.Estimator != vtkDeepRadiosityPass::SOLID_ANGLE)
     {
@@ -1018,44 +987,55 @@ int main(int argc, char* argv[])
       r.BorderUnlimited.Rmse, r.Border.Pixels);
     md << b;
   }
+  return md.str();
+}
 
-  if (!bounceResults.empty())
+std::string BouncesSection(const Options& o, const Measurements& measured)
+{
+  if (measured.Bounces.empty())
   {
-    md << "\n### Multiple bounces\n\n"
-       << "Two layers, SOLID_ANGLE, BALANCED, guard band "
-       << vtkDeepRadiosityPass::DEFAULT_GUARD_BAND << ", TemporalAlpha 0, still camera: E of "
-       << "the pass with Damping delta after " << BounceFrames
-       << " frames against vtkDeepGIReferenceIrradiance with NumberOfBounces " << options.Bounces
-       << " and BounceDamping delta (" << options.Samples
-       << " paths per pixel), MaximumDistance r on every segment (E_ref,r) and unlimited "
-          "(E_ref). change: RMS of the change of E between the last two frames over the mean "
-          "E; fixed from: the first frame whose E equals the frame before's exactly. 1 bounce: "
-          "the same method's first frame with Damping 0 against the one-bounce E_ref,r.\n\n"
-       << "| scene | delta | change | fixed from | mean E | mean E_ref,r | mean E_ref | RMSE vs "
-          "E_ref,r | bias | rel. error | RMSE vs E_ref | bias vs E_ref | rel. error vs E_ref | "
-          "1 bounce: RMSE | bias | rel. error | reference std. error | reference [s] |\n"
-          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-    for (const BounceResult& b : bounceResults)
-    {
-      const std::string fixed = b.UnchangedFrom ? std::to_string(b.UnchangedFrom) : "-";
-      char line[1024];
-      std::snprintf(line, sizeof(line),
-        "| %s | %.2g | %.1e | %s | %.4f | %.4f | %.4f | %.4f | %+.4f | %.3f | %.4f | %+.4f | "
-        "%.3f | %.4f | %+.4f | %.3f | %.4f | %.1f |\n",
-        b.Scene.c_str(), b.Damping, b.Change, fixed.c_str(), b.MeanPass, b.MeanReference,
-        b.MeanReferenceUnlimited, b.Limited.Rmse, b.Limited.Bias, b.Limited.Relative,
-        b.Unlimited.Rmse, b.Unlimited.Bias, b.Unlimited.Relative, b.OneBounce.Rmse,
-        b.OneBounce.Bias, b.OneBounce.Relative, b.ReferenceError, b.ReferenceSeconds);
-      md << line;
-    }
+    return std::string();
   }
+  std::ostringstream md;
+  md << "\n### Multiple bounces\n\n"
+     << "Two layers, SOLID_ANGLE, BALANCED, guard band " << vtkDeepRadiosityPass::DEFAULT_GUARD_BAND
+     << ", TemporalAlpha 0, still camera: E of "
+     << "the pass with Damping delta after " << BounceFrames
+     << " frames against vtkDeepGIReferenceIrradiance with NumberOfBounces " << o.Bounces
+     << " and BounceDamping delta (" << o.Samples
+     << " paths per pixel), MaximumDistance r on every segment (E_ref,r) and unlimited "
+        "(E_ref). change: RMS of the change of E between the last two frames over the mean "
+        "E; fixed from: the first frame whose E equals the frame before's exactly. 1 bounce: "
+        "the same method's first frame with Damping 0 against the one-bounce E_ref,r.\n\n"
+     << "| scene | delta | change | fixed from | mean E | mean E_ref,r | mean E_ref | RMSE vs "
+        "E_ref,r | bias | rel. error | RMSE vs E_ref | bias vs E_ref | rel. error vs E_ref | "
+        "1 bounce: RMSE | bias | rel. error | reference std. error | reference [s] |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const BounceResult& b : measured.Bounces)
+  {
+    const std::string fixed = b.UnchangedFrom ? std::to_string(b.UnchangedFrom) : "-";
+    char line[1024];
+    std::snprintf(line, sizeof(line),
+      "| %s | %.2g | %.1e | %s | %.4f | %.4f | %.4f | %.4f | %+.4f | %.3f | %.4f | %+.4f | "
+      "%.3f | %.4f | %+.4f | %.3f | %.4f | %.1f |\n",
+      b.Scene.c_str(), b.Damping, b.Change, fixed.c_str(), b.MeanPass, b.MeanReference,
+      b.MeanReferenceUnlimited, b.Limited.Rmse, b.Limited.Bias, b.Limited.Relative,
+      b.Unlimited.Rmse, b.Unlimited.Bias, b.Unlimited.Relative, b.OneBounce.Rmse, b.OneBounce.Bias,
+      b.OneBounce.Relative, b.ReferenceError, b.ReferenceSeconds);
+    md << line;
+  }
+  return md.str();
+}
 
+std::string TimeRatiosSection(const Measurements& measured)
+{
+  std::ostringstream md;
   md << "\n### Time ratios (same run)\n\n"
      << "| scene | method | frame / frame of 2 layers, BALANCED (eq. 4) |\n|---|---|---|\n";
-  for (const Result& r : results)
+  for (const Result& r : measured.Results)
   {
     double base = 0;
-    for (const Result& b : results)
+    for (const Result& b : measured.Results)
     {
       if (b.Scene == r.Scene && b.M.Layers == 2 && b.M.NormalTest &&
         b.M.Preset == vtkDeepRadiosityPass::BALANCED &&
@@ -1067,71 +1047,31 @@ int main(int argc, char* argv[])
     md << "| " << r.Scene << " | " << r.M.Name << " | "
        << (base > 0 ? Fmt("%.2f", r.FrameMs / base) : std::string("n/a")) << " |\n";
   }
+  return md.str();
+}
 
-  std::fputs(md.str().c_str(), stdout);
-  if (!DeepGIOutput::WriteText(options.Output + "/benchmark-radiosity.md", md.str(), outputError) ||
-    !DeepGIOutput::WriteText(options.Output + "/benchmark-radiosity.csv", csv.str(), outputError))
-  {
-    std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
-    return 1;
-  }
+/// The markdown file (also printed on stdout).
+std::string Markdown(const Options& o, const Measurements& measured)
+{
+  return SceneTable(o, measured) + ResultTable(measured) + EstimatorSection(measured) +
+    ConfidenceSection(measured) + GuardBandSection(measured) + BouncesSection(o, measured) +
+    TimeRatiosSection(measured);
+}
 
-  // ---- plots ----
-  std::vector<std::string> families;
-  for (const Method& m : methods)
-  {
-    if (std::find(families.begin(), families.end(), m.Family) == families.end())
-    {
-      families.push_back(m.Family);
-    }
-  }
-  const std::string xTitle = "frame time [ms] (median)";
-  const std::string yTitle = "RMSE of E vs ray-traced reference (max. distance r)";
-  Curves mean;
-  for (const Method& m : methods)
-  {
-    double t = 0, e = 0;
-    int n = 0;
-    for (const Result& r : results)
-    {
-      if (r.M.Name == m.Name)
-      {
-        t += r.FrameMs;
-        e += r.Limited.Rmse;
-        ++n;
-      }
-    }
-    if (n)
-    {
-      mean[m.Family].push_back({ t / n, e / n });
-    }
-  }
-  if (!WritePlot(options.Output + "/benchmark-radiosity-plot.png",
-        "Radiosity (single bounce): error vs time (mean over scenes)", xTitle, yTitle, families,
-        mean, options.Backend, outputError))
-  {
-    std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
-    return 1;
-  }
-  for (const SceneInfo& s : infos)
-  {
-    Curves curves;
-    for (const Result& r : results)
-    {
-      if (r.Scene == s.Name)
-      {
-        curves[r.M.Family].push_back({ r.FrameMs, r.Limited.Rmse });
-      }
-    }
-    if (!WritePlot(options.Output + "/benchmark-radiosity-plot-" + s.Name + ".png",
-          "Radiosity (single bounce): error vs time, " + s.Name, xTitle, yTitle, families, curves,
-          options.Backend, outputError))
-    {
-      std::fprintf(stderr, "%s: %s\n", Program, outputError.c_str());
-      return 1;
-    }
-  }
-  std::printf("\nwrote %s/benchmark-radiosity.{md,csv}, %s/benchmark-radiosity-plot.png\n",
-    options.Output.c_str(), options.Output.c_str());
-  return 0;
+/// RMSE of E against E_ref,r against the frame time, one curve per method family.
+ErrorTimePlots Plots(const Options& o, const Measurements& measured)
+{
+  return MakeErrorTimePlots(
+    "Radiosity (single bounce): error vs time",
+    "RMSE of E vs ray-traced reference (max. distance r)", o.Methods, measured.Scenes,
+    measured.Results, [](const Method& m) { return m.Family; },
+    [](const Result& r) { return r.Limited.Rmse; });
+}
+}
+
+int main(int argc, char* argv[])
+{
+  const AccuracyBenchmark<Options, Measurements> stages{ Program, "benchmark-radiosity",
+    ParseOptions, Usage, MeasureScene, Markdown, Csv, Plots };
+  return RunAccuracyBenchmark(stages, argc, argv);
 }

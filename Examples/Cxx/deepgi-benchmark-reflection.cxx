@@ -236,127 +236,97 @@ double Percent(long a, long b)
 {
   return b ? 100.0 * a / b : 0.0;
 }
-}
 
-int main(int argc, char* argv[])
+/// Sorts every pixel where the pass traced a ray (its capture
+/// `reflections`) and the reference traced the same ray (`truth`) into
+/// r's counts.
+void CompareHits(vtkImageData* reflections, vtkImageData* truth, Result& r)
 {
-  Options options;
-  if (!ParseOptions(argc, argv, options))
+  vtkPointData* ss = reflections->GetPointData();
+  vtkDataArray* traced = ss->GetArray(vtkDeepGICaptureNames::Valid);
+  vtkDataArray* hitLayer = ss->GetArray(vtkDeepGICaptureNames::HitLayer);
+  vtkDataArray* hitDistance = ss->GetArray(vtkDeepGICaptureNames::HitDistance);
+  vtkDataArray* refValid = truth->GetPointData()->GetArray(vtkDeepGICaptureNames::Valid);
+  vtkDataArray* refHit = truth->GetPointData()->GetArray("Hit");
+  vtkDataArray* refDistance = truth->GetPointData()->GetArray(vtkDeepGICaptureNames::HitDistance);
+  for (vtkIdType p = 0; p < traced->GetNumberOfTuples(); ++p)
   {
-    Usage();
-    return 2;
-  }
-  // The outputs are checked before the measuring.
-  std::string outputError;
-  if (!DeepGIOutput::PrepareDirectory(options.Output, outputError))
-  {
-    std::fprintf(stderr, "deepgi-benchmark-reflection: %s\n", outputError.c_str());
-    return 1;
-  }
-  std::vector<Result> results;
-  for (const std::string& sceneName : options.Scenes)
-  {
-    // 1 layer, 2 layers, and 2 layers with the G-buffer guard band of the
-    // radiosity and GI passes (rays that leave the frame can hit the band).
-    const std::pair<int, double> configurations[] = { { 1, 0.0 }, { 2, 0.0 },
-      { 2, vtkDeepRadiosityPass::DEFAULT_GUARD_BAND } };
-    for (const auto& configuration : configurations)
+    if (!(traced->GetComponent(p, 0) > 0) || !(refValid->GetComponent(p, 0) > 0))
     {
-      const int layers = configuration.first;
-      vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::Take(
-        vtkDeepGIRenderWindowFactory::NewRenderWindow(options.Backend));
-      if (!window)
-      {
-        std::fprintf(stderr, "%s: no render window for this backend\n", Program);
-        return 1;
-      }
-      window->SetMultiSamples(0);
-      window->SetOffScreenRendering(1);
-      window->SetSize(options.Width, options.Height);
-      vtkNew<vtkRenderer> renderer;
-      renderer->SetBackground(0.1, 0.1, 0.15);
-      window->AddRenderer(renderer);
-      vtkSmartPointer<vtkObject> keep;
-      vtkSmartPointer<vtkPolyData> geometry = LoadScene(sceneName, renderer, keep);
-      vtkNew<vtkDeepReflectionPass> pass;
-      pass->GetGBufferPass()->SetNumberOfLayers(layers);
-      pass->GetGBufferPass()->SetGuardBand(configuration.second);
-      renderer->SetPass(pass);
-      const std::vector<double> ms = TimeFrames(
-        [&]()
-        {
-          window->Render();
-          window->WaitForCompletion();
-        },
-        0, options.Frames);
-      vtkNew<vtkImageData> reflections, capture;
-      if (!pass->CaptureReflections(reflections, renderer) ||
-        !pass->GetGBufferPass()->CaptureLayers(capture, renderer))
-      {
-        std::fprintf(stderr, "%s: capture failed on %s\n", Program, sceneName.c_str());
-        return 1;
-      }
-      vtkNew<vtkDeepGIReferenceReflection> reference;
-      reference->SetScene(geometry);
-      reference->SetMaximumDistance(pass->GetEffectiveMaximumDistance());
-      if (!reference->Compute(capture))
-      {
-        std::fprintf(stderr, "%s: the reference failed on %s\n", Program, sceneName.c_str());
-        return 1;
-      }
-      Result r;
-      r.Scene = sceneName;
-      r.Layers = layers;
-      r.GuardBand = configuration.second;
-      r.MaximumDistance = pass->GetEffectiveMaximumDistance();
-      r.Thickness = pass->GetEffectiveThickness();
-      r.FrameMs = Median(ms);
-      vtkPointData* ss = reflections->GetPointData();
-      vtkPointData* truth = reference->GetOutput()->GetPointData();
-      vtkDataArray* traced = ss->GetArray(vtkDeepGICaptureNames::Valid);
-      vtkDataArray* hitLayer = ss->GetArray(vtkDeepGICaptureNames::HitLayer);
-      vtkDataArray* hitDistance = ss->GetArray(vtkDeepGICaptureNames::HitDistance);
-      vtkDataArray* refValid = truth->GetArray(vtkDeepGICaptureNames::Valid);
-      vtkDataArray* refHit = truth->GetArray("Hit");
-      vtkDataArray* refDistance = truth->GetArray(vtkDeepGICaptureNames::HitDistance);
-      for (vtkIdType p = 0; p < traced->GetNumberOfTuples(); ++p)
-      {
-        if (!(traced->GetComponent(p, 0) > 0) || !(refValid->GetComponent(p, 0) > 0))
-        {
-          continue;
-        }
-        ++r.Traced;
-        const int layer = static_cast<int>(hitLayer->GetComponent(p, 0));
-        const bool truthHits = refHit->GetComponent(p, 0) > 0;
-        if (!truthHits)
-        {
-          ++r.TruthMisses;
-          r.FalseHits += layer >= 0;
-          continue;
-        }
-        ++r.TruthHits;
-        const double t = refDistance->GetComponent(p, 0);
-        if (layer < 0)
-        {
-          ++r.Missed;
-        }
-        else if (std::fabs(hitDistance->GetComponent(p, 0) - t) < MatchTolerance * t + r.Thickness)
-        {
-          (layer == 0 ? r.MatchedLayer0 : r.MatchedLayer1)++;
-        }
-        else
-        {
-          ++r.Wrong;
-        }
-      }
-      results.push_back(r);
-      std::fprintf(stderr, "%s: %s, %d layer(s), guard band %g done\n", Program, sceneName.c_str(),
-        layers, configuration.second);
+      continue;
+    }
+    ++r.Traced;
+    const int layer = static_cast<int>(hitLayer->GetComponent(p, 0));
+    const bool truthHits = refHit->GetComponent(p, 0) > 0;
+    if (!truthHits)
+    {
+      ++r.TruthMisses;
+      r.FalseHits += layer >= 0;
+      continue;
+    }
+    ++r.TruthHits;
+    const double t = refDistance->GetComponent(p, 0);
+    if (layer < 0)
+    {
+      ++r.Missed;
+    }
+    else if (std::fabs(hitDistance->GetComponent(p, 0) - t) < MatchTolerance * t + r.Thickness)
+    {
+      (layer == 0 ? r.MatchedLayer0 : r.MatchedLayer1)++;
+    }
+    else
+    {
+      ++r.Wrong;
     }
   }
+}
 
-  std::ostringstream md, csv;
-  md << "Images " << options.Width << "x" << options.Height << ", " << options.Frames
+/// The pass with `layers` G-buffer layers and `guardBand` on `sceneName`:
+/// its frames (timed), its capture, and the reference's hits of the same
+/// rays.
+bool MeasureConfiguration(
+  const Options& o, const std::string& sceneName, int layers, double guardBand, Result& r)
+{
+  View view;
+  if (!OpenView(Program, o.Backend, o.Width, o.Height, view))
+  {
+    return false;
+  }
+  view.Renderer->SetBackground(0.1, 0.1, 0.15);
+  vtkSmartPointer<vtkObject> keep;
+  vtkSmartPointer<vtkPolyData> geometry = LoadScene(sceneName, view.Renderer, keep);
+  vtkNew<vtkDeepReflectionPass> pass;
+  pass->GetGBufferPass()->SetNumberOfLayers(layers);
+  pass->GetGBufferPass()->SetGuardBand(guardBand);
+  const std::vector<double> ms = TimePassesInRounds(view, { pass }, 1, 0, o.Frames)[0];
+  vtkNew<vtkImageData> reflections, capture;
+  if (!pass->CaptureReflections(reflections, view.Renderer) ||
+    !pass->GetGBufferPass()->CaptureLayers(capture, view.Renderer))
+  {
+    return Report(Program, "capture failed on " + sceneName);
+  }
+  vtkNew<vtkDeepGIReferenceReflection> reference;
+  reference->SetScene(geometry);
+  reference->SetMaximumDistance(pass->GetEffectiveMaximumDistance());
+  if (!reference->Compute(capture))
+  {
+    return Report(Program, "the reference failed on " + sceneName);
+  }
+  r.Scene = sceneName;
+  r.Layers = layers;
+  r.GuardBand = guardBand;
+  r.MaximumDistance = pass->GetEffectiveMaximumDistance();
+  r.Thickness = pass->GetEffectiveThickness();
+  r.FrameMs = Median(ms);
+  CompareHits(reflections, reference->GetOutput(), r);
+  return true;
+}
+
+/// The run's settings and a row per scene and configuration.
+std::string Markdown(const Options& o, const std::vector<Result>& results)
+{
+  std::ostringstream md;
+  md << "Images " << o.Width << "x" << o.Height << ", " << o.Frames
      << " frames before the capture. A screen-space hit matches the ray-traced one when the hit "
         "distances differ by less than "
      << 100.0 * MatchTolerance
@@ -366,8 +336,6 @@ int main(int argc, char* argv[])
      << "| scene | layers | guard band | t_max | dz | traced px | truth hits | matched layer 0 "
         "[%] | matched layer 1 [%] | matched [%] | missed [%] | wrong point [%] | truth misses | "
         "false hits [%] |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  csv << "scene,layers,guard_band,max_distance,thickness,traced,truth_hits,matched_layer0,"
-         "matched_layer1,missed,wrong,truth_misses,false_hits\n";
   for (const Result& r : results)
   {
     char b[1024];
@@ -379,18 +347,62 @@ int main(int argc, char* argv[])
       Percent(r.MatchedLayer0 + r.MatchedLayer1, r.TruthHits), Percent(r.Missed, r.TruthHits),
       Percent(r.Wrong, r.TruthHits), r.TruthMisses, Percent(r.FalseHits, r.TruthMisses));
     md << b;
+  }
+  return md.str();
+}
+
+/// The CSV file: the counts of every scene and configuration.
+std::string Csv(const std::vector<Result>& results)
+{
+  std::ostringstream csv;
+  csv << "scene,layers,guard_band,max_distance,thickness,traced,truth_hits,matched_layer0,"
+         "matched_layer1,missed,wrong,truth_misses,false_hits\n";
+  for (const Result& r : results)
+  {
+    char b[1024];
     std::snprintf(b, sizeof(b), "%s,%d,%.3g,%.5g,%.5g,%ld,%ld,%ld,%ld,%ld,%ld,%ld,%ld\n",
       r.Scene.c_str(), r.Layers, r.GuardBand, r.MaximumDistance, r.Thickness, r.Traced, r.TruthHits,
       r.MatchedLayer0, r.MatchedLayer1, r.Missed, r.Wrong, r.TruthMisses, r.FalseHits);
     csv << b;
   }
-  std::fputs(md.str().c_str(), stdout);
-  if (!DeepGIOutput::WriteText(
-        options.Output + "/benchmark-reflection.md", md.str(), outputError) ||
-    !DeepGIOutput::WriteText(options.Output + "/benchmark-reflection.csv", csv.str(), outputError))
+  return csv.str();
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Options options;
+  if (!ParseOptions(argc, argv, options))
   {
-    std::fprintf(stderr, "deepgi-benchmark-reflection: %s\n", outputError.c_str());
+    Usage();
+    return 2;
+  }
+  // The outputs are checked before the measuring.
+  if (!PrepareOutputs(Program, options.Output, false))
+  {
     return 1;
   }
-  return 0;
+  std::vector<Result> results;
+  for (const std::string& sceneName : options.Scenes)
+  {
+    // 1 layer, 2 layers, and 2 layers with the G-buffer guard band of the
+    // radiosity and GI passes (rays that leave the frame can hit the band).
+    const std::pair<int, double> configurations[] = { { 1, 0.0 }, { 2, 0.0 },
+      { 2, vtkDeepRadiosityPass::DEFAULT_GUARD_BAND } };
+    for (const auto& configuration : configurations)
+    {
+      Result r;
+      if (!MeasureConfiguration(options, sceneName, configuration.first, configuration.second, r))
+      {
+        return 1;
+      }
+      results.push_back(r);
+      std::fprintf(stderr, "%s: %s, %d layer(s), guard band %g done\n", Program, sceneName.c_str(),
+        configuration.first, configuration.second);
+    }
+  }
+  return WriteTables(Program, options.Output, "benchmark-reflection", Markdown(options, results),
+           Csv(results))
+    ? 0
+    : 1;
 }
