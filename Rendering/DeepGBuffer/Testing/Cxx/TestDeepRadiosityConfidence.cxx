@@ -10,13 +10,11 @@
 // out over a quarter of the pixels).
 //
 // Measured with the default estimator SOLID_ANGLE and the pass's default
-// guard band (relative error lowest / highest quarter): demo 0.993 / 0.666
-// (1.49 x), Cornell box lit by its lamp (its spot light, and its emitting
-// quad through the scene's "Emission" cell array) 1.000 / 0.729 (1.37 x);
-// without a guard band, and the reference without the lamp's emission,
-// 0.993 / 0.715 (1.39 x) and 1.000 / 0.714 (1.40 x). MinimumRatio 1.25
-// leaves a margin below the smaller. With eq. 4 (ACCEPTED_TAPS, the default before) it was
-// 0.94 / 0.42 (2.25 x) and 1.00 / 0.69 (1.45 x):
+// guard band (relative error lowest / highest quarter): demo 0.993 / 0.646
+// (1.54 x), Cornell box lit by its lamp (its spot light, and its emitting
+// quad through the scene's "Emission" cell array) 1.000 / 0.735 (1.36 x).
+// MinimumRatio 1.25 leaves a margin below the smaller. With eq. 4
+// (ACCEPTED_TAPS) it is 0.94 / 0.42 (2.25 x) and 1.00 / 0.69 (1.45 x):
 // SOLID_ANGLE is darker, so its high-confidence pixels are further below
 // the full truth. Against the reference limited to the gather radius r,
 // eq. 4 reverses the relation (the error grows with the confidence: 2.7 /
@@ -24,11 +22,11 @@
 // where a few taps find a bright surface; see
 // Documentation/benchmark-radiosity.md.
 //
-// The gather radius is 0.1 of the scene's diagonal (the pass's default
-// until it became 0.5), where taps are rejected for their distance and the
+// The gather radius is 0.1 of the scene's diagonal (the paper's scale),
+// where taps are rejected for their distance and the
 // confidence says where light is missing. At the default 0.5 the demo
-// keeps the relation (0.339 / 0.218, 1.55 x) but the Cornell box, whole
-// within the radius, does not (0.464 / 0.545, 0.85 x).
+// keeps the relation (0.288 / 0.200, 1.44 x) but the Cornell box, whole
+// within the radius, does not (0.456 / 0.517, 0.88 x).
 
 #include "DeepGITestData.h"
 #include "DeepRadiosityReferenceTest.h"
