@@ -21,8 +21,9 @@
 #include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <glm/glm.hpp>
+
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -36,24 +37,9 @@ namespace
 constexpr double MaterialAmbient = 0.1;
 constexpr double MaterialDiffuse = 0.9;
 
-using Vec3 = std::array<double, 3>;
-
-Vec3 operator+(const Vec3& a, const Vec3& b)
-{
-  return { a[0] + b[0], a[1] + b[1], a[2] + b[2] };
-}
-Vec3 operator-(const Vec3& a, const Vec3& b)
-{
-  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
-}
-Vec3 operator*(double s, const Vec3& a)
-{
-  return { s * a[0], s * a[1], s * a[2] };
-}
-double Norm(const Vec3& a)
-{
-  return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-}
+// GLM's double vector: the scene is built in double precision (glm::dvec3
+// adds, scales and measures like the shaders' vec3).
+using Vec3 = glm::dvec3;
 
 struct MaterialInfo
 {
@@ -231,8 +217,8 @@ const Vec3 X{ 1, 0, 0 }, Y{ 0, 1, 0 }, Z{ 0, 0, 1 };
 void Quad(
   MeshBuilder& b, double h, const Vec3& o, const Vec3& a, const Vec3& c, int minU = 1, int minV = 1)
 {
-  b.Grid(Segments(Norm(a), h, minU), Segments(Norm(c), h, minV), false, false, false, false,
-    [=](double u, double v) { return o + u * a + v * c; });
+  b.Grid(Segments(glm::length(a), h, minU), Segments(glm::length(c), h, minV), false, false, false,
+    false, [=](double u, double v) { return o + u * a + v * c; });
 }
 
 enum BoxFace
