@@ -45,7 +45,11 @@ text is the meaning, and its last lines are tags:
 
 The name is that of the first Set/Get macro or method after the comment.
 --check also fails for a setting declared with a VTK Set or Boolean macro
-in a covered header that has no such comment.
+in a covered header that has no such comment, and for a hand-written row of
+the template (| `Name...` | meaning |: the constants, helpers and methods
+under each "## vtkClass") whose name is declared neither in vtkClass.h nor
+in the headers of its base classes (a `Other::Name` row: in Other.h), or
+whose meaning starts with a number that is not the constant's value there.
 For Doxygen, define the tags as paragraphs in the Doxyfile:
 ALIASES = "unit=@par Unit:^^" "range=@par Range:^^" "default=@par Default:^^"
           "type=@par Type:^^" "readonly=" "label=@par Name:^^"
@@ -237,10 +241,86 @@ def undocumented():
     return missing
 
 
+def class_header(name):
+    """The public header of class `name`: the file name.h in the sources."""
+    for folder, dirs, files in os.walk(REPO):
+        dirs[:] = [d for d in dirs if not d.startswith(".") and not d.startswith("build")]
+        if name + ".h" in files:
+            return os.path.join(folder, name + ".h")
+    return None
+
+
+def class_text(name):
+    """The header of class `name` and those of its base classes in the
+    sources (inherited constants and methods are documented with the
+    class)."""
+    header = class_header(name)
+    if not header:
+        return ""
+    with open(header) as f:
+        text = f.read()
+    base = re.search(r"class\s+\w+\s+%s\s*:\s*public\s+(\w+)" % name, text)
+    return text + (class_text(base.group(1)) if base else "")
+
+
+def declared(name, source):
+    """Whether `name` is declared in `source`, directly or as the getter or
+    setter a VTK Get/Set macro makes."""
+    if re.search(r"\b%s\b" % name, source):
+        return True
+    accessor = re.match(r"(?:Get|Set)(\w+)", name)
+    return bool(accessor and re.search(r"Macro\(\s*%s\b" % accessor.group(1), source))
+
+
+# A hand-written row of the template: | `Name...` | meaning |
+HAND_ROW = re.compile(r"^\| `(?:\w+::)?(\w+)[^|]*\| ([^|]*)\|")
+# A meaning that starts with a number: the constant's value.
+LEADING_NUMBER = re.compile(r"^([0-9]+(?:\.[0-9]+)?)\b")
+
+
+def stale_hand_rows():
+    """The template's hand-written rows (constants, helpers, methods) whose
+    name is not declared in their class's header, or whose leading number
+    is not the constant's value there."""
+    problems = []
+    text = ""
+    header = None
+    with open(TEMPLATE) as f:
+        for number, line in enumerate(f, 1):
+            if line.startswith("## "):
+                header = class_header(line[3:].strip())
+                text = class_text(line[3:].strip())
+                if not header:
+                    problems.append("%d: no header for %s" % (number, line[3:].strip()))
+                continue
+            match = HAND_ROW.match(line)
+            if not match or not header:
+                continue
+            name, meaning = match.group(1), match.group(2).strip()
+            where = "scripts/parameters.md.in:%d: %s" % (number, name)
+            qualified = re.match(r"\| `(\w+)::", line)
+            source = text
+            if qualified and qualified.group(1) + ".h" != os.path.basename(header):
+                source = class_text(qualified.group(1))
+            if not declared(name, source):
+                problems.append(where + " is not declared in its header")
+                continue
+            value = LEADING_NUMBER.match(meaning)
+            constant = re.search(r"\b%s\s*=\s*([0-9.]+)" % name, source)
+            if value and constant and float(value.group(1)) != float(constant.group(1).rstrip(".")):
+                problems.append("%s is %s in its header, %s in the template"
+                                % (where, constant.group(1), value.group(1)))
+    return problems
+
+
 def check(generated):
     missing = undocumented()
     for header, name in missing:
         print("%s: the setting %s has no comment with @default" % (header, name))
+    stale = stale_hand_rows()
+    for problem in stale:
+        print(problem)
+    missing += stale
     with open(OUTPUT) as f:
         current = f.read()
     if current == generated and not missing:
