@@ -12,7 +12,7 @@
 #   LeakSanitizer cannot attribute to a library, so only memory errors are
 #   checked there.
 # - Python tests, and the tests that start VTK's Python (deepgi-install,
-#   deepgi-getting-started, deepgi-benchmark-frame-smoke,
+#   deepgi-getting-started, the Python benchmarks' smoke tests,
 #   deepgi-parameters-defaults): the ASan runtime is preloaded into it;
 #   memory errors are checked, leaks are not (the interpreter keeps its
 #   objects).
@@ -52,7 +52,7 @@ run() {
   bash "$repo/scripts/with-display.sh" ctest --test-dir "$build" --output-on-failure \
     -j"$jobs" --timeout 1800 "$@" || status=1
 }
-python_tests="Python|python|getting-started|deepgi-install$|benchmark-frame|parameters-defaults"
+python_tests="Python|python|getting-started|deepgi-install$|benchmark-frame|benchmark-image|parameters-defaults"
 ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=$suppressions" \
   run -E "EGL|Factory|$python_tests|find-package|install|paraview"
 ASAN_OPTIONS=detect_leaks=0 run -R "EGL|Factory"

@@ -30,9 +30,12 @@ add the user's own. --default-actors gives every actor VTK's default
 property (white, Ambient 0, Diffuse 1, Specular 0), i.e. what a VTK user
 gets without choosing materials; otherwise the scene loader's materials.
 
-Writes OUTDIR/benchmark-image.md (the tables) and, per scene,
-OUTDIR/SCENE.png: plain | vtkSSAOPass K16 | vtkDeepGIPass BALANCED |
-reference | |BALANCED - reference| x 4.
+Writes OUTDIR/benchmark-image.md (the tables), OUTDIR/benchmark-image-plot.png
+(RMSE against time per frame, both means over the scenes, one point per
+method and the reference's own: its computing time and mean standard
+error; the trade a user chooses from) and, per scene, OUTDIR/SCENE.png:
+plain | vtkSSAOPass K16 | vtkDeepGIPass BALANCED | reference |
+|BALANCED - reference| x 4.
 """
 import argparse
 import os
@@ -42,10 +45,14 @@ import time
 
 import numpy as np
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
-from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData
+from vtkmodules.vtkChartsCore import vtkAxis, vtkChart, vtkChartXY
+from vtkmodules.vtkCommonCore import vtkFloatArray
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData, vtkTable
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import vtkRenderer, vtkWindowToImageFilter
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass, vtkSSAOPass
+from vtkmodules.vtkViewsContext2D import vtkContextView
+import vtkmodules.vtkRenderingContextOpenGL2  # noqa: F401 (the charts' OpenGL device)
 
 import vtkdeepgi
 
@@ -208,6 +215,73 @@ def save_strip(path, images, width, height):
     writer.Write()
 
 
+def method_family(method):
+    """The curve of the error-against-time plot a method belongs to."""
+    if method.startswith("vtkSSAOPass"):
+        return "vtkSSAOPass (K16, K64)"
+    if method.endswith("1 layer"):
+        return "vtkDeepGIPass BALANCED, 1 layer"
+    if method.startswith("vtkDeepGIPass"):
+        return "vtkDeepGIPass (HIGH_PERFORMANCE, BALANCED, HIGH_QUALITY)"
+    return method
+
+
+def save_plot(path, infos, rows):
+    """RMSE against log10 of the ms per frame, means over the scenes: one
+    curve per family of methods, and the reference (its computing time, its
+    mean standard error). (The time axis is log10 of the values rather than
+    vtkAxis's log scale, with which VTK 9.1's vtkChartXY draws no plot.)"""
+    points = {}
+    for row in rows:
+        points.setdefault(row[1], []).append((row[2], row[4]))
+    curves = {}
+    for method, values in points.items():
+        mean = (float(np.log10(np.mean([v[0] for v in values]))),
+                float(np.mean([v[1] for v in values])))
+        curves.setdefault(method_family(method), []).append(mean)
+    curves["vtkDeepGIReferenceImage"] = [(float(np.log10(1000.0 * np.mean([i[4] for i in infos]))),
+                                          float(np.mean([i[3] for i in infos])))]
+    factory = vtkdeepgi.vtkDeepGIRenderWindowFactory
+    window = factory.NewRenderWindow(factory.BACKEND_AUTO)
+    window.SetMultiSamples(0)
+    view = vtkContextView()
+    view.SetRenderWindow(window)
+    view.GetRenderer().SetBackground(1.0, 1.0, 1.0)
+    window.SetSize(900, 600)
+    chart = vtkChartXY()
+    view.GetScene().AddItem(chart)
+    chart.SetTitle("Final image: RMSE against the reference vs time per frame (mean over scenes)")
+    chart.SetShowLegend(True)
+    chart.GetAxis(vtkAxis.BOTTOM).SetTitle("log10 of ms per frame (reference: of ms to compute)")
+    chart.GetAxis(vtkAxis.LEFT).SetTitle("RMSE (reference: its mean standard error)")
+    colors = ((60, 60, 60), (40, 90, 200), (200, 40, 40), (230, 140, 20), (30, 150, 60))
+    tables = []
+    for k, (family, values) in enumerate(curves.items()):
+        table = vtkTable()
+        for name, column in (("log10 ms", 0), (family, 1)):
+            array = vtkFloatArray()
+            array.SetName(name)
+            for value in sorted(values):
+                array.InsertNextValue(value[column])
+            table.AddColumn(array)
+        tables.append(table)
+        plot = chart.AddPlot(vtkChart.LINE if len(values) > 1 else vtkChart.POINTS)
+        plot.SetInputData(table, 0, 1)
+        plot.SetColor(*colors[k % len(colors)], 255)
+        plot.SetWidth(2.5)
+    window.Render()
+    image = vtkWindowToImageFilter()
+    image.SetInput(window)
+    image.ReadFrontBufferOff()
+    image.ShouldRerenderOff()
+    image.Update()
+    writer = vtkPNGWriter()
+    writer.SetInputConnection(image.GetOutputPort())
+    writer.SetFileName(path + ".partial.png")
+    writer.Write()
+    os.replace(path + ".partial.png", path)
+
+
 def measure_scene(args, scene):
     factory = vtkdeepgi.vtkDeepGIRenderWindowFactory
     window = factory.NewRenderWindow(factory.BACKEND_AUTO)
@@ -323,6 +397,7 @@ def main():
     with open(path + ".partial", "w") as f:
         f.write(text)
     os.replace(path + ".partial", path)
+    save_plot(os.path.join(args.output, "benchmark-image-plot.png"), infos, rows)
 
 
 if __name__ == "__main__":
