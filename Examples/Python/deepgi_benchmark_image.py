@@ -270,16 +270,7 @@ def save_plot(path, infos, rows):
         plot.SetColor(*colors[k % len(colors)], 255)
         plot.SetWidth(2.5)
     window.Render()
-    image = vtkWindowToImageFilter()
-    image.SetInput(window)
-    image.ReadFrontBufferOff()
-    image.ShouldRerenderOff()
-    image.Update()
-    writer = vtkPNGWriter()
-    writer.SetInputConnection(image.GetOutputPort())
-    writer.SetFileName(path + ".partial.png")
-    writer.Write()
-    os.replace(path + ".partial.png", path)
+    save_strip(path, [grab(window)], *window.GetSize())
 
 
 def measure_scene(args, scene):
