@@ -10,11 +10,14 @@
 // frame's final irradiance E_t-1, reverse-reprojected to Y and taken from
 // whichever previous layer lies within deepTolerance (world units, camera
 // depth difference) of the reprojected surface (its plane extrapolated to
-// the previous texel's centre, deepExpectedPreviousDistance); 0 where
-// neither does or there is no history (the first frame gives the single
-// bounce). The history may be on a reduced grid (vtkDeepRadiosityPass::
-// SetResolutionDivisor): deepPrevProjection and deepHistorySize are the
-// grid's, so the reprojection lands on its texels.
+// the previous texel's centre, deepExpectedPreviousDistance, with the
+// plane's own normal, deepGeometricNormal); 0 where neither does or there is
+// no history (the first frame gives the single bounce). The history may be
+// on a reduced grid (vtkDeepRadiosityPass::SetResolutionDivisor):
+// deepPrevProjection and deepHistorySize are the grid's, so the
+// reprojection lands on its texels, and at a still camera texel s reads grid
+// texel floor(s / D + 1 / 2), whose receiver leaves s out of its gather
+// (vtkDeepRadiosityFS).
 // B is written only where the gather reads it: the gather's taps use MIP
 // levels deepSourceLevel (Table 2's minimum MIP level) and coarser, whose
 // rotated-grid texels are all level-0 texels that level deepSourceLevel
@@ -74,7 +77,8 @@ vec3 bounceInput(ivec2 pixel, vec2 size, int layer, float d)
   {
     return direct;
   }
-  vec3 n = deepDecodeOct16(texelFetch(deepNormal, ivec3(pixel, layer), 0).rg);
+  vec3 n = deepGeometricNormal(deepDistance, pixel, layer, size, X, d,
+    deepDecodeOct16(texelFetch(deepNormal, ivec3(pixel, layer), 0).rg));
   float expected = deepExpectedPreviousDistance(
     X, n, deepToPrevious, deepPrevProjection, texel, deepHistorySize);
   vec4 h0 = texelFetch(deepHistory0, texel, 0);

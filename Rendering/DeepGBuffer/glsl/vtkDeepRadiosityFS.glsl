@@ -110,6 +110,17 @@ void main()
     // holds it (where the bounce input B is stored).
     ivec2 sourceTexel = deepRotatedGridDescend(deepCoarseTexel(tap, m, isize), m, deepMinMip, isize);
     ivec2 source = deepRotatedGridSource(sourceTexel, deepMinMip, isize);
+    // On a reduced grid the bounce input of a source texel s reads the
+    // irradiance of the grid texel s falls into, floor(s / D + 1 / 2)
+    // (vtkDeepRadiosityBounceFS, still camera): a receiver gathering from
+    // such a texel would light its own source, with a gain of up to 2 per
+    // frame at a steep crease (the bound of eq. 4), so it leaves them out,
+    // as at full resolution a receiver leaves out its own texel.
+    if (deepDivisor > 1 &&
+      all(equal((2 * source + deepDivisor) / (2 * deepDivisor), receiver)))
+    {
+      continue;
+    }
     vec2 sourceCenter = vec2(source) + 0.5;
     // Where B is read: the source's texel, or with deepAverageFarTaps the
     // tap's block at its level (vtkDeepRadiosityPass::AverageFarTaps).

@@ -189,15 +189,59 @@ vec3 deepRayPoint(vec2 ndc, float d, mat4 m)
     (ndc.y * w - m[2][1] * z - m[3][1]) / m[1][1], z);
 }
 
+// The step from X (the surface at `pixel`, distance d, of `layer`) to its
+// neighbour one texel along `axis`, taken on the side whose distance is
+// closer to d, so that a silhouette on one side does not bend the plane;
+// 0 when neither side has a surface.
+vec3 deepNeighbourStep(sampler2DArray distances, ivec2 pixel, int layer, vec2 size, vec3 X,
+  float d, ivec2 axis)
+{
+  ivec2 last = ivec2(size) - 1;
+  ivec2 a = pixel + axis;
+  ivec2 b = pixel - axis;
+  float da = all(lessThanEqual(a, last)) ? texelFetch(distances, ivec3(a, layer), 0).r : 0.0;
+  float db =
+    all(greaterThanEqual(b, ivec2(0))) ? texelFetch(distances, ivec3(b, layer), 0).r : 0.0;
+  if (da > 0.0 && (!(db > 0.0) || abs(da - d) <= abs(db - d)))
+  {
+    return deepPositionFromDistance(vec2(a) + 0.5, size, da) - X;
+  }
+  if (db > 0.0)
+  {
+    return X - deepPositionFromDistance(vec2(b) + 0.5, size, db);
+  }
+  return vec3(0.0);
+}
+
+// The normal of the plane the layer's distances describe at `pixel` (the
+// rasterised triangle's, where both neighbours lie on it), on the side of
+// the shading normal n; n itself where the neighbours give no plane. The
+// shading normal is interpolated from the vertices and can differ from the
+// triangle's plane by tens of degrees on a coarse mesh (an iso-surface), too
+// much to extrapolate a distance with over a texel or two.
+vec3 deepGeometricNormal(sampler2DArray distances, ivec2 pixel, int layer, vec2 size, vec3 X,
+  float d, vec3 n)
+{
+  vec3 g = cross(deepNeighbourStep(distances, pixel, layer, size, X, d, ivec2(1, 0)),
+    deepNeighbourStep(distances, pixel, layer, size, X, d, ivec2(0, 1)));
+  float gg = dot(g, g);
+  if (!(gg > 0.0))
+  {
+    return n;
+  }
+  g *= inversesqrt(gg);
+  return dot(g, n) < 0.0 ? -g : g;
+}
+
 // The distance that a reprojected surface should have at the centre of
 // the previous texel it fell into: the plane through the current point X
-// with the current normal n, both moved into the previous camera, met by
-// the ray through that texel's centre. A reprojected point is generally
-// not at the texel centre, and on a slanted surface the stored distance
-// there differs from the point's own by up to half a pixel's footprint
-// times the slope; comparing with this extrapolation instead keeps the
-// history of planar surfaces under camera motion. At grazing angles
-// (|n.ray| < 0.05) the point's own distance is used.
+// with normal n, both moved into the previous camera, met by the ray
+// through that texel's centre. A reprojected point is generally not at the
+// texel centre (under camera motion, or when the history is on a reduced
+// grid), and on a slanted surface the stored distance there differs from
+// the point's own by up to a texel's footprint times the slope; comparing
+// with this extrapolation instead keeps the history of planar surfaces. At
+// grazing angles (|n.ray| < 0.05) the point's own distance is used.
 float deepExpectedPreviousDistance(vec3 X, vec3 n, mat4 toPrevious, mat4 prevProjection,
   ivec2 texel, vec2 size)
 {

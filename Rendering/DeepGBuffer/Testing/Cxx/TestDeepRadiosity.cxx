@@ -96,7 +96,8 @@ struct Gather
 // hi) and its rotated-grid level-0 texel, candidates of every layer, the
 // cosine tests with COSINE_EPSILON, the larger contribution per tap.
 // `divisor`: the gather's resolution divisor; (i, j) is then the receiver
-// (i / divisor, j / divisor) of its grid, whose index sets the rotation.
+// (i / divisor, j / divisor) of its grid, whose index sets the rotation and
+// which leaves out the sources of its own cell.
 Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerCount, int n,
   double radius, double q, int minMip, int maxMip, bool normalTest, int divisor)
 {
@@ -145,6 +146,13 @@ Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerC
       const int ny = std::min(2 * cy + (cx & 1), std::max(H >> (k - 1), 1) - 1);
       cx = nx;
       cy = ny;
+    }
+    // On a reduced grid the receiver leaves out the sources whose bounce
+    // input reads it: those in its cell, floor(s / D + 1 / 2) = receiver.
+    if (divisor > 1 && (2 * cx + divisor) / (2 * divisor) == i / divisor &&
+      (2 * cy + divisor) / (2 * divisor) == j / divisor)
+    {
+      continue;
     }
     const vtkIdType source = static_cast<vtkIdType>(cy) * W + cx;
     double bestScore = 0.0, best[3] = { 0, 0, 0 };
