@@ -1,4 +1,4 @@
-#include "vtkDeepGBufferDemoScene.h"
+#include "vtkDeepGIDemoScene.h"
 
 #include "vtkActor.h"
 #include "vtkAppendPolyData.h"
@@ -28,7 +28,7 @@
 #include <functional>
 #include <string>
 
-vtkStandardNewMacro(vtkDeepGBufferDemoScene);
+vtkStandardNewMacro(vtkDeepGIDemoScene);
 
 namespace
 {
@@ -50,7 +50,7 @@ struct MaterialInfo
 // Diffuse albedos: saturated walls (paper Figure 2 and the Cornell-style
 // colour bleeding cases), distinct colours for every material so that the
 // albedo layer shows which surface each pixel belongs to.
-const MaterialInfo Materials[vtkDeepGBufferDemoScene::NUMBER_OF_MATERIALS] = {
+const MaterialInfo Materials[vtkDeepGIDemoScene::NUMBER_OF_MATERIALS] = {
   { "floor", { 0.75, 0.75, 0.72 } },
   { "ceiling", { 0.88, 0.88, 0.86 } },
   { "left wall", { 0.75, 0.08, 0.06 } },
@@ -332,7 +332,7 @@ void Sphere(MeshBuilder& b, double h, const Vec3& c, const Vec3& axis, const Vec
 // Room geometry (unscaled units). The same function counts and builds.
 void Layout(std::vector<MeshBuilder>& m, double h, bool ceiling)
 {
-  using S = vtkDeepGBufferDemoScene;
+  using S = vtkDeepGIDemoScene;
   const double W = 10.0, H = 4.0, D = 8.0;
   const double x0 = -0.5 * W, x1 = 0.5 * W, z0 = -0.5 * D;
 
@@ -421,14 +421,89 @@ vtkIdType CountTriangles(std::vector<MeshBuilder>& m, double h, bool ceiling)
   }
   return n;
 }
+// The largest edge length h whose tessellation reaches `target` triangles.
+// The count is monotone (non-increasing) in h, so bisect in log space.
+double EdgeLengthForTarget(std::vector<MeshBuilder>& builders, vtkIdType target, bool ceiling)
+{
+  double h = 20.0;
+  if (CountTriangles(builders, h, ceiling) >= target)
+  {
+    return h;
+  }
+  double ok = h;
+  for (int i = 0; i < 80 && CountTriangles(builders, ok, ceiling) < target; ++i)
+  {
+    ok *= 0.5;
+  }
+  double notOk = 2.0 * ok;
+  for (int i = 0; i < 40; ++i)
+  {
+    const double mid = std::sqrt(ok * notOk);
+    if (CountTriangles(builders, mid, ceiling) >= target)
+    {
+      ok = mid;
+    }
+    else
+    {
+      notOk = mid;
+    }
+  }
+  return ok;
+}
+
+// The triangles of material `material` built by `builder`, with point
+// normals when `computeNormals`, and the per-triangle albedo "Colors" and
+// "MaterialId" that ray tracers and captures read.
+vtkSmartPointer<vtkPolyData> MaterialMesh(
+  const MeshBuilder& builder, int material, bool computeNormals, double featureAngle)
+{
+  vtkNew<vtkPolyData> raw;
+  raw->SetPoints(builder.Points);
+  raw->SetPolys(builder.Polys);
+  vtkSmartPointer<vtkPolyData> pd = raw.Get();
+  if (computeNormals && raw->GetNumberOfPolys() > 0)
+  {
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputData(raw);
+    normals->SetFeatureAngle(featureAngle);
+    normals->SplittingOn();
+    normals->ConsistencyOff(); // the layout orients every triangle itself
+    normals->AutoOrientNormalsOff();
+    normals->ComputePointNormalsOn();
+    normals->ComputeCellNormalsOff();
+    normals->Update();
+    pd = normals->GetOutput();
+  }
+  const vtkIdType nCells = pd->GetNumberOfCells();
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetName("Colors");
+  colors->SetNumberOfComponents(3);
+  colors->SetNumberOfTuples(nCells);
+  unsigned char rgb[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    rgb[c] = static_cast<unsigned char>(std::lround(255.0 * Materials[material].Color[c]));
+  }
+  vtkNew<vtkIntArray> ids;
+  ids->SetName("MaterialId");
+  ids->SetNumberOfTuples(nCells);
+  for (vtkIdType c = 0; c < nCells; ++c)
+  {
+    colors->SetTypedTuple(c, rgb);
+    ids->SetValue(c, material);
+  }
+  pd->GetCellData()->AddArray(colors);
+  pd->GetCellData()->AddArray(ids);
+  return pd;
+}
 } // anonymous namespace
 
 //------------------------------------------------------------------------------
-vtkDeepGBufferDemoScene::vtkDeepGBufferDemoScene() = default;
-vtkDeepGBufferDemoScene::~vtkDeepGBufferDemoScene() = default;
+vtkDeepGIDemoScene::vtkDeepGIDemoScene() = default;
+vtkDeepGIDemoScene::~vtkDeepGIDemoScene() = default;
 
 //------------------------------------------------------------------------------
-void vtkDeepGBufferDemoScene::SetScaleFactor(double scale)
+void vtkDeepGIDemoScene::SetScaleFactor(double scale)
 {
   if (!std::isfinite(scale) || scale <= 0.0)
   {
@@ -444,7 +519,7 @@ void vtkDeepGBufferDemoScene::SetScaleFactor(double scale)
 }
 
 //------------------------------------------------------------------------------
-void vtkDeepGBufferDemoScene::Update()
+void vtkDeepGIDemoScene::Update()
 {
   if (!this->MaterialPolyData.empty() && this->BuildTime > this->GetMTime())
   {
@@ -452,33 +527,7 @@ void vtkDeepGBufferDemoScene::Update()
   }
 
   std::vector<MeshBuilder> builders(NUMBER_OF_MATERIALS);
-
-  // Largest edge length h whose tessellation reaches the target. The count
-  // is monotone (non-increasing) in h, so bisect in log space.
-  const vtkIdType target = this->TargetNumberOfTriangles;
-  double h = 20.0;
-  if (CountTriangles(builders, h, this->Ceiling) < target)
-  {
-    double ok = h;
-    for (int i = 0; i < 80 && CountTriangles(builders, ok, this->Ceiling) < target; ++i)
-    {
-      ok *= 0.5;
-    }
-    double notOk = 2.0 * ok;
-    for (int i = 0; i < 40; ++i)
-    {
-      const double mid = std::sqrt(ok * notOk);
-      if (CountTriangles(builders, mid, this->Ceiling) >= target)
-      {
-        ok = mid;
-      }
-      else
-      {
-        notOk = mid;
-      }
-    }
-    h = ok;
-  }
+  const double h = EdgeLengthForTarget(builders, this->TargetNumberOfTriangles, this->Ceiling);
   this->EdgeLength = h;
 
   // Exact sizes for the allocation, then the real build.
@@ -499,51 +548,14 @@ void vtkDeepGBufferDemoScene::Update()
   this->ScenePolyData = nullptr;
   for (int i = 0; i < NUMBER_OF_MATERIALS; ++i)
   {
-    vtkNew<vtkPolyData> raw;
-    raw->SetPoints(builders[i].Points);
-    raw->SetPolys(builders[i].Polys);
-    vtkSmartPointer<vtkPolyData> pd = raw.Get();
-    if (this->ComputeNormals && raw->GetNumberOfPolys() > 0)
-    {
-      vtkNew<vtkPolyDataNormals> normals;
-      normals->SetInputData(raw);
-      normals->SetFeatureAngle(this->FeatureAngle);
-      normals->SplittingOn();
-      normals->ConsistencyOff(); // the layout orients every triangle itself
-      normals->AutoOrientNormalsOff();
-      normals->ComputePointNormalsOn();
-      normals->ComputeCellNormalsOff();
-      normals->Update();
-      pd = normals->GetOutput();
-    }
-    // Per-triangle albedo and material id, for ray tracers and captures.
-    const vtkIdType nCells = pd->GetNumberOfCells();
-    vtkNew<vtkUnsignedCharArray> colors;
-    colors->SetName("Colors");
-    colors->SetNumberOfComponents(3);
-    colors->SetNumberOfTuples(nCells);
-    unsigned char rgb[3];
-    for (int c = 0; c < 3; ++c)
-    {
-      rgb[c] = static_cast<unsigned char>(std::lround(255.0 * Materials[i].Color[c]));
-    }
-    vtkNew<vtkIntArray> ids;
-    ids->SetName("MaterialId");
-    ids->SetNumberOfTuples(nCells);
-    for (vtkIdType c = 0; c < nCells; ++c)
-    {
-      colors->SetTypedTuple(c, rgb);
-      ids->SetValue(c, i);
-    }
-    pd->GetCellData()->AddArray(colors);
-    pd->GetCellData()->AddArray(ids);
-    this->MaterialPolyData.push_back(pd);
+    this->MaterialPolyData.push_back(
+      MaterialMesh(builders[i], i, this->ComputeNormals, this->FeatureAngle));
   }
   this->BuildTime.Modified();
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkDeepGBufferDemoScene::GetNumberOfTriangles()
+vtkIdType vtkDeepGIDemoScene::GetNumberOfTriangles()
 {
   this->Update();
   vtkIdType n = 0;
@@ -555,7 +567,7 @@ vtkIdType vtkDeepGBufferDemoScene::GetNumberOfTriangles()
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkDeepGBufferDemoScene::GetNumberOfPoints()
+vtkIdType vtkDeepGIDemoScene::GetNumberOfPoints()
 {
   this->Update();
   vtkIdType n = 0;
@@ -567,14 +579,14 @@ vtkIdType vtkDeepGBufferDemoScene::GetNumberOfPoints()
 }
 
 //------------------------------------------------------------------------------
-double vtkDeepGBufferDemoScene::GetEdgeLength()
+double vtkDeepGIDemoScene::GetEdgeLength()
 {
   this->Update();
   return this->EdgeLength;
 }
 
 //------------------------------------------------------------------------------
-vtkPolyData* vtkDeepGBufferDemoScene::GetMaterialPolyData(int material)
+vtkPolyData* vtkDeepGIDemoScene::GetMaterialPolyData(int material)
 {
   if (material < 0 || material >= NUMBER_OF_MATERIALS)
   {
@@ -586,7 +598,7 @@ vtkPolyData* vtkDeepGBufferDemoScene::GetMaterialPolyData(int material)
 }
 
 //------------------------------------------------------------------------------
-vtkPolyData* vtkDeepGBufferDemoScene::GetScenePolyData()
+vtkPolyData* vtkDeepGIDemoScene::GetScenePolyData()
 {
   this->Update();
   if (!this->ScenePolyData || this->ScenePolyData->GetMTime() < this->BuildTime)
@@ -612,7 +624,7 @@ vtkPolyData* vtkDeepGBufferDemoScene::GetScenePolyData()
 }
 
 //------------------------------------------------------------------------------
-void vtkDeepGBufferDemoScene::GetBounds(double bounds[6])
+void vtkDeepGIDemoScene::GetBounds(double bounds[6])
 {
   this->Update();
   vtkMath::UninitializeBounds(bounds);
@@ -635,7 +647,7 @@ void vtkDeepGBufferDemoScene::GetBounds(double bounds[6])
 }
 
 //------------------------------------------------------------------------------
-const char* vtkDeepGBufferDemoScene::GetMaterialName(int material)
+const char* vtkDeepGIDemoScene::GetMaterialName(int material)
 {
   if (material < 0 || material >= NUMBER_OF_MATERIALS)
   {
@@ -645,7 +657,7 @@ const char* vtkDeepGBufferDemoScene::GetMaterialName(int material)
 }
 
 //------------------------------------------------------------------------------
-void vtkDeepGBufferDemoScene::GetMaterialColor(int material, double rgb[3])
+void vtkDeepGIDemoScene::GetMaterialColor(int material, double rgb[3])
 {
   for (int c = 0; c < 3; ++c)
   {
@@ -654,14 +666,14 @@ void vtkDeepGBufferDemoScene::GetMaterialColor(int material, double rgb[3])
 }
 
 //------------------------------------------------------------------------------
-void vtkDeepGBufferDemoScene::Populate(vtkRenderer* renderer)
+void vtkDeepGIDemoScene::Populate(vtkRenderer* renderer)
 {
   this->AddActors(renderer);
   this->AddLights(renderer);
 }
 
 //------------------------------------------------------------------------------
-void vtkDeepGBufferDemoScene::AddActors(vtkRenderer* renderer)
+void vtkDeepGIDemoScene::AddActors(vtkRenderer* renderer)
 {
   if (!renderer)
   {
@@ -693,7 +705,7 @@ void vtkDeepGBufferDemoScene::AddActors(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
-void vtkDeepGBufferDemoScene::AddLights(vtkRenderer* renderer)
+void vtkDeepGIDemoScene::AddLights(vtkRenderer* renderer)
 {
   if (!renderer)
   {
@@ -724,7 +736,7 @@ void vtkDeepGBufferDemoScene::AddLights(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
-void vtkDeepGBufferDemoScene::SetCamera(
+void vtkDeepGIDemoScene::SetCamera(
   vtkCamera* camera, const double position[3], const double focalPoint[3], double viewAngle)
 {
   const double s = this->ScaleFactor;
@@ -737,13 +749,13 @@ void vtkDeepGBufferDemoScene::SetCamera(
 }
 
 //------------------------------------------------------------------------------
-void vtkDeepGBufferDemoScene::SetCameraToDefaultView(vtkCamera* camera)
+void vtkDeepGIDemoScene::SetCameraToDefaultView(vtkCamera* camera)
 {
   this->SetCameraToNamedView(camera, "default");
 }
 
 //------------------------------------------------------------------------------
-void vtkDeepGBufferDemoScene::SetCameraToPathFrame(vtkCamera* camera, int frame, int numberOfFrames)
+void vtkDeepGIDemoScene::SetCameraToPathFrame(vtkCamera* camera, int frame, int numberOfFrames)
 {
   if (!camera)
   {
@@ -762,7 +774,7 @@ void vtkDeepGBufferDemoScene::SetCameraToPathFrame(vtkCamera* camera, int frame,
 }
 
 //------------------------------------------------------------------------------
-bool vtkDeepGBufferDemoScene::SetCameraToNamedView(vtkCamera* camera, const char* name)
+bool vtkDeepGIDemoScene::SetCameraToNamedView(vtkCamera* camera, const char* name)
 {
   if (!camera || !name)
   {
@@ -787,19 +799,19 @@ bool vtkDeepGBufferDemoScene::SetCameraToNamedView(vtkCamera* camera, const char
 }
 
 //------------------------------------------------------------------------------
-int vtkDeepGBufferDemoScene::GetNumberOfNamedViews()
+int vtkDeepGIDemoScene::GetNumberOfNamedViews()
 {
   return NumberOfNamedViews;
 }
 
 //------------------------------------------------------------------------------
-const char* vtkDeepGBufferDemoScene::GetNamedViewName(int index)
+const char* vtkDeepGIDemoScene::GetNamedViewName(int index)
 {
   return (index >= 0 && index < NumberOfNamedViews) ? NamedViews[index].Name : nullptr;
 }
 
 //------------------------------------------------------------------------------
-void vtkDeepGBufferDemoScene::PrintSelf(ostream& os, vtkIndent indent)
+void vtkDeepGIDemoScene::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "TargetNumberOfTriangles: " << this->TargetNumberOfTriangles << "\n";

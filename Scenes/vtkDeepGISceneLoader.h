@@ -1,5 +1,5 @@
 /**
- * @class   vtkDeepGBufferSceneLoader
+ * @class   vtkDeepGISceneLoader
  * @brief   Loads a user's meshes and iso-surfaces of volumes into a renderer.
  *
  * Each successful Load adds one or more parts (a triangle vtkPolyData with a
@@ -17,22 +17,19 @@
  *   included, must be in the file (a truncated PLY crashes vtkPLYReader); a
  *   binary STL must hold the triangles its header declares. Warnings of
  *   these readers count as errors (they mean lost data);
- * - .obj: read by the project's own parser (vtkDeepGISceneOBJ.h: VTK 9.1's
+ * - .obj: read by vtkDeepGIOBJReader (the project's own parser: VTK 9.1's
  *   vtkOBJImporter resolves relative indices such as "f -4 -3 -2 -1" against
  *   a vertex count left over from the previous OBJ file of the process, and
- *   neither it nor vtkOBJReader checks indices). With an MTL file (the file's `mtllib`,
- *   else NAME.obj.mtl or NAME.mtl next to it): one part per material, in the
- *   order of first `usemtl`, coloured with the material's Kd (DefaultColor
- *   for faces without a material, materials without Kd or missing from the
- *   MTL file, with a warning for the latter) and emitting the material's Ke
- *   (emitters: see Populate); without one, a single part in
- *   DefaultColor. Faces with vertex indices the file does not define are
- *   skipped with a warning (an error if none is left); normals (`vn`) are
- *   kept for parts where every corner has one. Coincident vertices and
- *   faces stay as they are in the file. Backslash continuations are joined
- *   (a lone `\` joins nothing). Lines longer than 1 MiB are refused, and an
- *   MTL file is read only if it is a regular file (not a device such as
- *   /dev/zero: a warning, and the default colour) of at most 64 MiB.
+ *   neither it nor vtkOBJReader checks indices). With an MTL file (the
+ *   file's `mtllib`, else NAME.obj.mtl or NAME.mtl next to it): one part per
+ *   material, in the order of first `usemtl`, coloured with the material's
+ *   Kd (DefaultColor for faces without a material, materials without Kd or
+ *   missing from the MTL file, with a warning for the latter) and emitting
+ *   the material's Ke (emitters: see Populate); without one, a single part
+ *   in DefaultColor. The reader's warnings (skipped faces, unusable MTL
+ *   files) are the loader's; normals (`vn`) are kept when every corner of
+ *   the file has one. Coincident vertices and faces stay as they are in the
+ *   file.
  * Polygons and strips become triangles (vtkTriangleFilter); vertices, lines
  * and unused points are dropped; points are not merged. Polygons and strips
  * with point ids outside the mesh's points are dropped with a warning, and
@@ -49,10 +46,9 @@
  * - .vti (vtkXMLImageDataReader), .mhd/.mha (vtkMetaImageReader);
  * - .nhdr/.nrrd: 3D volumes with raw encoding, attached or detached (a
  *   single data file, a `data file: PATTERN MIN MAX STEP` slice series or a
- *   LIST), read by the project's own parser only (vtkDeepGISceneNrrd.h):
- *   VTK 9.1's vtkNrrdReader overflows the heap or hangs on malformed
- *   headers. Data files must be regular files holding what the sizes need;
- *   volumes over 4 GiB and other encodings (gzip, ascii, ...) are refused;
+ *   LIST), read by vtkDeepGINrrdReader only (VTK 9.1's vtkNrrdReader
+ *   overflows the heap or hangs on malformed headers). Data files must be regular files holding
+ * what the sizes need; volumes over 4 GiB and other encodings (gzip, ascii, ...) are refused;
  * - a slice-series prefix such as .../headsq/quarter (files quarter.1,
  *   quarter.2, ...): PREFIX.nhdr is used if it exists, else the slices are
  *   read as square 16-bit images (size from the file size) with
@@ -66,8 +62,8 @@
  * loaded so far unchanged.
  */
 
-#ifndef vtkDeepGBufferSceneLoader_h
-#define vtkDeepGBufferSceneLoader_h
+#ifndef vtkDeepGISceneLoader_h
+#define vtkDeepGISceneLoader_h
 
 #include "vtkDeepGIScenesModule.h" // for export macro
 #include "vtkDeepGISetGet.h"       // for vtkDeepGISetClampMacro
@@ -76,16 +72,17 @@
 
 #include <functional> // for std::function
 #include <memory>     // for std::unique_ptr
+#include <string>     // for the protected helpers
 
 class vtkImageData;
 class vtkPolyData;
 class vtkRenderer;
 
-class VTKDEEPGISCENES_EXPORT vtkDeepGBufferSceneLoader : public vtkObject
+class VTKDEEPGISCENES_EXPORT vtkDeepGISceneLoader : public vtkObject
 {
 public:
-  static vtkDeepGBufferSceneLoader* New();
-  vtkTypeMacro(vtkDeepGBufferSceneLoader, vtkObject);
+  static vtkDeepGISceneLoader* New();
+  vtkTypeMacro(vtkDeepGISceneLoader, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
@@ -299,8 +296,8 @@ public:
   void ResetCamera(vtkRenderer* renderer);
 
 protected:
-  vtkDeepGBufferSceneLoader();
-  ~vtkDeepGBufferSceneLoader() override;
+  vtkDeepGISceneLoader();
+  ~vtkDeepGISceneLoader() override;
 
   double IsoValue = 500.0;
   bool ComputeNormals = true;
@@ -312,19 +309,25 @@ protected:
   double ViewDirection[3] = { 0.0, 0.0, -1.0 };
   double ViewUp[3] = { 0.0, 1.0, 0.0 };
 
-  bool LoadOBJ(const char* fileName);
-  vtkSmartPointer<vtkPolyData> PrepareMesh(vtkPolyData* input, const char* what);
-  bool AddPart(vtkPolyData* mesh, const char* name, const double color[3]);
-  bool ReadVolume(const char* path, vtkImageData* output);
   bool LoadUnguarded(const char* path);
   bool LoadMeshUnguarded(const char* fileName);
   bool LoadVolumeUnguarded(const char* path, double isoValue);
   /// Runs `load`, turning std::bad_alloc and std::length_error into an error.
   bool Guarded(const char* what, const char* path, const std::function<bool()>& load);
+  /// .obj through vtkDeepGIOBJReader: one part per material.
+  bool LoadOBJ(const std::string& path);
+  /// .vtk through the project's own legacy parser.
+  bool LoadLegacyVTK(const std::string& path);
+  /// .ply, .stl and .vtp through VTK's readers, after the file checks.
+  bool LoadWithVTKReader(const std::string& path, const std::string& extension);
+  /// A reader's mesh as a part holds it, its warnings and error reported; nullptr on error.
+  vtkSmartPointer<vtkPolyData> PrepareMesh(vtkPolyData* input, const std::string& what);
+  void AddPart(vtkPolyData* mesh, const std::string& name, const double color[3],
+    const double emission[3] = nullptr);
 
 private:
-  vtkDeepGBufferSceneLoader(const vtkDeepGBufferSceneLoader&) = delete;
-  void operator=(const vtkDeepGBufferSceneLoader&) = delete;
+  vtkDeepGISceneLoader(const vtkDeepGISceneLoader&) = delete;
+  void operator=(const vtkDeepGISceneLoader&) = delete;
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

@@ -1,5 +1,5 @@
 /**
- * @class   vtkDeepGBufferDemoScene
+ * @class   vtkDeepGIDemoScene
  * @brief   Procedural room with the depth complexity deep G-buffers are about.
  *
  * A closed-ish room, 10 x 4 x 8 world units (x from -5 to 5, y up from 0 to
@@ -32,7 +32,7 @@
  *
  * Typical use:
  * @code
- * vtkNew<vtkDeepGBufferDemoScene> scene;
+ * vtkNew<vtkDeepGIDemoScene> scene;
  * scene->SetTargetNumberOfTriangles(100000);
  * scene->Populate(renderer);                 // actors and lights
  * scene->SetCameraToDefaultView(renderer->GetActiveCamera());
@@ -41,8 +41,8 @@
  * The geometry is (re)built lazily by Update(), which every accessor calls.
  */
 
-#ifndef vtkDeepGBufferDemoScene_h
-#define vtkDeepGBufferDemoScene_h
+#ifndef vtkDeepGIDemoScene_h
+#define vtkDeepGIDemoScene_h
 
 #include "vtkDeepGIScenesModule.h" // for export macro
 #include "vtkDeepGISetGet.h"       // for vtkDeepGISetClampMacro
@@ -56,11 +56,11 @@ class vtkCamera;
 class vtkPolyData;
 class vtkRenderer;
 
-class VTKDEEPGISCENES_EXPORT vtkDeepGBufferDemoScene : public vtkObject
+class VTKDEEPGISCENES_EXPORT vtkDeepGIDemoScene : public vtkObject
 {
 public:
-  static vtkDeepGBufferDemoScene* New();
-  vtkTypeMacro(vtkDeepGBufferDemoScene, vtkObject);
+  static vtkDeepGIDemoScene* New();
+  vtkTypeMacro(vtkDeepGIDemoScene, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// The scene's materials; each becomes one actor with its own albedo.
@@ -240,8 +240,8 @@ public:
   ///@}
 
 protected:
-  vtkDeepGBufferDemoScene();
-  ~vtkDeepGBufferDemoScene() override;
+  vtkDeepGIDemoScene();
+  ~vtkDeepGIDemoScene() override;
 
   vtkIdType TargetNumberOfTriangles = 10000;
   double ScaleFactor = 1.0;
@@ -259,8 +259,8 @@ protected:
     vtkCamera* camera, const double position[3], const double focalPoint[3], double viewAngle);
 
 private:
-  vtkDeepGBufferDemoScene(const vtkDeepGBufferDemoScene&) = delete;
-  void operator=(const vtkDeepGBufferDemoScene&) = delete;
+  vtkDeepGIDemoScene(const vtkDeepGIDemoScene&) = delete;
+  void operator=(const vtkDeepGIDemoScene&) = delete;
 };
 
 #endif
