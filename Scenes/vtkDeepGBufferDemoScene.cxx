@@ -1,0 +1,5 @@
+#include "vtkDeepGBufferDemoScene.h"
+
+#include "vtkObjectFactory.h"
+
+vtkStandardNewMacro(vtkDeepGBufferDemoScene);

@@ -1,0 +1,5 @@
+#include "vtkDeepGBufferSceneLoader.h"
+
+#include "vtkObjectFactory.h"
+
+vtkStandardNewMacro(vtkDeepGBufferSceneLoader);
