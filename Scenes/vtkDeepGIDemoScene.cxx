@@ -7,6 +7,8 @@
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
@@ -499,7 +501,11 @@ vtkSmartPointer<vtkPolyData> MaterialMesh(
 } // anonymous namespace
 
 //------------------------------------------------------------------------------
-vtkDeepGIDemoScene::vtkDeepGIDemoScene() = default;
+vtkDeepGIDemoScene::vtkDeepGIDemoScene()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
 vtkDeepGIDemoScene::~vtkDeepGIDemoScene() = default;
 
 //------------------------------------------------------------------------------
@@ -519,7 +525,7 @@ void vtkDeepGIDemoScene::SetScaleFactor(double scale)
 }
 
 //------------------------------------------------------------------------------
-void vtkDeepGIDemoScene::Update()
+void vtkDeepGIDemoScene::Build()
 {
   if (!this->MaterialPolyData.empty() && this->BuildTime > this->GetMTime())
   {
@@ -555,9 +561,17 @@ void vtkDeepGIDemoScene::Update()
 }
 
 //------------------------------------------------------------------------------
+int vtkDeepGIDemoScene::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData::GetData(outputVector)->ShallowCopy(this->GetScenePolyData());
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 vtkIdType vtkDeepGIDemoScene::GetNumberOfTriangles()
 {
-  this->Update();
+  this->Build();
   vtkIdType n = 0;
   for (const auto& pd : this->MaterialPolyData)
   {
@@ -569,7 +583,7 @@ vtkIdType vtkDeepGIDemoScene::GetNumberOfTriangles()
 //------------------------------------------------------------------------------
 vtkIdType vtkDeepGIDemoScene::GetNumberOfPoints()
 {
-  this->Update();
+  this->Build();
   vtkIdType n = 0;
   for (const auto& pd : this->MaterialPolyData)
   {
@@ -581,7 +595,7 @@ vtkIdType vtkDeepGIDemoScene::GetNumberOfPoints()
 //------------------------------------------------------------------------------
 double vtkDeepGIDemoScene::GetEdgeLength()
 {
-  this->Update();
+  this->Build();
   return this->EdgeLength;
 }
 
@@ -593,14 +607,14 @@ vtkPolyData* vtkDeepGIDemoScene::GetMaterialPolyData(int material)
     vtkErrorMacro("No material " << material);
     return nullptr;
   }
-  this->Update();
+  this->Build();
   return this->MaterialPolyData[material];
 }
 
 //------------------------------------------------------------------------------
 vtkPolyData* vtkDeepGIDemoScene::GetScenePolyData()
 {
-  this->Update();
+  this->Build();
   if (!this->ScenePolyData || this->ScenePolyData->GetMTime() < this->BuildTime)
   {
     vtkNew<vtkAppendPolyData> append;
@@ -626,7 +640,7 @@ vtkPolyData* vtkDeepGIDemoScene::GetScenePolyData()
 //------------------------------------------------------------------------------
 void vtkDeepGIDemoScene::GetBounds(double bounds[6])
 {
-  this->Update();
+  this->Build();
   vtkMath::UninitializeBounds(bounds);
   bool first = true;
   for (const auto& pd : this->MaterialPolyData)
@@ -680,7 +694,7 @@ void vtkDeepGIDemoScene::AddActors(vtkRenderer* renderer)
     vtkErrorMacro("AddActors: no renderer");
     return;
   }
-  this->Update();
+  this->Build();
   for (int i = 0; i < NUMBER_OF_MATERIALS; ++i)
   {
     vtkPolyData* pd = this->MaterialPolyData[i];

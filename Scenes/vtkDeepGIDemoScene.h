@@ -38,7 +38,10 @@
  * scene->SetCameraToDefaultView(renderer->GetActiveCamera());
  * @endcode
  *
- * The geometry is (re)built lazily by Update(), which every accessor calls.
+ * The scene is a VTK source (no input): its output is GetScenePolyData(),
+ * so that it can feed a pipeline (Update(), GetOutputPort()). The geometry
+ * is (re)built lazily when a parameter changed, by Update() or by any
+ * accessor.
  */
 
 #ifndef vtkDeepGIDemoScene_h
@@ -46,7 +49,7 @@
 
 #include "vtkDeepGIScenesModule.h" // for export macro
 #include "vtkDeepGISetGet.h"       // for vtkDeepGISetClampMacro
-#include "vtkObject.h"
+#include "vtkPolyDataAlgorithm.h"
 #include "vtkSmartPointer.h" // for ivars
 #include "vtkTimeStamp.h"    // for ivars
 
@@ -56,11 +59,11 @@ class vtkCamera;
 class vtkPolyData;
 class vtkRenderer;
 
-class VTKDEEPGISCENES_EXPORT vtkDeepGIDemoScene : public vtkObject
+class VTKDEEPGISCENES_EXPORT vtkDeepGIDemoScene : public vtkPolyDataAlgorithm
 {
 public:
   static vtkDeepGIDemoScene* New();
-  vtkTypeMacro(vtkDeepGIDemoScene, vtkObject);
+  vtkTypeMacro(vtkDeepGIDemoScene, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// The scene's materials; each becomes one actor with its own albedo.
@@ -147,9 +150,6 @@ public:
   vtkDeepGISetClampMacro(FeatureAngle, double, 0.0, 180.0);
   vtkGetMacro(FeatureAngle, double);
   ///@}
-
-  /// Builds the geometry if a parameter changed since the last build.
-  void Update();
 
   /// Number of triangles of the whole scene (builds if needed).
   vtkIdType GetNumberOfTriangles();
@@ -257,6 +257,13 @@ protected:
 
   void SetCamera(
     vtkCamera* camera, const double position[3], const double focalPoint[3], double viewAngle);
+
+  /// Builds the geometry if a parameter changed since the last build.
+  void Build();
+
+  /// The output: GetScenePolyData().
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
 
 private:
   vtkDeepGIDemoScene(const vtkDeepGIDemoScene&) = delete;

@@ -31,6 +31,7 @@
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
+#include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVolume16Reader.h"
 #include "vtkXMLPolyDataWriter.h"
@@ -203,6 +204,27 @@ vtkIdType CountObjTriangles(const std::string& path)
     }
   }
   return triangles;
+}
+
+// The scene as a VTK source: its output is the scene polydata, rebuilt
+// through the pipeline when a parameter changes.
+void TestDemoSceneSource()
+{
+  vtkNew<vtkDeepGIDemoScene> scene;
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(scene->GetOutputPort());
+  triangles->Update();
+  const vtkIdType n10k = scene->GetNumberOfTriangles();
+  Check(triangles->GetOutput()->GetNumberOfCells() == n10k &&
+      triangles->GetOutput()->GetCellData()->GetArray("MaterialId"),
+    Text("the source's output through vtkTriangleFilter: ", n10k,
+      " triangles with MaterialId, got ", triangles->GetOutput()->GetNumberOfCells()));
+  scene->SetTargetNumberOfTriangles(20000);
+  triangles->Update();
+  Check(triangles->GetOutput()->GetNumberOfCells() == scene->GetNumberOfTriangles() &&
+      scene->GetNumberOfTriangles() >= 20000,
+    Text("a new target reaches the pipeline: ", triangles->GetOutput()->GetNumberOfCells(),
+      " triangles"));
 }
 
 void TestDemoScene()
@@ -649,6 +671,7 @@ int TestDeepGIDemoScene(int argc, char* argv[])
   }
 
   TestDemoScene();
+  TestDemoSceneSource();
   TestLoader(data, temp);
 
   return DeepGITest::ExitStatus();
