@@ -38,7 +38,6 @@ using vtkDeepGISceneMesh::Part;
 using vtkDeepGISceneMessages::Collector;
 using vtkDeepGISceneVolumes::Extension;
 using vtkDeepGISceneVolumes::IsVolumeExtension;
-
 } // anonymous namespace
 
 class vtkDeepGISceneLoader::vtkInternals
