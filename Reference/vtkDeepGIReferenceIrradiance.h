@@ -47,7 +47,7 @@
  * divided by 255 like "Colors"). That is what the G-buffer's
  * Radiance_j - Ambient_j holds on a prop marked vtkDeepGBufferPass::EMISSIVE()
  * beyond its diffuse term: VTK's ambient term Ambient * AmbientColor, which
- * the emitters of vtkDeepGBufferSceneLoader (MTL Ke) draw as Ke / max(Ke).
+ * the emitters of vtkDeepGISceneLoader (MTL Ke) draw as Ke / max(Ke).
  * A hit Y then leaves L(Y) = L_emitted(Y) + L_direct(Y). VTK 9.1 draws the
  * ambient term on both sides of a triangle (without a backface property the
  * back face uses the front's colours; measured in TestDeepGBufferEmissive:
@@ -334,8 +334,8 @@ public:
   /**
    * Diffuse coefficient (VTK's vtkProperty::Diffuse) multiplied into the
    * "Colors" albedo when the scene carries no "Diffuse" cell or field array.
-   * [0, 1]; default 1. The scene polydata of vtkDeepGBufferDemoScene and
-   * vtkDeepGBufferSceneLoader carry their actors' Diffuse as field data.
+   * [0, 1]; default 1. The scene polydata of vtkDeepGIDemoScene and
+   * vtkDeepGISceneLoader carry their actors' Diffuse as field data.
    * Those scenes carry their actors' 0.9.
    *
    * @range [0, 1], clamped

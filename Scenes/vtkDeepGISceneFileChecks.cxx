@@ -4,9 +4,12 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkPLYReader.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSTLReader.h"
+#include "vtkXMLPolyDataReader.h"
 
 #include <vtksys/FStream.hxx>
 #include <vtksys/SystemTools.hxx>
@@ -526,5 +529,32 @@ std::string CheckSTL(const std::string& path)
       std::to_string(needed) + " bytes) but it has " + std::to_string(size) + " bytes (truncated)";
   }
   return "";
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkAlgorithm> MakeMeshReader(
+  const std::string& path, const std::string& ext, std::string& invalid)
+{
+  if (ext == ".ply")
+  {
+    invalid = CheckPLY(path);
+    auto r = vtkSmartPointer<vtkPLYReader>::New();
+    r->SetFileName(path.c_str());
+    return r;
+  }
+  if (ext == ".stl")
+  {
+    invalid = CheckSTL(path);
+    auto r = vtkSmartPointer<vtkSTLReader>::New();
+    r->SetFileName(path.c_str());
+    return r;
+  }
+  if (ext == ".vtp")
+  {
+    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    r->SetFileName(path.c_str());
+    return r;
+  }
+  return nullptr;
 }
 }

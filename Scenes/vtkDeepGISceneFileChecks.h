@@ -1,6 +1,6 @@
 /**
  * @file   vtkDeepGISceneFileChecks.h
- * @brief  Checks vtkDeepGBufferSceneLoader runs on a file before a reader of
+ * @brief  Checks vtkDeepGISceneLoader runs on a file before a reader of
  *         VTK 9.1 sees it (private to DeepGI::Scenes).
  *
  * VTK 9.1's vtkPLYReader and vtkSTLReader trust the counts a file
@@ -14,9 +14,13 @@
 #ifndef vtkDeepGISceneFileChecks_h
 #define vtkDeepGISceneFileChecks_h
 
+#include "vtkSmartPointer.h"
+
 #include <cstdint>
 #include <istream>
 #include <string>
+
+class vtkAlgorithm;
 
 namespace vtkDeepGISceneFileChecks
 {
@@ -56,6 +60,14 @@ std::string CheckPLY(const std::string& path);
  * 50 bytes of each triangle its header declares.
  */
 std::string CheckSTL(const std::string& path);
+
+/**
+ * VTK's reader of the mesh file `path` by its `extension` (".ply",
+ * ".stl", ".vtp"; nullptr for others), and in `invalid` why the file is
+ * refused before the reader sees it (CheckPLY, CheckSTL; "" when sound).
+ */
+vtkSmartPointer<vtkAlgorithm> MakeMeshReader(
+  const std::string& path, const std::string& extension, std::string& invalid);
 }
 
 #endif

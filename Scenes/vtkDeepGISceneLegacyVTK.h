@@ -1,6 +1,6 @@
 /**
  * @file   vtkDeepGISceneLegacyVTK.h
- * @brief  The legacy .vtk polydata reader of vtkDeepGBufferSceneLoader
+ * @brief  The legacy .vtk polydata reader of vtkDeepGISceneLoader
  *         (private to DeepGI::Scenes).
  *
  * VTK 9.1's vtkPolyDataReader trusts every count a file declares: a cell

@@ -1,5 +1,5 @@
 // vtkDeepGISceneText.h: the text helpers the scene readers share
-// (vtkDeepGISceneOBJ and vtkDeepGISceneNrrd). Private to DeepGI::Scenes; not
+// (vtkDeepGIOBJReader and vtkDeepGINrrdReader). Private to DeepGI::Scenes; not
 // installed.
 #ifndef vtkDeepGISceneText_h
 #define vtkDeepGISceneText_h

@@ -4,8 +4,9 @@
 #
 #   bash scripts/fuzz.sh [TARGET|all] [SECONDS]
 #
-# TARGET: obj, mtl, nhdr, nrrd, ply, stl, vtk (vtkDeepGBufferSceneLoader on a
-# file of that format) or exr (vtkDeepGIEXRReader); default all, one after
+# TARGET: obj, mtl (vtkDeepGIOBJReader, then vtkDeepGISceneLoader), nhdr,
+# nrrd (vtkDeepGINrrdReader, then the loader), ply, stl, vtk (the loader) on
+# a file of that format, or exr (vtkDeepGIEXRReader); default all, one after
 # the other. SECONDS: how long each target runs (default 60).
 #
 # - clang and its libFuzzer runtime are installed with apt-get when missing

@@ -36,11 +36,11 @@
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
 #include "vtkDeepAmbientObscurancePass.h"
-#include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferPass.h"
-#include "vtkDeepGBufferSceneLoader.h"
 #include "vtkDeepGICaptureNames.h"
+#include "vtkDeepGIDemoScene.h"
 #include "vtkDeepGIReferenceObscurance.h"
+#include "vtkDeepGISceneLoader.h"
 #include "vtkDeepRadiosityPass.h"
 #include "vtkImageData.h"
 #include "vtkLightCollection.h"
@@ -223,7 +223,7 @@ struct Options : AccuracyOptions
   std::vector<Method> Methods;
 };
 
-/// --mesh FILE, --scene FILE (any file vtkDeepGBufferSceneLoader reads),
+/// --mesh FILE, --scene FILE (any file vtkDeepGISceneLoader reads),
 /// --volume FILE --iso V: one scene each, checked for a readable file here.
 bool ParseSceneFileOption(
   const std::string& arg, const std::string& value, Options& o, std::string& error)
@@ -418,7 +418,7 @@ bool LoadScene(const Options& o, const std::string& name, vtkRenderer* renderer,
   s.Name = name;
   if (name == "demo" || name == "demo-columns")
   {
-    auto demo = vtkSmartPointer<vtkDeepGBufferDemoScene>::New();
+    auto demo = vtkSmartPointer<vtkDeepGIDemoScene>::New();
     demo->SetTargetNumberOfTriangles(200000);
     demo->Populate(renderer);
     if (name == "demo")
@@ -434,7 +434,7 @@ bool LoadScene(const Options& o, const std::string& name, vtkRenderer* renderer,
   }
   else
   {
-    auto loader = vtkSmartPointer<vtkDeepGBufferSceneLoader>::New();
+    auto loader = vtkSmartPointer<vtkDeepGISceneLoader>::New();
     bool ok = false;
     if (name.rfind("mesh:", 0) == 0)
     {

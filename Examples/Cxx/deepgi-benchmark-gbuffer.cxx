@@ -20,8 +20,8 @@
 #include "DeepGIBenchmarkCommon.h"
 
 #include "vtkCamera.h"
-#include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferPass.h"
+#include "vtkDeepGIDemoScene.h"
 #include "vtkDeepGIRenderWindowFactory.h"
 #include "vtkDeepRadiosityPass.h"
 #include "vtkNew.h"
@@ -184,7 +184,7 @@ std::vector<Method> MakeMethods()
 /// Every method's frame times along the scene's camera path, all methods in
 /// each round, and its geometry submissions per frame.
 void TimeAlongCameraPath(
-  const Options& o, const View& view, vtkDeepGBufferDemoScene* scene, std::vector<Method>& methods)
+  const Options& o, const View& view, vtkDeepGIDemoScene* scene, std::vector<Method>& methods)
 {
   std::vector<vtkRenderPass*> passes;
   for (const Method& m : methods)
@@ -210,7 +210,7 @@ void TimeAlongCameraPath(
 }
 
 /// The run's settings and a row per method; the CSV file's rows into `csv`.
-std::string MethodTable(const Options& o, vtkDeepGBufferDemoScene* scene, const std::string& device,
+std::string MethodTable(const Options& o, vtkDeepGIDemoScene* scene, const std::string& device,
   const std::vector<Method>& methods, std::string& csvText)
 {
   const double firstLayer = Median(methods[1].Milliseconds);
@@ -300,7 +300,7 @@ int main(int argc, char* argv[])
   {
     return 1;
   }
-  vtkNew<vtkDeepGBufferDemoScene> scene;
+  vtkNew<vtkDeepGIDemoScene> scene;
   scene->SetTargetNumberOfTriangles(options.Triangles);
   scene->Populate(view.Renderer);
   std::vector<Method> methods = MakeMethods();

@@ -46,11 +46,11 @@
 #include "vtkActorCollection.h"
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
-#include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferPass.h"
-#include "vtkDeepGBufferSceneLoader.h"
 #include "vtkDeepGICaptureNames.h"
+#include "vtkDeepGIDemoScene.h"
 #include "vtkDeepGIReferenceIrradiance.h"
+#include "vtkDeepGISceneLoader.h"
 #include "vtkDeepRadiosityPass.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
@@ -354,7 +354,7 @@ vtkSmartPointer<vtkPolyData> LoadScene(const Options& o, const std::string& name
 {
   if (name == "demo")
   {
-    auto demo = vtkSmartPointer<vtkDeepGBufferDemoScene>::New();
+    auto demo = vtkSmartPointer<vtkDeepGIDemoScene>::New();
     demo->SetTargetNumberOfTriangles(100000);
     demo->Populate(renderer);
     demo->SetCameraToDefaultView(renderer->GetActiveCamera());
@@ -362,7 +362,7 @@ vtkSmartPointer<vtkPolyData> LoadScene(const Options& o, const std::string& name
     renderer->ResetCameraClippingRange();
     return demo->GetScenePolyData();
   }
-  auto loader = vtkSmartPointer<vtkDeepGBufferSceneLoader>::New();
+  auto loader = vtkSmartPointer<vtkDeepGISceneLoader>::New();
   bool ok = false;
   if (name == "cornell-lucy")
   {

@@ -2,7 +2,7 @@
 // vtkDeepReflectionPass against ray-traced hits (vtkDeepGIReferenceReflection),
 // one-layer and two-layer G-buffer, on two scenes:
 //
-// - demo-mirror: the demo room (vtkDeepGBufferDemoScene, default view) with
+// - demo-mirror: the demo room (vtkDeepGIDemoScene, default view) with
 //   its floor a perfect mirror (Specular 1, white SpecularColor);
 // - figure13: the paper's Figure 13 set-up (as TestDeepReflectionSecondLayer):
 //   a mirror floor, a grey panel leaving a gap above the floor and a red box
@@ -30,9 +30,9 @@
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
 #include "vtkDataArray.h"
-#include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDeepGICaptureNames.h"
+#include "vtkDeepGIDemoScene.h"
 #include "vtkDeepGIReferenceReflection.h"
 #include "vtkDeepGIRenderWindowFactory.h"
 #include "vtkDeepRadiosityPass.h"
@@ -170,7 +170,7 @@ vtkSmartPointer<vtkPolyData> LoadScene(
 {
   if (name == "demo-mirror")
   {
-    auto demo = vtkSmartPointer<vtkDeepGBufferDemoScene>::New();
+    auto demo = vtkSmartPointer<vtkDeepGIDemoScene>::New();
     demo->SetTargetNumberOfTriangles(100000);
     demo->Populate(renderer);
     demo->SetCameraToDefaultView(renderer->GetActiveCamera());

@@ -10,12 +10,12 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkDeepAmbientObscurancePass.h"
-#include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferPass.h"
-#include "vtkDeepGBufferSceneLoader.h"
 #include "vtkDeepGICaptureNames.h"
+#include "vtkDeepGIDemoScene.h"
 #include "vtkDeepGIPass.h"
 #include "vtkDeepGIRenderWindowFactory.h"
+#include "vtkDeepGISceneLoader.h"
 #include "vtkDeepRadiosityPass.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
@@ -301,9 +301,9 @@ const OptionEntry OptionTable[] = {
     {
       o.View = v;
       o.ViewGiven = true;
-      for (int i = 0; i < vtkDeepGBufferDemoScene::GetNumberOfNamedViews(); ++i)
+      for (int i = 0; i < vtkDeepGIDemoScene::GetNumberOfNamedViews(); ++i)
       {
-        if (v == vtkDeepGBufferDemoScene::GetNamedViewName(i))
+        if (v == vtkDeepGIDemoScene::GetNamedViewName(i))
         {
           return "";
         }
@@ -416,8 +416,8 @@ int ParseOptions(int argc, char* argv[], Options& o, bool& exitNow)
 // The scene on the renderer, with its camera; keeps the object that owns it.
 struct Scene
 {
-  vtkNew<vtkDeepGBufferDemoScene> Demo;
-  vtkNew<vtkDeepGBufferSceneLoader> Loader;
+  vtkNew<vtkDeepGIDemoScene> Demo;
+  vtkNew<vtkDeepGISceneLoader> Loader;
   vtkIdType Triangles = 0;
   std::string Description;
 };

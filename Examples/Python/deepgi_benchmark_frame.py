@@ -12,7 +12,7 @@ Scenes (--scenes, comma list; every actor gets VTK's default property:
 white, Ambient 0, Diffuse 1, Specular 0, i.e. what a VTK user gets without
 choosing materials):
 
-- bunny-floor: Testing/Data/meshes/bunny.ply (vtkDeepGBufferSceneLoader:
+- bunny-floor: Testing/Data/meshes/bunny.ply (vtkDeepGISceneLoader:
   its camera and camera light) above a square floor three times the
   bunny's width;
 - bunny-floor-1m: the same with the bunny subdivided twice
@@ -176,7 +176,7 @@ def subdivide(actor):
 
 def populate(renderer, scene, data):
     """Fills the renderer; returns the scene's display name, and an object to keep."""
-    loader = vtkdeepgi.vtkDeepGBufferSceneLoader()
+    loader = vtkdeepgi.vtkDeepGISceneLoader()
     if scene in ("bunny-floor", "bunny-floor-1m"):
         ok, name = loader.Load(data + "/meshes/bunny.ply"), scene
     else:

@@ -114,12 +114,12 @@ def load_shared_scene(loader, scene, data):
 def populate(renderer, scene, data):
     """Fills the renderer; returns the scene's display name, and an object to keep."""
     if scene == "demo":
-        demo = vtkdeepgi.vtkDeepGBufferDemoScene()
+        demo = vtkdeepgi.vtkDeepGIDemoScene()
         demo.SetTargetNumberOfTriangles(20000)
         demo.Populate(renderer)
         demo.SetCameraToDefaultView(renderer.GetActiveCamera())
         return "demo", demo
-    loader = vtkdeepgi.vtkDeepGBufferSceneLoader()
+    loader = vtkdeepgi.vtkDeepGISceneLoader()
     if scene == "cornell-lucy":
         ok, name = loader.Load(data + "/scenes/cornell-lucy/CornellBox-Lucy.obj"), scene
     elif scene == "dragon":

@@ -38,7 +38,7 @@ def measure(preset, estimator=None):
     window.SetSize(320, 240)
     renderer = vtkRenderer()
     window.AddRenderer(renderer)
-    scene = vtkdeepgi.vtkDeepGBufferDemoScene()
+    scene = vtkdeepgi.vtkDeepGIDemoScene()
     scene.SetTargetNumberOfTriangles(20000)
     scene.Populate(renderer)
     scene.SetCameraToDefaultView(renderer.GetActiveCamera())

@@ -165,7 +165,7 @@ public:
   /**
    * When on (default), r is AutomaticRadiusFraction times the diagonal of
    * the bounds of the renderer's visible props, every frame, so it follows
-   * the scene's scale (0.67 in vtkDeepGBufferDemoScene's 10 x 4 x 8 room,
+   * the scene's scale (0.67 in vtkDeepGIDemoScene's 10 x 4 x 8 room,
    * about SAO's 1 m in the paper's 30-40 m scenes).
    *
    * @range on/off

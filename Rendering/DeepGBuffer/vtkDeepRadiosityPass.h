@@ -195,7 +195,7 @@ public:
   /**
    * When on (default), r is AutomaticRadiusFraction times the diagonal of
    * the bounds of the renderer's visible props, every frame (1.34 in
-   * vtkDeepGBufferDemoScene's 10 x 4 x 8 room).
+   * vtkDeepGIDemoScene's 10 x 4 x 8 room).
    *
    * @range on/off
    * @default on

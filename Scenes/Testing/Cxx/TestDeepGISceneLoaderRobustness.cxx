@@ -1,4 +1,4 @@
-// Regression tests of vtkDeepGBufferSceneLoader on files that crashed, hung,
+// Regression tests of vtkDeepGISceneLoader on files that crashed, hung,
 // lost data silently or allocated without bound (Testing/Data/robustness,
 // see MANIFEST.md). Each finding is one CTest test:
 //   TestDeepGISceneLoaderRobustness --data DIR -T TEMPDIR --finding NAME
@@ -11,7 +11,7 @@
 #include "DeepGITestData.h"
 
 #include "vtkCommand.h"
-#include "vtkDeepGBufferSceneLoader.h"
+#include "vtkDeepGISceneLoader.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -58,7 +58,7 @@ public:
 struct Fixture
 {
   std::string Data, Temp;
-  vtkNew<vtkDeepGBufferSceneLoader> Loader;
+  vtkNew<vtkDeepGISceneLoader> Loader;
   vtkNew<Messages> Log;
 
   Fixture()

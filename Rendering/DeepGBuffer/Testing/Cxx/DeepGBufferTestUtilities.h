@@ -12,9 +12,9 @@
 #include "vtkCommand.h"
 #include "vtkCubeSource.h"
 #include "vtkDataArray.h"
-#include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDeepGICaptureNames.h"
+#include "vtkDeepGIDemoScene.h"
 #include "vtkDeepGIRenderWindowFactory.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -81,11 +81,11 @@ inline vtkActor* AddBox(vtkRenderer* renderer, const double center[3], const dou
   return AddSourceActor(renderer, cube);
 }
 
-// Populates `renderer` with the demo scene (vtkDeepGBufferDemoScene) of
+// Populates `renderer` with the demo scene (vtkDeepGIDemoScene) of
 // about `triangles` triangles, seen from its default view.
 inline bool AddDemoScene(vtkRenderer* renderer, int triangles = 20000)
 {
-  vtkNew<vtkDeepGBufferDemoScene> scene;
+  vtkNew<vtkDeepGIDemoScene> scene;
   scene->SetTargetNumberOfTriangles(triangles);
   scene->Populate(renderer);
   scene->SetCameraToDefaultView(renderer->GetActiveCamera());

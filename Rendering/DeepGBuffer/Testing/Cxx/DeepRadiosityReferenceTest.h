@@ -7,9 +7,9 @@
 
 #include "DeepGBufferTestUtilities.h"
 
-#include "vtkDeepGBufferDemoScene.h"
-#include "vtkDeepGBufferSceneLoader.h"
+#include "vtkDeepGIDemoScene.h"
 #include "vtkDeepGIReferenceIrradiance.h"
+#include "vtkDeepGISceneLoader.h"
 
 #include <string>
 #include <vector>
@@ -27,7 +27,7 @@ inline vtkSmartPointer<vtkPolyData> PopulateScene(const std::string& name, const
 {
   if (name == "demo")
   {
-    auto demo = vtkSmartPointer<vtkDeepGBufferDemoScene>::New();
+    auto demo = vtkSmartPointer<vtkDeepGIDemoScene>::New();
     demo->SetTargetNumberOfTriangles(20000);
     demo->Populate(renderer);
     demo->SetCameraToDefaultView(renderer->GetActiveCamera());
@@ -35,7 +35,7 @@ inline vtkSmartPointer<vtkPolyData> PopulateScene(const std::string& name, const
     keep = demo;
     return demo->GetScenePolyData();
   }
-  auto loader = vtkSmartPointer<vtkDeepGBufferSceneLoader>::New();
+  auto loader = vtkSmartPointer<vtkDeepGISceneLoader>::New();
   if (!loader->Load((data + "/scenes/cornell-original/CornellBox-Original.obj").c_str()))
   {
     return nullptr;

@@ -1,6 +1,6 @@
 // Regression image of vtkDeepAmbientObscurancePass on the skin of the
 // headsq CT volume (Testing/Data/volumes/headsq, iso-value 500 through
-// vtkDeepGBufferSceneLoader, its default light and the documented face-on
+// vtkDeepGISceneLoader, its default light and the documented face-on
 // view): left the AO-composited image, right the ambient visibility (see
 // DeepAmbientObscuranceImageTest.h). Automatic radius, N = 16.
 // Threshold 0.5 and the margins of the numeric ranges: as in
@@ -11,7 +11,7 @@
 
 #include "DeepAmbientObscuranceImageTest.h"
 #include "DeepGITestData.h"
-#include "vtkDeepGBufferSceneLoader.h"
+#include "vtkDeepGISceneLoader.h"
 
 int TestDeepAmbientObscuranceHeadImage(int argc, char* argv[])
 {
@@ -26,7 +26,7 @@ int TestDeepAmbientObscuranceHeadImage(int argc, char* argv[])
     argc, argv,
     [&data](vtkRenderer* renderer)
     {
-      vtkNew<vtkDeepGBufferSceneLoader> loader;
+      vtkNew<vtkDeepGISceneLoader> loader;
       loader->SetIsoValue(500.0);
       if (!loader->Load((data + "/volumes/headsq/quarter").c_str()) ||
         loader->Populate(renderer) == 0)

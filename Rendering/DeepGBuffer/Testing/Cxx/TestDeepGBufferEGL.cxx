@@ -5,7 +5,7 @@
 #include "DeepGBufferTestUtilities.h"
 
 #include "vtkCamera.h"
-#include "vtkDeepGBufferDemoScene.h"
+#include "vtkDeepGIDemoScene.h"
 #include "vtkDeepGIRenderWindowFactory.h"
 
 int TestDeepGBufferEGL(int, char*[])

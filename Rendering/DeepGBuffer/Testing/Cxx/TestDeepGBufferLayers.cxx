@@ -14,9 +14,9 @@
 #include "DeepGITestData.h"
 
 #include "vtkCamera.h"
-#include "vtkDeepGBufferDemoScene.h"
-#include "vtkDeepGBufferSceneLoader.h"
 #include "vtkDeepGICaptureNames.h"
+#include "vtkDeepGIDemoScene.h"
+#include "vtkDeepGISceneLoader.h"
 #include "vtkFloatArray.h"
 #include "vtkLight.h"
 
@@ -211,7 +211,7 @@ int TestDeepGBufferLayers(int argc, char* argv[])
   };
   SceneBuilder cornell = [data](vtkRenderWindow*, vtkRenderer* renderer)
   {
-    vtkNew<vtkDeepGBufferSceneLoader> loader;
+    vtkNew<vtkDeepGISceneLoader> loader;
     if (!loader->Load((data + "/scenes/cornell-original/CornellBox-Original.obj").c_str()) ||
       loader->Populate(renderer) == 0)
     {

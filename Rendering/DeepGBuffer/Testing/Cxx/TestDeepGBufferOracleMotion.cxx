@@ -17,8 +17,8 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGICaptureNames.h"
+#include "vtkDeepGIDemoScene.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkSphereSource.h"
 
@@ -107,7 +107,7 @@ OracleMotion RunPath(int oracle, double dz)
   auto window = MakeWindow(Width, Height);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
-  vtkNew<vtkDeepGBufferDemoScene> scene;
+  vtkNew<vtkDeepGIDemoScene> scene;
   scene->SetTargetNumberOfTriangles(20000);
   scene->Populate(renderer);
 

@@ -22,8 +22,8 @@
 
 #include "DeepGBufferTestUtilities.h"
 
-#include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGICaptureNames.h"
+#include "vtkDeepGIDemoScene.h"
 #include "vtkDeepGIPass.h"
 #include "vtkRegressionTestImage.h"
 

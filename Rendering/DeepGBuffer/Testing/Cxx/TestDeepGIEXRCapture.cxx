@@ -9,8 +9,8 @@
 
 #include "DeepGBufferTestUtilities.h"
 
-#include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGICaptureNames.h"
+#include "vtkDeepGIDemoScene.h"
 #include "vtkDeepGIEXRReader.h"
 #include "vtkDeepGIEXRWriter.h"
 #include "vtkDeepGIReferenceObscurance.h"
@@ -85,7 +85,7 @@ int TestDeepGIEXRCapture(int argc, char* argv[])
   auto window = MakeWindow(160, 120);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
-  vtkNew<vtkDeepGBufferDemoScene> scene;
+  vtkNew<vtkDeepGIDemoScene> scene;
   scene->SetTargetNumberOfTriangles(20000);
   scene->Populate(renderer);
   scene->SetCameraToDefaultView(renderer->GetActiveCamera());

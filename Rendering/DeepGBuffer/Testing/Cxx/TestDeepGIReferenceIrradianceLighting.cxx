@@ -17,8 +17,8 @@
 #include "DeepGBufferTestUtilities.h"
 
 #include "vtkCamera.h"
-#include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGICaptureNames.h"
+#include "vtkDeepGIDemoScene.h"
 #include "vtkDeepGIReferenceIrradiance.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
@@ -34,7 +34,7 @@ int TestDeepGIReferenceIrradianceLighting(int, char*[])
   auto window = MakeWindow(160, 120);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
-  vtkNew<vtkDeepGBufferDemoScene> scene;
+  vtkNew<vtkDeepGIDemoScene> scene;
   scene->SetTargetNumberOfTriangles(20000);
   scene->Populate(renderer);
   scene->SetCameraToDefaultView(renderer->GetActiveCamera());

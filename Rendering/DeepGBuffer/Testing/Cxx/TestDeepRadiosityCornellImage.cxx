@@ -1,5 +1,5 @@
 // Regression image of vtkDeepRadiosityPass on the original Cornell box
-// (Testing/Data/scenes/cornell-original) as vtkDeepGBufferSceneLoader
+// (Testing/Data/scenes/cornell-original) as vtkDeepGISceneLoader
 // populates it: the lamp quad (MTL Ke 17 12 4) drawn EMISSIVE with colour
 // Ke / max(Ke), and lit by the spot light AddEmitterLight puts on it.
 // BALANCED preset, TemporalAlpha 0 so the progressive bounces converge in
@@ -27,8 +27,8 @@
 #include "DeepGITestData.h"
 #include "DeepRadiosityTest.h"
 
-#include "vtkDeepGBufferSceneLoader.h"
 #include "vtkDeepGICaptureNames.h"
+#include "vtkDeepGISceneLoader.h"
 #include "vtkImageActor.h"
 #include "vtkImageProperty.h"
 #include "vtkLightCollection.h"
@@ -62,7 +62,7 @@ struct Region
 // times its physical intensity; false (with a message) when that fails.
 bool PopulateCornellBox(const std::string& data, vtkRenderer* lit, double exposure)
 {
-  vtkNew<vtkDeepGBufferSceneLoader> loader;
+  vtkNew<vtkDeepGISceneLoader> loader;
   if (!loader->Load((data + "/scenes/cornell-original/CornellBox-Original.obj").c_str()))
   {
     std::printf("could not load the Cornell box from %s\n", data.c_str());

@@ -19,8 +19,8 @@
 
 #include "DeepRadiosityTest.h"
 
-#include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGICaptureNames.h"
+#include "vtkDeepGIDemoScene.h"
 #include "vtkImageActor.h"
 #include "vtkImageProperty.h"
 #include "vtkRegressionTestImage.h"

@@ -1,5 +1,5 @@
 // Temporal stability of vtkDeepRadiosityPass along the demo scene's camera
-// path (vtkDeepGBufferDemoScene::SetCameraToPathFrame, 240 frames per loop,
+// path (vtkDeepGIDemoScene::SetCameraToPathFrame, 240 frames per loop,
 // 160 x 120 pixels, default parameters): for every pixel of layer 0 whose
 // surface point is also seen in the previous frame (reprojected with the
 // captures' matrices, the previous frame's layer-0 point within 1 % of the
@@ -26,9 +26,9 @@
 #include "DeepGBufferTestUtilities.h"
 
 #include "vtkCamera.h"
-#include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDeepGICaptureNames.h"
+#include "vtkDeepGIDemoScene.h"
 #include "vtkDeepRadiosityPass.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -113,7 +113,7 @@ Measure Flicker(double alpha, double guardBand)
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(0, 0, 0);
   window->AddRenderer(renderer);
-  vtkNew<vtkDeepGBufferDemoScene> scene;
+  vtkNew<vtkDeepGIDemoScene> scene;
   scene->SetTargetNumberOfTriangles(20000);
   scene->Populate(renderer);
   vtkNew<vtkDeepRadiosityPass> pass;

@@ -12,8 +12,8 @@
 #include "DeepGBufferTestUtilities.h"
 
 #include "vtkActorCollection.h"
-#include "vtkDeepGBufferDemoScene.h"
 #include "vtkDeepGICaptureNames.h"
+#include "vtkDeepGIDemoScene.h"
 #include "vtkDeepReflectionPass.h"
 #include "vtkRegressionTestImage.h"
 
@@ -26,7 +26,7 @@ int TestDeepReflectionDemoImage(int argc, char* argv[])
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(0.1, 0.1, 0.15);
   window->AddRenderer(renderer);
-  vtkNew<vtkDeepGBufferDemoScene> scene;
+  vtkNew<vtkDeepGIDemoScene> scene;
   scene->SetTargetNumberOfTriangles(20000);
   scene->Populate(renderer);
   scene->SetCameraToDefaultView(renderer->GetActiveCamera());

@@ -37,7 +37,7 @@ def render(make_pass):
     window.SetSize(WIDTH, HEIGHT)
     renderer = vtkRenderer()
     window.AddRenderer(renderer)
-    scene = vtkdeepgi.vtkDeepGBufferDemoScene()
+    scene = vtkdeepgi.vtkDeepGIDemoScene()
     scene.SetTargetNumberOfTriangles(10000)
     scene.Populate(renderer)
     scene.SetCameraToDefaultView(renderer.GetActiveCamera())

@@ -24,7 +24,7 @@ def render(use_pass):
     window.SetSize(256, 192)
     renderer = vtkRenderer()
     window.AddRenderer(renderer)
-    scene = vtkdeepgi.vtkDeepGBufferDemoScene()
+    scene = vtkdeepgi.vtkDeepGIDemoScene()
     scene.SetTargetNumberOfTriangles(10000)
     scene.Populate(renderer)
     scene.SetCameraToDefaultView(renderer.GetActiveCamera())

@@ -35,7 +35,7 @@ def scene():
     window.SetSize(WIDTH, HEIGHT)
     renderer = vtkRenderer()
     window.AddRenderer(renderer)
-    demo = vtkdeepgi.vtkDeepGBufferDemoScene()
+    demo = vtkdeepgi.vtkDeepGIDemoScene()
     demo.SetTargetNumberOfTriangles(10000)
     demo.Populate(renderer)
     demo.SetCameraToDefaultView(renderer.GetActiveCamera())

@@ -33,7 +33,7 @@ def render(make_pass, frames):
     window.SetSize(WIDTH, HEIGHT)
     renderer = vtkRenderer()
     window.AddRenderer(renderer)
-    scene = vtkdeepgi.vtkDeepGBufferDemoScene()
+    scene = vtkdeepgi.vtkDeepGIDemoScene()
     scene.SetTargetNumberOfTriangles(10000)
     scene.Populate(renderer)
     scene.SetCameraToDefaultView(renderer.GetActiveCamera())

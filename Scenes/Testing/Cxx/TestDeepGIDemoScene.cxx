@@ -1,5 +1,5 @@
-// Tests vtkDeepGBufferDemoScene (triangle budget, scale, topology, camera
-// path) and vtkDeepGBufferSceneLoader (rejections and the project's test data).
+// Tests vtkDeepGIDemoScene (triangle budget, scale, topology, camera
+// path) and vtkDeepGISceneLoader (rejections and the project's test data).
 // Arguments: --data DIR (Testing/Data, see its MANIFEST.md),
 // -T DIR (a writable temporary directory).
 // Nothing is rendered: the test runs without a display.
@@ -16,9 +16,9 @@
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
-#include "vtkDeepGBufferDemoScene.h"
-#include "vtkDeepGBufferSceneLoader.h"
+#include "vtkDeepGIDemoScene.h"
 #include "vtkDeepGIKeys.h"
+#include "vtkDeepGISceneLoader.h"
 #include "vtkFlyingEdges3D.h"
 #include "vtkInformation.h"
 #include "vtkInformationIntegerKey.h"
@@ -31,6 +31,7 @@
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
+#include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVolume16Reader.h"
 #include "vtkXMLPolyDataWriter.h"
@@ -205,9 +206,30 @@ vtkIdType CountObjTriangles(const std::string& path)
   return triangles;
 }
 
+// The scene as a VTK source: its output is the scene polydata, rebuilt
+// through the pipeline when a parameter changes.
+void TestDemoSceneSource()
+{
+  vtkNew<vtkDeepGIDemoScene> scene;
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(scene->GetOutputPort());
+  triangles->Update();
+  const vtkIdType n10k = scene->GetNumberOfTriangles();
+  Check(triangles->GetOutput()->GetNumberOfCells() == n10k &&
+      triangles->GetOutput()->GetCellData()->GetArray("MaterialId"),
+    Text("the source's output through vtkTriangleFilter: ", n10k,
+      " triangles with MaterialId, got ", triangles->GetOutput()->GetNumberOfCells()));
+  scene->SetTargetNumberOfTriangles(20000);
+  triangles->Update();
+  Check(triangles->GetOutput()->GetNumberOfCells() == scene->GetNumberOfTriangles() &&
+      scene->GetNumberOfTriangles() >= 20000,
+    Text("a new target reaches the pipeline: ", triangles->GetOutput()->GetNumberOfCells(),
+      " triangles"));
+}
+
 void TestDemoScene()
 {
-  vtkNew<vtkDeepGBufferDemoScene> scene;
+  vtkNew<vtkDeepGIDemoScene> scene;
   vtkNew<ErrorCounter> errors;
   scene->AddObserver(vtkCommand::ErrorEvent, errors);
 
@@ -229,7 +251,7 @@ void TestDemoScene()
   // One actor per material, two lights, the required material settings.
   vtkNew<vtkRenderer> renderer;
   scene->Populate(renderer);
-  Check(renderer->GetActors()->GetNumberOfItems() == vtkDeepGBufferDemoScene::NUMBER_OF_MATERIALS,
+  Check(renderer->GetActors()->GetNumberOfItems() == vtkDeepGIDemoScene::NUMBER_OF_MATERIALS,
     "Populate adds one actor per material");
   Check(renderer->GetLights()->GetNumberOfItems() == 2, "Populate adds two lights");
   vtkActor* first = renderer->GetActors()->GetLastActor();
@@ -248,7 +270,7 @@ void TestDemoScene()
   CheckMesh(scene->GetScenePolyData(), false, true, "scene without normals");
   const vtkIdType withCeiling = scene->GetNumberOfTriangles();
   scene->CeilingOff();
-  Check(scene->GetMaterialPolyData(vtkDeepGBufferDemoScene::CEILING)->GetNumberOfCells() == 0,
+  Check(scene->GetMaterialPolyData(vtkDeepGIDemoScene::CEILING)->GetNumberOfCells() == 0,
     "no ceiling triangles with Ceiling off");
   Check(scene->GetNumberOfTriangles() >= 20000, "the target holds without ceiling");
   (void)withCeiling;
@@ -279,7 +301,7 @@ void TestDemoScene()
   scene->SetScaleFactor(1.0);
 
   // Camera path: deterministic, closed, moving, scaled with the scene.
-  vtkNew<vtkDeepGBufferDemoScene> other;
+  vtkNew<vtkDeepGIDemoScene> other;
   vtkNew<vtkCamera> a, b;
   const int frames = 120;
   double previous[3] = { 0, 0, 0 };
@@ -320,9 +342,9 @@ void TestDemoScene()
       std::abs(b->GetClippingRange()[0] - 1e-4 * a->GetClippingRange()[0]) < 1e-12,
     "the path scales with the scene");
 
-  for (int i = 0; i < vtkDeepGBufferDemoScene::GetNumberOfNamedViews(); ++i)
+  for (int i = 0; i < vtkDeepGIDemoScene::GetNumberOfNamedViews(); ++i)
   {
-    Check(scene->SetCameraToNamedView(a, vtkDeepGBufferDemoScene::GetNamedViewName(i)),
+    Check(scene->SetCameraToNamedView(a, vtkDeepGIDemoScene::GetNamedViewName(i)),
       Text("named view ", i));
   }
   const int beforeView = errors->Count;
@@ -334,14 +356,14 @@ void TestDemoScene()
 
 // Rejections: each returns false with exactly one error and loads nothing.
 void CheckBadFilesAreRejected(const std::string& data, const std::string& temp,
-  vtkDeepGBufferSceneLoader* loader, ErrorCounter* errors)
+  vtkDeepGISceneLoader* loader, ErrorCounter* errors)
 {
   struct Bad
   {
     std::string Path;
     const char* Why;
   };
-  const std::string empty = temp + "/TestDeepGBufferDemoScene-empty.vtp";
+  const std::string empty = temp + "/TestDeepGIDemoScene-empty.vtp";
   {
     vtkNew<vtkPolyData> nothing;
     vtkNew<vtkXMLPolyDataWriter> writer;
@@ -368,7 +390,7 @@ void CheckBadFilesAreRejected(const std::string& data, const std::string& temp,
 }
 
 // Bunny: 69,451 triangles, normals computed.
-void CheckBunnyLoads(const std::string& data, vtkDeepGBufferSceneLoader* loader)
+void CheckBunnyLoads(const std::string& data, vtkDeepGISceneLoader* loader)
 {
   Check(loader->Load((data + "/meshes/bunny.ply").c_str()), "bunny.ply loads");
   Check(loader->GetNumberOfTriangles() == 69451,
@@ -382,7 +404,7 @@ void CheckBunnyLoads(const std::string& data, vtkDeepGBufferSceneLoader* loader)
 }
 
 // Cornell box: 8 materials, 36 triangles, the left wall red (Kd).
-void CheckCornellBoxMaterials(const std::string& data, vtkDeepGBufferSceneLoader* loader)
+void CheckCornellBoxMaterials(const std::string& data, vtkDeepGISceneLoader* loader)
 {
   Check(loader->Load((data + "/scenes/cornell-original/CornellBox-Original.obj").c_str()),
     "CornellBox-Original.obj loads");
@@ -406,7 +428,7 @@ void CheckCornellBoxMaterials(const std::string& data, vtkDeepGBufferSceneLoader
 
 // The loaded Cornell box populates a renderer with VTK's material settings,
 // an emissive lamp and one spot light in place of VTK's default lights.
-void CheckCornellBoxPopulates(vtkDeepGBufferSceneLoader* loader)
+void CheckCornellBoxPopulates(vtkDeepGISceneLoader* loader)
 {
   vtkNew<vtkRenderer> renderer;
   Check(loader->Populate(renderer) == 8, "Populate adds 8 actors");
@@ -444,7 +466,7 @@ void CheckCornellBoxPopulates(vtkDeepGBufferSceneLoader* loader)
   loader->ResetCamera(renderer);
 }
 
-void CheckCornellScenePolyData(vtkDeepGBufferSceneLoader* loader)
+void CheckCornellScenePolyData(vtkDeepGISceneLoader* loader)
 {
   vtkPolyData* scene = loader->GetScenePolyData();
   CheckMesh(scene, true, true, "Cornell scene polydata");
@@ -476,7 +498,7 @@ void CheckCornellScenePolyData(vtkDeepGBufferSceneLoader* loader)
 }
 
 void CheckCornellBoxReloads(
-  const std::string& data, vtkDeepGBufferSceneLoader* loader, ErrorCounter* errors)
+  const std::string& data, vtkDeepGISceneLoader* loader, ErrorCounter* errors)
 {
   // Regression: VTK 9.1's vtkOBJImporter resolved "f -4 -3 -2 -1" against a
   // vertex count that carried over from the previous OBJ file of the
@@ -490,12 +512,12 @@ void CheckCornellBoxReloads(
   const std::string cornell = data + "/scenes/cornell-original/CornellBox-Original.obj";
   Check(CountObjTriangles(cornell) == 36,
     Text("CornellBox-Original.obj's text has ", CountObjTriangles(cornell), " triangles"));
-  vtkNew<vtkDeepGBufferSceneLoader> again;
+  vtkNew<vtkDeepGISceneLoader> again;
   again->AddObserver(vtkCommand::ErrorEvent, errors);
   Check(again->Load(cornell.c_str()), "a second CornellBox-Original.obj load succeeds");
   loader->Clear();
   Check(loader->Load(cornell.c_str()), "a third CornellBox-Original.obj load succeeds");
-  for (vtkDeepGBufferSceneLoader* l : { again.Get(), loader })
+  for (vtkDeepGISceneLoader* l : { again.Get(), loader })
   {
     Check(l->GetNumberOfParts() == 8,
       Text("reloaded Cornell box has ", l->GetNumberOfParts(), " parts, expected 8"));
@@ -537,7 +559,7 @@ void CheckCornellBoxReloads(
 // with one error. Forward references and relative indices are valid.
 void CheckBadObjIndicesAreSkipped(const std::string& temp)
 {
-  const std::string bad = temp + "/TestDeepGBufferDemoScene-bad-indices.obj";
+  const std::string bad = temp + "/TestDeepGIDemoScene-bad-indices.obj";
   {
     std::ofstream out(bad);
     out << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\n"
@@ -549,7 +571,7 @@ void CheckBadObjIndicesAreSkipped(const std::string& temp)
            "f 1 2 5//3\n"                // forward reference; normal 3 does not exist
            "v 0 0 1\n";
   }
-  vtkNew<vtkDeepGBufferSceneLoader> l;
+  vtkNew<vtkDeepGISceneLoader> l;
   vtkNew<ErrorCounter> badErrors, badWarnings;
   l->AddObserver(vtkCommand::ErrorEvent, badErrors);
   l->AddObserver(vtkCommand::WarningEvent, badWarnings);
@@ -562,7 +584,7 @@ void CheckBadObjIndicesAreSkipped(const std::string& temp)
   Check(l->GetNumberOfParts() == 1 && CountBadPointIds(l->GetPartPolyData(0)) == 0,
     "point ids in range after skipping bad faces");
 
-  const std::string none = temp + "/TestDeepGBufferDemoScene-no-good-faces.obj";
+  const std::string none = temp + "/TestDeepGIDemoScene-no-good-faces.obj";
   {
     std::ofstream out(none);
     out << "v 0 0 0\nv 1 0 0\nf 1 2 3\nf -1 -2 -3\n";
@@ -575,7 +597,7 @@ void CheckBadObjIndicesAreSkipped(const std::string& temp)
 
 // headsq at 500 (skin): 57,698 triangles (MANIFEST.md), by the directory,
 // the .nhdr and the slice prefix.
-void CheckHeadsqVolumeLoads(const std::string& data, vtkDeepGBufferSceneLoader* loader)
+void CheckHeadsqVolumeLoads(const std::string& data, vtkDeepGISceneLoader* loader)
 {
   for (const std::string& path : { data + "/volumes/headsq", data + "/volumes/headsq/quarter.nhdr",
          data + "/volumes/headsq/quarter" })
@@ -597,7 +619,7 @@ void CheckHeadsqVolumeLoads(const std::string& data, vtkDeepGBufferSceneLoader* 
 
 // The NRRD parser reads the slices the way vtkVolume16Reader does (index
 // order, no row flip): the same surface, point for point.
-void CheckNrrdMatchesVolume16Reader(const std::string& data, vtkDeepGBufferSceneLoader* loader)
+void CheckNrrdMatchesVolume16Reader(const std::string& data, vtkDeepGISceneLoader* loader)
 {
   vtkSmartPointer<vtkVolume16Reader> reader = DeepGITestData::HeadsqReader(data);
   vtkNew<vtkFlyingEdges3D> iso;
@@ -618,7 +640,7 @@ void CheckNrrdMatchesVolume16Reader(const std::string& data, vtkDeepGBufferScene
 
 void TestLoader(const std::string& data, const std::string& temp)
 {
-  vtkNew<vtkDeepGBufferSceneLoader> loader;
+  vtkNew<vtkDeepGISceneLoader> loader;
   vtkNew<ErrorCounter> errors;
   loader->AddObserver(vtkCommand::ErrorEvent, errors);
   CheckBadFilesAreRejected(data, temp, loader, errors);
@@ -635,20 +657,21 @@ void TestLoader(const std::string& data, const std::string& temp)
 }
 } // anonymous namespace
 
-int TestDeepGBufferDemoScene(int argc, char* argv[])
+int TestDeepGIDemoScene(int argc, char* argv[])
 {
-  const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepGBufferDemoScene");
+  const std::string data = DeepGITestData::Folder(argc, argv, "TestDeepGIDemoScene");
   const std::string temp = DeepGITest::Argument(argc, argv, "-T", ".");
   if (!DeepGITestData::Require(data,
         { "MANIFEST.md", "meshes/bunny.ply", "scenes/cornell-original/CornellBox-Original.obj",
           "scenes/cornell-original/CornellBox-Original.mtl", "volumes/headsq/quarter.nhdr",
           "volumes/headsq/quarter.1", "volumes/headsq/quarter.93" },
-        "TestDeepGBufferDemoScene"))
+        "TestDeepGIDemoScene"))
   {
     return EXIT_FAILURE;
   }
 
   TestDemoScene();
+  TestDemoSceneSource();
   TestLoader(data, temp);
 
   return DeepGITest::ExitStatus();

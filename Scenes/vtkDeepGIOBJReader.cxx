@@ -1,14 +1,24 @@
-#include "vtkDeepGISceneOBJ.h"
-#include "vtkDeepGISceneText.h"
+#include "vtkDeepGIOBJReader.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkDeepGISceneFileChecks.h"
+#include "vtkDeepGISceneText.h"
+#include "vtkDoubleArray.h"
+#include "vtkErrorCode.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
+#include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkStringArray.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <vtksys/FStream.hxx>
 #include <vtksys/SystemTools.hxx>
@@ -19,12 +29,14 @@
 #include <cstdint>
 #include <cstdlib>
 #include <map>
+#include <new>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <unordered_map>
 
-namespace vtkDeepGISceneOBJ
-{
+vtkStandardNewMacro(vtkDeepGIOBJReader);
+
 namespace
 {
 using vtkDeepGISceneText::ParseInteger;
@@ -514,18 +526,22 @@ bool HasUsableNormals(const FaceList& list, const std::vector<float>& normals)
   return true;
 }
 
-// The polydata of one material's faces. Points are the material's own
-// vertices (vertex and normal pairs where every corner has a normal), never
-// merged: coincident vertices and faces stay as they are in the file.
-vtkSmartPointer<vtkPolyData> MakeSurface(const FaceList& list, const Geometry& geometry)
+// The output being built: every material's points, normals and faces.
+struct Surface
 {
-  const bool withNormals = HasUsableNormals(list, geometry.Normals);
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkFloatArray> Normals;
+  vtkNew<vtkCellArray> Polys;
+  vtkNew<vtkIntArray> MaterialIds;
+};
+
+// Appends the faces of one material, with points of their own (vertex and
+// normal pairs where `withNormals`), never merged with other points:
+// coincident vertices and faces stay as they are in the file.
+void AppendFaces(
+  const FaceList& list, const Geometry& geometry, bool withNormals, int material, Surface& surface)
+{
   std::unordered_map<unsigned long long, vtkIdType> pointOf;
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkFloatArray> pointNormals;
-  pointNormals->SetName("Normals");
-  pointNormals->SetNumberOfComponents(3);
-  vtkNew<vtkCellArray> polys;
   std::vector<vtkIdType> ids;
   for (size_t f = 0; f + 1 < list.FaceStarts.size(); ++f)
   {
@@ -536,106 +552,216 @@ vtkSmartPointer<vtkPolyData> MakeSurface(const FaceList& list, const Geometry& g
       const long long n = withNormals ? list.Normals[c] : -1;
       const unsigned long long key =
         (static_cast<unsigned long long>(v) << 32) ^ static_cast<unsigned long long>(n + 1);
-      auto inserted = pointOf.emplace(key, points->GetNumberOfPoints());
+      auto inserted = pointOf.emplace(key, surface.Points->GetNumberOfPoints());
       if (inserted.second)
       {
-        points->InsertNextPoint(&geometry.Vertices[3 * v]);
+        surface.Points->InsertNextPoint(&geometry.Vertices[3 * v]);
         if (withNormals)
         {
           const float* stored = &geometry.Normals[3 * n];
           double normal[3] = { stored[0], stored[1], stored[2] };
           vtkMath::Normalize(normal);
-          pointNormals->InsertNextTuple(normal);
+          surface.Normals->InsertNextTuple(normal);
         }
       }
       ids.push_back(inserted.first->second);
     }
-    polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    surface.Polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    surface.MaterialIds->InsertNextValue(material);
   }
-  auto surface = vtkSmartPointer<vtkPolyData>::New();
-  surface->SetPoints(points);
-  surface->SetPolys(polys);
-  if (withNormals)
-  {
-    surface->GetPointData()->SetNormals(pointNormals);
-  }
-  return surface;
 }
 
-// The Kd and Ke of the group's material, or Unknown when the MTL file does
-// not define it (faces without a material have neither).
-void AssignMaterial(const Materials& materials, Group& group)
+// The output's field data: one tuple per material.
+class MaterialTable
 {
-  if (group.Material.empty())
+public:
+  MaterialTable()
   {
-    return;
+    this->Name->SetName("MaterialName");
+    this->Kd->SetName("MaterialKd");
+    this->Kd->SetNumberOfComponents(3);
+    this->HasKd->SetName("MaterialHasKd");
+    this->Ke->SetName("MaterialKe");
+    this->Ke->SetNumberOfComponents(3);
+    this->Defined->SetName("MaterialDefined");
   }
-  auto color = materials.Kd.find(group.Material);
-  if (color != materials.Kd.end())
+
+  // The Kd and Ke of `material` in `materials` (none: no MTL file).
+  void Add(const std::string& material, const Materials* materials)
   {
-    std::copy(color->second.begin(), color->second.end(), group.Color);
-    group.HasColor = true;
-  }
-  else if (!materials.Names.count(group.Material))
-  {
-    group.Unknown = true;
-  }
-  auto emission = materials.Ke.find(group.Material);
-  if (emission != materials.Ke.end())
-  {
-    for (int c = 0; c < 3; ++c)
+    std::array<double, 3> kd = { 0.0, 0.0, 0.0 }, ke = { 0.0, 0.0, 0.0 };
+    const bool hasKd = materials && materials->Kd.count(material);
+    if (hasKd)
+    {
+      kd = materials->Kd.at(material);
+    }
+    if (materials && materials->Ke.count(material))
     {
       // Negative radiance is meaningless; such a Ke emits nothing.
-      group.Emission[c] = std::max(0.0, emission->second[c]);
+      for (int c = 0; c < 3; ++c)
+      {
+        ke[c] = std::max(0.0, materials->Ke.at(material)[c]);
+      }
+    }
+    // Faces without a material, and every face when there is no MTL file,
+    // have nothing to look up: only a named material can be missing.
+    const bool defined = !materials || material.empty() || materials->Names.count(material);
+    this->Name->InsertNextValue(material);
+    this->Kd->InsertNextTuple(kd.data());
+    this->HasKd->InsertNextValue(hasKd ? 1 : 0);
+    this->Ke->InsertNextTuple(ke.data());
+    this->Defined->InsertNextValue(defined ? 1 : 0);
+  }
+
+  void AddTo(vtkFieldData* fieldData, const std::string& materialFile)
+  {
+    vtkNew<vtkStringArray> file;
+    file->SetName("MaterialFile");
+    file->InsertNextValue(materialFile);
+    for (vtkAbstractArray* array : { static_cast<vtkAbstractArray*>(this->Name), //
+           static_cast<vtkAbstractArray*>(this->Kd), static_cast<vtkAbstractArray*>(this->HasKd),
+           static_cast<vtkAbstractArray*>(this->Ke), static_cast<vtkAbstractArray*>(this->Defined),
+           static_cast<vtkAbstractArray*>(file) })
+    {
+      fieldData->AddArray(array);
     }
   }
-}
-} // anonymous namespace
 
-//------------------------------------------------------------------------------
-std::string Read(const std::string& path, Scene& scene)
+private:
+  vtkNew<vtkStringArray> Name;
+  vtkNew<vtkDoubleArray> Kd, Ke;
+  vtkNew<vtkUnsignedCharArray> HasKd, Defined;
+};
+
+// The MTL file of the OBJ file `path`, read into `materials`; "" when there
+// is none or it cannot be read (a warning), and then the faces of all
+// materials are one list.
+std::string ReadMaterialFile(const std::string& path, Geometry& geometry, Materials& materials,
+  std::vector<std::string>& warnings)
 {
-  scene = Scene();
+  std::string file = FindMaterialFile(path, geometry.Libraries, warnings);
+  if (!file.empty() && !ReadMaterials(file, materials))
+  {
+    warnings.push_back("Cannot read the materials " + file + " of " + path +
+      " (larger than 64 MiB or a line longer than 1 MiB); the parts get the default colour");
+    file.clear();
+  }
+  if (file.empty())
+  {
+    MergeFaceLists(geometry.Lists);
+  }
+  return file;
+}
+
+// The output: one material per list with faces.
+void MakeOutput(const Geometry& geometry, const Materials* materials,
+  const std::string& materialFile, vtkPolyData* output)
+{
+  bool withNormals = true;
+  for (const FaceList& list : geometry.Lists)
+  {
+    withNormals = withNormals && HasUsableNormals(list, geometry.Normals);
+  }
+  Surface surface;
+  surface.Normals->SetName("Normals");
+  surface.Normals->SetNumberOfComponents(3);
+  surface.MaterialIds->SetName("MaterialId");
+  MaterialTable table;
+  int material = 0;
+  for (const FaceList& list : geometry.Lists)
+  {
+    if (!list.FaceLines.empty())
+    {
+      AppendFaces(list, geometry, withNormals, material++, surface);
+      table.Add(list.Material, materials);
+    }
+  }
+  output->SetPoints(surface.Points);
+  output->SetPolys(surface.Polys);
+  output->GetCellData()->AddArray(surface.MaterialIds);
+  if (withNormals)
+  {
+    output->GetPointData()->SetNormals(surface.Normals);
+  }
+  table.AddTo(output->GetFieldData(), materialFile);
+}
+
+// Reads the OBJ file `path` (and its MTL file) into `output`. Returns "" on
+// success, else one sentence saying why it cannot be read.
+std::string Read(const std::string& path, vtkPolyData* output, std::vector<std::string>& warnings)
+{
+  if (!IsRegularFile(path))
+  {
+    return "Cannot open OBJ " + path + " (missing, or not a regular file)";
+  }
   Geometry geometry;
   std::string error = ReadGeometry(path, geometry);
   if (error.empty())
   {
-    error = SkipOutOfRangeFaces(path, geometry, scene.Warnings);
+    error = SkipOutOfRangeFaces(path, geometry, warnings);
   }
   if (!error.empty())
   {
     return error;
   }
-
   Materials materials;
-  scene.MaterialFile = FindMaterialFile(path, geometry.Libraries, scene.Warnings);
-  if (!scene.MaterialFile.empty() && !ReadMaterials(scene.MaterialFile, materials))
-  {
-    scene.Warnings.push_back("Cannot read the materials " + scene.MaterialFile + " of " + path +
-      " (larger than 64 MiB or a line longer than 1 MiB); the parts get the default colour");
-    scene.MaterialFile.clear();
-  }
-  if (scene.MaterialFile.empty())
-  {
-    MergeFaceLists(geometry.Lists);
-  }
-
-  // One group per material with faces.
-  for (const FaceList& list : geometry.Lists)
-  {
-    if (list.FaceLines.empty())
-    {
-      continue;
-    }
-    Group group;
-    group.Material = list.Material;
-    group.PolyData = MakeSurface(list, geometry);
-    if (!scene.MaterialFile.empty())
-    {
-      AssignMaterial(materials, group);
-    }
-    scene.Groups.push_back(group);
-  }
+  const std::string materialFile = ReadMaterialFile(path, geometry, materials, warnings);
+  MakeOutput(geometry, materialFile.empty() ? nullptr : &materials, materialFile, output);
   return std::string();
 }
+} // anonymous namespace
+
+//------------------------------------------------------------------------------
+vtkDeepGIOBJReader::vtkDeepGIOBJReader()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+//------------------------------------------------------------------------------
+vtkDeepGIOBJReader::~vtkDeepGIOBJReader()
+{
+  this->SetFileName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+int vtkDeepGIOBJReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  const std::string path = this->FileName ? this->FileName : "";
+  std::vector<std::string> warnings;
+  std::string error = path.empty() ? "No OBJ file name given" : "";
+  // A file may declare more than memory holds: an error of this read, not
+  // the end of the process.
+  try
+  {
+    error = error.empty() ? Read(path, output, warnings) : error;
+  }
+  catch (const std::bad_alloc&)
+  {
+    error = "Out of memory reading OBJ " + path;
+  }
+  catch (const std::length_error&)
+  {
+    error = "OBJ " + path + " declares more data than fits";
+  }
+  this->SetErrorCode(error.empty() ? vtkErrorCode::NoError : vtkErrorCode::FileFormatError);
+  if (!error.empty())
+  {
+    output->Initialize();
+    vtkErrorMacro(<< error);
+    return 1;
+  }
+  for (const std::string& warning : warnings)
+  {
+    vtkWarningMacro(<< warning);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGIOBJReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
 }

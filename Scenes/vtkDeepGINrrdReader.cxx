@@ -1,13 +1,19 @@
-#include "vtkDeepGISceneNrrd.h"
-#include "vtkDeepGISceneText.h"
+#include "vtkDeepGINrrdReader.h"
 
 #include "vtkCommand.h"
+#include "vtkDataObject.h"
 #include "vtkDeepGISceneFileChecks.h"
+#include "vtkDeepGISceneText.h"
+#include "vtkErrorCode.h"
 #include "vtkExecutive.h"
 #include "vtkImageData.h"
 #include "vtkImageReader2.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 
 #include <vtksys/FStream.hxx>
@@ -18,14 +24,20 @@
 #include <cerrno>
 #include <climits>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <new>
 #include <sstream>
+#include <stdexcept>
 #include <vector>
 
-namespace vtkDeepGISceneNrrd
-{
+vtkStandardNewMacro(vtkDeepGINrrdReader);
+
 namespace
 {
+// The largest volume read (bytes of voxel data): 4 GiB.
+constexpr std::uint64_t MaximumBytes = std::uint64_t(4) << 30;
+
 using vtkDeepGISceneText::Lower;
 using vtkDeepGISceneText::ParseInteger;
 using vtkDeepGISceneText::Trim;
@@ -505,17 +517,17 @@ std::string ReadData(const std::string& path, const Header& h, vtkImageData* out
   output->ShallowCopy(reader->GetOutput());
   return "";
 }
-} // anonymous namespace
 
-//------------------------------------------------------------------------------
-std::string Read(const std::string& path, vtkImageData* output)
+// Reads the header of the NRRD file `path` into `h` and checks its data
+// files. Returns "" on success, else one sentence saying why the file cannot
+// be read.
+std::string ReadHeader(const std::string& path, Header& h)
 {
   vtksys::ifstream in(path.c_str(), std::ios::in | std::ios::binary);
   if (!vtkDeepGISceneFileChecks::IsRegularFile(path) || !in)
   {
     return "it cannot be opened";
   }
-  Header h;
   std::vector<std::string> names, pattern;
   std::string why = ParseHeader(in, h, names, pattern);
   std::uint64_t bytes = 0;
@@ -539,7 +551,110 @@ std::string Read(const std::string& path, vtkImageData* output)
     h.DataFiles.push_back(
       (dir.empty() || vtksys::SystemTools::FileIsFullPath(name)) ? name : dir + "/" + name);
   }
-  why = CheckData(path, h, bytes);
-  return why.empty() ? ReadData(path, h, output) : why;
+  return CheckData(path, h, bytes);
 }
+
+// Runs `read`, turning running out of memory into the reason returned.
+template <typename Read>
+std::string Guarded(const Read& read)
+{
+  // A file may declare more than memory holds: an error of this read, not
+  // the end of the process.
+  try
+  {
+    return read();
+  }
+  catch (const std::bad_alloc&)
+  {
+    return "out of memory";
+  }
+  catch (const std::length_error&)
+  {
+    return "it declares more data than fits";
+  }
+}
+} // anonymous namespace
+
+class vtkDeepGINrrdReader::vtkInternals
+{
+public:
+  Header Parsed;
+  /// Why the file named by the header read last cannot be read ("": it can).
+  std::string Error;
+};
+
+//------------------------------------------------------------------------------
+vtkDeepGINrrdReader::vtkDeepGINrrdReader()
+  : Internals(new vtkInternals)
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+//------------------------------------------------------------------------------
+vtkDeepGINrrdReader::~vtkDeepGINrrdReader()
+{
+  this->SetFileName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+int vtkDeepGINrrdReader::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInternals& internals = *this->Internals;
+  internals.Parsed = Header();
+  const std::string path = this->FileName ? this->FileName : "";
+  internals.Error = path.empty() ? "no file name given"
+                                 : Guarded([&]() { return ReadHeader(path, internals.Parsed); });
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  // A file that cannot be read has an empty extent, and RequestData leaves
+  // the output empty; the request itself succeeds, so that the one error is
+  // this reader's (a failed request adds the executive's).
+  int extent[6] = { 0, -1, 0, -1, 0, -1 };
+  this->SetErrorCode(
+    internals.Error.empty() ? vtkErrorCode::NoError : vtkErrorCode::FileFormatError);
+  if (!internals.Error.empty())
+  {
+    vtkErrorMacro("Cannot read NRRD " << path << ": " << internals.Error);
+    outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+    return 1;
+  }
+  const Header& h = internals.Parsed;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    extent[2 * axis + 1] = static_cast<int>(h.Sizes[axis] - 1);
+  }
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  outInfo->Set(vtkDataObject::SPACING(), h.Spacing, 3);
+  outInfo->Set(vtkDataObject::ORIGIN(), h.Origin, 3);
+  vtkDataObject::SetPointDataActiveScalarInfo(outInfo, h.ScalarType, 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkDeepGINrrdReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkImageData* output = vtkImageData::GetData(outputVector);
+  output->Initialize();
+  if (!this->Internals->Error.empty())
+  {
+    return 1; // RequestInformation reported why
+  }
+  const std::string path = this->FileName;
+  const std::string why =
+    Guarded([&]() { return ReadData(path, this->Internals->Parsed, output); });
+  if (!why.empty())
+  {
+    output->Initialize();
+    this->SetErrorCode(vtkErrorCode::FileFormatError);
+    vtkErrorMacro("Cannot read NRRD " << path << ": " << why);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGINrrdReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
 }

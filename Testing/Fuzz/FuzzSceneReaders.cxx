@@ -1,16 +1,24 @@
-// libFuzzer target: vtkDeepGBufferSceneLoader on one file of the format
+// libFuzzer target: the scene readers on one file of the format
 // DEEPGI_FUZZ_FORMAT (obj, mtl, nhdr, nrrd, ply, stl, vtk). The input is
-// written to a temporary file and loaded; the loader must return (true or
-// false), never crash, hang or leak. Built by scripts/fuzz.sh.
+// written to a temporary file and read: by vtkDeepGIOBJReader (obj, mtl) or
+// vtkDeepGINrrdReader (nhdr, nrrd) in a pipeline, then by
+// vtkDeepGISceneLoader, which runs them and turns their output into parts;
+// the other formats by the loader alone. Each must return (an output, empty
+// on error; true or false), never crash, hang or leak. Built by
+// scripts/fuzz.sh.
 //
 // - obj, ply, stl, vtk, nrrd (attached data): the input is the whole file;
 // - mtl: the input is the MTL file of a fixed one-triangle OBJ (mtllib);
 // - nhdr: the input is a detached header; the data files it may name
 //   (data.raw, 16 KiB, and s.1 .. s.4, 8 KiB each) exist next to it.
 
-#include "vtkDeepGBufferSceneLoader.h"
+#include "vtkDeepGINrrdReader.h"
+#include "vtkDeepGIOBJReader.h"
+#include "vtkDeepGISceneLoader.h"
+#include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
+#include "vtkPolyData.h"
 
 #include <cstdint>
 #include <cstdio>
@@ -44,6 +52,26 @@ std::string Directory()
   }
   return dir;
 }
+
+// The reader of the format as a VTK algorithm, on its own: Update, then the
+// output's sizes (an empty output on error).
+void ReadWithAlgorithm(const std::string& format, const std::string& path)
+{
+  if (format == "obj" || format == "mtl")
+  {
+    vtkNew<vtkDeepGIOBJReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    reader->GetOutput()->GetNumberOfCells();
+  }
+  else if (format == "nhdr" || format == "nrrd")
+  {
+    vtkNew<vtkDeepGINrrdReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    reader->GetOutput()->GetNumberOfPoints();
+  }
+}
 }
 
 extern "C" int LLVMFuzzerInitialize(int*, char***)
@@ -64,9 +92,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::ofstream out(input, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   }
-  vtkNew<vtkDeepGBufferSceneLoader> loader;
-  loader->SetIsoValue(1.5);
   const std::string path = format == "mtl" ? Directory() + "/scene.obj" : input;
+  ReadWithAlgorithm(format, path);
+  vtkNew<vtkDeepGISceneLoader> loader;
+  loader->SetIsoValue(1.5);
   if (loader->Load(path.c_str()))
   {
     double bounds[6];
