@@ -141,6 +141,79 @@ struct vtkDeepGIRayTracer::Internals
     this->NumberOfValidPixels = this->NumberOfRays = 0;
     this->MeanStandardError = this->MaximumStandardError = this->ComputeTime = 0.0;
   }
+  // The centre of the points' bounds (the origin of the Embree scene's
+  // coordinates) and the diagonal of the bounds.
+  void SetFrame(vtkPoints* points)
+  {
+    double bounds[6];
+    points->GetBounds(bounds);
+    for (int c = 0; c < 3; ++c)
+    {
+      this->Centre[c] = 0.5 * (bounds[2 * c] + bounds[2 * c + 1]);
+    }
+    this->Diagonal = std::sqrt(vtkMath::Distance2BetweenPoints(
+      std::array<double, 3>{ bounds[0], bounds[2], bounds[4] }.data(),
+      std::array<double, 3>{ bounds[1], bounds[3], bounds[5] }.data()));
+  }
+
+  // Fan-triangulates the polygons into Indices and TriangleToCell; cell ids
+  // follow the polydata's cell order (verts and lines come first there).
+  void Triangulate(vtkPolyData* scene)
+  {
+    const vtkIdType cellOffset = scene->GetNumberOfVerts() + scene->GetNumberOfLines();
+    auto iter = vtk::TakeSmartPointer(scene->GetPolys()->NewIterator());
+    vtkIdType cell = 0;
+    for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell(), ++cell)
+    {
+      vtkIdType npts;
+      const vtkIdType* pts;
+      iter->GetCurrentCell(npts, pts);
+      for (vtkIdType k = 1; k + 1 < npts; ++k)
+      {
+        this->Indices.push_back(static_cast<unsigned int>(pts[0]));
+        this->Indices.push_back(static_cast<unsigned int>(pts[k]));
+        this->Indices.push_back(static_cast<unsigned int>(pts[k + 1]));
+        this->TriangleToCell.push_back(cellOffset + cell);
+      }
+    }
+  }
+
+  // One Embree triangle geometry of the points (relative to Centre, in
+  // float) and Indices, committed as Scene; false when Embree cannot
+  // allocate its buffers.
+  bool Commit(vtkPoints* points)
+  {
+    const vtkIdType npoints = points->GetNumberOfPoints();
+    this->Scene = rtcNewScene(this->Device);
+    rtcSetSceneBuildQuality(this->Scene, RTC_BUILD_QUALITY_HIGH);
+    RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    float* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), npoints));
+    unsigned int* triangles =
+      static_cast<unsigned int*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0,
+        RTC_FORMAT_UINT3, 3 * sizeof(unsigned int), this->Indices.size() / 3));
+    if (!vertices || !triangles)
+    {
+      rtcReleaseGeometry(geometry);
+      return false;
+    }
+    for (vtkIdType p = 0; p < npoints; ++p)
+    {
+      double x[3];
+      points->GetPoint(p, x);
+      for (int c = 0; c < 3; ++c)
+      {
+        vertices[3 * p + c] = static_cast<float>(x[c] - this->Centre[c]);
+      }
+    }
+    std::copy(this->Indices.begin(), this->Indices.end(), triangles);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(this->Scene, geometry);
+    rtcReleaseGeometry(geometry);
+    rtcCommitScene(this->Scene);
+    return true;
+  }
+
   void Release()
   {
     if (this->Scene)
@@ -285,69 +358,19 @@ bool vtkDeepGIRayTracer::BuildScene(vtkPolyData* scene, vtkObject* reporter)
     vtkErrorWithObjectMacro(reporter, "The scene has no polygons.");
     return false;
   }
-  double bounds[6];
-  points->GetBounds(bounds);
-  for (int c = 0; c < 3; ++c)
-  {
-    in.Centre[c] = 0.5 * (bounds[2 * c] + bounds[2 * c + 1]);
-  }
-  in.Diagonal = std::sqrt(
-    vtkMath::Distance2BetweenPoints(std::array<double, 3>{ bounds[0], bounds[2], bounds[4] }.data(),
-      std::array<double, 3>{ bounds[1], bounds[3], bounds[5] }.data()));
-
-  // Fan-triangulate the polygons; cell ids follow the polydata's cell order
-  // (verts and lines come first there).
-  std::vector<unsigned int>& indices = in.Indices;
-  const vtkIdType cellOffset = scene->GetNumberOfVerts() + scene->GetNumberOfLines();
-  auto iter = vtk::TakeSmartPointer(polys->NewIterator());
-  vtkIdType cell = 0;
-  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell(), ++cell)
-  {
-    vtkIdType npts;
-    const vtkIdType* pts;
-    iter->GetCurrentCell(npts, pts);
-    for (vtkIdType k = 1; k + 1 < npts; ++k)
-    {
-      indices.push_back(static_cast<unsigned int>(pts[0]));
-      indices.push_back(static_cast<unsigned int>(pts[k]));
-      indices.push_back(static_cast<unsigned int>(pts[k + 1]));
-      in.TriangleToCell.push_back(cellOffset + cell);
-    }
-  }
-  if (indices.empty())
+  in.SetFrame(points);
+  in.Triangulate(scene);
+  if (in.Indices.empty())
   {
     vtkErrorWithObjectMacro(reporter, "The scene has no polygons with three or more points.");
     return false;
   }
-  const vtkIdType npoints = points->GetNumberOfPoints();
-  in.Scene = rtcNewScene(in.Device);
-  rtcSetSceneBuildQuality(in.Scene, RTC_BUILD_QUALITY_HIGH);
-  RTCGeometry geometry = rtcNewGeometry(in.Device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  float* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-    geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), npoints));
-  unsigned int* triangles = static_cast<unsigned int*>(rtcSetNewGeometryBuffer(geometry,
-    RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned int), indices.size() / 3));
-  if (!vertices || !triangles)
+  if (!in.Commit(points))
   {
-    rtcReleaseGeometry(geometry);
     vtkErrorWithObjectMacro(reporter, "Embree could not allocate the scene buffers.");
     in.Release();
     return false;
   }
-  for (vtkIdType p = 0; p < npoints; ++p)
-  {
-    double x[3];
-    points->GetPoint(p, x);
-    for (int c = 0; c < 3; ++c)
-    {
-      vertices[3 * p + c] = static_cast<float>(x[c] - in.Centre[c]);
-    }
-  }
-  std::copy(indices.begin(), indices.end(), triangles);
-  rtcCommitGeometry(geometry);
-  rtcAttachGeometry(in.Scene, geometry);
-  rtcReleaseGeometry(geometry);
-  rtcCommitScene(in.Scene);
   in.BuiltFor = scene;
   in.BuiltTime = scene->GetMTime();
   return true;

@@ -74,6 +74,42 @@ void CopyNormals(vtkDataArray* normals, vtkIdType count, std::vector<float>& out
     }
   }
 }
+
+// The unit direction l from y towards `light`, the distance to it (infinite
+// for a directional light) and VTK's attenuation a_k: 1 / (c0 + c1 d +
+// c2 d^2) times the spot factor cos^Exponent inside the cone (0 outside)
+// for positional lights, 1 for directional ones. False where y is at the
+// light's position.
+bool TowardsLight(const vtkDeepGIReferenceLighting::Light& light, const double y[3], double l[3],
+  double& distance, double& attenuation)
+{
+  attenuation = 1.0;
+  distance = std::numeric_limits<double>::infinity();
+  if (!light.Positional)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      l[c] = -light.Direction[c];
+    }
+    return true;
+  }
+  vtkMath::Subtract(light.Position, y, l);
+  distance = vtkMath::Normalize(l);
+  if (!(distance > 0.0))
+  {
+    return false;
+  }
+  attenuation = 1.0 /
+    (light.Attenuation[0] + light.Attenuation[1] * distance +
+      light.Attenuation[2] * distance * distance);
+  if (light.Spot)
+  {
+    // Cosine between the light's axis and the direction light -> Y.
+    const double coneDot = -vtkMath::Dot(l, light.Direction);
+    attenuation = coneDot >= light.CosCone ? attenuation * std::pow(coneDot, light.Exponent) : 0.0;
+  }
+  return true;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -400,34 +436,10 @@ void vtkDeepGIReferenceLighting::DirectRadiance(const double y[3], const double 
   }
   for (const Light& light : this->Lights)
   {
-    double l[3];
-    double attenuation = 1.0;
-    double distance = std::numeric_limits<double>::infinity();
-    if (light.Positional)
+    double l[3], distance, attenuation;
+    if (!TowardsLight(light, y, l, distance, attenuation))
     {
-      vtkMath::Subtract(light.Position, y, l);
-      distance = vtkMath::Normalize(l);
-      if (!(distance > 0.0))
-      {
-        continue;
-      }
-      attenuation = 1.0 /
-        (light.Attenuation[0] + light.Attenuation[1] * distance +
-          light.Attenuation[2] * distance * distance);
-      if (light.Spot)
-      {
-        // Cosine between the light's axis and the direction light -> Y.
-        const double coneDot = -vtkMath::Dot(l, light.Direction);
-        attenuation =
-          coneDot >= light.CosCone ? attenuation * std::pow(coneDot, light.Exponent) : 0.0;
-      }
-    }
-    else
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        l[c] = -light.Direction[c];
-      }
+      continue;
     }
     const double df = std::max(0.0, attenuation * vtkMath::Dot(n, l));
     if (!(df > 0.0) || !std::isfinite(df))
