@@ -98,10 +98,11 @@ public:
   public:
     virtual ~Estimator() = default;
 
-    /// Called once per Run() after the capture was read and the scene
-    /// built, before any ray: reads what the estimator needs from the
-    /// capture and the scene and adds its arrays (`pixels` tuples) to
-    /// `output`. False (after the estimator reported an error) stops Run().
+    /// Called once per Run() after the capture was read, the scene built
+    /// and `output` given the capture's grid, before any ray: checks the
+    /// estimator's parameters, reads what it needs from the capture and the
+    /// scene and adds its arrays (one tuple per pixel) to `output`. False
+    /// (after the estimator reported an error) stops Run().
     virtual bool Prepare(vtkImageData* capture, vtkPolyData* scene, vtkImageData* output) = 0;
 
     /// Values per sample.
