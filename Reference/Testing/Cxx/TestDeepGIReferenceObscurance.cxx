@@ -12,7 +12,8 @@
 //     tolerance: |AV - AV_exact| < 4.5 standard errors + 1e-4 per pixel,
 //     and the mean difference within 4 standard errors of the mean;
 //  3. two seeds agree within 4.5 combined standard errors per pixel;
-//  4. same seed: bit-identical twice, and with 1 and 2 threads;
+//  4. same seed: bit-identical twice, and with 1 and 2 threads; the
+//     deprecated SetScene and Compute give the pipeline's result;
 //  5. scene, camera and radius scaled by 1e-4 and 1e4 (and the scene moved
 //     1e4 * size away from the origin): same AV within noise;
 //  6. bad input: errors, no crash.
@@ -415,6 +416,20 @@ void CheckSameSeedIsDeterministic(
   vtkSMPTools::Initialize();
 }
 
+// 4b. The deprecated SetScene, GetScene and Compute wrap the pipeline.
+void CheckDeprecatedMethodsWrapThePipeline(
+  vtkPolyData* scene, double r, vtkImageData* wallCapture, vtkImageData* wallResult)
+{
+  auto reference = vtkSmartPointer<vtkDeepGIReferenceObscurance>::New();
+  reference->SetScene(scene);
+  reference->SetRadius(r);
+  reference->SetSamplesPerPixel(1024);
+  reference->SetSeed(1);
+  Check(reference->GetScene() == scene && reference->Compute(wallCapture) &&
+      SameArrays(reference, wallResult),
+    "deprecated SetScene and Compute: the pipeline's result");
+}
+
 // 5. Scale invariance (and a position far from the origin).
 void CheckScaleInvariance(const Setup& wall,
   const std::vector<std::array<double, 3>>& wallPositions, double r, vtkImageData* wallResult,
@@ -517,6 +532,7 @@ int TestDeepGIReferenceObscurance(int, char*[])
   CheckCornerMatchesIntegral(r);
   CheckSeedsAgreeWithinNoise(wallScene, r, wallCapture, wallResult);
   CheckSameSeedIsDeterministic(reference, wallCapture, wallResult);
+  CheckDeprecatedMethodsWrapThePipeline(wallScene, r, wallCapture, wallResult);
   CheckScaleInvariance(wall, wallPositions, r, wallResult, reference->GetMaximumStandardError());
   CheckBadInputIsRefused(wallScene, wallCapture);
   return DeepGITest::ExitStatus();
