@@ -7,6 +7,7 @@
 #include "vtkDeepGIReferenceIrradiance.h"
 #include "vtkDeepGIReferenceObscurance.h"
 #include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkMapper.h"
@@ -45,8 +46,8 @@ vtkDeepGIReferenceImage::~vtkDeepGIReferenceImage() = default;
 //------------------------------------------------------------------------------
 void vtkDeepGIReferenceImage::SetScene(vtkPolyData* scene)
 {
-  this->Obscurance->SetScene(scene);
-  this->Irradiance->SetScene(scene);
+  this->Obscurance->SetSceneData(scene);
+  this->Irradiance->SetSceneData(scene);
   this->Modified();
 }
 
@@ -111,6 +112,18 @@ vtkImageData* vtkDeepGIReferenceImage::GetOutput()
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// Runs one reference estimator on `capture`; false when the update failed
+// (an error of the estimator or of its executive).
+bool Estimate(vtkImageAlgorithm* estimator, vtkImageData* capture)
+{
+  estimator->SetInputData(0, capture);
+  return estimator->GetExecutive()->Update() != 0;
+}
+}
+
+//------------------------------------------------------------------------------
 bool vtkDeepGIReferenceImage::Compute(vtkImageData* capture)
 {
   this->Output->Initialize();
@@ -122,7 +135,7 @@ bool vtkDeepGIReferenceImage::Compute(vtkImageData* capture)
   }
   this->Obscurance->SetLayer(0);
   this->Irradiance->SetLayer(0);
-  if (!this->Obscurance->Compute(capture) || !this->Irradiance->Compute(capture))
+  if (!Estimate(this->Obscurance, capture) || !Estimate(this->Irradiance, capture))
   {
     vtkErrorMacro("A reference failed; no reference image.");
     return false;

@@ -1,157 +1,68 @@
 #include "vtkDeepGIReferenceIrradiance.h"
 #include "vtkDeepGICaptureNames.h"
+#include "vtkDeepGIRayTracer.h"
+#include "vtkDeepGIReferenceLighting.h"
 
-#include "vtkCamera.h"
-#include "vtkCellData.h"
 #include "vtkDataArray.h"
-#include "vtkFieldData.h"
+#include "vtkExecutive.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkLight.h"
-#include "vtkLightCollection.h"
 #include "vtkMath.h"
-#include "vtkMatrix4x4.h"
-#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkRenderer.h"
-#include "vtkSmartPointer.h"
-#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
-#include <vector>
 
 vtkStandardNewMacro(vtkDeepGIReferenceIrradiance);
 
-namespace
-{
-// A light resolved to world space, with the parameters VTK 9.1's polydata
-// shader uses (vtkOpenGLRenderer::UpdateLightingUniforms and the
-// //VTK::Light::Impl code of vtkOpenGLPolyDataMapper).
-struct ResolvedLight
-{
-  double Position[3];
-  double Direction[3]; // unit, from position towards focal point
-  double Color[3];     // diffuse colour times intensity
-  bool Positional;
-  double Attenuation[3];
-  bool Spot; // VTK applies the cone only below 90 degrees
-  double CosCone;
-  double Exponent;
-};
+using HitRecord = vtkDeepGIRayTracer::HitRecord;
+using SurfacePoint = vtkDeepGIRayTracer::SurfacePoint;
+using Light = vtkDeepGIReferenceLighting::Light;
 
-bool AllFinite(const double* v, int n)
+// The estimator the tracer runs: E(X) (or L_k with bounces) by
+// cosine-weighted path tracing, or the direct radiance of X itself.
+struct vtkDeepGIReferenceIrradiance::Sampler : public vtkDeepGIRayTracer::Estimator
 {
-  for (int i = 0; i < n; ++i)
+  Sampler(vtkDeepGIReferenceIrradiance& self)
+    : Self(self)
+    , Tracer(*self.Tracer)
+    , Lighting(*self.Lighting)
   {
-    if (!std::isfinite(v[i]))
-    {
-      return false;
-    }
   }
-  return true;
-}
 
-// How a light's position and focal point are obtained.
-enum class Placement
-{
-  FollowCamera, // VTK's UpdateLightsGeometryToFollowCamera with `camera`
-  AsStored      // the light's transformed position/focal point as they are
-};
-}
+  bool Prepare(vtkImageData* capture, vtkPolyData* scene, vtkImageData* output) override;
+  int GetNumberOfComponents() const override { return 3; }
+  int GetNumberOfSamples() const override
+  {
+    return this->Self.Quantity == DIRECT_RADIANCE ? 1 : this->Self.SamplesPerPixel;
+  }
+  void EvaluateSample(const SurfacePoint& x, int sample, double* values) const override;
+  void FinishPixel(vtkIdType pixel, const double* mean, const double* standardError) override;
 
-struct vtkDeepGIReferenceIrradiance::Lighting
-{
-  std::vector<ResolvedLight> Lights;
+  void PrepareCaptureAlbedo(vtkImageData* capture);
+  void AllocateOutput(vtkImageData* output);
+  void SampleDirectRadiance(const SurfacePoint& x, double radiance[3]) const;
+  void SampleIrradiance(const SurfacePoint& x, int sample, double values[3]) const;
+  void AddBounces(vtkIdType pixel, int sample, const double y[3], const double w[3],
+    const HitRecord& hit, double radiance[3]) const;
 
-  // Filled by PrepareCompute, read by the worker threads.
-  std::vector<float> CellAlbedo;   // rho per scene cell (RGB), Diffuse included
-  std::vector<float> CellEmission; // L_emitted per scene cell (RGB), empty if none
-  std::vector<float> PointNormals; // per scene point (xyz), empty if none
-  std::vector<float> CellNormals;  // per scene cell (xyz), empty if none
-  vtkSmartPointer<vtkDataArray> CaptureAlbedo;
-  // The capture's camera, for DIRECT_RADIANCE: eye and viewing direction in
-  // world space, and whether the projection is parallel.
-  double Eye[3] = { 0, 0, 0 };
-  double ViewDirection[3] = { 0, 0, -1 };
-  bool Parallel = false;
+  vtkDeepGIReferenceIrradiance& Self;
+  const vtkDeepGIRayTracer& Tracer;
+  vtkDeepGIReferenceLighting& Lighting;
+  vtkDataArray* CaptureAlbedo = nullptr;
   vtkFloatArray* Direct = nullptr;
   vtkFloatArray* Irradiance = nullptr;
   vtkFloatArray* IrradianceError = nullptr;
   vtkFloatArray* Radiance = nullptr;
   vtkFloatArray* RadianceError = nullptr;
-
-  // Resolves `light`; returns false with `why` set (empty: silently ignored).
-  static bool Resolve(
-    vtkLight* light, vtkCamera* camera, Placement placement, ResolvedLight& out, std::string& why)
-  {
-    if (!light->GetSwitch())
-    {
-      return false;
-    }
-    double position[3], focal[3];
-    if (placement == Placement::FollowCamera && !light->LightTypeIsSceneLight())
-    {
-      if (!camera)
-      {
-        why = "a headlight or camera light needs a camera";
-        return false;
-      }
-      if (light->LightTypeIsHeadlight())
-      {
-        camera->GetPosition(position);
-        camera->GetFocalPoint(focal);
-      }
-      else
-      {
-        // Camera lights live in the camera's light frame: VTK sets their
-        // transform to vtkCamera::GetCameraLightTransformMatrix().
-        vtkMatrix4x4* m = camera->GetCameraLightTransformMatrix();
-        double p[4] = { 0, 0, 0, 1 }, f[4] = { 0, 0, 0, 1 };
-        light->GetPosition(p);
-        light->GetFocalPoint(f);
-        m->MultiplyPoint(p, p);
-        m->MultiplyPoint(f, f);
-        for (int c = 0; c < 3; ++c)
-        {
-          position[c] = p[c] / p[3];
-          focal[c] = f[c] / f[3];
-        }
-      }
-    }
-    else
-    {
-      light->GetTransformedPosition(position);
-      light->GetTransformedFocalPoint(focal);
-    }
-    vtkMath::Subtract(focal, position, out.Direction);
-    const double length = vtkMath::Normalize(out.Direction);
-    const double intensity = light->GetIntensity();
-    const double* colour = light->GetDiffuseColor();
-    for (int c = 0; c < 3; ++c)
-    {
-      out.Position[c] = position[c];
-      out.Color[c] = colour[c] * intensity;
-      out.Attenuation[c] = light->GetAttenuationValues()[c];
-    }
-    out.Positional = light->GetPositional() != 0;
-    out.Spot = out.Positional && light->GetConeAngle() < 90.0;
-    out.CosCone = std::cos(vtkMath::RadiansFromDegrees(light->GetConeAngle()));
-    out.Exponent = light->GetExponent();
-    if (!(length > 0.0) || !AllFinite(out.Position, 3) || !AllFinite(out.Direction, 3) ||
-      !AllFinite(out.Color, 3) || !AllFinite(out.Attenuation, 3) || !std::isfinite(out.CosCone) ||
-      !std::isfinite(out.Exponent))
-    {
-      why = "its position, focal point, colour, intensity, attenuation, cone or exponent is not "
-            "finite, or its focal point equals its position";
-      return false;
-    }
-    return true;
-  }
 };
 
 //------------------------------------------------------------------------------
@@ -164,14 +75,41 @@ vtkDeepGIReferenceIrradiance::vtkDeepGIReferenceIrradiance()
   , EmissionArrayName(nullptr)
   , NumberOfBounces(1)
   , BounceDamping(1.0)
-  , Data(new Lighting)
+  , SamplesPerPixel(256)
+  , Seed(0)
+  , Layer(0)
+  , RelativeOffset(1e-5)
+  , Lighting(new vtkDeepGIReferenceLighting)
 {
+  this->SetNumberOfInputPorts(2);
   this->SetEmissionArrayName("Emission");
 }
 
 vtkDeepGIReferenceIrradiance::~vtkDeepGIReferenceIrradiance()
 {
   this->SetEmissionArrayName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGIReferenceIrradiance::SetSceneData(vtkPolyData* scene)
+{
+  this->SetInputData(1, scene);
+}
+
+void vtkDeepGIReferenceIrradiance::SetSceneConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+vtkPolyData* vtkDeepGIReferenceIrradiance::GetScene()
+{
+  return vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0));
+}
+
+bool vtkDeepGIReferenceIrradiance::Compute(vtkImageData* capture)
+{
+  this->SetInputData(0, capture);
+  return this->GetExecutive()->Update() != 0 && this->GetOutput()->GetNumberOfPoints() > 0;
 }
 
 //------------------------------------------------------------------------------
@@ -182,9 +120,10 @@ bool vtkDeepGIReferenceIrradiance::AddLight(vtkLight* light, vtkCamera* camera)
     vtkErrorMacro("AddLight: null light.");
     return false;
   }
-  ResolvedLight resolved;
+  Light resolved;
   std::string why;
-  if (!Lighting::Resolve(light, camera, Placement::FollowCamera, resolved, why))
+  if (!vtkDeepGIReferenceLighting::Resolve(
+        light, camera, vtkDeepGIReferenceLighting::Placement::FollowCamera, resolved, why))
   {
     if (!why.empty())
     {
@@ -192,7 +131,7 @@ bool vtkDeepGIReferenceIrradiance::AddLight(vtkLight* light, vtkCamera* camera)
     }
     return false;
   }
-  this->Data->Lights.push_back(resolved);
+  this->Lighting->Lights.push_back(resolved);
   this->Modified();
   return true;
 }
@@ -205,59 +144,22 @@ void vtkDeepGIReferenceIrradiance::SetLightsFromRenderer(vtkRenderer* renderer)
     vtkErrorMacro("SetLightsFromRenderer: null renderer.");
     return;
   }
-  const Placement placement =
-    renderer->GetLightFollowCamera() ? Placement::FollowCamera : Placement::AsStored;
-  vtkCamera* camera = renderer->GetActiveCamera();
-  vtkLightCollection* lights = renderer->GetLights();
-  int switchedOn = 0;
-  vtkCollectionSimpleIterator it;
-  vtkLight* light;
-  for (lights->InitTraversal(it); (light = lights->GetNextLight(it));)
-  {
-    if (!light->GetSwitch())
-    {
-      continue;
-    }
-    ++switchedOn;
-    ResolvedLight resolved;
-    std::string why;
-    if (Lighting::Resolve(light, camera, placement, resolved, why))
-    {
-      this->Data->Lights.push_back(resolved);
-    }
-    else
-    {
-      vtkWarningMacro("Light of the renderer skipped: " << why << ".");
-    }
-  }
-  // vtkOpenGLRenderer::UpdateLights creates a white headlight of intensity 1
-  // when no light is on; the rendered image (the screen-space input) has it.
-  if (switchedOn == 0 && renderer->GetAutomaticLightCreation())
-  {
-    vtkNew<vtkLight> headlight;
-    headlight->SetLightTypeToHeadlight();
-    ResolvedLight resolved;
-    std::string why;
-    if (Lighting::Resolve(headlight, camera, Placement::FollowCamera, resolved, why))
-    {
-      this->Data->Lights.push_back(resolved);
-    }
-  }
+  this->Lighting->SetLightsFromRenderer(renderer, this);
   this->Modified();
 }
 
 void vtkDeepGIReferenceIrradiance::RemoveAllLights()
 {
-  if (!this->Data->Lights.empty())
+  if (!this->Lighting->Lights.empty())
   {
-    this->Data->Lights.clear();
+    this->Lighting->Lights.clear();
     this->Modified();
   }
 }
 
 int vtkDeepGIReferenceIrradiance::GetNumberOfLights() const
 {
-  return static_cast<int>(this->Data->Lights.size());
+  return static_cast<int>(this->Lighting->Lights.size());
 }
 
 bool vtkDeepGIReferenceIrradiance::GetLight(
@@ -267,7 +169,7 @@ bool vtkDeepGIReferenceIrradiance::GetLight(
   {
     return false;
   }
-  const ResolvedLight& light = this->Data->Lights[index];
+  const Light& light = this->Lighting->Lights[index];
   for (int c = 0; c < 3; ++c)
   {
     position[c] = light.Position[c];
@@ -314,284 +216,174 @@ void vtkDeepGIReferenceIrradiance::SetBounceDamping(double delta)
 }
 
 //------------------------------------------------------------------------------
-int vtkDeepGIReferenceIrradiance::GetNumberOfSamplesPerPixel() const
+int vtkDeepGIReferenceIrradiance::FillInputPortInformation(int port, vtkInformation* info)
 {
-  return this->Quantity == DIRECT_RADIANCE ? 1 : this->SamplesPerPixel;
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkImageData" : "vtkPolyData");
+  return 1;
 }
 
-double vtkDeepGIReferenceIrradiance::GetMaximumRayDistance() const
+int vtkDeepGIReferenceIrradiance::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  if (this->Quantity == DIRECT_RADIANCE)
-  {
-    return 0.0; // EvaluateSample traces its own ray; the hemisphere ray is unused
-  }
-  // Rays start RelativeOffset-sized distances above X; EvaluateSample applies
-  // the exact |Y - X| <= MaximumDistance test, so any bound above it will do.
-  return 2.0 * this->MaximumDistance;
+  Sampler sampler(*this);
+  return this->Tracer->Run(vtkImageData::GetData(inputVector[0]),
+    vtkPolyData::GetData(inputVector[1]), { this->Layer, this->Seed, this->RelativeOffset },
+    sampler, vtkImageData::GetData(outputVector), this);
 }
 
-bool vtkDeepGIReferenceIrradiance::CheckParameters()
+//------------------------------------------------------------------------------
+bool vtkDeepGIReferenceIrradiance::Sampler::Prepare(
+  vtkImageData* capture, vtkPolyData* scene, vtkImageData* output)
 {
-  if (!(this->MaximumDistance > 0.0)) // also catches NaN
+  vtkDeepGIReferenceIrradiance& self = this->Self;
+  if (!(self.MaximumDistance > 0.0)) // also catches NaN
   {
-    vtkErrorMacro(
-      "MaximumDistance must be positive (or infinite), not " << this->MaximumDistance << ".");
+    vtkErrorWithObjectMacro(
+      &self, "MaximumDistance must be positive (or infinite), not " << self.MaximumDistance << ".");
     return false;
   }
+  this->Lighting.Prepare(scene,
+    { self.Shadows, self.TwoSidedLighting, self.DiffuseCoefficient, self.EmissionArrayName },
+    &this->Tracer, &self);
+  if (self.Quantity == INDIRECT_IRRADIANCE)
+  {
+    this->PrepareCaptureAlbedo(capture);
+  }
+  this->AllocateOutput(output);
   return true;
 }
 
-bool vtkDeepGIReferenceIrradiance::PrepareCompute(vtkImageData* capture)
+// rho_X for the reflected radiance: the capture's Albedo_j, if it has one.
+void vtkDeepGIReferenceIrradiance::Sampler::PrepareCaptureAlbedo(vtkImageData* capture)
 {
-  Lighting& d = *this->Data;
-  this->PrepareEmission();
-  if (d.Lights.empty() && d.CellEmission.empty())
+  const std::string name =
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Albedo, this->Self.Layer);
+  this->CaptureAlbedo = capture->GetPointData()->GetArray(name.c_str());
+  if (this->CaptureAlbedo &&
+    (this->CaptureAlbedo->GetNumberOfComponents() < 3 ||
+      this->CaptureAlbedo->GetNumberOfTuples() != capture->GetNumberOfPoints()))
   {
-    vtkWarningMacro("No lights (SetLightsFromRenderer or AddLight) and no emission: the indirect "
-                    "irradiance is 0 everywhere.");
+    this->CaptureAlbedo = nullptr;
   }
-  vtkPolyData* scene = this->Scene;
-  const vtkIdType cells = scene->GetNumberOfCells();
-  const vtkIdType points = scene->GetNumberOfPoints();
+  if (!this->CaptureAlbedo)
+  {
+    vtkWarningWithObjectMacro(
+      &this->Self, "The capture has no RGB " << name << " array: no IndirectRadiance output.");
+  }
+}
 
-  // Albedo per cell: "Colors" (unsigned char / 255, other types as they are)
-  // times the diffuse coefficient.
-  vtkDataArray* colors = scene->GetCellData()->GetArray("Colors");
-  if (colors && colors->GetNumberOfTuples() != cells)
+void vtkDeepGIReferenceIrradiance::Sampler::AllocateOutput(vtkImageData* output)
+{
+  const vtkIdType pixels = output->GetNumberOfPoints();
+  auto add = [&](const char* name)
   {
-    vtkWarningMacro("The scene's \"Colors\" cell array has "
-      << colors->GetNumberOfTuples() << " tuples for " << cells << " cells; using white.");
-    colors = nullptr;
-  }
-  else if (!colors)
-  {
-    vtkWarningMacro("The scene has no \"Colors\" cell array; using a white albedo.");
-  }
-  vtkDataArray* diffuseCells = scene->GetCellData()->GetArray("Diffuse");
-  if (diffuseCells && diffuseCells->GetNumberOfTuples() != cells)
-  {
-    vtkWarningMacro("The scene's \"Diffuse\" cell array does not match its cells; ignored.");
-    diffuseCells = nullptr;
-  }
-  double diffuse = this->DiffuseCoefficient;
-  vtkDataArray* diffuseField = scene->GetFieldData()->GetArray("Diffuse");
-  if (!diffuseCells && diffuseField && diffuseField->GetNumberOfTuples() > 0)
-  {
-    diffuse = diffuseField->GetComponent(0, 0);
-  }
-  const double scale = colors && colors->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
-  d.CellAlbedo.assign(3 * static_cast<size_t>(cells), 0.0f);
-  for (vtkIdType c = 0; c < cells; ++c)
-  {
-    const double k = diffuseCells ? diffuseCells->GetComponent(c, 0) : diffuse;
-    for (int i = 0; i < 3; ++i)
-    {
-      double rho = 1.0;
-      if (colors)
-      {
-        rho = scale * colors->GetComponent(c, colors->GetNumberOfComponents() >= 3 ? i : 0);
-      }
-      rho *= k;
-      // Negative or non-finite albedos cannot come from VTK's colouring.
-      d.CellAlbedo[3 * c + i] = std::isfinite(rho) ? static_cast<float>(std::max(0.0, rho)) : 0.0f;
-    }
-  }
-
-  // Shading normals, the ones VTK's mapper would use: point normals, else
-  // cell normals (else the winding normal of the hit triangle).
-  auto copyNormals = [](vtkDataArray* normals, vtkIdType count, std::vector<float>& out)
-  {
-    out.clear();
-    if (!normals || normals->GetNumberOfComponents() != 3 || normals->GetNumberOfTuples() != count)
-    {
-      return;
-    }
-    out.resize(3 * static_cast<size_t>(count));
-    for (vtkIdType p = 0; p < count; ++p)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        out[3 * p + c] = static_cast<float>(normals->GetComponent(p, c));
-      }
-    }
+    vtkNew<vtkFloatArray> array;
+    array->SetName(name);
+    array->SetNumberOfComponents(3);
+    array->SetNumberOfTuples(pixels);
+    output->GetPointData()->AddArray(array);
+    return array.GetPointer();
   };
-  copyNormals(scene->GetPointData()->GetNormals(), points, d.PointNormals);
-  copyNormals(
-    d.PointNormals.empty() ? scene->GetCellData()->GetNormals() : nullptr, cells, d.CellNormals);
-
-  // The camera (Compute() validated the matrices): the eye is
-  // the inverse view matrix's translation, the view direction its -z axis.
-  vtkDataArray* view = capture->GetFieldData()->GetArray(vtkDeepGICaptureNames::ViewMatrix);
-  vtkDataArray* projection =
-    capture->GetFieldData()->GetArray(vtkDeepGICaptureNames::ProjectionMatrix);
-  vtkNew<vtkMatrix4x4> viewMatrix, cameraToWorld;
-  for (int k = 0; k < 16; ++k)
+  if (this->Self.Quantity == DIRECT_RADIANCE)
   {
-    viewMatrix->SetElement(k / 4, k % 4, view->GetComponent(0, k));
-  }
-  vtkMatrix4x4::Invert(viewMatrix, cameraToWorld);
-  for (int c = 0; c < 3; ++c)
-  {
-    d.Eye[c] = cameraToWorld->GetElement(c, 3);
-    d.ViewDirection[c] = -cameraToWorld->GetElement(c, 2);
-  }
-  vtkMath::Normalize(d.ViewDirection);
-  // A perspective projection's last row is (0, 0, -1, 0), a parallel one's
-  // (0, 0, 0, 1).
-  d.Parallel = projection->GetComponent(0, 14) == 0.0;
-  if (this->Quantity == DIRECT_RADIANCE)
-  {
-    d.CaptureAlbedo = nullptr;
-    return true;
-  }
-
-  // rho_X for the reflected radiance.
-  const std::string name = vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Albedo, this->Layer);
-  d.CaptureAlbedo = capture->GetPointData()->GetArray(name.c_str());
-  if (d.CaptureAlbedo &&
-    (d.CaptureAlbedo->GetNumberOfComponents() < 3 ||
-      d.CaptureAlbedo->GetNumberOfTuples() != capture->GetNumberOfPoints()))
-  {
-    d.CaptureAlbedo = nullptr;
-  }
-  if (!d.CaptureAlbedo)
-  {
-    vtkWarningMacro("The capture has no RGB " << name << " array: no IndirectRadiance output.");
-  }
-  return true;
-}
-
-//------------------------------------------------------------------------------
-void vtkDeepGIReferenceIrradiance::PrepareEmission()
-{
-  Lighting& d = *this->Data;
-  d.CellEmission.clear();
-  if (!this->EmissionArrayName || !*this->EmissionArrayName)
-  {
+    this->Direct = add("DirectRadiance");
     return;
   }
-  const vtkIdType cells = this->Scene->GetNumberOfCells();
-  vtkDataArray* emission = this->Scene->GetCellData()->GetArray(this->EmissionArrayName);
-  if (!emission)
+  this->Irradiance = add("IndirectIrradiance");
+  this->IrradianceError = add("IndirectIrradianceStandardError");
+  if (this->CaptureAlbedo)
   {
-    return; // a scene without emitters
-  }
-  const int components = emission->GetNumberOfComponents();
-  if (emission->GetNumberOfTuples() != cells || (components != 1 && components != 3))
-  {
-    vtkWarningMacro("The scene's \"" << this->EmissionArrayName << "\" cell array has "
-                                     << emission->GetNumberOfTuples() << " tuples of " << components
-                                     << " components for " << cells
-                                     << " cells (expected RGB or grey per cell); ignored.");
-    return;
-  }
-  // Like "Colors": 8-bit values are a colour in [0, 1].
-  const double scale = emission->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
-  d.CellEmission.assign(3 * static_cast<size_t>(cells), 0.0f);
-  vtkIdType clamped = 0;
-  bool emits = false;
-  for (vtkIdType c = 0; c < cells; ++c)
-  {
-    for (int i = 0; i < 3; ++i)
-    {
-      const double value = scale * emission->GetComponent(c, components == 3 ? i : 0);
-      // Radiance is finite and non-negative; anything else would make E
-      // NaN, infinite or negative.
-      if (!std::isfinite(value) || value < 0.0)
-      {
-        ++clamped;
-        continue;
-      }
-      d.CellEmission[3 * c + i] = static_cast<float>(value);
-      emits = emits || value > 0.0;
-    }
-  }
-  if (clamped > 0)
-  {
-    vtkWarningMacro("The scene's \"" << this->EmissionArrayName << "\" cell array has " << clamped
-                                     << " NaN, infinite or negative values; set to 0.");
-  }
-  if (!emits)
-  {
-    d.CellEmission.clear();
+    this->Radiance = add(vtkDeepGICaptureNames::IndirectRadiance);
+    this->RadianceError = add("IndirectRadianceStandardError");
   }
 }
 
 //------------------------------------------------------------------------------
-void vtkDeepGIReferenceIrradiance::OutgoingRadiance(
-  const double y[3], const double w[3], const HitRecord& hit, double radiance[3]) const
+void vtkDeepGIReferenceIrradiance::Sampler::EvaluateSample(
+  const SurfacePoint& x, int sample, double* values) const
 {
-  this->DirectRadiance(y, w, hit, radiance);
-  const Lighting& d = *this->Data;
-  if (d.CellEmission.empty())
+  values[0] = values[1] = values[2] = 0.0;
+  if (this->Self.Quantity == DIRECT_RADIANCE)
   {
-    return;
+    this->SampleDirectRadiance(x, values);
   }
-  // VTK draws the ambient term (the emission of an EMISSIVE prop) on both
-  // sides; one-sided lighting makes back faces send nothing at all.
-  const bool backFace = vtkMath::Dot(hit.Normal, w) > 0.0;
-  if (backFace && !this->TwoSidedLighting)
+  else
   {
-    return;
-  }
-  for (int c = 0; c < 3; ++c)
-  {
-    radiance[c] += d.CellEmission[3 * hit.Cell + c];
+    this->SampleIrradiance(x, sample, values);
   }
 }
 
-bool vtkDeepGIReferenceIrradiance::ShadingNormal(
-  const double w[3], const HitRecord& hit, double n[3]) const
+// L = L_emitted + L_direct of X's own triangle, found along the viewing ray
+// from just in front of X (1e-4 of the viewing distance plus the ray offset:
+// far less than any layer separation, so nearer layers do not block it).
+void vtkDeepGIReferenceIrradiance::Sampler::SampleDirectRadiance(
+  const SurfacePoint& x, double radiance[3]) const
 {
-  const Lighting& d = *this->Data;
-  // The ray arrives on the triangle's back when it travels along the
-  // winding normal (gl_FrontFacing false for a viewer at the ray's origin).
-  const bool backFace = vtkMath::Dot(hit.Normal, w) > 0.0;
-  if (backFace && !this->TwoSidedLighting)
-  {
-    return false;
-  }
-  std::copy(hit.Normal, hit.Normal + 3, n);
-  if (!d.PointNormals.empty())
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      n[c] = 0.0;
-      for (int k = 0; k < 3; ++k)
-      {
-        n[c] += hit.Weights[k] * d.PointNormals[3 * hit.PointIds[k] + c];
-      }
-    }
-    if (vtkMath::Normalize(n) == 0.0)
-    {
-      return false;
-    }
-  }
-  else if (!d.CellNormals.empty())
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      n[c] = d.CellNormals[3 * hit.Cell + c];
-    }
-    if (vtkMath::Normalize(n) == 0.0)
-    {
-      return false;
-    }
-  }
-  // VTK flips the shading normal of back faces (two-sided lighting).
-  const double side = backFace ? -1.0 : 1.0;
+  double w[3];
+  const double distance = this->Tracer.ViewRay(x.Position, w);
+  const double margin = 1e-4 * distance + this->Tracer.GetRayOffset(x.Position);
+  double origin[3];
   for (int c = 0; c < 3; ++c)
   {
-    n[c] *= side;
+    origin[c] = x.Position[c] - margin * w[c];
   }
-  return true;
+  HitRecord own;
+  if (this->Tracer.TraceRay(origin, w, 2.0 * margin, own))
+  {
+    double y[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      y[c] = origin[c] + own.Distance * w[c];
+    }
+    this->Lighting.OutgoingRadiance(y, w, own, radiance);
+  }
 }
 
-void vtkDeepGIReferenceIrradiance::AddBounces(vtkIdType pixel, int sample, const double y0[3],
-  const double w0[3], const HitRecord& hit0, double radiance[3]) const
+// One cosine-weighted sample of E(X) = int L(Y(w)) cos dw: pi L(Y), L with
+// the bounces beyond the first (see "Multiple bounces" in the header).
+void vtkDeepGIReferenceIrradiance::Sampler::SampleIrradiance(
+  const SurfacePoint& x, int sample, double values[3]) const
 {
-  const Lighting& d = *this->Data;
-  const double maximum = this->MaximumDistance;
+  const double maximum = this->Self.MaximumDistance;
+  // Rays start RelativeOffset-sized distances above X; the exact
+  // |Y - X| <= MaximumDistance test follows, so any bound above it will do.
+  double direction[3];
+  HitRecord hit;
+  this->Tracer.TraceCosineRay(x, sample, 2.0 * maximum, direction, hit);
+  if (!hit.Hit)
+  {
+    return;
+  }
+  double y[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    y[c] = x.Origin[c] + hit.Distance * direction[c];
+  }
+  if (std::isfinite(maximum) && vtkMath::Distance2BetweenPoints(x.Position, y) > maximum * maximum)
+  {
+    return;
+  }
+  double radiance[3];
+  this->Lighting.OutgoingRadiance(y, direction, hit, radiance);
+  if (this->Self.NumberOfBounces > 1)
+  {
+    this->AddBounces(x.Pixel, sample, y, direction, hit, radiance);
+  }
+  // A cosine-weighted sample of E = int L cos dw is L cos / (cos / pi).
+  for (int c = 0; c < 3; ++c)
+  {
+    values[c] = vtkMath::Pi() * radiance[c];
+  }
+}
+
+//------------------------------------------------------------------------------
+// Adds to `radiance` (what leaves the first hit y0 along w0) the bounces
+// 2..NumberOfBounces by diffuse path tracing from y0.
+void vtkDeepGIReferenceIrradiance::Sampler::AddBounces(vtkIdType pixel, int sample,
+  const double y0[3], const double w0[3], const HitRecord& hit0, double radiance[3]) const
+{
+  const vtkDeepGIReferenceIrradiance& self = this->Self;
+  const double maximum = self.MaximumDistance;
   double y[3], w[3];
   std::copy(y0, y0 + 3, y);
   std::copy(w0, w0 + 3, w);
@@ -599,17 +391,17 @@ void vtkDeepGIReferenceIrradiance::AddBounces(vtkIdType pixel, int sample, const
   // Product of delta rho_i along the path: the weight of the light that
   // reaches the first hit after the bounces so far.
   double throughput[3] = { 1.0, 1.0, 1.0 };
-  for (int bounce = 1; bounce < this->NumberOfBounces; ++bounce)
+  for (int bounce = 1; bounce < self.NumberOfBounces; ++bounce)
   {
     double n[3];
-    if (!this->ShadingNormal(w, hit, n))
+    if (!this->Lighting.ShadingNormal(w, hit, n))
     {
       return; // Y sends no light, reflected light included
     }
-    const float* rho = &d.CellAlbedo[3 * hit.Cell];
+    const float* rho = this->Lighting.GetAlbedo(hit.Cell);
     for (int c = 0; c < 3; ++c)
     {
-      throughput[c] *= this->BounceDamping * rho[c];
+      throughput[c] *= self.BounceDamping * rho[c];
     }
     if (throughput[0] == 0.0 && throughput[1] == 0.0 && throughput[2] == 0.0)
     {
@@ -618,10 +410,10 @@ void vtkDeepGIReferenceIrradiance::AddBounces(vtkIdType pixel, int sample, const
     // rho E(Y) / pi with one cosine-weighted direction about n_Y: E ~
     // pi L(Y'), so the reflected radiance is rho L(Y'). The sample's own
     // random dimensions for this level (0 and 1 are the ray from X).
-    const double u1 = this->Random(pixel, sample, 2 * bounce);
-    const double u2 = this->Random(pixel, sample, 2 * bounce + 1);
+    const double u1 = this->Tracer.Random(pixel, sample, 2 * bounce);
+    const double u2 = this->Tracer.Random(pixel, sample, 2 * bounce + 1);
     double next[3];
-    CosineDirection(n, u1, u2, next);
+    vtkDeepGIRayTracer::CosineDirection(n, u1, u2, next);
     // The side of the triangle the path arrived on; a direction below it
     // (shading and winding normals disagree) would go through the surface.
     const double side = vtkMath::Dot(hit.Normal, w) > 0.0 ? -1.0 : 1.0;
@@ -629,14 +421,14 @@ void vtkDeepGIReferenceIrradiance::AddBounces(vtkIdType pixel, int sample, const
     {
       return;
     }
-    const double offset = this->GetRayOffset(y);
+    const double offset = this->Tracer.GetRayOffset(y);
     double origin[3];
     for (int c = 0; c < 3; ++c)
     {
       origin[c] = y[c] + offset * side * hit.Normal[c];
     }
     HitRecord nextHit;
-    if (!this->TraceRay(origin, next, 2.0 * maximum, nextHit))
+    if (!this->Tracer.TraceRay(origin, next, 2.0 * maximum, nextHit))
     {
       return;
     }
@@ -652,7 +444,7 @@ void vtkDeepGIReferenceIrradiance::AddBounces(vtkIdType pixel, int sample, const
       return;
     }
     double leaving[3];
-    this->OutgoingRadiance(nextY, next, nextHit, leaving);
+    this->Lighting.OutgoingRadiance(nextY, next, nextHit, leaving);
     for (int c = 0; c < 3; ++c)
     {
       radiance[c] += throughput[c] * leaving[c];
@@ -663,182 +455,15 @@ void vtkDeepGIReferenceIrradiance::AddBounces(vtkIdType pixel, int sample, const
   }
 }
 
-void vtkDeepGIReferenceIrradiance::DirectRadiance(
-  const double y[3], const double w[3], const HitRecord& hit, double radiance[3]) const
-{
-  const Lighting& d = *this->Data;
-  radiance[0] = radiance[1] = radiance[2] = 0.0;
-  const float* rho = &d.CellAlbedo[3 * hit.Cell];
-  if (d.Lights.empty() || (rho[0] == 0.0f && rho[1] == 0.0f && rho[2] == 0.0f))
-  {
-    return;
-  }
-  double n[3];
-  if (!this->ShadingNormal(w, hit, n))
-  {
-    return;
-  }
-  const double side = vtkMath::Dot(hit.Normal, w) > 0.0 ? -1.0 : 1.0;
-  // Shadow rays start just off the surface on the side the ray came from.
-  double origin[3];
-  const double offset = this->Shadows ? this->GetRayOffset(y) : 0.0;
-  for (int c = 0; c < 3; ++c)
-  {
-    origin[c] = y[c] + offset * side * hit.Normal[c];
-  }
-  for (const ResolvedLight& light : d.Lights)
-  {
-    double l[3];
-    double attenuation = 1.0;
-    double distance = std::numeric_limits<double>::infinity();
-    if (light.Positional)
-    {
-      vtkMath::Subtract(light.Position, y, l);
-      distance = vtkMath::Normalize(l);
-      if (!(distance > 0.0))
-      {
-        continue;
-      }
-      attenuation = 1.0 /
-        (light.Attenuation[0] + light.Attenuation[1] * distance +
-          light.Attenuation[2] * distance * distance);
-      if (light.Spot)
-      {
-        // Cosine between the light's axis and the direction light -> Y.
-        const double coneDot = -vtkMath::Dot(l, light.Direction);
-        attenuation =
-          coneDot >= light.CosCone ? attenuation * std::pow(coneDot, light.Exponent) : 0.0;
-      }
-    }
-    else
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        l[c] = -light.Direction[c];
-      }
-    }
-    const double df = std::max(0.0, attenuation * vtkMath::Dot(n, l));
-    if (!(df > 0.0) || !std::isfinite(df))
-    {
-      continue;
-    }
-    if (this->Shadows && this->IsOccluded(origin, l, std::max(0.0, distance - offset)))
-    {
-      continue;
-    }
-    for (int c = 0; c < 3; ++c)
-    {
-      radiance[c] += df * light.Color[c];
-    }
-  }
-  for (int c = 0; c < 3; ++c)
-  {
-    radiance[c] *= rho[c];
-  }
-}
-
-void vtkDeepGIReferenceIrradiance::EvaluateSample(const SurfacePoint& x, const double direction[3],
-  const HitRecord& hit, int sample, double* values) const
-{
-  values[0] = values[1] = values[2] = 0.0;
-  if (this->Quantity == DIRECT_RADIANCE)
-  {
-    // Find X's triangle along the viewing ray, starting just in front of X
-    // (1e-4 of the viewing distance plus the ray offset: far less than any
-    // layer separation, so nearer layers do not block it).
-    const Lighting& d = *this->Data;
-    double w[3], toX[3];
-    vtkMath::Subtract(x.Position, d.Eye, toX);
-    double distance;
-    if (d.Parallel)
-    {
-      std::copy(d.ViewDirection, d.ViewDirection + 3, w);
-      distance = std::fabs(vtkMath::Dot(toX, w));
-    }
-    else
-    {
-      std::copy(toX, toX + 3, w);
-      distance = vtkMath::Normalize(w);
-    }
-    const double margin = 1e-4 * distance + this->GetRayOffset(x.Position);
-    double origin[3];
-    for (int c = 0; c < 3; ++c)
-    {
-      origin[c] = x.Position[c] - margin * w[c];
-    }
-    HitRecord own;
-    if (this->TraceRay(origin, w, 2.0 * margin, own))
-    {
-      double y[3];
-      for (int c = 0; c < 3; ++c)
-      {
-        y[c] = origin[c] + own.Distance * w[c];
-      }
-      this->OutgoingRadiance(y, w, own, values);
-    }
-    return;
-  }
-  if (!hit.Hit)
-  {
-    return;
-  }
-  double y[3];
-  for (int c = 0; c < 3; ++c)
-  {
-    y[c] = x.Origin[c] + hit.Distance * direction[c];
-  }
-  if (std::isfinite(this->MaximumDistance) &&
-    vtkMath::Distance2BetweenPoints(x.Position, y) > this->MaximumDistance * this->MaximumDistance)
-  {
-    return;
-  }
-  double radiance[3];
-  this->OutgoingRadiance(y, direction, hit, radiance);
-  if (this->NumberOfBounces > 1)
-  {
-    this->AddBounces(x.Pixel, sample, y, direction, hit, radiance);
-  }
-  // A cosine-weighted sample of E = int L cos dw is L cos / (cos / pi).
-  for (int c = 0; c < 3; ++c)
-  {
-    values[c] = vtkMath::Pi() * radiance[c];
-  }
-}
-
 //------------------------------------------------------------------------------
-void vtkDeepGIReferenceIrradiance::AllocateOutput(vtkImageData* output, vtkIdType pixels)
+void vtkDeepGIReferenceIrradiance::Sampler::FinishPixel(
+  vtkIdType pixel, const double* mean, const double* standardError)
 {
-  Lighting& d = *this->Data;
-  d.Direct = d.Irradiance = d.IrradianceError = d.Radiance = d.RadianceError = nullptr;
-  auto add = [&](const char* name)
-  {
-    vtkNew<vtkFloatArray> array;
-    array->SetName(name);
-    array->SetNumberOfComponents(3);
-    array->SetNumberOfTuples(pixels);
-    output->GetPointData()->AddArray(array);
-    return array.GetPointer();
-  };
-  if (this->Quantity == DIRECT_RADIANCE)
-  {
-    d.Direct = add("DirectRadiance");
-    return;
-  }
-  d.Irradiance = add("IndirectIrradiance");
-  d.IrradianceError = add("IndirectIrradianceStandardError");
-  d.Radiance = d.CaptureAlbedo ? add(vtkDeepGICaptureNames::IndirectRadiance) : nullptr;
-  d.RadianceError = d.CaptureAlbedo ? add("IndirectRadianceStandardError") : nullptr;
-}
-
-void vtkDeepGIReferenceIrradiance::FinishPixel(
-  vtkImageData*, vtkIdType pixel, const double* mean, const double* standardError)
-{
-  const Lighting& d = *this->Data;
-  if (d.Direct)
+  if (this->Direct)
   {
     for (int c = 0; c < 3; ++c)
     {
-      d.Direct->SetTypedComponent(pixel, c, mean ? static_cast<float>(mean[c]) : 0.0f);
+      this->Direct->SetTypedComponent(pixel, c, mean ? static_cast<float>(mean[c]) : 0.0f);
     }
     return;
   }
@@ -846,16 +471,42 @@ void vtkDeepGIReferenceIrradiance::FinishPixel(
   {
     const double e = mean ? mean[c] : 0.0;
     const double se = mean ? standardError[c] : 0.0;
-    d.Irradiance->SetTypedComponent(pixel, c, static_cast<float>(e));
-    d.IrradianceError->SetTypedComponent(pixel, c, static_cast<float>(se));
-    if (d.Radiance)
+    this->Irradiance->SetTypedComponent(pixel, c, static_cast<float>(e));
+    this->IrradianceError->SetTypedComponent(pixel, c, static_cast<float>(se));
+    if (this->Radiance)
     {
       // Lambertian reflection: L = (rho / pi) E.
-      const double k = mean ? d.CaptureAlbedo->GetComponent(pixel, c) / vtkMath::Pi() : 0.0;
-      d.Radiance->SetTypedComponent(pixel, c, static_cast<float>(k * e));
-      d.RadianceError->SetTypedComponent(pixel, c, static_cast<float>(k * se));
+      const double k = mean ? this->CaptureAlbedo->GetComponent(pixel, c) / vtkMath::Pi() : 0.0;
+      this->Radiance->SetTypedComponent(pixel, c, static_cast<float>(k * e));
+      this->RadianceError->SetTypedComponent(pixel, c, static_cast<float>(k * se));
     }
   }
+}
+
+//------------------------------------------------------------------------------
+double vtkDeepGIReferenceIrradiance::GetMeanStandardError()
+{
+  return this->Tracer->GetMeanStandardError();
+}
+
+double vtkDeepGIReferenceIrradiance::GetMaximumStandardError()
+{
+  return this->Tracer->GetMaximumStandardError();
+}
+
+vtkIdType vtkDeepGIReferenceIrradiance::GetNumberOfValidPixels()
+{
+  return this->Tracer->GetNumberOfValidPixels();
+}
+
+vtkIdType vtkDeepGIReferenceIrradiance::GetNumberOfRays()
+{
+  return this->Tracer->GetNumberOfRays();
+}
+
+double vtkDeepGIReferenceIrradiance::GetComputeTime()
+{
+  return this->Tracer->GetComputeTime();
 }
 
 //------------------------------------------------------------------------------
@@ -873,23 +524,11 @@ void vtkDeepGIReferenceIrradiance::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "NumberOfBounces: " << this->NumberOfBounces << "\n";
   os << indent << "BounceDamping: " << this->BounceDamping << "\n";
-  os << indent << "NumberOfLights: " << this->GetNumberOfLights() << "\n";
-  for (const ResolvedLight& light : this->Data->Lights)
-  {
-    os << indent.GetNextIndent() << (light.Positional ? "positional" : "directional")
-       << " light: position (" << light.Position[0] << ", " << light.Position[1] << ", "
-       << light.Position[2] << "), direction (" << light.Direction[0] << ", " << light.Direction[1]
-       << ", " << light.Direction[2] << "), colour x intensity (" << light.Color[0] << ", "
-       << light.Color[1] << ", " << light.Color[2] << ")";
-    if (light.Positional)
-    {
-      os << ", attenuation (" << light.Attenuation[0] << ", " << light.Attenuation[1] << ", "
-         << light.Attenuation[2] << ")";
-      if (light.Spot)
-      {
-        os << ", spot cos(cone) " << light.CosCone << ", exponent " << light.Exponent;
-      }
-    }
-    os << "\n";
-  }
+  os << indent << "SamplesPerPixel: " << this->SamplesPerPixel << "\n";
+  os << indent << "Seed: " << this->Seed << "\n";
+  os << indent << "Layer: " << this->Layer << "\n";
+  os << indent << "RelativeOffset: " << this->RelativeOffset << "\n";
+  this->Lighting->Print(os, indent);
+  os << indent << "Tracer:\n";
+  this->Tracer->PrintSelf(os, indent.GetNextIndent());
 }

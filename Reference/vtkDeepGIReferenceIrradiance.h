@@ -8,7 +8,9 @@
  * `Layer` of a capture (vtkDeepGBufferPass::CaptureLayers, or built by hand
  * as for vtkDeepGIReferenceObscurance), it integrates the light that the
  * scene's directly lit diffuse surfaces send to X, by Monte Carlo ray casting
- * against ALL the scene's triangles (Intel Embree 3, through the base class).
+ * against ALL the scene's triangles (Intel Embree 3, through a
+ * vtkDeepGIRayTracer: scene, pixels, random numbers and statistics as for
+ * vtkDeepGIReferenceObscurance).
  *
  * ## Units and the quantity
  *
@@ -127,48 +129,65 @@
  * (both then ignore light from farther than r), leave it infinite for the
  * true one-bounce irradiance.
  *
- * ## Output
+ * ## Pipeline and output
  *
- * Point arrays (float, same dimensions as the capture): "IndirectIrradiance"
- * (RGB E, 0 where the layer is empty), "IndirectIrradianceStandardError"
- * (RGB), "IndirectRadiance" and "IndirectRadianceStandardError" (RGB,
- * rho_X E / pi; only when the capture has Albedo_j, otherwise a warning) and
- * "Valid". GetMeanStandardError()/GetMaximumStandardError() use the largest
- * of the three irradiance standard errors per pixel. Radius, Bias and
- * Epsilon of the base class are not used.
+ * A vtkImageAlgorithm: input port 0 is the capture (vtkImageData), input
+ * port 1 the scene (vtkPolyData, world space; SetSceneData or
+ * SetSceneConnection), as for vtkDeepGIReferenceObscurance. Output point
+ * arrays (float, the capture's grid): "IndirectIrradiance" (RGB E, 0 where
+ * the layer is empty), "IndirectIrradianceStandardError" (RGB),
+ * "IndirectRadiance" and "IndirectRadianceStandardError" (RGB, rho_X E / pi;
+ * only when the capture has Albedo_j, otherwise a warning) and "Valid".
+ * GetMeanStandardError()/GetMaximumStandardError() use the largest of the
+ * three irradiance standard errors per pixel. The update fails with an
+ * error of the estimator and an empty output (no points) when the capture
+ * has no such layer arrays or matrices, the scene no polygons, or
+ * MaximumDistance is invalid; a missing input is the executive's error.
  *
  * Typical use:
  * @code
  * vtkNew<vtkDeepGIReferenceIrradiance> reference;
- * reference->SetScene(demoScene->GetScenePolyData()); // carries "Diffuse"
+ * reference->SetInputData(capture); // from vtkDeepGBufferPass::CaptureLayers
+ * reference->SetSceneData(demoScene->GetScenePolyData()); // carries "Diffuse"
  * reference->SetLightsFromRenderer(renderer);
  * reference->SetSamplesPerPixel(256);
- * reference->Compute(capture); // from vtkDeepGBufferPass::CaptureLayers
+ * reference->Update();
  * vtkImageData* e = reference->GetOutput();
  * @endcode
  *
- * @sa vtkDeepGIReferenceObscurance vtkDeepGBufferPass
+ * @sa vtkDeepGIRayTracer vtkDeepGIReferenceObscurance vtkDeepGBufferPass
  */
 
 #ifndef vtkDeepGIReferenceIrradiance_h
 #define vtkDeepGIReferenceIrradiance_h
 
 #include "vtkDeepGIReferenceModule.h" // for export macro
-#include "vtkDeepGIReferenceObscurance.h"
-#include "vtkDeepGISetGet.h" // for vtkDeepGISetClampMacro
+#include "vtkDeepGISetGet.h"          // for vtkDeepGISetClampMacro
+#include "vtkImageAlgorithm.h"
+#include "vtkNew.h" // for the tracer
 
 #include <memory> // for std::unique_ptr
 
+class vtkAlgorithmOutput;
 class vtkCamera;
+class vtkDeepGIRayTracer;
+class vtkDeepGIReferenceLighting;
 class vtkLight;
+class vtkPolyData;
 class vtkRenderer;
 
-class VTKDEEPGIREFERENCE_EXPORT vtkDeepGIReferenceIrradiance : public vtkDeepGIReferenceObscurance
+class VTKDEEPGIREFERENCE_EXPORT vtkDeepGIReferenceIrradiance : public vtkImageAlgorithm
 {
 public:
   static vtkDeepGIReferenceIrradiance* New();
-  vtkTypeMacro(vtkDeepGIReferenceIrradiance, vtkDeepGIReferenceObscurance);
+  vtkTypeMacro(vtkDeepGIReferenceIrradiance, vtkImageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The scene on input port 1. Without one the update fails with an error.
+  void SetSceneData(vtkPolyData* scene);
+  void SetSceneConnection(vtkAlgorithmOutput* output);
+  ///@}
 
   ///@{
   /**
@@ -211,7 +230,7 @@ public:
     int index, double position[3], double direction[3], double color[3], bool& positional) const;
   ///@}
 
-  /// What Compute() evaluates.
+  /// What the update evaluates.
   enum QuantityType
   {
     INDIRECT_IRRADIANCE = 0,
@@ -271,7 +290,7 @@ public:
    * default infinity: the full irradiance); with NumberOfBounces > 1 it
    * limits every segment of a path. Set it to the screen-space gather
    * radius r to compare with a gather limited to r.
-   * Compute() fails with an error when it is NaN or not positive.
+   * The update fails with an error when it is NaN or not positive.
    *
    * @unit world units
    * @range (0, inf]
@@ -345,24 +364,100 @@ public:
   vtkGetMacro(DiffuseCoefficient, double);
   ///@}
 
+  ///@{
+  /**
+   * Monte Carlo samples (rays from X) per pixel, [1, 1048576]; default 256.
+   * The noise (standard error) falls as 1 / sqrt(SamplesPerPixel).
+   * DIRECT_RADIANCE takes one exact sample whatever the value.
+   *
+   * @unit rays
+   * @range 1..1048576, clamped
+   * @default 256
+   */
+  vtkSetClampMacro(SamplesPerPixel, int, 1, 1048576);
+  vtkGetMacro(SamplesPerPixel, int);
+  ///@}
+
+  ///@{
+  /**
+   * Seed of the counter-based random sequence (any value; default 0). The
+   * same seed, capture and scene give bit-identical results for any number
+   * of threads.
+   *
+   * @range any
+   * @default 0
+   */
+  vtkSetMacro(Seed, unsigned int);
+  vtkGetMacro(Seed, unsigned int);
+  ///@}
+
+  ///@{
+  /**
+   * Which layer of the capture provides X and n (and Albedo_j), [0, 7];
+   * default 0.
+   *
+   * @range 0..7, clamped
+   * @default 0
+   */
+  vtkSetClampMacro(Layer, int, 0, 7);
+  vtkGetMacro(Layer, int);
+  ///@}
+
+  ///@{
+  /**
+   * Rays from X, from each hit of a path and shadow rays start
+   * RelativeOffset * (scene diagonal + |point - scene centre|) off their
+   * surface; dimensionless, [0, 0.01]; default 1e-5.
+   *
+   * @range 0..0.01, clamped
+   * @default 1e-5
+   */
+  vtkDeepGISetClampMacro(RelativeOffset, double, 0.0, 0.01);
+  vtkGetMacro(RelativeOffset, double);
+  ///@}
+
+  ///@{
+  /**
+   * Noise of the last update: mean and maximum over valid pixels of the
+   * largest RGB standard error of E (0 when no pixel was valid).
+   */
+  double GetMeanStandardError();
+  double GetMaximumStandardError();
+  ///@}
+
+  ///@{
+  /**
+   * Statistics of the last update: valid pixels, rays that left X (not
+   * counting continuation and shadow rays), wall time in seconds (BVH build
+   * included).
+   */
+  vtkIdType GetNumberOfValidPixels();
+  vtkIdType GetNumberOfRays();
+  double GetComputeTime();
+  ///@}
+
+  ///@{
+  /**
+   * @deprecated SetScene() is SetSceneData(), GetScene() the data on input
+   * port 1 (removed in the next release).
+   */
+  void SetScene(vtkPolyData* scene) { this->SetSceneData(scene); }
+  vtkPolyData* GetScene();
+  ///@}
+
+  /**
+   * @deprecated Compute(capture) is SetInputData(capture) and Update();
+   * returns whether the update succeeded (removed in the next release).
+   */
+  bool Compute(vtkImageData* capture);
+
 protected:
   vtkDeepGIReferenceIrradiance();
   ~vtkDeepGIReferenceIrradiance() override;
 
-  int GetNumberOfSampleComponents() const override { return 3; }
-  void EvaluateSample(const SurfacePoint& x, const double direction[3], const HitRecord& hit,
-    int sample, double* values) const override;
-  void AllocateOutput(vtkImageData* output, vtkIdType pixels) override;
-  void FinishPixel(vtkImageData* output, vtkIdType pixel, const double* mean,
-    const double* standardError) override;
-  double GetMaximumRayDistance() const override;
-  bool CheckParameters() override;
-  bool PrepareCompute(vtkImageData* capture) override;
-  const char* GetStandardErrorArrayName() const override
-  {
-    return "IndirectIrradianceStandardError";
-  }
-  int GetNumberOfSamplesPerPixel() const override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
 
   int Quantity;
   bool Shadows;
@@ -372,34 +467,19 @@ protected:
   char* EmissionArrayName;
   int NumberOfBounces;
   double BounceDamping;
+  int SamplesPerPixel;
+  unsigned int Seed;
+  int Layer;
+  double RelativeOffset;
+
+  vtkNew<vtkDeepGIRayTracer> Tracer;
 
 private:
   vtkDeepGIReferenceIrradiance(const vtkDeepGIReferenceIrradiance&) = delete;
   void operator=(const vtkDeepGIReferenceIrradiance&) = delete;
 
-  /// Radiance leaving the hit towards -w: emitted plus direct diffuse.
-  void OutgoingRadiance(
-    const double y[3], const double w[3], const HitRecord& hit, double radiance[3]) const;
-
-  /// Direct diffuse radiance leaving the hit (seen from direction w).
-  void DirectRadiance(
-    const double y[3], const double w[3], const HitRecord& hit, double radiance[3]) const;
-
-  /// VTK's shading normal at the hit reached along w, flipped on back
-  /// faces; false where the hit sends no light (a back face with one-sided
-  /// lighting) or the interpolated normal vanishes.
-  bool ShadingNormal(const double w[3], const HitRecord& hit, double n[3]) const;
-
-  /// Adds to `radiance` (what leaves the first hit y along w) the bounces
-  /// 2..NumberOfBounces by diffuse path tracing from y.
-  void AddBounces(vtkIdType pixel, int sample, const double y[3], const double w[3],
-    const HitRecord& hit, double radiance[3]) const;
-
-  /// Reads the scene's emission array into the per-cell table (empty: none).
-  void PrepareEmission();
-
-  struct Lighting;
-  std::unique_ptr<Lighting> Data;
+  struct Sampler;
+  std::unique_ptr<vtkDeepGIReferenceLighting> Lighting;
 };
 
 #endif

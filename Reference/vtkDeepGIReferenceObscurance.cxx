@@ -1,99 +1,42 @@
 #include "vtkDeepGIReferenceObscurance.h"
 #include "vtkDeepGICaptureNames.h"
+#include "vtkDeepGIRayTracer.h"
 
-#include "vtkCellArray.h"
-#include "vtkCellArrayIterator.h"
-#include "vtkDataArray.h"
-#include "vtkFieldData.h"
+#include "vtkExecutive.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkMath.h"
-#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSMPTools.h"
-#include "vtkSmartPointer.h"
-#include "vtkUnsignedCharArray.h"
-
-#include <embree3/rtcore.h>
 
 #include <algorithm>
-#include <array>
-#include <cfloat>
-#include <chrono>
 #include <cmath>
-#include <cstdint>
-#include <limits>
-#include <string>
-#include <vector>
 
 vtkStandardNewMacro(vtkDeepGIReferenceObscurance);
 
-namespace
+// The estimator the tracer runs: one cosine-weighted ray per sample, eq. 2
+// on its first hit within Radius.
+struct vtkDeepGIReferenceObscurance::Sampler : public vtkDeepGIRayTracer::Estimator
 {
-// splitmix64 finaliser: a bijective 64-bit mix.
-inline std::uint64_t Mix64(std::uint64_t z)
-{
-  z += 0x9e3779b97f4a7c15ULL;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-
-void EmbreeError(void*, RTCError code, const char* message)
-{
-  vtkGenericWarningMacro(
-    "Embree error " << static_cast<int>(code) << ": " << (message ? message : ""));
-}
-
-// Orthonormal basis (t, b) around unit n (Duff et al. 2017).
-void Basis(const double n[3], double t[3], double b[3])
-{
-  const double sign = std::copysign(1.0, n[2]);
-  const double a = -1.0 / (sign + n[2]);
-  const double c = n[0] * n[1] * a;
-  t[0] = 1.0 + sign * n[0] * n[0] * a;
-  t[1] = sign * c;
-  t[2] = -sign * n[0];
-  b[0] = c;
-  b[1] = sign + n[1] * n[1] * a;
-  b[2] = -n[1];
-}
-}
-
-struct vtkDeepGIReferenceObscurance::Internals
-{
-  RTCDevice Device = nullptr;
-  RTCScene Scene = nullptr;
-  vtkPolyData* BuiltFor = nullptr;
-  vtkMTimeType BuiltTime = 0;
-  std::vector<vtkIdType> TriangleToCell;
-  // Scene point ids of each fan triangle (3 per triangle), for HitRecord.
-  std::vector<unsigned int> Indices;
-  double Centre[3] = { 0, 0, 0 };
-  double Diagonal = 0.0;
-
-  void Release()
+  Sampler(vtkDeepGIReferenceObscurance& self)
+    : Self(self)
   {
-    if (this->Scene)
-    {
-      rtcReleaseScene(this->Scene);
-      this->Scene = nullptr;
-    }
-    this->BuiltFor = nullptr;
-    this->TriangleToCell.clear();
-    this->Indices.clear();
   }
-  ~Internals()
-  {
-    this->Release();
-    if (this->Device)
-    {
-      rtcReleaseDevice(this->Device);
-    }
-  }
+
+  bool Prepare(vtkImageData*, vtkPolyData*, vtkImageData* output) override;
+  int GetNumberOfComponents() const override { return 1; }
+  int GetNumberOfSamples() const override { return this->Self.SamplesPerPixel; }
+  void EvaluateSample(
+    const vtkDeepGIRayTracer::SurfacePoint& x, int sample, double* values) const override;
+  void FinishPixel(vtkIdType pixel, const double* mean, const double* standardError) override;
+
+  vtkDeepGIReferenceObscurance& Self;
+  vtkFloatArray* Visibility = nullptr;
+  vtkFloatArray* Obscurance = nullptr;
+  vtkFloatArray* Error = nullptr;
 };
 
 //------------------------------------------------------------------------------
@@ -105,277 +48,89 @@ vtkDeepGIReferenceObscurance::vtkDeepGIReferenceObscurance()
   , Seed(0)
   , Layer(0)
   , RelativeOffset(1e-5)
-  , MeanStandardError(0.0)
-  , MaximumStandardError(0.0)
-  , NumberOfValidPixels(0)
-  , NumberOfRays(0)
-  , ComputeTime(0.0)
-  , Output(vtkSmartPointer<vtkImageData>::New())
-  , Internal(new Internals)
 {
+  this->SetNumberOfInputPorts(2);
 }
 
 vtkDeepGIReferenceObscurance::~vtkDeepGIReferenceObscurance() = default;
 
 //------------------------------------------------------------------------------
-void vtkDeepGIReferenceObscurance::SetScene(vtkPolyData* scene)
+void vtkDeepGIReferenceObscurance::SetSceneData(vtkPolyData* scene)
 {
-  if (this->Scene != scene)
-  {
-    this->Scene = scene;
-    this->Modified();
-  }
+  this->SetInputData(1, scene);
+}
+
+void vtkDeepGIReferenceObscurance::SetSceneConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
 }
 
 vtkPolyData* vtkDeepGIReferenceObscurance::GetScene()
 {
-  return this->Scene;
+  return vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0));
 }
 
-vtkImageData* vtkDeepGIReferenceObscurance::GetOutput()
+bool vtkDeepGIReferenceObscurance::Compute(vtkImageData* capture)
 {
-  return this->Output;
+  this->SetInputData(0, capture);
+  return this->GetExecutive()->Update() != 0 && this->GetOutput()->GetNumberOfPoints() > 0;
 }
 
 //------------------------------------------------------------------------------
-bool vtkDeepGIReferenceObscurance::BuildScene()
+int vtkDeepGIReferenceObscurance::FillInputPortInformation(int port, vtkInformation* info)
 {
-  Internals& in = *this->Internal;
-  if (in.Scene && in.BuiltFor == this->Scene.Get() && in.BuiltTime >= this->Scene->GetMTime())
-  {
-    return true;
-  }
-  in.Release();
-  if (!in.Device)
-  {
-    in.Device = rtcNewDevice(nullptr);
-    if (!in.Device)
-    {
-      vtkErrorMacro("Cannot create an Embree device.");
-      return false;
-    }
-    rtcSetDeviceErrorFunction(in.Device, EmbreeError, nullptr);
-  }
-  vtkPoints* points = this->Scene->GetPoints();
-  vtkCellArray* polys = this->Scene->GetPolys();
-  if (!points || !polys || polys->GetNumberOfCells() == 0)
-  {
-    vtkErrorMacro("The scene has no polygons.");
-    return false;
-  }
-  double bounds[6];
-  points->GetBounds(bounds);
-  for (int c = 0; c < 3; ++c)
-  {
-    in.Centre[c] = 0.5 * (bounds[2 * c] + bounds[2 * c + 1]);
-  }
-  in.Diagonal = std::sqrt(
-    vtkMath::Distance2BetweenPoints(std::array<double, 3>{ bounds[0], bounds[2], bounds[4] }.data(),
-      std::array<double, 3>{ bounds[1], bounds[3], bounds[5] }.data()));
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkImageData" : "vtkPolyData");
+  return 1;
+}
 
-  // Fan-triangulate the polygons; cell ids follow the polydata's cell order
-  // (verts and lines come first there).
-  std::vector<unsigned int>& indices = in.Indices;
-  const vtkIdType cellOffset = this->Scene->GetNumberOfVerts() + this->Scene->GetNumberOfLines();
-  auto iter = vtk::TakeSmartPointer(polys->NewIterator());
-  vtkIdType cell = 0;
-  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell(), ++cell)
+//------------------------------------------------------------------------------
+int vtkDeepGIReferenceObscurance::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  Sampler sampler(*this);
+  return this->Tracer->Run(vtkImageData::GetData(inputVector[0]),
+    vtkPolyData::GetData(inputVector[1]), { this->Layer, this->Seed, this->RelativeOffset },
+    sampler, vtkImageData::GetData(outputVector), this);
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGIReferenceObscurance::Sampler::Prepare(
+  vtkImageData*, vtkPolyData*, vtkImageData* output)
+{
+  const double radius = this->Self.Radius;
+  if (!(std::isfinite(radius) && radius > 0.0))
   {
-    vtkIdType npts;
-    const vtkIdType* pts;
-    iter->GetCurrentCell(npts, pts);
-    for (vtkIdType k = 1; k + 1 < npts; ++k)
-    {
-      indices.push_back(static_cast<unsigned int>(pts[0]));
-      indices.push_back(static_cast<unsigned int>(pts[k]));
-      indices.push_back(static_cast<unsigned int>(pts[k + 1]));
-      in.TriangleToCell.push_back(cellOffset + cell);
-    }
-  }
-  if (indices.empty())
-  {
-    vtkErrorMacro("The scene has no polygons with three or more points.");
+    vtkErrorWithObjectMacro(
+      &this->Self, "Radius must be a positive finite number, not " << radius << ".");
     return false;
   }
-  const vtkIdType npoints = points->GetNumberOfPoints();
-  in.Scene = rtcNewScene(in.Device);
-  rtcSetSceneBuildQuality(in.Scene, RTC_BUILD_QUALITY_HIGH);
-  RTCGeometry geometry = rtcNewGeometry(in.Device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  float* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-    geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), npoints));
-  unsigned int* triangles = static_cast<unsigned int*>(rtcSetNewGeometryBuffer(geometry,
-    RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned int), indices.size() / 3));
-  if (!vertices || !triangles)
+  const vtkIdType pixels = output->GetNumberOfPoints();
+  auto add = [&](const char* name)
   {
-    rtcReleaseGeometry(geometry);
-    vtkErrorMacro("Embree could not allocate the scene buffers.");
-    in.Release();
-    return false;
-  }
-  for (vtkIdType p = 0; p < npoints; ++p)
-  {
-    double x[3];
-    points->GetPoint(p, x);
-    for (int c = 0; c < 3; ++c)
-    {
-      vertices[3 * p + c] = static_cast<float>(x[c] - in.Centre[c]);
-    }
-  }
-  std::copy(indices.begin(), indices.end(), triangles);
-  rtcCommitGeometry(geometry);
-  rtcAttachGeometry(in.Scene, geometry);
-  rtcReleaseGeometry(geometry);
-  rtcCommitScene(in.Scene);
-  in.BuiltFor = this->Scene.Get();
-  in.BuiltTime = this->Scene->GetMTime();
+    vtkNew<vtkFloatArray> array;
+    array->SetName(name);
+    array->SetNumberOfTuples(pixels);
+    output->GetPointData()->AddArray(array);
+    return array.GetPointer();
+  };
+  this->Visibility = add(vtkDeepGICaptureNames::AmbientVisibility);
+  this->Obscurance = add("Obscurance");
+  this->Error = add("StandardError");
   return true;
 }
 
 //------------------------------------------------------------------------------
-bool vtkDeepGIReferenceObscurance::TraceRay(
-  const double origin[3], const double direction[3], double tmax, HitRecord& hit) const
+// One cosine-weighted sample of A = (1 / pi) integral O(w) dw (eq. 2 on the
+// first hit, see the header) divided by its density cos / pi.
+void vtkDeepGIReferenceObscurance::Sampler::EvaluateSample(
+  const vtkDeepGIRayTracer::SurfacePoint& x, int sample, double* values) const
 {
-  const Internals& in = *this->Internal;
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRayHit rh;
-  rh.ray.org_x = static_cast<float>(origin[0] - in.Centre[0]);
-  rh.ray.org_y = static_cast<float>(origin[1] - in.Centre[1]);
-  rh.ray.org_z = static_cast<float>(origin[2] - in.Centre[2]);
-  rh.ray.dir_x = static_cast<float>(direction[0]);
-  rh.ray.dir_y = static_cast<float>(direction[1]);
-  rh.ray.dir_z = static_cast<float>(direction[2]);
-  rh.ray.tnear = 0.0f;
-  rh.ray.tfar = static_cast<float>(std::min(tmax, static_cast<double>(FLT_MAX)));
-  rh.ray.time = 0.0f;
-  rh.ray.mask = 0xFFFFFFFFu;
-  rh.ray.id = 0;
-  rh.ray.flags = 0;
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(in.Scene, &context, &rh);
-  hit.Hit = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-  if (!hit.Hit)
-  {
-    hit.Distance = std::numeric_limits<double>::infinity();
-    hit.Cell = -1;
-    for (int k = 0; k < 3; ++k)
-    {
-      hit.Normal[k] = hit.Weights[k] = 0.0;
-      hit.PointIds[k] = -1;
-    }
-    return false;
-  }
-  hit.Distance = rh.ray.tfar;
-  hit.Cell = in.TriangleToCell[rh.hit.primID];
-  // Embree's (u, v) weight vertices 1 and 2; vertex 0 gets 1 - u - v.
-  for (int k = 0; k < 3; ++k)
-  {
-    hit.PointIds[k] = in.Indices[3 * static_cast<size_t>(rh.hit.primID) + k];
-  }
-  hit.Weights[1] = rh.hit.u;
-  hit.Weights[2] = rh.hit.v;
-  hit.Weights[0] = 1.0 - hit.Weights[1] - hit.Weights[2];
-  // The winding normal (p1 - p0) x (p2 - p0), the side OpenGL and VTK call
-  // front facing, from the double-precision points rather than Embree's
-  // float Ng (whose orientation convention is Embree's own).
-  double p[3][3];
-  for (int k = 0; k < 3; ++k)
-  {
-    this->Scene->GetPoints()->GetPoint(hit.PointIds[k], p[k]);
-  }
-  double e1[3], e2[3];
-  vtkMath::Subtract(p[1], p[0], e1);
-  vtkMath::Subtract(p[2], p[0], e2);
-  vtkMath::Cross(e1, e2, hit.Normal);
-  vtkMath::Normalize(hit.Normal);
-  return true;
-}
-
-//------------------------------------------------------------------------------
-bool vtkDeepGIReferenceObscurance::IsOccluded(
-  const double origin[3], const double direction[3], double tmax) const
-{
-  const Internals& in = *this->Internal;
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRay ray;
-  ray.org_x = static_cast<float>(origin[0] - in.Centre[0]);
-  ray.org_y = static_cast<float>(origin[1] - in.Centre[1]);
-  ray.org_z = static_cast<float>(origin[2] - in.Centre[2]);
-  ray.dir_x = static_cast<float>(direction[0]);
-  ray.dir_y = static_cast<float>(direction[1]);
-  ray.dir_z = static_cast<float>(direction[2]);
-  ray.tnear = 0.0f;
-  ray.tfar = static_cast<float>(std::min(tmax, static_cast<double>(FLT_MAX)));
-  ray.time = 0.0f;
-  ray.mask = 0xFFFFFFFFu;
-  ray.id = 0;
-  ray.flags = 0;
-  rtcOccluded1(in.Scene, &context, &ray);
-  // rtcOccluded1 sets tfar to -inf when it finds a hit.
-  return ray.tfar < 0.0f;
-}
-
-//------------------------------------------------------------------------------
-double vtkDeepGIReferenceObscurance::GetRayOffset(const double point[3]) const
-{
-  const Internals& in = *this->Internal;
-  const double rel[3] = { point[0] - in.Centre[0], point[1] - in.Centre[1],
-    point[2] - in.Centre[2] };
-  return this->RelativeOffset * (in.Diagonal + vtkMath::Norm(rel));
-}
-
-//------------------------------------------------------------------------------
-bool vtkDeepGIReferenceObscurance::CheckParameters()
-{
-  if (!(std::isfinite(this->Radius) && this->Radius > 0.0))
-  {
-    vtkErrorMacro("Radius must be a positive finite number, not " << this->Radius << ".");
-    return false;
-  }
-  return true;
-}
-
-bool vtkDeepGIReferenceObscurance::PrepareCompute(vtkImageData*)
-{
-  return true;
-}
-
-//------------------------------------------------------------------------------
-double vtkDeepGIReferenceObscurance::Random(vtkIdType pixel, int sample, int dimension) const
-{
-  std::uint64_t h = Mix64(static_cast<std::uint64_t>(this->Seed) ^ 0x5851f42d4c957f2dULL);
-  h = Mix64(h ^ static_cast<std::uint64_t>(pixel));
-  h = Mix64(h ^
-    ((static_cast<std::uint64_t>(static_cast<std::uint32_t>(sample)) << 8) |
-      static_cast<std::uint64_t>(dimension & 0xff)));
-  return static_cast<double>(h >> 11) * (1.0 / 9007199254740992.0);
-}
-
-void vtkDeepGIReferenceObscurance::CosineDirection(
-  const double n[3], double u1, double u2, double w[3])
-{
-  // Malley's method: uniform on the disc, projected up onto the hemisphere.
-  double t[3], b[3];
-  Basis(n, t, b);
-  const double radius = std::sqrt(u1);
-  const double phi = 2.0 * vtkMath::Pi() * u2;
-  const double lx = radius * std::cos(phi), ly = radius * std::sin(phi);
-  const double lz = std::sqrt(std::max(0.0, 1.0 - u1));
-  for (int c = 0; c < 3; ++c)
-  {
-    w[c] = lx * t[c] + ly * b[c] + lz * n[c];
-  }
-  vtkMath::Normalize(w);
-}
-
-//------------------------------------------------------------------------------
-void vtkDeepGIReferenceObscurance::EvaluateSample(
-  const SurfacePoint& x, const double direction[3], const HitRecord& hit, int, double* values) const
-{
+  const vtkDeepGIReferenceObscurance& self = this->Self;
+  double direction[3];
+  vtkDeepGIRayTracer::HitRecord hit;
+  self.Tracer->TraceCosineRay(x, sample, self.Radius, direction, hit);
   values[0] = 0.0;
-  if (!hit.Hit || hit.Distance >= this->Radius)
+  if (!hit.Hit || hit.Distance >= self.Radius)
   {
     return;
   }
@@ -391,342 +146,68 @@ void vtkDeepGIReferenceObscurance::EvaluateSample(
     v[c] = x.Origin[c] + hit.Distance * direction[c] - x.Position[c];
   }
   const double vv = vtkMath::Dot(v, v);
-  const double falloff = 1.0 - vv / (this->Radius * this->Radius);
+  const double falloff = 1.0 - vv / (self.Radius * self.Radius);
   if (falloff <= 0.0)
   {
     return;
   }
-  const double denominator = std::sqrt(vv + this->Epsilon);
+  const double denominator = std::sqrt(vv + self.Epsilon);
   double geometric = 1.0; // (v.n - beta)/sqrt(v.v + eps) divided by cos
-  if (this->Bias > 0.0 || this->Epsilon > 0.0)
+  if (self.Bias > 0.0 || self.Epsilon > 0.0)
   {
     geometric = denominator > 0.0
-      ? std::max(0.0, (vtkMath::Dot(v, x.Normal) - this->Bias) / denominator) / cosine
+      ? std::max(0.0, (vtkMath::Dot(v, x.Normal) - self.Bias) / denominator) / cosine
       : 0.0;
   }
   values[0] = falloff * std::min(1.0, geometric);
 }
 
 //------------------------------------------------------------------------------
-void vtkDeepGIReferenceObscurance::AllocateOutput(vtkImageData* output, vtkIdType pixels)
+void vtkDeepGIReferenceObscurance::Sampler::FinishPixel(
+  vtkIdType pixel, const double* mean, const double* standardError)
 {
-  const char* names[] = { vtkDeepGICaptureNames::AmbientVisibility, "Obscurance", "StandardError" };
-  for (const char* name : names)
-  {
-    vtkNew<vtkFloatArray> array;
-    array->SetName(name);
-    array->SetNumberOfTuples(pixels);
-    output->GetPointData()->AddArray(array);
-  }
-}
-
-void vtkDeepGIReferenceObscurance::FinishPixel(
-  vtkImageData* output, vtkIdType pixel, const double* mean, const double* standardError)
-{
-  vtkPointData* pd = output->GetPointData();
-  auto av = vtkFloatArray::SafeDownCast(pd->GetArray(vtkDeepGICaptureNames::AmbientVisibility));
-  auto ao = vtkFloatArray::SafeDownCast(pd->GetArray("Obscurance"));
-  auto se = vtkFloatArray::SafeDownCast(pd->GetArray("StandardError"));
   if (!mean)
   {
-    av->SetValue(pixel, -1.0f);
-    ao->SetValue(pixel, -1.0f);
-    se->SetValue(pixel, 0.0f);
+    this->Visibility->SetValue(pixel, -1.0f);
+    this->Obscurance->SetValue(pixel, -1.0f);
+    this->Error->SetValue(pixel, 0.0f);
     return;
   }
-  av->SetValue(pixel, static_cast<float>(1.0 - mean[0]));
-  ao->SetValue(pixel, static_cast<float>(mean[0]));
-  se->SetValue(pixel, static_cast<float>(standardError[0]));
+  this->Visibility->SetValue(pixel, static_cast<float>(1.0 - mean[0]));
+  this->Obscurance->SetValue(pixel, static_cast<float>(mean[0]));
+  this->Error->SetValue(pixel, static_cast<float>(standardError[0]));
 }
 
 //------------------------------------------------------------------------------
-// Layer `Layer` of a capture: its per-pixel arrays (owned by the capture) and
-// the matrices that take its pixels back to world space.
-struct vtkDeepGIReferenceObscurance::CaptureLayer
+double vtkDeepGIReferenceObscurance::GetMeanStandardError()
 {
-  int Dimensions[3] = { 0, 0, 0 };
-  vtkIdType Pixels = 0;
-  vtkDataArray* Depth = nullptr;
-  vtkDataArray* Normal = nullptr;
-  vtkDataArray* Valid = nullptr;      // optional
-  vtkNew<vtkMatrix4x4> View;          // world to camera
-  vtkNew<vtkMatrix4x4> CameraToWorld; // inverse view
-  vtkNew<vtkMatrix4x4> NDCToCamera;   // inverse projection
-};
-
-// Per-thread scratch of the Monte Carlo estimate of one pixel: running sums
-// of the sample values and of their squares, then mean and standard error.
-struct vtkDeepGIReferenceObscurance::PixelEstimate
-{
-  explicit PixelEstimate(int components)
-    : Sum(components)
-    , Sum2(components)
-    , Values(components)
-    , Mean(components)
-    , Error(components)
-  {
-  }
-  std::vector<double> Sum, Sum2, Values, Mean, Error;
-};
-
-//------------------------------------------------------------------------------
-bool vtkDeepGIReferenceObscurance::Compute(vtkImageData* capture)
-{
-  const auto start = std::chrono::steady_clock::now();
-  this->ResetResults();
-  CaptureLayer layer;
-  if (!this->CheckParameters() || !this->CheckInputs(capture) ||
-    !this->ReadCapture(capture, layer) || !this->BuildScene() || !this->PrepareCompute(capture))
-  {
-    return false;
-  }
-  vtkUnsignedCharArray* valid = this->PrepareOutput(capture, layer.Pixels);
-  const int spp = this->GetNumberOfSamplesPerPixel();
-  this->EstimateRows(layer, spp, valid);
-  this->GatherStatistics(valid, spp);
-  this->ComputeTime =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return true;
+  return this->Tracer->GetMeanStandardError();
 }
 
-//------------------------------------------------------------------------------
-// An empty output and zero statistics, so that a failed Compute() leaves no
-// stale results behind.
-void vtkDeepGIReferenceObscurance::ResetResults()
+double vtkDeepGIReferenceObscurance::GetMaximumStandardError()
 {
-  this->Output->Initialize();
-  this->MeanStandardError = this->MaximumStandardError = 0.0;
-  this->NumberOfValidPixels = this->NumberOfRays = 0;
-  this->ComputeTime = 0.0;
+  return this->Tracer->GetMaximumStandardError();
 }
 
-bool vtkDeepGIReferenceObscurance::CheckInputs(vtkImageData* capture)
+vtkIdType vtkDeepGIReferenceObscurance::GetNumberOfValidPixels()
 {
-  if (!capture)
-  {
-    vtkErrorMacro("No capture.");
-    return false;
-  }
-  if (!this->Scene)
-  {
-    vtkErrorMacro("No scene: call SetScene() first.");
-    return false;
-  }
-  return true;
+  return this->Tracer->GetNumberOfValidPixels();
 }
 
-//------------------------------------------------------------------------------
-// Finds the arrays of layer `Layer` and the camera matrices; false (after an
-// error) when the capture lacks them.
-bool vtkDeepGIReferenceObscurance::ReadCapture(vtkImageData* capture, CaptureLayer& layer)
+vtkIdType vtkDeepGIReferenceObscurance::GetNumberOfRays()
 {
-  capture->GetDimensions(layer.Dimensions);
-  layer.Pixels = capture->GetNumberOfPoints();
-  const vtkIdType pixels = layer.Pixels;
-  const std::string suffix = "_" + std::to_string(this->Layer);
-  vtkPointData* pd = capture->GetPointData();
-  layer.Depth = pd->GetArray((vtkDeepGICaptureNames::Depth + suffix).c_str());
-  layer.Normal = pd->GetArray((vtkDeepGICaptureNames::Normal + suffix).c_str());
-  layer.Valid = pd->GetArray((vtkDeepGICaptureNames::Valid + suffix).c_str());
-  if (pixels <= 0 || layer.Dimensions[2] != 1 || !layer.Depth || !layer.Normal ||
-    layer.Normal->GetNumberOfComponents() != 3 || layer.Depth->GetNumberOfTuples() != pixels ||
-    layer.Normal->GetNumberOfTuples() != pixels ||
-    (layer.Valid && layer.Valid->GetNumberOfTuples() != pixels))
-  {
-    vtkErrorMacro("The capture has no 2D layer " << this->Layer << " (arrays Depth" << suffix
-                                                 << ", Normal" << suffix << ").");
-    return false;
-  }
-  vtkDataArray* view = capture->GetFieldData()->GetArray(vtkDeepGICaptureNames::ViewMatrix);
-  vtkDataArray* projection =
-    capture->GetFieldData()->GetArray(vtkDeepGICaptureNames::ProjectionMatrix);
-  if (!view || !projection || view->GetNumberOfValues() < 16 ||
-    projection->GetNumberOfValues() < 16)
-  {
-    vtkErrorMacro("The capture has no ViewMatrix/ProjectionMatrix field data.");
-    return false;
-  }
-  // Camera to world (inverse view) and NDC to camera (inverse projection).
-  vtkNew<vtkMatrix4x4> projectionMatrix;
-  for (int k = 0; k < 16; ++k)
-  {
-    layer.View->SetElement(k / 4, k % 4, view->GetComponent(0, k));
-    projectionMatrix->SetElement(k / 4, k % 4, projection->GetComponent(0, k));
-  }
-  vtkMatrix4x4::Invert(layer.View, layer.CameraToWorld);
-  vtkMatrix4x4::Invert(projectionMatrix, layer.NDCToCamera);
-  return true;
+  return this->Tracer->GetNumberOfRays();
 }
 
-//------------------------------------------------------------------------------
-// The output on the capture's grid: the subclass's arrays plus "Valid",
-// which is returned.
-vtkUnsignedCharArray* vtkDeepGIReferenceObscurance::PrepareOutput(
-  vtkImageData* capture, vtkIdType pixels)
+double vtkDeepGIReferenceObscurance::GetComputeTime()
 {
-  this->Output->SetDimensions(capture->GetDimensions());
-  this->Output->SetSpacing(capture->GetSpacing());
-  this->Output->SetOrigin(capture->GetOrigin());
-  this->AllocateOutput(this->Output, pixels);
-  vtkNew<vtkUnsignedCharArray> valid;
-  valid->SetName(vtkDeepGICaptureNames::Valid);
-  valid->SetNumberOfTuples(pixels);
-  this->Output->GetPointData()->AddArray(valid);
-  return valid;
-}
-
-//------------------------------------------------------------------------------
-// Every pixel of the layer, rows in parallel. The random numbers of a sample
-// depend only on (Seed, pixel, sample, dimension), so the result does not
-// depend on how vtkSMPTools splits the rows.
-void vtkDeepGIReferenceObscurance::EstimateRows(
-  const CaptureLayer& layer, int spp, vtkUnsignedCharArray* valid)
-{
-  const int width = layer.Dimensions[0];
-  const int components = this->GetNumberOfSampleComponents();
-  const double tmax = this->GetMaximumRayDistance();
-  vtkSMPTools::For(0, layer.Dimensions[1],
-    [&](vtkIdType rowBegin, vtkIdType rowEnd)
-    {
-      PixelEstimate estimate(components);
-      for (vtkIdType row = rowBegin; row < rowEnd; ++row)
-      {
-        for (int col = 0; col < width; ++col)
-        {
-          const vtkIdType pixel = row * width + col;
-          SurfacePoint x;
-          const bool isValid = this->ReconstructSurface(layer, row, col, x);
-          valid->SetValue(pixel, isValid ? 1 : 0);
-          if (!isValid)
-          {
-            this->FinishPixel(this->Output, pixel, nullptr, nullptr);
-            continue;
-          }
-          this->EstimatePixel(x, spp, tmax, estimate);
-          this->FinishPixel(this->Output, pixel, estimate.Mean.data(), estimate.Error.data());
-        }
-      }
-    });
-}
-
-//------------------------------------------------------------------------------
-// X, n and the ray origin of pixel (col, row) from the layer's depth and
-// camera-space normal; false for pixels without a usable surface.
-bool vtkDeepGIReferenceObscurance::ReconstructSurface(
-  const CaptureLayer& layer, vtkIdType row, int col, SurfacePoint& x) const
-{
-  const int width = layer.Dimensions[0];
-  const int height = layer.Dimensions[1];
-  const vtkIdType pixel = row * width + col;
-  const double distance = layer.Depth->GetComponent(pixel, 0);
-  double n[3] = { layer.Normal->GetComponent(pixel, 0), layer.Normal->GetComponent(pixel, 1),
-    layer.Normal->GetComponent(pixel, 2) };
-  const bool isValid = (!layer.Valid || layer.Valid->GetComponent(pixel, 0) != 0) &&
-    std::isfinite(distance) && distance > 0.0 && std::isfinite(n[0]) && std::isfinite(n[1]) &&
-    std::isfinite(n[2]) && vtkMath::Norm(n) > 0.5;
-  if (!isValid)
-  {
-    return false;
-  }
-  // The pixel's viewing ray in camera space: unproject the NDC points at the
-  // near and far planes, then pick the point with z = -depth.
-  const double ndcX = (col + 0.5) / width * 2.0 - 1.0;
-  const double ndcY = (row + 0.5) / height * 2.0 - 1.0;
-  double a[4] = { ndcX, ndcY, -1.0, 1.0 }, b[4] = { ndcX, ndcY, 1.0, 1.0 };
-  layer.NDCToCamera->MultiplyPoint(a, a);
-  layer.NDCToCamera->MultiplyPoint(b, b);
-  for (int c = 0; c < 3; ++c)
-  {
-    a[c] /= a[3];
-    b[c] /= b[3];
-  }
-  const double s = (-distance - a[2]) / (b[2] - a[2]);
-  double camera[4] = { a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1]), -distance, 1.0 };
-  double world[4];
-  layer.CameraToWorld->MultiplyPoint(camera, world);
-  x.Pixel = pixel;
-  for (int c = 0; c < 3; ++c)
-  {
-    x.Position[c] = world[c] / world[3];
-    // Normals go from camera to world with the transpose of the view
-    // matrix's 3x3 (inverse transpose of camera-to-world).
-    x.Normal[c] = layer.View->GetElement(0, c) * n[0] + layer.View->GetElement(1, c) * n[1] +
-      layer.View->GetElement(2, c) * n[2];
-  }
-  vtkMath::Normalize(x.Normal);
-  const double offset = this->GetRayOffset(x.Position);
-  for (int c = 0; c < 3; ++c)
-  {
-    x.Origin[c] = x.Position[c] + offset * x.Normal[c];
-  }
-  return true;
-}
-
-//------------------------------------------------------------------------------
-// Monte Carlo estimate at X of A = (1 / pi) integral O(w) dw (eq. 2 on the
-// first hit, see the header): spp directions with density cos / pi, each
-// traced once and weighted by EvaluateSample; the mean and the standard
-// error (sample standard deviation / sqrt(spp)) go to `estimate`.
-void vtkDeepGIReferenceObscurance::EstimatePixel(
-  const SurfacePoint& x, int spp, double tmax, PixelEstimate& estimate) const
-{
-  const int components = static_cast<int>(estimate.Sum.size());
-  std::fill(estimate.Sum.begin(), estimate.Sum.end(), 0.0);
-  std::fill(estimate.Sum2.begin(), estimate.Sum2.end(), 0.0);
-  for (int i = 0; i < spp; ++i)
-  {
-    double w[3];
-    CosineDirection(x.Normal, this->Random(x.Pixel, i, 0), this->Random(x.Pixel, i, 1), w);
-    HitRecord hit;
-    this->TraceRay(x.Origin, w, tmax, hit);
-    this->EvaluateSample(x, w, hit, i, estimate.Values.data());
-    for (int c = 0; c < components; ++c)
-    {
-      estimate.Sum[c] += estimate.Values[c];
-      estimate.Sum2[c] += estimate.Values[c] * estimate.Values[c];
-    }
-  }
-  for (int c = 0; c < components; ++c)
-  {
-    const double mean = estimate.Sum[c] / spp;
-    const double variance =
-      spp > 1 ? std::max(0.0, (estimate.Sum2[c] - estimate.Sum[c] * mean) / (spp - 1)) : 0.0;
-    estimate.Mean[c] = mean;
-    estimate.Error[c] = std::sqrt(variance / spp);
-  }
-}
-
-//------------------------------------------------------------------------------
-// Noise and ray counts over the valid pixels, serially so that the sums are
-// taken in a deterministic order.
-void vtkDeepGIReferenceObscurance::GatherStatistics(vtkUnsignedCharArray* valid, int spp)
-{
-  vtkDataArray* se = this->Output->GetPointData()->GetArray(this->GetStandardErrorArrayName());
-  const vtkIdType pixels = valid->GetNumberOfTuples();
-  double total = 0.0;
-  for (vtkIdType p = 0; p < pixels; ++p)
-  {
-    if (valid->GetValue(p))
-    {
-      ++this->NumberOfValidPixels;
-      double e = 0.0;
-      for (int c = 0; se && c < se->GetNumberOfComponents(); ++c)
-      {
-        e = std::max(e, se->GetComponent(p, c));
-      }
-      total += e;
-      this->MaximumStandardError = std::max(this->MaximumStandardError, e);
-    }
-  }
-  this->MeanStandardError = this->NumberOfValidPixels ? total / this->NumberOfValidPixels : 0.0;
-  this->NumberOfRays = this->NumberOfValidPixels * static_cast<vtkIdType>(spp);
+  return this->Tracer->GetComputeTime();
 }
 
 //------------------------------------------------------------------------------
 void vtkDeepGIReferenceObscurance::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Scene: " << this->Scene.Get() << "\n";
   os << indent << "Radius: " << this->Radius << "\n";
   os << indent << "Bias: " << this->Bias << "\n";
   os << indent << "Epsilon: " << this->Epsilon << "\n";
@@ -734,9 +215,6 @@ void vtkDeepGIReferenceObscurance::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "Layer: " << this->Layer << "\n";
   os << indent << "RelativeOffset: " << this->RelativeOffset << "\n";
-  os << indent << "MeanStandardError: " << this->MeanStandardError << "\n";
-  os << indent << "MaximumStandardError: " << this->MaximumStandardError << "\n";
-  os << indent << "NumberOfValidPixels: " << this->NumberOfValidPixels << "\n";
-  os << indent << "NumberOfRays: " << this->NumberOfRays << "\n";
-  os << indent << "ComputeTime: " << this->ComputeTime << "\n";
+  os << indent << "Tracer:\n";
+  this->Tracer->PrintSelf(os, indent.GetNextIndent());
 }

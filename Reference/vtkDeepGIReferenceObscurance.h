@@ -62,23 +62,27 @@
  *   reference uses the same captured X and n so that the comparison is per
  *   pixel, but intersects exact triangles.
  *
- * ## Implementation and extension (one-bounce irradiance)
+ * ## Pipeline and implementation
  *
- * Compute() rebuilds the Embree scene only when the vtkPolyData changed,
- * reconstructs X and n per pixel (ReconstructSurface), and loops over rows
- * with vtkSMPTools. For each pixel and sample the random numbers come from
- * a counter-based hash of (Seed, pixel index, sample index, dimension), so
- * results do not depend on the number of threads or on scheduling. Each
- * cosine-weighted direction is traced once (TraceRay) and handed, with its
- * hit, to the protected virtual EvaluateSample(), which returns
- * GetNumberOfSampleComponents() values; the driver accumulates their mean
- * and standard error and FinishPixel() turns them into output arrays.
- * vtkDeepGIReferenceIrradiance (one-bounce diffuse irradiance) overrides
- * these methods and the CheckParameters/PrepareCompute hooks: at the hit
- * (HitRecord gives the triangle id for the "Colors" albedo, the winding
- * normal, and the point ids and barycentric weights for point normals) it
- * traces shadow rays to the lights with IsOccluded and returns RGB values,
- * reusing scene, ray generation, threading and statistics unchanged.
+ * A vtkImageAlgorithm: input port 0 is the capture (vtkImageData), input
+ * port 1 the scene (vtkPolyData: all its polygons, triangulated on the fly;
+ * lines and vertices ignored; world space, the coordinates the capture was
+ * rendered with; SetSceneData/SetSceneConnection). A vtkDeepGIRayTracer
+ * does the tracing: it rebuilds the Embree scene only when the vtkPolyData
+ * changed, reconstructs X and n per pixel, loops over rows with vtkSMPTools,
+ * draws each cosine-weighted direction from a counter-based hash of (Seed,
+ * pixel index, sample index, dimension), so that results do not depend on
+ * the number of threads or on scheduling, and keeps the statistics.
+ *
+ * The output (after Update()) has the capture's grid and the point arrays
+ * "AmbientVisibility" (float, AV in [0, 1]; -1 where the layer has no
+ * surface), "Obscurance" (float, A = 1 - AV; -1 where empty),
+ * "StandardError" (float, per-pixel Monte Carlo standard error of AV and of
+ * A; 0 where empty) and "Valid" (unsigned char). The update fails with an
+ * error of the estimator and an empty output (no points) when the capture
+ * has no such layer arrays or matrices, the scene no polygons, or the
+ * radius is invalid; a missing input is the executive's error, as for any
+ * VTK algorithm.
  *
  * Scale robustness: the triangles are stored relative to the centre of
  * their bounds (so float precision follows the scene's size, not its
@@ -87,14 +91,18 @@
  *
  * Typical use:
  * @code
+ * vtkNew<vtkXMLImageDataReader> capture; // a capture saved as .vti
  * vtkNew<vtkDeepGIReferenceObscurance> reference;
- * reference->SetScene(demoScene->GetScenePolyData());
+ * reference->SetInputConnection(capture->GetOutputPort());
+ * reference->SetSceneData(demoScene->GetScenePolyData());
  * reference->SetRadius(1.0);
  * reference->SetSamplesPerPixel(256);
- * reference->Compute(capture); // from vtkDeepGBufferPass::CaptureLayers
+ * reference->Update();
  * vtkImageData* av = reference->GetOutput();
  * double noise = reference->GetMeanStandardError();
  * @endcode
+ *
+ * @sa vtkDeepGIRayTracer vtkDeepGIReferenceIrradiance
  */
 
 #ifndef vtkDeepGIReferenceObscurance_h
@@ -102,39 +110,33 @@
 
 #include "vtkDeepGIReferenceModule.h" // for export macro
 #include "vtkDeepGISetGet.h"          // for vtkDeepGISetClampMacro
-#include "vtkObject.h"
-#include "vtkSmartPointer.h" // for ivars
+#include "vtkImageAlgorithm.h"
+#include "vtkNew.h" // for the tracer
 
-#include <memory> // for std::unique_ptr
-
-class vtkImageData;
+class vtkAlgorithmOutput;
+class vtkDeepGIRayTracer;
 class vtkPolyData;
-class vtkUnsignedCharArray;
 
-class VTKDEEPGIREFERENCE_EXPORT vtkDeepGIReferenceObscurance : public vtkObject
+class VTKDEEPGIREFERENCE_EXPORT vtkDeepGIReferenceObscurance : public vtkImageAlgorithm
 {
 public:
   static vtkDeepGIReferenceObscurance* New();
-  vtkTypeMacro(vtkDeepGIReferenceObscurance, vtkObject);
+  vtkTypeMacro(vtkDeepGIReferenceObscurance, vtkImageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
   /**
-   * The scene: all its polygons (triangulated on the fly; lines, vertices
-   * ignored), world space, the same coordinates the capture was rendered
-   * with. Default nullptr (Compute() then fails with an error).
-   *
-   * @unit world units
-   * @default null
+   * The scene on input port 1 (see the class description). Without one the
+   * update fails with an error.
    */
-  void SetScene(vtkPolyData* scene);
-  vtkPolyData* GetScene();
+  void SetSceneData(vtkPolyData* scene);
+  void SetSceneConnection(vtkAlgorithmOutput* output);
   ///@}
 
   ///@{
   /**
    * r of eq. 2: occluders farther than r do not count. World units,
-   * (0, VTK_DOUBLE_MAX]; default 1. Compute() fails with an error when it
+   * (0, VTK_DOUBLE_MAX]; default 1. The update fails with an error when it
    * is not a positive finite number (NaN, infinity, <= 0).
    *
    * @unit world units
@@ -222,125 +224,47 @@ public:
   vtkGetMacro(RelativeOffset, double);
   ///@}
 
-  /**
-   * Computes the output for `capture`. Returns false with an error (and an
-   * empty output) when the scene, capture, layer arrays or matrices are
-   * missing or the radius is invalid.
-   */
-  bool Compute(vtkImageData* capture);
-
-  /**
-   * The result of the last Compute(): same dimensions as the capture, point
-   * arrays "AmbientVisibility" (float, AV in [0, 1]; -1 where the layer has
-   * no surface), "Obscurance" (float, A = 1 - AV; -1 where empty),
-   * "StandardError" (float, per-pixel Monte Carlo standard error of AV and
-   * of A; 0 where empty) and "Valid" (unsigned char).
-   */
-  vtkImageData* GetOutput();
-
   ///@{
   /**
-   * Noise of the last Compute(): mean and maximum over valid pixels of the
+   * Noise of the last update: mean and maximum over valid pixels of the
    * per-pixel standard error (0 when no pixel was valid).
    */
-  vtkGetMacro(MeanStandardError, double);
-  vtkGetMacro(MaximumStandardError, double);
+  double GetMeanStandardError();
+  double GetMaximumStandardError();
   ///@}
 
   ///@{
   /**
-   * Statistics of the last Compute(): valid pixels, rays traced, wall time
-   * in seconds (BVH build included).
+   * Statistics of the last update: valid pixels, rays traced, wall time in
+   * seconds (BVH build included).
    */
-  vtkGetMacro(NumberOfValidPixels, vtkIdType);
-  vtkGetMacro(NumberOfRays, vtkIdType);
-  vtkGetMacro(ComputeTime, double);
+  vtkIdType GetNumberOfValidPixels();
+  vtkIdType GetNumberOfRays();
+  double GetComputeTime();
   ///@}
+
+  ///@{
+  /**
+   * @deprecated SetScene() is SetSceneData(), GetScene() the data on input
+   * port 1 (removed in the next release).
+   */
+  void SetScene(vtkPolyData* scene) { this->SetSceneData(scene); }
+  vtkPolyData* GetScene();
+  ///@}
+
+  /**
+   * @deprecated Compute(capture) is SetInputData(capture) and Update();
+   * returns whether the update succeeded (removed in the next release).
+   */
+  bool Compute(vtkImageData* capture);
 
 protected:
   vtkDeepGIReferenceObscurance();
   ~vtkDeepGIReferenceObscurance() override;
 
-  /// A shading point: world-space position, unit normal, offset origin.
-  struct SurfacePoint
-  {
-    double Position[3];
-    double Normal[3];
-    double Origin[3];
-    vtkIdType Pixel;
-  };
-
-  /// The first hit of a ray: distance from the origin, triangle (index into
-  /// the scene's cells), unit geometric normal (world space, oriented by the
-  /// triangle's winding: (p1 - p0) x (p2 - p0) of its fan triangle), the
-  /// triangle's three scene point ids and the hit's barycentric weights of
-  /// those points (for interpolating point data such as normals).
-  struct HitRecord
-  {
-    bool Hit;
-    double Distance;
-    vtkIdType Cell;
-    double Normal[3];
-    vtkIdType PointIds[3];
-    double Weights[3];
-  };
-
-  /// Closest hit along origin + t * direction (unit), 0 < t < tmax.
-  /// Thread-safe; valid during Compute() only.
-  bool TraceRay(
-    const double origin[3], const double direction[3], double tmax, HitRecord& hit) const;
-
-  /// Whether any triangle lies along origin + t * direction (unit),
-  /// 0 < t < tmax (a shadow ray: any hit, not the closest). Thread-safe;
-  /// valid during Compute() only.
-  bool IsOccluded(const double origin[3], const double direction[3], double tmax) const;
-
-  /// The self-intersection offset for a ray leaving `point`: RelativeOffset
-  /// * (scene diagonal + |point - scene centre|). Valid during Compute() only.
-  double GetRayOffset(const double point[3]) const;
-
-  /// Checks the parameters before anything else; false (after an error)
-  /// stops Compute(). Here: Radius must be positive and finite.
-  virtual bool CheckParameters();
-
-  /// Called once per Compute() after the capture was validated and the
-  /// Embree scene built, before any ray: subclasses read what they need from
-  /// the capture and the scene. False (after an error) stops Compute().
-  virtual bool PrepareCompute(vtkImageData* capture);
-
-  /// Output array whose per-pixel maximum over components is the pixel's
-  /// standard error in GetMeanStandardError()/GetMaximumStandardError().
-  virtual const char* GetStandardErrorArrayName() const { return "StandardError"; }
-
-  /// Uniform random number in [0, 1) for (pixel, sample, dimension); a
-  /// counter-based hash of Seed and the three indices.
-  double Random(vtkIdType pixel, int sample, int dimension) const;
-
-  /// Unit direction about the unit normal n with density cos / pi from two
-  /// uniform numbers in [0, 1): the sampling of the rays from X.
-  static void CosineDirection(const double n[3], double u1, double u2, double w[3]);
-
-  /// Values EvaluateSample returns per sample (1 here: the obscurance).
-  virtual int GetNumberOfSampleComponents() const { return 1; }
-
-  /// Radiometric estimate of one cosine-weighted sample (direction w, its
-  /// first hit within tmax = Radius) divided by the density cos / pi;
-  /// writes GetNumberOfSampleComponents() values to `values`.
-  virtual void EvaluateSample(const SurfacePoint& x, const double direction[3],
-    const HitRecord& hit, int sample, double* values) const;
-
-  /// Allocates the output arrays (called once per Compute).
-  virtual void AllocateOutput(vtkImageData* output, vtkIdType pixels);
-
-  /// Stores mean and standard error of a pixel (nullptrs for empty pixels).
-  virtual void FinishPixel(
-    vtkImageData* output, vtkIdType pixel, const double* mean, const double* standardError);
-
-  /// Farthest distance a sample ray needs (Radius here).
-  virtual double GetMaximumRayDistance() const { return this->Radius; }
-
-  /// Samples Compute() takes per pixel (SamplesPerPixel here).
-  virtual int GetNumberOfSamplesPerPixel() const { return this->SamplesPerPixel; }
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
 
   double Radius;
   double Bias;
@@ -350,35 +274,13 @@ protected:
   int Layer;
   double RelativeOffset;
 
-  double MeanStandardError;
-  double MaximumStandardError;
-  vtkIdType NumberOfValidPixels;
-  vtkIdType NumberOfRays;
-  double ComputeTime;
-
-  vtkSmartPointer<vtkPolyData> Scene;
-  vtkSmartPointer<vtkImageData> Output;
+  vtkNew<vtkDeepGIRayTracer> Tracer;
 
 private:
   vtkDeepGIReferenceObscurance(const vtkDeepGIReferenceObscurance&) = delete;
   void operator=(const vtkDeepGIReferenceObscurance&) = delete;
 
-  bool BuildScene();
-
-  // The stages of Compute().
-  struct CaptureLayer;
-  struct PixelEstimate;
-  void ResetResults();
-  bool CheckInputs(vtkImageData* capture);
-  bool ReadCapture(vtkImageData* capture, CaptureLayer& layer);
-  vtkUnsignedCharArray* PrepareOutput(vtkImageData* capture, vtkIdType pixels);
-  void EstimateRows(const CaptureLayer& layer, int spp, vtkUnsignedCharArray* valid);
-  bool ReconstructSurface(const CaptureLayer& layer, vtkIdType row, int col, SurfacePoint& x) const;
-  void EstimatePixel(const SurfacePoint& x, int spp, double tmax, PixelEstimate& estimate) const;
-  void GatherStatistics(vtkUnsignedCharArray* valid, int spp);
-
-  struct Internals;
-  std::unique_ptr<Internals> Internal;
+  struct Sampler;
 };
 
 #endif

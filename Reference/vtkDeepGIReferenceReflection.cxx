@@ -1,15 +1,16 @@
 #include "vtkDeepGIReferenceReflection.h"
 #include "vtkDeepGICaptureNames.h"
+#include "vtkDeepGIRayTracer.h"
 
-#include "vtkDataArray.h"
-#include "vtkFieldData.h"
+#include "vtkExecutive.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkMath.h"
-#include "vtkMatrix4x4.h"
-#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -18,63 +19,127 @@
 
 vtkStandardNewMacro(vtkDeepGIReferenceReflection);
 
+namespace
+{
+// The values of a pixel: hit (0 or 1), distance, hit position (3),
+// direction (3).
+constexpr int NumberOfValues = 8;
+}
+
+// The estimator the tracer runs: one exact mirror ray per pixel.
+struct vtkDeepGIReferenceReflection::Sampler : public vtkDeepGIRayTracer::Estimator
+{
+  Sampler(vtkDeepGIReferenceReflection& self)
+    : Self(self)
+  {
+  }
+
+  bool Prepare(vtkImageData*, vtkPolyData*, vtkImageData* output) override;
+  int GetNumberOfComponents() const override { return NumberOfValues; }
+  int GetNumberOfSamples() const override { return 1; }
+  void EvaluateSample(
+    const vtkDeepGIRayTracer::SurfacePoint& x, int, double* values) const override;
+  void FinishPixel(vtkIdType pixel, const double* mean, const double*) override;
+
+  vtkDeepGIReferenceReflection& Self;
+  vtkUnsignedCharArray* Hit = nullptr;
+  vtkFloatArray* Distance = nullptr;
+  vtkFloatArray* Position = nullptr;
+  vtkFloatArray* Direction = nullptr;
+  vtkFloatArray* Error = nullptr;
+};
+
+//------------------------------------------------------------------------------
 vtkDeepGIReferenceReflection::vtkDeepGIReferenceReflection()
   : MaximumDistance(std::numeric_limits<double>::infinity())
+  , Layer(0)
+  , RelativeOffset(1e-5)
 {
+  this->SetNumberOfInputPorts(2);
 }
 
 vtkDeepGIReferenceReflection::~vtkDeepGIReferenceReflection() = default;
 
-bool vtkDeepGIReferenceReflection::CheckParameters()
+//------------------------------------------------------------------------------
+void vtkDeepGIReferenceReflection::SetSceneData(vtkPolyData* scene)
 {
-  if (!(this->MaximumDistance > 0.0)) // also catches NaN
+  this->SetInputData(1, scene);
+}
+
+void vtkDeepGIReferenceReflection::SetSceneConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+vtkPolyData* vtkDeepGIReferenceReflection::GetScene()
+{
+  return vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0));
+}
+
+bool vtkDeepGIReferenceReflection::Compute(vtkImageData* capture)
+{
+  this->SetInputData(0, capture);
+  return this->GetExecutive()->Update() != 0 && this->GetOutput()->GetNumberOfPoints() > 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkDeepGIReferenceReflection::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkImageData" : "vtkPolyData");
+  return 1;
+}
+
+int vtkDeepGIReferenceReflection::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  Sampler sampler(*this);
+  // The mirror ray needs no random numbers: the seed is irrelevant.
+  return this->Tracer->Run(vtkImageData::GetData(inputVector[0]),
+    vtkPolyData::GetData(inputVector[1]), { this->Layer, 0, this->RelativeOffset }, sampler,
+    vtkImageData::GetData(outputVector), this);
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGIReferenceReflection::Sampler::Prepare(
+  vtkImageData*, vtkPolyData*, vtkImageData* output)
+{
+  if (!(this->Self.MaximumDistance > 0.0)) // also catches NaN
   {
-    vtkErrorMacro(
-      "MaximumDistance must be positive (or infinite), not " << this->MaximumDistance << ".");
+    vtkErrorWithObjectMacro(&this->Self,
+      "MaximumDistance must be positive (or infinite), not " << this->Self.MaximumDistance << ".");
     return false;
   }
+  const vtkIdType pixels = output->GetNumberOfPoints();
+  vtkPointData* pd = output->GetPointData();
+  vtkNew<vtkUnsignedCharArray> hit;
+  hit->SetName("Hit");
+  hit->SetNumberOfTuples(pixels);
+  pd->AddArray(hit);
+  this->Hit = hit;
+  auto add = [&](const char* name, int components)
+  {
+    vtkNew<vtkFloatArray> array;
+    array->SetName(name);
+    array->SetNumberOfComponents(components);
+    array->SetNumberOfTuples(pixels);
+    pd->AddArray(array);
+    return array.GetPointer();
+  };
+  this->Distance = add(vtkDeepGICaptureNames::HitDistance, 1);
+  this->Position = add("HitPosition", 3);
+  this->Direction = add("MirrorDirection", 3);
+  this->Error = add("StandardError", 1);
   return true;
 }
 
-bool vtkDeepGIReferenceReflection::PrepareCompute(vtkImageData* capture)
+//------------------------------------------------------------------------------
+void vtkDeepGIReferenceReflection::Sampler::EvaluateSample(
+  const vtkDeepGIRayTracer::SurfacePoint& x, int, double* values) const
 {
-  // Compute() validated the matrices: the eye is the inverse view matrix's
-  // translation, the view direction its -z axis.
-  vtkDataArray* view = capture->GetFieldData()->GetArray(vtkDeepGICaptureNames::ViewMatrix);
-  vtkDataArray* projection =
-    capture->GetFieldData()->GetArray(vtkDeepGICaptureNames::ProjectionMatrix);
-  vtkNew<vtkMatrix4x4> viewMatrix, cameraToWorld;
-  for (int k = 0; k < 16; ++k)
-  {
-    viewMatrix->SetElement(k / 4, k % 4, view->GetComponent(0, k));
-  }
-  vtkMatrix4x4::Invert(viewMatrix, cameraToWorld);
-  for (int c = 0; c < 3; ++c)
-  {
-    this->Eye[c] = cameraToWorld->GetElement(c, 3);
-    this->ViewDirection[c] = -cameraToWorld->GetElement(c, 2);
-  }
-  vtkMath::Normalize(this->ViewDirection);
-  // A perspective projection's last row is (0, 0, -1, 0), a parallel one's
-  // (0, 0, 0, 1).
-  this->Parallel = projection->GetComponent(0, 14) == 0.0;
-  return true;
-}
-
-void vtkDeepGIReferenceReflection::EvaluateSample(
-  const SurfacePoint& x, const double*, const HitRecord&, int, double* values) const
-{
-  std::fill(values, values + 8, 0.0);
-  double v[3] = { 0.0, 0.0, 0.0 };
-  if (this->Parallel)
-  {
-    std::copy(this->ViewDirection, this->ViewDirection + 3, v);
-  }
-  else
-  {
-    vtkMath::Subtract(x.Position, this->Eye, v);
-    vtkMath::Normalize(v);
-  }
+  const vtkDeepGIRayTracer& tracer = *this->Self.Tracer;
+  std::fill(values, values + NumberOfValues, 0.0);
+  double v[3];
+  tracer.ViewRay(x.Position, v);
   // Section 3.6: the mirror direction about the shading normal.
   const double vn = vtkMath::Dot(v, x.Normal);
   double d[3];
@@ -84,11 +149,12 @@ void vtkDeepGIReferenceReflection::EvaluateSample(
   }
   vtkMath::Normalize(d);
   std::copy(d, d + 3, values + 5);
-  HitRecord hit;
+  vtkDeepGIRayTracer::HitRecord hit;
   // The ray starts at x.Origin (X lifted along n); the distance test below
   // is on |Y - X|, so the ray may run a little beyond MaximumDistance.
-  const double offset = this->GetRayOffset(x.Position);
-  if (!this->TraceRay(x.Origin, d, this->MaximumDistance + 2.0 * offset, hit))
+  const double maximum = this->Self.MaximumDistance;
+  const double offset = tracer.GetRayOffset(x.Position);
+  if (!tracer.TraceRay(x.Origin, d, maximum + 2.0 * offset, hit))
   {
     return;
   }
@@ -98,7 +164,7 @@ void vtkDeepGIReferenceReflection::EvaluateSample(
     y[c] = x.Origin[c] + hit.Distance * d[c];
   }
   const double distance = std::sqrt(vtkMath::Distance2BetweenPoints(y, x.Position));
-  if (distance > this->MaximumDistance)
+  if (distance > maximum)
   {
     return;
   }
@@ -107,44 +173,41 @@ void vtkDeepGIReferenceReflection::EvaluateSample(
   std::copy(y, y + 3, values + 2);
 }
 
-void vtkDeepGIReferenceReflection::AllocateOutput(vtkImageData* output, vtkIdType pixels)
+void vtkDeepGIReferenceReflection::Sampler::FinishPixel(
+  vtkIdType pixel, const double* mean, const double*)
 {
-  vtkPointData* pd = output->GetPointData();
-  vtkNew<vtkUnsignedCharArray> hit;
-  hit->SetName("Hit");
-  hit->SetNumberOfTuples(pixels);
-  pd->AddArray(hit);
-  struct
-  {
-    const char* Name;
-    int Components;
-  } const arrays[] = { { vtkDeepGICaptureNames::HitDistance, 1 }, { "HitPosition", 3 },
-    { "MirrorDirection", 3 }, { "StandardError", 1 } };
-  for (const auto& a : arrays)
-  {
-    vtkNew<vtkFloatArray> array;
-    array->SetName(a.Name);
-    array->SetNumberOfComponents(a.Components);
-    array->SetNumberOfTuples(pixels);
-    pd->AddArray(array);
-  }
-}
-
-void vtkDeepGIReferenceReflection::FinishPixel(
-  vtkImageData* output, vtkIdType pixel, const double* mean, const double*)
-{
-  vtkPointData* pd = output->GetPointData();
-  const double zero[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
+  const double zero[NumberOfValues] = { 0, 0, 0, 0, 0, 0, 0, 0 };
   const double* v = mean ? mean : zero;
-  vtkUnsignedCharArray::SafeDownCast(pd->GetArray("Hit"))->SetValue(pixel, v[0] > 0.5 ? 1 : 0);
-  pd->GetArray(vtkDeepGICaptureNames::HitDistance)->SetTuple1(pixel, v[1]);
-  pd->GetArray("HitPosition")->SetTuple(pixel, v + 2);
-  pd->GetArray("MirrorDirection")->SetTuple(pixel, v + 5);
-  pd->GetArray("StandardError")->SetTuple1(pixel, 0.0);
+  this->Hit->SetValue(pixel, v[0] > 0.5 ? 1 : 0);
+  this->Distance->SetTuple1(pixel, v[1]);
+  this->Position->SetTuple(pixel, v + 2);
+  this->Direction->SetTuple(pixel, v + 5);
+  this->Error->SetTuple1(pixel, 0.0);
 }
 
+//------------------------------------------------------------------------------
+vtkIdType vtkDeepGIReferenceReflection::GetNumberOfValidPixels()
+{
+  return this->Tracer->GetNumberOfValidPixels();
+}
+
+vtkIdType vtkDeepGIReferenceReflection::GetNumberOfRays()
+{
+  return this->Tracer->GetNumberOfRays();
+}
+
+double vtkDeepGIReferenceReflection::GetComputeTime()
+{
+  return this->Tracer->GetComputeTime();
+}
+
+//------------------------------------------------------------------------------
 void vtkDeepGIReferenceReflection::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "MaximumDistance: " << this->MaximumDistance << "\n";
+  os << indent << "Layer: " << this->Layer << "\n";
+  os << indent << "RelativeOffset: " << this->RelativeOffset << "\n";
+  os << indent << "Tracer:\n";
+  this->Tracer->PrintSelf(os, indent.GetNextIndent());
 }

@@ -662,7 +662,8 @@ bool CaptureAccuracyFrame(
 bool ComputeReference(const Options& o, vtkPolyData* geometry, double r, AccuracyFrame& frame)
 {
   vtkNew<vtkDeepGIReferenceObscurance> reference;
-  reference->SetScene(geometry);
+  reference->SetInputData(frame.Capture);
+  reference->SetSceneData(geometry);
   reference->SetRadius(r);
   // The quantity itself (eq. 2 with beta = epsilon = 0), not the
   // regularised form the screen-space estimators use.
@@ -670,7 +671,8 @@ bool ComputeReference(const Options& o, vtkPolyData* geometry, double r, Accurac
   reference->SetEpsilon(0.0);
   reference->SetSamplesPerPixel(o.Samples);
   const auto start = std::chrono::steady_clock::now();
-  if (!reference->Compute(frame.Capture))
+  reference->Update();
+  if (reference->GetOutput()->GetNumberOfPoints() == 0)
   {
     return Report(Program, "the reference failed on " + frame.Scene);
   }

@@ -587,15 +587,18 @@ bool CaptureStillFrames(const View& view,
 bool ComputeLimitedAndUnlimited(vtkDeepGIReferenceIrradiance* reference, const AccuracyFrame& frame,
   std::vector<float>& limited, std::vector<float>& unlimited, double& limitedError)
 {
+  reference->SetInputData(frame.Capture);
   reference->SetMaximumDistance(frame.Radius);
-  if (!reference->Compute(frame.Capture))
+  reference->Update();
+  if (reference->GetOutput()->GetNumberOfPoints() == 0)
   {
     return Report(Program, "the reference failed on " + frame.Scene);
   }
   limited = Luminance(reference->GetOutput(), "IndirectIrradiance");
   limitedError = reference->GetMeanStandardError();
   reference->SetMaximumDistance(VTK_DOUBLE_MAX);
-  if (!reference->Compute(frame.Capture))
+  reference->Update();
+  if (reference->GetOutput()->GetNumberOfPoints() == 0)
   {
     return Report(Program, "the reference failed on " + frame.Scene);
   }
@@ -611,7 +614,7 @@ bool ComputeReference(const Options& o, vtkPolyData* geometry, vtkRenderer* rend
   // "Colors" and "Diffuse", and for emitters (cornell-original's lamp)
   // "Emission", the colour the lamp is drawn with, so the reference sees
   // the same sources as the pass's B(Y) = Radiance - Ambient.
-  reference->SetScene(geometry);
+  reference->SetSceneData(geometry);
   reference->SetEmissionArrayName("Emission");
   reference->SetLightsFromRenderer(renderer);
   reference->SetSamplesPerPixel(o.Samples);

@@ -306,9 +306,11 @@ bool MeasureConfiguration(
     return Report(Program, "capture failed on " + sceneName);
   }
   vtkNew<vtkDeepGIReferenceReflection> reference;
-  reference->SetScene(geometry);
+  reference->SetInputData(capture);
+  reference->SetSceneData(geometry);
   reference->SetMaximumDistance(pass->GetEffectiveMaximumDistance());
-  if (!reference->Compute(capture))
+  reference->Update();
+  if (reference->GetOutput()->GetNumberOfPoints() == 0)
   {
     return Report(Program, "the reference failed on " + sceneName);
   }

@@ -1,7 +1,9 @@
 // Helpers shared by the tests of the ray-traced references and the OpenEXR
-// I/O: an observer counting error and warning events, hand-made layer-0
-// captures in the layout of vtkDeepGBufferPass::CaptureLayers, and the
-// closed-form view factor from a point to a parallel square.
+// I/O: an observer counting error and warning events, the update of a
+// reference estimator on a capture, hand-made layer-0
+// captures in the layout of vtkDeepGBufferPass::CaptureLayers, the
+// closed-form view factor from a point to a parallel square and the closed
+// form of the obscurance of a floor point beside a wall.
 #ifndef DeepGIReferenceTestUtilities_h
 #define DeepGIReferenceTestUtilities_h
 
@@ -11,8 +13,10 @@
 #include "vtkCommand.h"
 #include "vtkDeepGICaptureNames.h"
 #include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
+#include "vtkImageAlgorithm.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -21,6 +25,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -41,6 +46,18 @@ public:
   int Errors = 0;
   int Warnings = 0;
 };
+
+/// Runs a reference estimator (vtkDeepGIReferenceObscurance, ...Irradiance,
+/// ...Reflection: the capture on input port 0, the scene already on port 1)
+/// on `capture` through the pipeline; false when the update failed (a
+/// missing input, or an error of the estimator, which leaves its output
+/// empty).
+inline bool Estimate(vtkImageAlgorithm* reference, vtkImageData* capture)
+{
+  reference->SetInputData(0, capture);
+  return reference->GetExecutive()->Update() != 0 &&
+    reference->GetOutput()->GetNumberOfPoints() > 0;
+}
 
 /// Stores a camera's ViewMatrix and ProjectionMatrix (16 values each) in the
 /// field data of `capture`, as vtkDeepGBufferPass::CaptureLayers does.
@@ -120,6 +137,18 @@ inline double SquareViewFactor(double px, double py, double s, double h)
     }
   }
   return f;
+}
+
+/// Closed form of A of vtkDeepGIReferenceObscurance (eq. 2 with Bias and
+/// Epsilon 0) for a floor point at distance d from one infinite wall,
+/// radius r: A(s) = (2/pi) [pi/4 - 3/2 s sqrt(1-s^2) - (1/2 + s^2) asin(s) +
+/// pi/2 s^2], s = min(d/r, 1).
+inline double WallObscurance(double d, double r)
+{
+  const double s = std::min(1.0, d / r);
+  const double q = std::sqrt(std::max(0.0, 1.0 - s * s));
+  return 2.0 / vtkMath::Pi() *
+    (vtkMath::Pi() / 4 - 1.5 * s * q - (0.5 + s * s) * std::asin(s) + vtkMath::Pi() / 2 * s * s);
 }
 }
 

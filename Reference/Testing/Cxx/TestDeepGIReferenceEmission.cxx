@@ -266,9 +266,9 @@ void CheckEmittingSquareMatchesClosedForm(const Plane& plane)
   vtkNew<vtkDeepGIReferenceIrradiance> reference;
   vtkNew<EventCounter> events;
   reference->AddObserver(vtkCommand::WarningEvent, events);
-  reference->SetScene(SquareScene(true, EmissionArray(Emitted)));
+  reference->SetSceneData(SquareScene(true, EmissionArray(Emitted)));
   reference->SetSamplesPerPixel(1024);
-  Check(reference->Compute(plane.Capture), "emitting square: Compute");
+  Check(Estimate(reference, plane.Capture), "emitting square: update");
   CompareExact(reference, plane.EmittedExactFunction(), "emitting square, no lights (closed form)");
   Check(events->Warnings == 0, "an emitting scene without lights: no warning");
 }
@@ -278,10 +278,10 @@ void CheckEmissionAddsToLitRadiance(const Plane& plane)
 {
   const double intensity = 0.6, rho = 128.0 / 255.0;
   vtkNew<vtkDeepGIReferenceIrradiance> reference;
-  reference->SetScene(SquareScene(true, EmissionArray(Emitted)));
+  reference->SetSceneData(SquareScene(true, EmissionArray(Emitted)));
   reference->AddLight(Directional(Below, intensity));
   reference->SetSamplesPerPixel(1024);
-  Check(reference->Compute(plane.Capture), "emitting and lit square: Compute");
+  Check(Estimate(reference, plane.Capture), "emitting and lit square: update");
   CompareExact(
     reference,
     [&](vtkIdType p, int c)
@@ -294,13 +294,13 @@ void CheckEmissionAddsToLitRadiance(const Plane& plane)
 void CheckBackFacesEmitWithTwoSidedLighting(const Plane& plane)
 {
   vtkNew<vtkDeepGIReferenceIrradiance> reference;
-  reference->SetScene(SquareScene(false, EmissionArray(Emitted)));
+  reference->SetSceneData(SquareScene(false, EmissionArray(Emitted)));
   reference->SetSamplesPerPixel(1024);
-  Check(reference->Compute(plane.Capture), "emitting square seen from behind: Compute");
+  Check(Estimate(reference, plane.Capture), "emitting square seen from behind: update");
   CompareExact(reference, plane.EmittedExactFunction(),
     "emitting square seen from behind, two-sided (closed form)");
   reference->TwoSidedLightingOff();
-  Check(reference->Compute(plane.Capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0,
+  Check(Estimate(reference, plane.Capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0,
     "emitting square seen from behind, one-sided: E = 0");
 }
 
@@ -312,24 +312,24 @@ void CheckMissingEmissionArrayEmitsNothing(const Plane& plane)
   reference->AddObserver(vtkCommand::WarningEvent, events);
   reference->AddLight(Directional(Above, 1.0));
   reference->SetSamplesPerPixel(64);
-  reference->SetScene(SquareScene(true, nullptr));
-  Check(reference->Compute(plane.Capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0 &&
+  reference->SetSceneData(SquareScene(true, nullptr));
+  Check(Estimate(reference, plane.Capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0 &&
       events->Warnings == 0,
     "no Emission array: E = 0, no warning");
-  reference->SetScene(SquareScene(true, EmissionArray(Emitted, 3, 1, "Glow")));
-  Check(reference->Compute(plane.Capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0 &&
+  reference->SetSceneData(SquareScene(true, EmissionArray(Emitted, 3, 1, "Glow")));
+  Check(Estimate(reference, plane.Capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0 &&
       events->Warnings == 0,
     "an array of another name: E = 0, no warning");
   reference->SetEmissionArrayName("Glow");
   reference->SetSamplesPerPixel(1024);
-  Check(reference->Compute(plane.Capture), "EmissionArrayName Glow: Compute");
+  Check(Estimate(reference, plane.Capture), "EmissionArrayName Glow: update");
   CompareExact(reference, plane.EmittedExactFunction(), "EmissionArrayName Glow (closed form)");
   reference->SetEmissionArrayName(nullptr);
-  Check(reference->Compute(plane.Capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0 &&
+  Check(Estimate(reference, plane.Capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0 &&
       events->Warnings == 0,
     "EmissionArrayName null: no emission, no warning");
   reference->SetEmissionArrayName("");
-  Check(reference->Compute(plane.Capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0 &&
+  Check(Estimate(reference, plane.Capture) && MaxAbs(reference, "IndirectIrradiance") == 0.0 &&
       events->Warnings == 0,
     "EmissionArrayName empty: no emission, no warning");
 }
@@ -347,30 +347,30 @@ void CheckBadEmissionArraysAreRepaired(const Plane& plane)
   reference->SetSamplesPerPixel(1024);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double bad[3] = { nan, -1.0, Emitted[2] };
-  reference->SetScene(SquareScene(true, EmissionArray(bad)));
-  Check(reference->Compute(plane.Capture) && events->Warnings == 1 && events->Errors == 0,
+  reference->SetSceneData(SquareScene(true, EmissionArray(bad)));
+  Check(Estimate(reference, plane.Capture) && events->Warnings == 1 && events->Errors == 0,
     "NaN and negative emission: one warning");
   Check(MaxAbs(reference, "IndirectIrradiance") < 10.0, "NaN and negative emission: E finite");
   CompareExact(
     reference, [&](vtkIdType p, int c) { return c == 2 ? plane.EmittedExact(p, c) : 0.0; },
     "NaN and negative emission clamped to 0, blue unchanged");
   const double infinite[3] = { std::numeric_limits<double>::infinity(), 0.0, 0.0 };
-  reference->SetScene(SquareScene(true, EmissionArray(infinite)));
-  Check(reference->Compute(plane.Capture) && events->Warnings == 2 &&
+  reference->SetSceneData(SquareScene(true, EmissionArray(infinite)));
+  Check(Estimate(reference, plane.Capture) && events->Warnings == 2 &&
       MaxAbs(reference, "IndirectIrradiance") == 0.0,
     "infinite emission: a warning, set to 0");
-  reference->SetScene(SquareScene(true, EmissionArray(Emitted, 2)));
-  Check(reference->Compute(plane.Capture) && events->Warnings == 3 &&
+  reference->SetSceneData(SquareScene(true, EmissionArray(Emitted, 2)));
+  Check(Estimate(reference, plane.Capture) && events->Warnings == 3 &&
       MaxAbs(reference, "IndirectIrradiance") == 0.0,
     "a 2-component Emission array: a warning, ignored");
-  reference->SetScene(SquareScene(true, EmissionArray(Emitted, 3, 2)));
-  Check(reference->Compute(plane.Capture) && events->Warnings == 4 &&
+  reference->SetSceneData(SquareScene(true, EmissionArray(Emitted, 3, 2)));
+  Check(Estimate(reference, plane.Capture) && events->Warnings == 4 &&
       MaxAbs(reference, "IndirectIrradiance") == 0.0,
     "an Emission array with more tuples than cells: a warning, ignored");
   // One component is grey.
   const double grey[3] = { 0.4, 0.4, 0.4 };
-  reference->SetScene(SquareScene(true, EmissionArray(grey, 1)));
-  Check(reference->Compute(plane.Capture) && events->Warnings == 4, "grey emission: Compute");
+  reference->SetSceneData(SquareScene(true, EmissionArray(grey, 1)));
+  Check(Estimate(reference, plane.Capture) && events->Warnings == 4, "grey emission: update");
   CompareExact(
     reference, [&](vtkIdType p, int) { return vtkMath::Pi() * 0.4 * plane.ViewFactor(p); },
     "a 1-component Emission array is grey (closed form)");
@@ -400,8 +400,8 @@ void CheckDirectRadianceOfEmitter(const Plane& plane)
     return m;
   };
   const double zero[3] = { 0, 0, 0 };
-  reference->SetScene(QuadScene(up, EmissionArray(Emitted)));
-  Check(reference->Compute(plane.Capture) && maxError(Emitted) < 1e-6,
+  reference->SetSceneData(QuadScene(up, EmissionArray(Emitted)));
+  Check(Estimate(reference, plane.Capture) && maxError(Emitted) < 1e-6,
     "DIRECT_RADIANCE of an emitting floor: L_e");
   reference->AddLight(Directional(Above, 0.6));
   double lit[3];
@@ -409,14 +409,14 @@ void CheckDirectRadianceOfEmitter(const Plane& plane)
   {
     lit[c] = Emitted[c] + 128.0 / 255.0 * 0.6;
   }
-  Check(reference->Compute(plane.Capture) && maxError(lit) < 1e-6,
+  Check(Estimate(reference, plane.Capture) && maxError(lit) < 1e-6,
     "DIRECT_RADIANCE of an emitting floor under a light: L_e + rho I");
   reference->RemoveAllLights();
-  reference->SetScene(QuadScene(down, EmissionArray(Emitted)));
-  Check(reference->Compute(plane.Capture) && maxError(Emitted) < 1e-6,
+  reference->SetSceneData(QuadScene(down, EmissionArray(Emitted)));
+  Check(Estimate(reference, plane.Capture) && maxError(Emitted) < 1e-6,
     "DIRECT_RADIANCE of an emitting floor seen from behind, two-sided: L_e");
   reference->TwoSidedLightingOff();
-  Check(reference->Compute(plane.Capture) && maxError(zero) == 0.0,
+  Check(Estimate(reference, plane.Capture) && maxError(zero) == 0.0,
     "DIRECT_RADIANCE of an emitting floor seen from behind, one-sided: 0");
 }
 
@@ -429,9 +429,9 @@ void CheckUnsignedCharEmissionIsAColour(const Plane& plane)
   const unsigned char rgb[3] = { 255, 51, 0 };
   bytes->InsertNextTypedTuple(rgb);
   vtkNew<vtkDeepGIReferenceIrradiance> reference;
-  reference->SetScene(SquareScene(true, bytes));
+  reference->SetSceneData(SquareScene(true, bytes));
   reference->SetSamplesPerPixel(1024);
-  Check(reference->Compute(plane.Capture), "unsigned char emission: Compute");
+  Check(Estimate(reference, plane.Capture), "unsigned char emission: update");
   CompareExact(
     reference,
     [&](vtkIdType p, int c) { return vtkMath::Pi() * rgb[c] / 255.0 * plane.ViewFactor(p); },

@@ -12,7 +12,8 @@
 //     tolerance: |AV - AV_exact| < 4.5 standard errors + 1e-4 per pixel,
 //     and the mean difference within 4 standard errors of the mean;
 //  3. two seeds agree within 4.5 combined standard errors per pixel;
-//  4. same seed: bit-identical twice, and with 1 and 2 threads;
+//  4. same seed: bit-identical twice, and with 1 and 2 threads; the
+//     deprecated SetScene and Compute give the pipeline's result;
 //  5. scene, camera and radius scaled by 1e-4 and 1e4 (and the scene moved
 //     1e4 * size away from the origin): same AV within noise;
 //  6. bad input: errors, no crash.
@@ -26,6 +27,7 @@
 #include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIReferenceObscurance.h"
 #include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -50,6 +52,8 @@
 
 namespace
 {
+using DeepGIReferenceTest::Estimate;
+using DeepGIReferenceTest::WallObscurance;
 using DeepGITest::Check;
 using DeepGITest::Format;
 
@@ -192,15 +196,6 @@ vtkSmartPointer<vtkImageData> MakeCapture(const Setup& s, int w, int h, double c
   return capture;
 }
 
-// Closed form of A for a floor point at distance d from one infinite wall.
-double WallObscurance(double d, double r)
-{
-  const double s = std::min(1.0, d / r);
-  const double q = std::sqrt(std::max(0.0, 1.0 - s * s));
-  return 2.0 / vtkMath::Pi() *
-    (vtkMath::Pi() / 4 - 1.5 * s * q - (0.5 + s * s) * std::asin(s) + vtkMath::Pi() / 2 * s * s);
-}
-
 // Numerical integral of A over the projected unit disc for a floor point at
 // distances a (from x = WallX) and b (from y = WallY) of two infinite walls.
 double CornerObscurance(double a, double b, double r)
@@ -297,7 +292,7 @@ vtkSmartPointer<vtkDeepGIReferenceObscurance> MakeReference(
   vtkPolyData* scene, double radius, int seed = -1)
 {
   auto reference = vtkSmartPointer<vtkDeepGIReferenceObscurance>::New();
-  reference->SetScene(scene);
+  reference->SetSceneData(scene);
   reference->SetRadius(radius);
   reference->SetSamplesPerPixel(1024);
   if (seed >= 0)
@@ -313,11 +308,11 @@ void CheckUnoccludedPlaneIsFullyVisible(double r)
   Setup s;
   s.WallX = -10;
   vtkNew<vtkDeepGIReferenceObscurance> reference;
-  reference->SetScene(MakeScene(s));
+  reference->SetSceneData(MakeScene(s));
   reference->SetRadius(r);
   reference->SetSamplesPerPixel(256);
   auto capture = MakeCapture(s, 16, 16, 0, 0, 3);
-  Check(reference->Compute(capture), "plane: Compute succeeds");
+  Check(Estimate(reference, capture), "plane: update succeeds");
   vtkFloatArray* av = Array(reference, vtkDeepGICaptureNames::AmbientVisibility);
   int notOne = 0;
   for (vtkIdType p = 0; p < av->GetNumberOfTuples(); ++p)
@@ -343,7 +338,7 @@ void CheckCornerMatchesIntegral(double r)
   std::vector<std::array<double, 3>> cornerPositions;
   auto cornerCapture = MakeCapture(corner, 24, 24, 0.6, 0.6, 3.6, &cornerPositions);
   auto cornerReference = MakeReference(MakeScene(corner), r);
-  Check(cornerReference->Compute(cornerCapture), "corner: Compute succeeds");
+  Check(Estimate(cornerReference, cornerCapture), "corner: update succeeds");
   // Both walls within r: numerical integral; otherwise only the nearer
   // wall can be hit within r and the closed form applies.
   std::vector<double> cornerExact(cornerPositions.size(), 1.0);
@@ -366,7 +361,7 @@ void CheckSeedsAgreeWithinNoise(
   vtkPolyData* scene, double r, vtkImageData* wallCapture, vtkImageData* wallResult)
 {
   auto other = MakeReference(scene, r, 2);
-  Check(other->Compute(wallCapture), "seed 2: Compute succeeds");
+  Check(Estimate(other, wallCapture), "seed 2: update succeeds");
   vtkFloatArray* a = Array(other, vtkDeepGICaptureNames::AmbientVisibility);
   vtkFloatArray* ae = Array(other, "StandardError");
   auto b = vtkFloatArray::SafeDownCast(
@@ -403,17 +398,36 @@ void CheckSeedsAgreeWithinNoise(
 void CheckSameSeedIsDeterministic(
   vtkDeepGIReferenceObscurance* reference, vtkImageData* wallCapture, vtkImageData* wallResult)
 {
+  // The thread count is no input of the pipeline: Modified() makes each
+  // update run again.
   vtkSMPTools::Initialize(1);
-  Check(reference->Compute(wallCapture), "1 thread: Compute succeeds");
+  reference->Modified();
+  Check(Estimate(reference, wallCapture), "1 thread: update succeeds");
   Check(SameArrays(reference, wallResult), "1 thread: identical to the default");
   vtkSMPTools::Initialize(2);
-  Check(reference->Compute(wallCapture), "2 threads: Compute succeeds");
+  reference->Modified();
+  Check(Estimate(reference, wallCapture), "2 threads: update succeeds");
   Check(SameArrays(reference, wallResult), "2 threads: identical to the default");
-  Check(reference->Compute(wallCapture), "again: Compute succeeds");
+  reference->Modified();
+  Check(Estimate(reference, wallCapture), "again: update succeeds");
   Check(SameArrays(reference, wallResult), "same seed twice: identical");
   std::cout << "determinism: 2 threads " << reference->GetComputeTime() << " s for "
             << reference->GetNumberOfRays() << " rays\n";
   vtkSMPTools::Initialize();
+}
+
+// 4b. The deprecated SetScene, GetScene and Compute wrap the pipeline.
+void CheckDeprecatedMethodsWrapThePipeline(
+  vtkPolyData* scene, double r, vtkImageData* wallCapture, vtkImageData* wallResult)
+{
+  auto reference = vtkSmartPointer<vtkDeepGIReferenceObscurance>::New();
+  reference->SetScene(scene);
+  reference->SetRadius(r);
+  reference->SetSamplesPerPixel(1024);
+  reference->SetSeed(1);
+  Check(reference->GetScene() == scene && reference->Compute(wallCapture) &&
+      SameArrays(reference, wallResult),
+    "deprecated SetScene and Compute: the pipeline's result");
 }
 
 // 5. Scale invariance (and a position far from the origin).
@@ -430,7 +444,7 @@ void CheckScaleInvariance(const Setup& wall,
     scaled.Shift[2] = 1e4 * scale;
     auto capture = MakeCapture(scaled, 24, 24, 0.6, 0.0, 3.6);
     auto s = MakeReference(MakeScene(scaled), r * scale, 1);
-    Check(s->Compute(capture), Format("scale %g: Compute succeeds", scale));
+    Check(Estimate(s, capture), Format("scale %g: update succeeds", scale));
     std::string what = "wall at scale " + std::to_string(scale) + " (closed form)";
     CompareExact(
       s, [&](vtkIdType p) { return 1.0 - WallObscurance(wallPositions[p][0] - wall.WallX, r); },
@@ -448,41 +462,47 @@ void CheckScaleInvariance(const Setup& wall,
   }
 }
 
-// 6. Bad input: errors, no crash.
+// 6. Bad input: errors, an empty output, no crash. A missing input is the
+// executive's error; what the estimator refuses is its own.
 void CheckBadInputIsRefused(vtkPolyData* scene, vtkImageData* wallCapture)
 {
-  vtkNew<DeepGIReferenceTest::EventCounter> errors;
+  vtkNew<DeepGIReferenceTest::EventCounter> errors, executiveErrors;
   vtkNew<vtkDeepGIReferenceObscurance> bad;
   bad->AddObserver(vtkCommand::ErrorEvent, errors);
-  Check(!bad->Compute(wallCapture) && errors->Errors == 1, "null scene: error");
-  bad->SetScene(scene);
-  Check(!bad->Compute(nullptr) && errors->Errors == 2, "null capture: error");
+  bad->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executiveErrors);
+  Check(!Estimate(bad, wallCapture) && errors->Errors == 0 && executiveErrors->Errors == 1,
+    "no scene: the executive's error");
+  bad->SetSceneData(scene);
+  Check(!Estimate(bad, nullptr) && errors->Errors == 0 && executiveErrors->Errors == 2,
+    "no capture: the executive's error");
   vtkNew<vtkImageData> empty;
-  Check(!bad->Compute(empty) && errors->Errors == 3, "empty capture: error");
+  Check(!Estimate(bad, empty) && errors->Errors == 1, "empty capture: error");
   vtkNew<vtkImageData> noMatrices;
   noMatrices->DeepCopy(wallCapture);
   noMatrices->GetFieldData()->RemoveArray(vtkDeepGICaptureNames::ViewMatrix);
-  Check(!bad->Compute(noMatrices) && errors->Errors == 4, "capture without matrices: error");
+  Check(!Estimate(bad, noMatrices) && errors->Errors == 2, "capture without matrices: error");
   bad->SetRadius(std::numeric_limits<double>::quiet_NaN());
-  Check(!bad->Compute(wallCapture) && errors->Errors == 5, "NaN radius: error");
+  Check(!Estimate(bad, wallCapture) && errors->Errors == 3, "NaN radius: error");
   bad->SetRadius(-1.0);
-  Check(!bad->Compute(wallCapture) && errors->Errors == 6, "negative radius: error");
+  Check(!Estimate(bad, wallCapture) && errors->Errors == 4, "negative radius: error");
   bad->SetRadius(std::numeric_limits<double>::infinity());
-  Check(!bad->Compute(wallCapture) && errors->Errors == 7, "infinite radius: error");
+  Check(!Estimate(bad, wallCapture) && errors->Errors == 5, "infinite radius: error");
+  Check(bad->GetNumberOfValidPixels() == 0 && bad->GetMeanStandardError() == 0.0,
+    "failed update: statistics reset");
   bad->SetRadius(1.0);
   bad->SetLayer(1);
-  Check(!bad->Compute(wallCapture) && errors->Errors == 8, "missing layer: error");
+  Check(!Estimate(bad, wallCapture) && errors->Errors == 6, "missing layer: error");
   bad->SetLayer(0);
   vtkNew<vtkPolyData> noPolygons;
-  bad->SetScene(noPolygons);
-  Check(!bad->Compute(wallCapture) && errors->Errors == 9, "scene without polygons: error");
-  bad->SetScene(scene);
+  bad->SetSceneData(noPolygons);
+  Check(!Estimate(bad, wallCapture) && errors->Errors == 7, "scene without polygons: error");
+  bad->SetSceneData(scene);
   bad->SetSamplesPerPixel(0);
   Check(bad->GetSamplesPerPixel() == 1, "SamplesPerPixel clamped to 1");
   bad->SetBias(-1);
   bad->SetEpsilon(-1);
   Check(bad->GetBias() == 0 && bad->GetEpsilon() == 0, "Bias and Epsilon clamped to 0");
-  Check(bad->Compute(wallCapture) && errors->Errors == 9, "one sample per pixel computes");
+  Check(Estimate(bad, wallCapture) && errors->Errors == 7, "one sample per pixel computes");
   Check(bad->GetMaximumStandardError() == 0.0, "one sample: standard error 0");
   bad->Print(std::cout);
 }
@@ -499,8 +519,9 @@ int TestDeepGIReferenceObscurance(int, char*[])
   wall.WallXOn = true;
   std::vector<std::array<double, 3>> wallPositions;
   auto wallCapture = MakeCapture(wall, 24, 24, 0.6, 0.0, 3.6, &wallPositions);
-  auto reference = MakeReference(MakeScene(wall), r, 1);
-  Check(reference->Compute(wallCapture), "wall: Compute succeeds");
+  vtkSmartPointer<vtkPolyData> wallScene = MakeScene(wall);
+  auto reference = MakeReference(wallScene, r, 1);
+  Check(Estimate(reference, wallCapture), "wall: update succeeds");
   CompareExact(
     reference,
     [&](vtkIdType p) { return 1.0 - WallObscurance(wallPositions[p][0] - wall.WallX, r); },
@@ -509,9 +530,10 @@ int TestDeepGIReferenceObscurance(int, char*[])
   wallResult->DeepCopy(reference->GetOutput());
 
   CheckCornerMatchesIntegral(r);
-  CheckSeedsAgreeWithinNoise(reference->GetScene(), r, wallCapture, wallResult);
+  CheckSeedsAgreeWithinNoise(wallScene, r, wallCapture, wallResult);
   CheckSameSeedIsDeterministic(reference, wallCapture, wallResult);
+  CheckDeprecatedMethodsWrapThePipeline(wallScene, r, wallCapture, wallResult);
   CheckScaleInvariance(wall, wallPositions, r, wallResult, reference->GetMaximumStandardError());
-  CheckBadInputIsRefused(reference->GetScene(), wallCapture);
+  CheckBadInputIsRefused(wallScene, wallCapture);
   return DeepGITest::ExitStatus();
 }

@@ -472,11 +472,11 @@ void CheckCaptureRoundTrip(const std::string& directory)
   vtkNew<vtkDeepGIReferenceObscurance> a, b;
   for (vtkDeepGIReferenceObscurance* r : { a.Get(), b.Get() })
   {
-    r->SetScene(scene);
+    r->SetSceneData(scene);
     r->SetSamplesPerPixel(16);
   }
-  a->Compute(capture);
-  b->Compute(read);
+  Estimate(a, capture);
+  Estimate(b, read);
   auto av = vtkFloatArray::SafeDownCast(a->GetOutput()->GetPointData()->GetArray("Obscurance"));
   auto bv = vtkFloatArray::SafeDownCast(b->GetOutput()->GetPointData()->GetArray("Obscurance"));
   Check(av && bv && av->GetNumberOfValues() == bv->GetNumberOfValues() &&

@@ -130,13 +130,18 @@ int TestDeepGIEXRCapture(int argc, char* argv[])
   Check(missing == 0 && halfError <= 1.0, "HALF: every value within half precision");
 
   vtkNew<vtkDeepGIReferenceObscurance> original, reloaded;
+  original->SetInputData(capture);
+  reloaded->SetInputData(exact);
   for (vtkDeepGIReferenceObscurance* r : { original.Get(), reloaded.Get() })
   {
-    r->SetScene(scene->GetScenePolyData());
+    r->SetSceneData(scene->GetScenePolyData());
     r->SetSamplesPerPixel(4);
     r->SetRadius(0.5);
+    r->Update();
   }
-  Check(original->Compute(capture) && reloaded->Compute(exact), "reference on both captures");
+  Check(original->GetOutput()->GetNumberOfPoints() > 0 &&
+      reloaded->GetOutput()->GetNumberOfPoints() > 0,
+    "reference on both captures");
   auto x =
     vtkFloatArray::SafeDownCast(original->GetOutput()->GetPointData()->GetArray("Obscurance"));
   auto y =

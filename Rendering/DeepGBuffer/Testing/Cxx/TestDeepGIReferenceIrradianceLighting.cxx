@@ -68,7 +68,8 @@ int TestDeepGIReferenceIrradianceLighting(int, char*[])
   Check(pass->CaptureLayers(capture, renderer), "capture");
 
   vtkNew<vtkDeepGIReferenceIrradiance> reference;
-  reference->SetScene(scene->GetScenePolyData());
+  reference->SetInputData(capture);
+  reference->SetSceneData(scene->GetScenePolyData());
   Check(reference->GetDiffuseCoefficient() == 1.0, "the scene's own Diffuse is used");
   reference->SetLightsFromRenderer(renderer);
   reference->SetQuantityToDirectRadiance();
@@ -78,9 +79,10 @@ int TestDeepGIReferenceIrradianceLighting(int, char*[])
   {
     reference->SetLayer(layer);
     const std::string what = "layer " + std::to_string(layer);
-    if (!reference->Compute(capture))
+    reference->Update();
+    if (reference->GetOutput()->GetNumberOfPoints() == 0)
     {
-      Check(false, what + ": Compute");
+      Check(false, what + ": update");
       continue;
     }
     vtkDataArray* direct = reference->GetOutput()->GetPointData()->GetArray("DirectRadiance");
@@ -136,7 +138,7 @@ int TestDeepGIReferenceIrradianceLighting(int, char*[])
     }
   }
   reference->SetLayer(0);
-  reference->Compute(capture);
+  reference->Update();
   {
     vtkDataArray* direct = reference->GetOutput()->GetPointData()->GetArray("DirectRadiance");
     vtkDataArray* radiance = Layer(capture, vtkDeepGICaptureNames::Radiance, 0);

@@ -58,8 +58,9 @@ def main():
     print("checked %d clamped floating-point setters: %s" % (len(checked), ", ".join(checked)))
     for failure in failures:
         print("FAILED: " + failure)
-    # 16 in the passes and scenes, 4 more in the optional DeepGI::Reference.
-    expected = 20 if hasattr(vtkdeepgi, "vtkDeepGIReferenceObscurance") else 16
+    # 16 in the passes and scenes, 6 more in the optional DeepGI::Reference
+    # (Bias, Epsilon and each estimator's RelativeOffset, DiffuseCoefficient).
+    expected = 22 if hasattr(vtkdeepgi, "vtkDeepGIReferenceObscurance") else 16
     if len(checked) < expected:
         failures.append("only %d setters found (%d expected)" % (len(checked), expected))
         print("FAILED: " + failures[-1])
