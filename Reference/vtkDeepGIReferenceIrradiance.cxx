@@ -4,11 +4,8 @@
 #include "vtkDeepGIReferenceLighting.h"
 
 #include "vtkDataArray.h"
-#include "vtkExecutive.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
-#include "vtkInformation.h"
-#include "vtkInformationVector.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
@@ -75,41 +72,14 @@ vtkDeepGIReferenceIrradiance::vtkDeepGIReferenceIrradiance()
   , EmissionArrayName(nullptr)
   , NumberOfBounces(1)
   , BounceDamping(1.0)
-  , SamplesPerPixel(256)
-  , Seed(0)
-  , Layer(0)
-  , RelativeOffset(1e-5)
   , Lighting(new vtkDeepGIReferenceLighting)
 {
-  this->SetNumberOfInputPorts(2);
   this->SetEmissionArrayName("Emission");
 }
 
 vtkDeepGIReferenceIrradiance::~vtkDeepGIReferenceIrradiance()
 {
   this->SetEmissionArrayName(nullptr);
-}
-
-//------------------------------------------------------------------------------
-void vtkDeepGIReferenceIrradiance::SetSceneData(vtkPolyData* scene)
-{
-  this->SetInputData(1, scene);
-}
-
-void vtkDeepGIReferenceIrradiance::SetSceneConnection(vtkAlgorithmOutput* output)
-{
-  this->SetInputConnection(1, output);
-}
-
-vtkPolyData* vtkDeepGIReferenceIrradiance::GetScene()
-{
-  return vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0));
-}
-
-bool vtkDeepGIReferenceIrradiance::Compute(vtkImageData* capture)
-{
-  this->SetInputData(0, capture);
-  return this->GetExecutive()->Update() != 0 && this->GetOutput()->GetNumberOfPoints() > 0;
 }
 
 //------------------------------------------------------------------------------
@@ -216,19 +186,9 @@ void vtkDeepGIReferenceIrradiance::SetBounceDamping(double delta)
 }
 
 //------------------------------------------------------------------------------
-int vtkDeepGIReferenceIrradiance::FillInputPortInformation(int port, vtkInformation* info)
+std::unique_ptr<vtkDeepGIRayTracer::Estimator> vtkDeepGIReferenceIrradiance::NewEstimator()
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkImageData" : "vtkPolyData");
-  return 1;
-}
-
-int vtkDeepGIReferenceIrradiance::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  Sampler sampler(*this);
-  return this->Tracer->Run(vtkImageData::GetData(inputVector[0]),
-    vtkPolyData::GetData(inputVector[1]), { this->Layer, this->Seed, this->RelativeOffset },
-    sampler, vtkImageData::GetData(outputVector), this);
+  return std::unique_ptr<vtkDeepGIRayTracer::Estimator>(new Sampler(*this));
 }
 
 //------------------------------------------------------------------------------
@@ -484,32 +444,6 @@ void vtkDeepGIReferenceIrradiance::Sampler::FinishPixel(
 }
 
 //------------------------------------------------------------------------------
-double vtkDeepGIReferenceIrradiance::GetMeanStandardError()
-{
-  return this->Tracer->GetMeanStandardError();
-}
-
-double vtkDeepGIReferenceIrradiance::GetMaximumStandardError()
-{
-  return this->Tracer->GetMaximumStandardError();
-}
-
-vtkIdType vtkDeepGIReferenceIrradiance::GetNumberOfValidPixels()
-{
-  return this->Tracer->GetNumberOfValidPixels();
-}
-
-vtkIdType vtkDeepGIReferenceIrradiance::GetNumberOfRays()
-{
-  return this->Tracer->GetNumberOfRays();
-}
-
-double vtkDeepGIReferenceIrradiance::GetComputeTime()
-{
-  return this->Tracer->GetComputeTime();
-}
-
-//------------------------------------------------------------------------------
 void vtkDeepGIReferenceIrradiance::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -524,11 +458,5 @@ void vtkDeepGIReferenceIrradiance::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "NumberOfBounces: " << this->NumberOfBounces << "\n";
   os << indent << "BounceDamping: " << this->BounceDamping << "\n";
-  os << indent << "SamplesPerPixel: " << this->SamplesPerPixel << "\n";
-  os << indent << "Seed: " << this->Seed << "\n";
-  os << indent << "Layer: " << this->Layer << "\n";
-  os << indent << "RelativeOffset: " << this->RelativeOffset << "\n";
   this->Lighting->Print(os, indent);
-  os << indent << "Tracer:\n";
-  this->Tracer->PrintSelf(os, indent.GetNextIndent());
 }

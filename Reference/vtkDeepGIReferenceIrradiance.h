@@ -131,9 +131,11 @@
  *
  * ## Pipeline and output
  *
- * A vtkImageAlgorithm: input port 0 is the capture (vtkImageData), input
- * port 1 the scene (vtkPolyData, world space; SetSceneData or
- * SetSceneConnection), as for vtkDeepGIReferenceObscurance. Output point
+ * A vtkDeepGIReferenceSampledEstimator: the capture on input port 0, the
+ * scene on port 1, Layer (which also provides Albedo_j), RelativeOffset
+ * (also for the rays from each hit of a path and the shadow rays),
+ * SamplesPerPixel, Seed and the statistics are those of the base classes;
+ * NumberOfRays counts the rays that leave X only. Output point
  * arrays (float, the capture's grid): "IndirectIrradiance" (RGB E, 0 where
  * the layer is empty), "IndirectIrradianceStandardError" (RGB),
  * "IndirectRadiance" and "IndirectRadianceStandardError" (RGB, rho_X E / pi;
@@ -142,7 +144,7 @@
  * three irradiance standard errors per pixel. The update fails with an
  * error of the estimator and an empty output (no points) when the capture
  * has no such layer arrays or matrices, the scene no polygons, or
- * MaximumDistance is invalid; a missing input is the executive's error.
+ * MaximumDistance is invalid.
  *
  * Typical use:
  * @code
@@ -155,39 +157,31 @@
  * vtkImageData* e = reference->GetOutput();
  * @endcode
  *
- * @sa vtkDeepGIRayTracer vtkDeepGIReferenceObscurance vtkDeepGBufferPass
+ * @sa vtkDeepGIReferenceSampledEstimator vtkDeepGIRayTracer vtkDeepGIReferenceObscurance
+ *     vtkDeepGBufferPass
  */
 
 #ifndef vtkDeepGIReferenceIrradiance_h
 #define vtkDeepGIReferenceIrradiance_h
 
 #include "vtkDeepGIReferenceModule.h" // for export macro
-#include "vtkDeepGISetGet.h"          // for vtkDeepGISetClampMacro
-#include "vtkImageAlgorithm.h"
-#include "vtkNew.h" // for the tracer
+#include "vtkDeepGIReferenceSampledEstimator.h"
+#include "vtkDeepGISetGet.h" // for vtkDeepGISetClampMacro
 
 #include <memory> // for std::unique_ptr
 
-class vtkAlgorithmOutput;
 class vtkCamera;
-class vtkDeepGIRayTracer;
 class vtkDeepGIReferenceLighting;
 class vtkLight;
-class vtkPolyData;
 class vtkRenderer;
 
-class VTKDEEPGIREFERENCE_EXPORT vtkDeepGIReferenceIrradiance : public vtkImageAlgorithm
+class VTKDEEPGIREFERENCE_EXPORT vtkDeepGIReferenceIrradiance
+  : public vtkDeepGIReferenceSampledEstimator
 {
 public:
   static vtkDeepGIReferenceIrradiance* New();
-  vtkTypeMacro(vtkDeepGIReferenceIrradiance, vtkImageAlgorithm);
+  vtkTypeMacro(vtkDeepGIReferenceIrradiance, vtkDeepGIReferenceSampledEstimator);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /// The scene on input port 1. Without one the update fails with an error.
-  void SetSceneData(vtkPolyData* scene);
-  void SetSceneConnection(vtkAlgorithmOutput* output);
-  ///@}
 
   ///@{
   /**
@@ -364,100 +358,11 @@ public:
   vtkGetMacro(DiffuseCoefficient, double);
   ///@}
 
-  ///@{
-  /**
-   * Monte Carlo samples (rays from X) per pixel, [1, 1048576]; default 256.
-   * The noise (standard error) falls as 1 / sqrt(SamplesPerPixel).
-   * DIRECT_RADIANCE takes one exact sample whatever the value.
-   *
-   * @unit rays
-   * @range 1..1048576, clamped
-   * @default 256
-   */
-  vtkSetClampMacro(SamplesPerPixel, int, 1, 1048576);
-  vtkGetMacro(SamplesPerPixel, int);
-  ///@}
-
-  ///@{
-  /**
-   * Seed of the counter-based random sequence (any value; default 0). The
-   * same seed, capture and scene give bit-identical results for any number
-   * of threads.
-   *
-   * @range any
-   * @default 0
-   */
-  vtkSetMacro(Seed, unsigned int);
-  vtkGetMacro(Seed, unsigned int);
-  ///@}
-
-  ///@{
-  /**
-   * Which layer of the capture provides X and n (and Albedo_j), [0, 7];
-   * default 0.
-   *
-   * @range 0..7, clamped
-   * @default 0
-   */
-  vtkSetClampMacro(Layer, int, 0, 7);
-  vtkGetMacro(Layer, int);
-  ///@}
-
-  ///@{
-  /**
-   * Rays from X, from each hit of a path and shadow rays start
-   * RelativeOffset * (scene diagonal + |point - scene centre|) off their
-   * surface; dimensionless, [0, 0.01]; default 1e-5.
-   *
-   * @range 0..0.01, clamped
-   * @default 1e-5
-   */
-  vtkDeepGISetClampMacro(RelativeOffset, double, 0.0, 0.01);
-  vtkGetMacro(RelativeOffset, double);
-  ///@}
-
-  ///@{
-  /**
-   * Noise of the last update: mean and maximum over valid pixels of the
-   * largest RGB standard error of E (0 when no pixel was valid).
-   */
-  double GetMeanStandardError();
-  double GetMaximumStandardError();
-  ///@}
-
-  ///@{
-  /**
-   * Statistics of the last update: valid pixels, rays that left X (not
-   * counting continuation and shadow rays), wall time in seconds (BVH build
-   * included).
-   */
-  vtkIdType GetNumberOfValidPixels();
-  vtkIdType GetNumberOfRays();
-  double GetComputeTime();
-  ///@}
-
-  ///@{
-  /**
-   * @deprecated SetScene() is SetSceneData(), GetScene() the data on input
-   * port 1 (removed in the next release).
-   */
-  void SetScene(vtkPolyData* scene) { this->SetSceneData(scene); }
-  vtkPolyData* GetScene();
-  ///@}
-
-  /**
-   * @deprecated Compute(capture) is SetInputData(capture) and Update();
-   * returns whether the update succeeded (removed in the next release).
-   */
-  bool Compute(vtkImageData* capture);
-
 protected:
   vtkDeepGIReferenceIrradiance();
   ~vtkDeepGIReferenceIrradiance() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  std::unique_ptr<vtkDeepGIRayTracer::Estimator> NewEstimator() override;
 
   int Quantity;
   bool Shadows;
@@ -467,12 +372,6 @@ protected:
   char* EmissionArrayName;
   int NumberOfBounces;
   double BounceDamping;
-  int SamplesPerPixel;
-  unsigned int Seed;
-  int Layer;
-  double RelativeOffset;
-
-  vtkNew<vtkDeepGIRayTracer> Tracer;
 
 private:
   vtkDeepGIReferenceIrradiance(const vtkDeepGIReferenceIrradiance&) = delete;

@@ -2,15 +2,11 @@
 #include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIRayTracer.h"
 
-#include "vtkExecutive.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
-#include "vtkInformation.h"
-#include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkPolyData.h"
 
 #include <algorithm>
 #include <cmath>
@@ -44,53 +40,14 @@ vtkDeepGIReferenceObscurance::vtkDeepGIReferenceObscurance()
   : Radius(1.0)
   , Bias(0.0)
   , Epsilon(0.0)
-  , SamplesPerPixel(256)
-  , Seed(0)
-  , Layer(0)
-  , RelativeOffset(1e-5)
 {
-  this->SetNumberOfInputPorts(2);
 }
 
 vtkDeepGIReferenceObscurance::~vtkDeepGIReferenceObscurance() = default;
 
-//------------------------------------------------------------------------------
-void vtkDeepGIReferenceObscurance::SetSceneData(vtkPolyData* scene)
+std::unique_ptr<vtkDeepGIRayTracer::Estimator> vtkDeepGIReferenceObscurance::NewEstimator()
 {
-  this->SetInputData(1, scene);
-}
-
-void vtkDeepGIReferenceObscurance::SetSceneConnection(vtkAlgorithmOutput* output)
-{
-  this->SetInputConnection(1, output);
-}
-
-vtkPolyData* vtkDeepGIReferenceObscurance::GetScene()
-{
-  return vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0));
-}
-
-bool vtkDeepGIReferenceObscurance::Compute(vtkImageData* capture)
-{
-  this->SetInputData(0, capture);
-  return this->GetExecutive()->Update() != 0 && this->GetOutput()->GetNumberOfPoints() > 0;
-}
-
-//------------------------------------------------------------------------------
-int vtkDeepGIReferenceObscurance::FillInputPortInformation(int port, vtkInformation* info)
-{
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkImageData" : "vtkPolyData");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkDeepGIReferenceObscurance::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  Sampler sampler(*this);
-  return this->Tracer->Run(vtkImageData::GetData(inputVector[0]),
-    vtkPolyData::GetData(inputVector[1]), { this->Layer, this->Seed, this->RelativeOffset },
-    sampler, vtkImageData::GetData(outputVector), this);
+  return std::unique_ptr<vtkDeepGIRayTracer::Estimator>(new Sampler(*this));
 }
 
 //------------------------------------------------------------------------------
@@ -179,42 +136,10 @@ void vtkDeepGIReferenceObscurance::Sampler::FinishPixel(
 }
 
 //------------------------------------------------------------------------------
-double vtkDeepGIReferenceObscurance::GetMeanStandardError()
-{
-  return this->Tracer->GetMeanStandardError();
-}
-
-double vtkDeepGIReferenceObscurance::GetMaximumStandardError()
-{
-  return this->Tracer->GetMaximumStandardError();
-}
-
-vtkIdType vtkDeepGIReferenceObscurance::GetNumberOfValidPixels()
-{
-  return this->Tracer->GetNumberOfValidPixels();
-}
-
-vtkIdType vtkDeepGIReferenceObscurance::GetNumberOfRays()
-{
-  return this->Tracer->GetNumberOfRays();
-}
-
-double vtkDeepGIReferenceObscurance::GetComputeTime()
-{
-  return this->Tracer->GetComputeTime();
-}
-
-//------------------------------------------------------------------------------
 void vtkDeepGIReferenceObscurance::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Radius: " << this->Radius << "\n";
   os << indent << "Bias: " << this->Bias << "\n";
   os << indent << "Epsilon: " << this->Epsilon << "\n";
-  os << indent << "SamplesPerPixel: " << this->SamplesPerPixel << "\n";
-  os << indent << "Seed: " << this->Seed << "\n";
-  os << indent << "Layer: " << this->Layer << "\n";
-  os << indent << "RelativeOffset: " << this->RelativeOffset << "\n";
-  os << indent << "Tracer:\n";
-  this->Tracer->PrintSelf(os, indent.GetNextIndent());
 }

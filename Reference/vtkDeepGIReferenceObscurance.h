@@ -64,15 +64,13 @@
  *
  * ## Pipeline and implementation
  *
- * A vtkImageAlgorithm: input port 0 is the capture (vtkImageData), input
- * port 1 the scene (vtkPolyData: all its polygons, triangulated on the fly;
- * lines and vertices ignored; world space, the coordinates the capture was
- * rendered with; SetSceneData/SetSceneConnection). A vtkDeepGIRayTracer
- * does the tracing: it rebuilds the Embree scene only when the vtkPolyData
- * changed, reconstructs X and n per pixel, loops over rows with vtkSMPTools,
- * draws each cosine-weighted direction from a counter-based hash of (Seed,
- * pixel index, sample index, dimension), so that results do not depend on
- * the number of threads or on scheduling, and keeps the statistics.
+ * A vtkDeepGIReferenceSampledEstimator: the capture on input port 0, the
+ * scene on port 1, Layer, RelativeOffset, SamplesPerPixel, Seed and the
+ * statistics are those of vtkDeepGIReferenceEstimator and
+ * vtkDeepGIReferenceSampledEstimator. Its vtkDeepGIRayTracer draws each
+ * cosine-weighted direction from a counter-based hash of (Seed, pixel
+ * index, sample index, dimension), so that results do not depend on the
+ * number of threads or on scheduling.
  *
  * The output (after Update()) has the capture's grid and the point arrays
  * "AmbientVisibility" (float, AV in [0, 1]; -1 where the layer has no
@@ -81,8 +79,7 @@
  * A; 0 where empty) and "Valid" (unsigned char). The update fails with an
  * error of the estimator and an empty output (no points) when the capture
  * has no such layer arrays or matrices, the scene no polygons, or the
- * radius is invalid; a missing input is the executive's error, as for any
- * VTK algorithm.
+ * radius is invalid.
  *
  * Scale robustness: the triangles are stored relative to the centre of
  * their bounds (so float precision follows the scene's size, not its
@@ -102,36 +99,23 @@
  * double noise = reference->GetMeanStandardError();
  * @endcode
  *
- * @sa vtkDeepGIRayTracer vtkDeepGIReferenceIrradiance
+ * @sa vtkDeepGIReferenceSampledEstimator vtkDeepGIRayTracer vtkDeepGIReferenceIrradiance
  */
 
 #ifndef vtkDeepGIReferenceObscurance_h
 #define vtkDeepGIReferenceObscurance_h
 
 #include "vtkDeepGIReferenceModule.h" // for export macro
-#include "vtkDeepGISetGet.h"          // for vtkDeepGISetClampMacro
-#include "vtkImageAlgorithm.h"
-#include "vtkNew.h" // for the tracer
+#include "vtkDeepGIReferenceSampledEstimator.h"
+#include "vtkDeepGISetGet.h" // for vtkDeepGISetClampMacro
 
-class vtkAlgorithmOutput;
-class vtkDeepGIRayTracer;
-class vtkPolyData;
-
-class VTKDEEPGIREFERENCE_EXPORT vtkDeepGIReferenceObscurance : public vtkImageAlgorithm
+class VTKDEEPGIREFERENCE_EXPORT vtkDeepGIReferenceObscurance
+  : public vtkDeepGIReferenceSampledEstimator
 {
 public:
   static vtkDeepGIReferenceObscurance* New();
-  vtkTypeMacro(vtkDeepGIReferenceObscurance, vtkImageAlgorithm);
+  vtkTypeMacro(vtkDeepGIReferenceObscurance, vtkDeepGIReferenceSampledEstimator);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /**
-   * The scene on input port 1 (see the class description). Without one the
-   * update fails with an error.
-   */
-  void SetSceneData(vtkPolyData* scene);
-  void SetSceneConnection(vtkAlgorithmOutput* output);
-  ///@}
 
   ///@{
   /**
@@ -174,107 +158,15 @@ public:
   vtkGetMacro(Epsilon, double);
   ///@}
 
-  ///@{
-  /**
-   * Monte Carlo samples (rays) per pixel, [1, 1048576]; default 256.
-   * The noise (standard error) falls as 1 / sqrt(SamplesPerPixel).
-   *
-   * @unit rays
-   * @range 1..1048576, clamped
-   * @default 256
-   */
-  vtkSetClampMacro(SamplesPerPixel, int, 1, 1048576);
-  vtkGetMacro(SamplesPerPixel, int);
-  ///@}
-
-  ///@{
-  /**
-   * Seed of the counter-based random sequence (any value; default 0). The
-   * same seed, capture and scene give bit-identical results for any number
-   * of threads.
-   *
-   * @range any
-   * @default 0
-   */
-  vtkSetMacro(Seed, unsigned int);
-  vtkGetMacro(Seed, unsigned int);
-  ///@}
-
-  ///@{
-  /**
-   * Which layer of the capture provides X and n, [0, 7]; default 0.
-   *
-   * @range 0..7, clamped
-   * @default 0
-   */
-  vtkSetClampMacro(Layer, int, 0, 7);
-  vtkGetMacro(Layer, int);
-  ///@}
-
-  ///@{
-  /**
-   * Ray origins are moved along n by RelativeOffset * (scene diagonal +
-   * |X - scene centre|) to avoid self-intersection; dimensionless,
-   * [0, 0.01]; default 1e-5.
-   *
-   * @range 0..0.01, clamped
-   * @default 1e-5
-   */
-  vtkDeepGISetClampMacro(RelativeOffset, double, 0.0, 0.01);
-  vtkGetMacro(RelativeOffset, double);
-  ///@}
-
-  ///@{
-  /**
-   * Noise of the last update: mean and maximum over valid pixels of the
-   * per-pixel standard error (0 when no pixel was valid).
-   */
-  double GetMeanStandardError();
-  double GetMaximumStandardError();
-  ///@}
-
-  ///@{
-  /**
-   * Statistics of the last update: valid pixels, rays traced, wall time in
-   * seconds (BVH build included).
-   */
-  vtkIdType GetNumberOfValidPixels();
-  vtkIdType GetNumberOfRays();
-  double GetComputeTime();
-  ///@}
-
-  ///@{
-  /**
-   * @deprecated SetScene() is SetSceneData(), GetScene() the data on input
-   * port 1 (removed in the next release).
-   */
-  void SetScene(vtkPolyData* scene) { this->SetSceneData(scene); }
-  vtkPolyData* GetScene();
-  ///@}
-
-  /**
-   * @deprecated Compute(capture) is SetInputData(capture) and Update();
-   * returns whether the update succeeded (removed in the next release).
-   */
-  bool Compute(vtkImageData* capture);
-
 protected:
   vtkDeepGIReferenceObscurance();
   ~vtkDeepGIReferenceObscurance() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  std::unique_ptr<vtkDeepGIRayTracer::Estimator> NewEstimator() override;
 
   double Radius;
   double Bias;
   double Epsilon;
-  int SamplesPerPixel;
-  unsigned int Seed;
-  int Layer;
-  double RelativeOffset;
-
-  vtkNew<vtkDeepGIRayTracer> Tracer;
 
 private:
   vtkDeepGIReferenceObscurance(const vtkDeepGIReferenceObscurance&) = delete;

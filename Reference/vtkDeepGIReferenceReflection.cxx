@@ -2,15 +2,11 @@
 #include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIRayTracer.h"
 
-#include "vtkExecutive.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
-#include "vtkInformation.h"
-#include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -52,51 +48,15 @@ struct vtkDeepGIReferenceReflection::Sampler : public vtkDeepGIRayTracer::Estima
 //------------------------------------------------------------------------------
 vtkDeepGIReferenceReflection::vtkDeepGIReferenceReflection()
   : MaximumDistance(std::numeric_limits<double>::infinity())
-  , Layer(0)
-  , RelativeOffset(1e-5)
 {
-  this->SetNumberOfInputPorts(2);
 }
 
 vtkDeepGIReferenceReflection::~vtkDeepGIReferenceReflection() = default;
 
-//------------------------------------------------------------------------------
-void vtkDeepGIReferenceReflection::SetSceneData(vtkPolyData* scene)
+// The mirror ray needs no random numbers: the base's seed 0 is irrelevant.
+std::unique_ptr<vtkDeepGIRayTracer::Estimator> vtkDeepGIReferenceReflection::NewEstimator()
 {
-  this->SetInputData(1, scene);
-}
-
-void vtkDeepGIReferenceReflection::SetSceneConnection(vtkAlgorithmOutput* output)
-{
-  this->SetInputConnection(1, output);
-}
-
-vtkPolyData* vtkDeepGIReferenceReflection::GetScene()
-{
-  return vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0));
-}
-
-bool vtkDeepGIReferenceReflection::Compute(vtkImageData* capture)
-{
-  this->SetInputData(0, capture);
-  return this->GetExecutive()->Update() != 0 && this->GetOutput()->GetNumberOfPoints() > 0;
-}
-
-//------------------------------------------------------------------------------
-int vtkDeepGIReferenceReflection::FillInputPortInformation(int port, vtkInformation* info)
-{
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkImageData" : "vtkPolyData");
-  return 1;
-}
-
-int vtkDeepGIReferenceReflection::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  Sampler sampler(*this);
-  // The mirror ray needs no random numbers: the seed is irrelevant.
-  return this->Tracer->Run(vtkImageData::GetData(inputVector[0]),
-    vtkPolyData::GetData(inputVector[1]), { this->Layer, 0, this->RelativeOffset }, sampler,
-    vtkImageData::GetData(outputVector), this);
+  return std::unique_ptr<vtkDeepGIRayTracer::Estimator>(new Sampler(*this));
 }
 
 //------------------------------------------------------------------------------
@@ -186,28 +146,8 @@ void vtkDeepGIReferenceReflection::Sampler::FinishPixel(
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkDeepGIReferenceReflection::GetNumberOfValidPixels()
-{
-  return this->Tracer->GetNumberOfValidPixels();
-}
-
-vtkIdType vtkDeepGIReferenceReflection::GetNumberOfRays()
-{
-  return this->Tracer->GetNumberOfRays();
-}
-
-double vtkDeepGIReferenceReflection::GetComputeTime()
-{
-  return this->Tracer->GetComputeTime();
-}
-
-//------------------------------------------------------------------------------
 void vtkDeepGIReferenceReflection::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "MaximumDistance: " << this->MaximumDistance << "\n";
-  os << indent << "Layer: " << this->Layer << "\n";
-  os << indent << "RelativeOffset: " << this->RelativeOffset << "\n";
-  os << indent << "Tracer:\n";
-  this->Tracer->PrintSelf(os, indent.GetNextIndent());
 }

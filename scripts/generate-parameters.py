@@ -13,7 +13,11 @@ table built from a header:
 
 "settings" lists the header's settings (name, type, unit, range, default,
 meaning), "state" its read-only state (name, type, unit, meaning), in the
-order the header declares them.
+order the header declares them. With " with bases" after the header
+({{settings Reference/vtkDeepGIReferenceObscurance.h with bases}}) the table
+goes on with the entries of the class's base classes in the sources, the
+nearest base first: the class's whole set of parameters, for a class whose
+bases have no section of their own.
 
 The header form. A setting or a read-only value is a doc comment
 (/** ... */ or a run of ///) followed by its declarations; the comment's
@@ -67,7 +71,7 @@ OUTPUT = os.path.join(REPO, "Documentation", "parameters.md")
 
 TAGS = ("unit", "range", "default", "type", "readonly", "label")
 TAG_LINE = re.compile(r"^@(%s)\b\s*(.*)$" % "|".join(TAGS))
-DIRECTIVE = re.compile(r"^\{\{(settings|state) (\S+\.h)\}\}$")
+DIRECTIVE = re.compile(r"^\{\{(settings|state) (\S+\.h)( with bases)?\}\}$")
 CLASS = re.compile(r"^class\s+(?:\w+_EXPORT\s+)?(\w+)\s*(?::|$)", re.M)
 COMMENT = re.compile(r"/\*\*(.*?)\*/|((?:^[ \t]*///(?!@)[^\n]*\n)+)", re.S | re.M)
 
@@ -154,6 +158,27 @@ def entries(header):
     return found
 
 
+def base_headers(header):
+    """The headers (repository-relative) of the base classes of the class of
+    `header` that are in the sources, the nearest first."""
+    found = []
+    name = class_name(header)
+    while True:
+        with open(os.path.join(REPO, header)) as f:
+            base = re.search(r"class\s+\w+\s+%s\s*:\s*public\s+(\w+)" % name, f.read())
+        header = base and class_header(base.group(1))
+        if not header:
+            return found
+        header = os.path.relpath(header, REPO)
+        name = base.group(1)
+        found.append(header)
+
+
+def covered(header, with_bases):
+    """The headers a directive's table is built from."""
+    return [header] + (base_headers(header) if with_bases else [])
+
+
 def class_name(header):
     with open(os.path.join(REPO, header)) as f:
         match = CLASS.search(f.read())
@@ -170,19 +195,19 @@ def code(name):
     return name if name.startswith("`") else "`%s`" % name
 
 
-def settings_table(header):
+def settings_table(headers):
     rows = ["| name | type | unit | range | default | meaning |",
             "|------|------|------|-------|---------|---------|"]
-    for e in entries(header):
+    for e in [e for header in headers for e in entries(header)]:
         if e["setting"]:
             rows.append("| %s | %s | %s | %s | %s | %s |" % tuple(cell(x) for x in (
                 code(e["name"]), e["type"], e["unit"], e["range"], e["default"], e["meaning"])))
     return rows
 
 
-def state_table(header):
+def state_table(headers):
     rows = ["| name | type | unit | meaning |", "|------|------|------|---------|"]
-    for e in entries(header):
+    for e in [e for header in headers for e in entries(header)]:
         if not e["setting"]:
             rows.append("| %s | %s | %s | %s |" % tuple(cell(x) for x in (
                 code(e["name"]), e["type"], e["unit"], e["meaning"])))
@@ -190,12 +215,13 @@ def state_table(header):
 
 
 def directives():
-    """(kind, header) of each directive of the template, in order."""
+    """(kind, headers) of each directive of the template, in order: the
+    directive's header, then those of its bases when it names them."""
     with open(TEMPLATE) as f:
         for line in f:
             match = DIRECTIVE.match(line.strip())
             if match:
-                yield match.group(1), match.group(2)
+                yield match.group(1), covered(match.group(2), match.group(3))
 
 
 def generate():
@@ -206,19 +232,19 @@ def generate():
             if not match:
                 out.append(line)
             elif match.group(1) == "settings":
-                out.extend(settings_table(match.group(2)))
+                out.extend(settings_table(covered(match.group(2), match.group(3))))
             else:
-                out.extend(state_table(match.group(2)))
+                out.extend(state_table(covered(match.group(2), match.group(3))))
     return "\n".join(out)
 
 
 def defaults():
     """{class: {getter name: documented default}} of every covered setting."""
     result = {}
-    for kind, header in directives():
+    for kind, headers in directives():
         if kind == "settings":
-            values = result.setdefault(class_name(header), {})
-            for e in entries(header):
+            values = result.setdefault(class_name(headers[0]), {})
+            for e in [e for header in headers for e in entries(header)]:
                 if e["setting"]:
                     values[e["getter"]] = e["default"]
     return result
@@ -232,7 +258,7 @@ def undocumented():
     """(header, name) of each macro-declared setting of a covered header
     that has no tagged comment."""
     missing = []
-    for kind, header in directives():
+    for kind, header in sorted({(k, h) for k, headers in directives() for h in headers}):
         if kind == "settings":
             with open(os.path.join(REPO, header)) as f:
                 declared = set(SETTING_MACRO.findall(f.read()))
