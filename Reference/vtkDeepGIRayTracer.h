@@ -4,10 +4,11 @@
  *          Embree on a vtkPolyData, the pixels of one capture layer, the
  *          random numbers and the per-pixel statistics
  *
- * vtkDeepGIReferenceObscurance, vtkDeepGIReferenceIrradiance and
- * vtkDeepGIReferenceReflection each hold one tracer and hand it an
- * Estimator: what one sample of one pixel is worth and where the pixel's
- * result goes. Run() does the rest:
+ * vtkDeepGIReferenceEstimator, the base of vtkDeepGIReferenceObscurance,
+ * vtkDeepGIReferenceIrradiance and vtkDeepGIReferenceReflection, holds one
+ * tracer and hands it the Estimator its subclass makes: what one sample of
+ * one pixel is worth and where the pixel's result goes. Run() does the
+ * rest:
  *
  * - reads layer `Layer` of the capture (point arrays Depth_j, Normal_j and
  *   optional Valid_j, field data ViewMatrix and ProjectionMatrix, named in
@@ -36,8 +37,8 @@
  * are thread-safe and valid from the estimator's Prepare() to the end of
  * Run(). The class is C++ only (not wrapped): its API passes structs.
  *
- * @sa vtkDeepGIReferenceObscurance vtkDeepGIReferenceIrradiance
- *     vtkDeepGIReferenceReflection
+ * @sa vtkDeepGIReferenceEstimator vtkDeepGIReferenceObscurance
+ *     vtkDeepGIReferenceIrradiance vtkDeepGIReferenceReflection
  */
 
 #ifndef vtkDeepGIRayTracer_h
