@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # benchmark-image.sh [--heldout] [options]: install and build what is needed
-# (scripts/setup.sh), then run Examples/Python/deepgi_benchmark_image.py (the
+# (scripts/setup.sh), then run Apps/Benchmarks/deepgi_benchmark_image.py (the
 # final image of plain VTK, vtkSSAOPass and vtkDeepGIPass against the
 # ray-traced reference of the pass's lighting model, side by side in one run)
 # under a private Xvfb when there is no DISPLAY. Options go to the script
@@ -29,4 +29,4 @@ for arg in "$@"; do
 done
 export PYTHONPATH="$build/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}"
 exec bash "$repo/scripts/with-display.sh" /usr/bin/python3 \
-  "$repo/Examples/Python/deepgi_benchmark_image.py" "${args[@]}"
+  "$repo/Apps/Benchmarks/deepgi_benchmark_image.py" "${args[@]}"

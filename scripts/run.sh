@@ -13,7 +13,7 @@ bash "$repo/scripts/setup.sh"
 
 exe="$build/bin/deepgi-render"
 if [[ ! -x "$exe" ]]; then
-  echo "run.sh: $exe was not built (CMake target deepgi-render, Examples/Cxx)" >&2
+  echo "run.sh: $exe was not built (CMake target deepgi-render, Apps/Render)" >&2
   exit 1
 fi
 

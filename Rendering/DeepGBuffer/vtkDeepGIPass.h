@@ -94,7 +94,7 @@
  * blur is widened by STILL_BLUR_SCALE meanwhile. Converge fires
  * vtkCommand::ProgressEvent (call
  * data: double progress in [0, 1]) after each. See Documentation/gi.md,
- * Documentation/performance.md and Examples/Python/deepgi_convergence.py.
+ * Documentation/performance.md and Apps/Benchmarks/deepgi_convergence.py.
  *
  * Converge stops between two frames when asked to, the way VTK's
  * rendering is aborted: the render window's AbortRender flag set (by a

@@ -25,7 +25,7 @@ list(JOIN names "|" alternatives)
 set(literal "\"(${alternatives})(_[0-9]*)?\"")
 
 set(files)
-foreach (folder IN ITEMS Core Scenes IO Reference Rendering Examples Testing ParaView)
+foreach (folder IN ITEMS Core Scenes IO Reference Rendering Apps Examples Testing ParaView)
   file(GLOB_RECURSE found "${SOURCE}/${folder}/*.h" "${SOURCE}/${folder}/*.cxx")
   list(APPEND files ${found})
 endforeach ()

@@ -2,7 +2,7 @@
 # file under the source folders is checked with clang-format --dry-run.
 #   cmake -DSOURCE=<source tree> -DCLANG_FORMAT=<clang-format> -P CheckFormat.cmake
 set(files)
-foreach (folder IN ITEMS Core Scenes IO Reference Rendering ParaView Examples Testing)
+foreach (folder IN ITEMS Core Scenes IO Reference Rendering ParaView Apps Examples Testing)
   file(GLOB_RECURSE found "${SOURCE}/${folder}/*.h" "${SOURCE}/${folder}/*.cxx")
   list(APPEND files ${found})
 endforeach ()

@@ -1,4 +1,4 @@
-"""Test of Examples/Python/deepgi_benchmark_image.py: runs it on headsq at
+"""Test of Apps/Benchmarks/deepgi_benchmark_image.py: runs it on headsq at
 64x48 with 4 rays per pixel, one bounce, one frame and one round, then
 checks that benchmark-image.md holds a row for every method with an RMSE in
 [0, 1] and a positive frame time, that the scene's strip was written, and

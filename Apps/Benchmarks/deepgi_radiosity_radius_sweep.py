@@ -2,7 +2,7 @@
 radius and damping change (Documentation/lighting-model.md).
 
     PYTHONPATH=<build>/lib/python3/dist-packages /usr/bin/python3 \\
-        Examples/Python/deepgi_radiosity_radius_sweep.py DATA HELDOUT \\
+        Apps/Benchmarks/deepgi_radiosity_radius_sweep.py DATA HELDOUT \\
         [--default-actors] [FRACTION:DAMPING ...]
 
 DATA is the project's Testing/Data, HELDOUT the folder of

@@ -1,4 +1,4 @@
-"""Test of Examples/Python/deepgi_benchmark_frame.py: runs it on bunny-floor
+"""Test of Apps/Benchmarks/deepgi_benchmark_frame.py: runs it on bunny-floor
 at 64x48 with one frame and one round, then checks that benchmark-frame.md
 and benchmark-frame.csv were written and hold every method: a row of the
 frame table each, a positive frame time, textures and a "G-buffer: layers"

@@ -2,7 +2,7 @@
 vtkDeepGIPass side by side, on built-in scenes and on the user's own files.
 
     PYTHONPATH=<build>/lib/python3/dist-packages /usr/bin/python3 \\
-        Examples/Python/deepgi_benchmark_image.py [options]
+        Apps/Benchmarks/deepgi_benchmark_image.py [options]
 
 (scripts/benchmark-image.sh installs, builds and runs it.) For every scene,
 at one still camera:

@@ -3,7 +3,7 @@
 Each deep pass's frame is also split into its stages.
 
     PYTHONPATH=<build>/lib/python3/dist-packages /usr/bin/python3 \\
-        Examples/Python/deepgi_benchmark_frame.py --data Testing/Data [options]
+        Apps/Benchmarks/deepgi_benchmark_frame.py --data Testing/Data [options]
 
 (scripts/benchmark-frame.sh installs, builds and runs it;
 Documentation/performance.md explains the results.)

@@ -1,7 +1,7 @@
 """How many frames vtkDeepGIPass needs to converge a still image.
 
     PYTHONPATH=<build>/lib/python3/dist-packages /usr/bin/python3 \
-        Examples/Python/deepgi_convergence.py
+        Apps/Benchmarks/deepgi_convergence.py
 
 Renders the demo scene (20,000 triangles, 320 x 240, default view) for 40
 frames per preset at a fixed camera and prints, as Markdown table rows, the

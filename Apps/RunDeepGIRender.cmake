@@ -1,4 +1,4 @@
-# Runs a program of this directory and checks its exit status, that stderr
+# Runs one of the tools (Apps/) and checks its exit status, that stderr
 # carries a "PROGRAM: ..." message when it fails, and (optionally) the files
 # it writes. PROGRAM defaults to deepgi-render:
 #   cmake -DEXE=... -DARGS=a;b;c -DEXPECT=2 [-DPROGRAM=name]
