@@ -71,6 +71,7 @@ struct vtkDeepAmbientObscuranceRendererState
   int GuardBand = 0;
   int ShadedRegion[4] = { 0, 0, 0, 0 }; // vtkDeepScreenSpace::ShadedRegion
   bool HasFrame = false;
+  vtkMTimeType SettingsTime = 0; // the pass's modification time in that frame
   double Radius = 0.0;
   int NumberOfSamples = 0;
   // Distance pyramid: GL_TEXTURE_2D_ARRAY R32F, MipLevels levels (0 when
@@ -487,10 +488,20 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
   gbuffer->DeactivateTexture(frame.Renderer, vtkDeepGBufferPass::NORMAL);
   gbuffer->DeactivateTexture(frame.Renderer, vtkDeepGBufferPass::DEPTH);
   state.HasFrame = true;
+  state.SettingsTime = this->GetMTime();
   state.Radius = radius;
   state.NumberOfSamples = this->NumberOfSamples;
   vtkOpenGLCheckErrorMacro("failed after the ambient obscurance");
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepAmbientObscurancePass::CanReuseAmbientVisibility(vtkRenderer* renderer)
+{
+  const vtkDeepAmbientObscuranceRendererState* state =
+    renderer ? this->Internals->States.Find(renderer) : nullptr;
+  return state && !state->Temporal && this->TemporalAlpha == 0.0 &&
+    state->SettingsTime == this->GetMTime();
 }
 
 //------------------------------------------------------------------------------

@@ -532,6 +532,16 @@ public:
   bool UpdateAmbientVisibility(const vtkRenderState* s);
 
   /**
+   * Whether the ambient visibility of `renderer`'s last frame is this
+   * frame's too, so that UpdateAmbientVisibility can be skipped, when the
+   * G-buffer kept that frame's layers (vtkDeepGBufferPass::ReuseLayers):
+   * it exists, was computed with this pass's current settings (its
+   * modification time) and without temporal accumulation, whose rotation
+   * changes every frame.
+   */
+  bool CanReuseAmbientVisibility(vtkRenderer* renderer);
+
+  /**
    * Whether a visible actor of `renderer` with opaque geometry has an
    * ambient term (Ambient > 0 and a non-black AmbientColor), i.e. whether
    * the G-buffer's AMBIENT can be non-zero. False for null.

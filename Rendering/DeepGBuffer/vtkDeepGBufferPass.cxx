@@ -257,8 +257,11 @@ struct vtkDeepGBufferRendererState
   std::map<vtkProp*, PropHistory> Props;
   std::map<vtkProp*, vtkWeakPointer<vtkProp>> PropLiveness;
 
-  // What the last frame rendered, for capture and display.
+  // What the last frame rendered, for capture and display, and what it was
+  // rendered with, for ReuseLayers.
   int RenderedLayers = 0;
+  vtkMTimeType RenderedSettingsTime = 0;
+  int RenderedWindowSize[2] = { 0, 0 };
   double ClippingRange[2] = { 0.0, 1.0 };
   double MinimumSeparation = 0.0;
   int Oracle = vtkDeepGBufferPass::DEPTH_PEEL;
@@ -306,6 +309,7 @@ struct vtkDeepGBufferRendererState
     }
     this->Width = this->Height = this->Slots = this->HistoryLayers = 0;
     this->HistoryValid = false;
+    this->RenderedSettingsTime = 0;
   }
 };
 
@@ -1285,6 +1289,34 @@ bool vtkDeepGBufferPass::RenderLayers(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
+bool vtkDeepGBufferPass::ReuseLayers(const vtkRenderState* s)
+{
+  vtkInternals& in = *this->Internals;
+  vtkRenderer* renderer = s->GetRenderer();
+  auto it = in.States.find(renderer);
+  if (it == in.States.end() || !in.Supported || this->LayerExchange || renderer->GetSelector())
+  {
+    return false;
+  }
+  const vtkDeepGBufferRendererState& state = *it->second;
+  int size[2] = { 0, 0 };
+  s->GetWindowSize(size);
+  if (!state.LayeredFramebuffer || state.RenderedSettingsTime != this->GetMTime() ||
+    size[0] != state.RenderedWindowSize[0] || size[1] != state.RenderedWindowSize[1])
+  {
+    return false;
+  }
+  // What RecordFrame reported for those layers (another renderer may have
+  // been drawn since).
+  this->EffectiveGuardBand = state.GuardBand;
+  this->EffectiveMinimumSeparation = state.MinimumSeparation;
+  this->EffectiveNumberOfLayers = state.RenderedLayers;
+  this->EffectiveOracle = state.Oracle;
+  this->LastGeometryPassCount = 0;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkDeepGBufferPass::BeginLayerFrame(const vtkRenderState* s, vtkLayerFrame& frame)
 {
   vtkInternals& in = *this->Internals;
@@ -1759,6 +1791,9 @@ void vtkDeepGBufferPass::RecordFrame(const vtkLayerFrame& frame)
   state.GuardBand = frame.Guard;
   state.MinimumSeparation = frame.MinimumSeparation;
   state.Oracle = frame.RoutedDone ? frame.Oracle : DEPTH_PEEL;
+  state.RenderedSettingsTime = this->GetMTime();
+  state.RenderedWindowSize[0] = frame.Width - 2 * frame.Guard;
+  state.RenderedWindowSize[1] = frame.Height - 2 * frame.Guard;
   this->EffectiveGuardBand = frame.Guard;
   this->EffectiveMinimumSeparation = frame.MinimumSeparation;
   this->EffectiveNumberOfLayers = frame.Layers;

@@ -402,6 +402,18 @@ public:
   bool RenderLayers(const vtkRenderState* s);
 
   /**
+   * Keeps the layers of the last frame rendered for the renderer of `s` as
+   * this frame's, instead of RenderLayers, when they were rendered at this
+   * window size with this pass's current settings (its modification time).
+   * The caller vouches for the rest of what the layers depend on: camera,
+   * props and lights unchanged since that frame (vtkDeepGIPass::Converge
+   * checks them). Returns false, touching nothing, when the layers cannot be
+   * kept: none yet, released, another size, changed settings, picking, or
+   * composited layers (SetLayerExchange).
+   */
+  bool ReuseLayers(const vtkRenderState* s);
+
+  /**
    * Draws the displayed quantity (layer 0 radiance by default) and that
    * layer's depth into the framebuffer and viewport bound for the renderer.
    */

@@ -10,6 +10,8 @@
 #include "vtkDeepGBufferPass.h"
 #include "vtkDeepRadiosityPass.h"
 #include "vtkDeepReflectionPass.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkMapper.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -175,6 +177,23 @@ bool SameScene(const SceneKey& a, const SceneKey& b)
   }
   return a.back() == b.back();
 }
+
+// What the layers and the obscurance of a still frame depend on besides
+// the scene signature and the passes' own settings (which vtkDeepGBufferPass
+// and vtkDeepAmbientObscurancePass check): the renderer (ambient,
+// background, two-sided lighting, ...) and its lights.
+vtkMTimeType LightingTime(vtkRenderer* renderer)
+{
+  vtkLightCollection* lights = renderer->GetLights();
+  vtkMTimeType time = std::max(renderer->GetMTime(), lights->GetMTime());
+  vtkCollectionSimpleIterator it;
+  lights->InitTraversal(it);
+  while (vtkLight* light = lights->GetNextLight(it))
+  {
+    time = std::max(time, light->GetMTime());
+  }
+  return time;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -193,6 +212,15 @@ struct vtkDeepGIRendererState
   // oracles place newly visible geometry in layer 1 one frame late.
   bool Settling = true;
   bool Reflects = false;
+  // The inputs of the last frame, for Converge's reuse of the layers:
+  // how many frames in a row had them, whether the last one has layers,
+  // and whether this frame may keep them (ReuseLayers).
+  SceneKey StillScene{};
+  vtkMTimeType StillLighting = 0;
+  int StillFrames = 0;
+  bool StillValid = false;
+  bool ReuseLayers = false;
+  bool ObscuranceOfLayers = false; // the obscurance is of the current layers
 
   void Release()
   {
@@ -207,6 +235,8 @@ struct vtkDeepGIRendererState
     this->FramesAtOneLayer = 0;
     this->Scene = SceneKey{};
     this->Settling = true;
+    this->StillValid = false;
+    this->StillFrames = 0;
   }
 };
 
@@ -300,6 +330,8 @@ void vtkDeepGIPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LayerProbeInterval: " << this->LayerProbeInterval << "\n";
   os << indent << "LastFrameEffects: " << GetEffectsAsString(this->LastFrameEffects) << "\n";
   os << indent << "LastFrameNumberOfLayers: " << this->LastFrameNumberOfLayers << "\n";
+  os << indent << "ConvergeReusesLayers: " << this->ConvergeReusesLayers << "\n";
+  os << indent << "LastFrameReusedLayers: " << this->LastFrameReusedLayers << "\n";
   os << indent << "LastLayerCoverage: " << this->LastLayerCoverage << "\n";
   os << indent << "LastConvergenceChange: " << this->LastConvergenceChange << "\n";
   os << indent << "LastConvergenceReached: " << this->LastConvergenceReached << "\n";
@@ -751,6 +783,7 @@ void vtkDeepGIPass::Render(const vtkRenderState* s)
     // this pass touched.
     this->LastFrameEffects = 0;
     this->LastFrameNumberOfLayers = 0;
+    this->LastFrameReusedLayers = false;
     in.PlainSteps->Render(s);
     this->NumberOfRenderedProps = in.PlainSteps->GetNumberOfRenderedProps();
     return;
@@ -774,6 +807,7 @@ void vtkDeepGIPass::Render(const vtkRenderState* s)
   const int layers = !deepEffect ? 1 : (this->AdaptiveLayers ? state.Layers : 2);
   this->GBufferPass->SetNumberOfLayers(layers);
   this->GBufferPass->SetWriteReflectivity(in.AnyReflects());
+  this->DecideLayerReuse(renderer, state);
 
   in.Wanted = wanted;
   in.MultiplyVisibility = (wanted & AMBIENT_OBSCURANCE) &&
@@ -783,6 +817,27 @@ void vtkDeepGIPass::Render(const vtkRenderState* s)
   this->GBufferPass->RenderFrame(s, in.OpaqueStep);
   in.Current = nullptr;
   this->NumberOfRenderedProps = this->GBufferPass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+// Converge's frames keep the last frame's layers and obscurance when
+// nothing they depend on changed (camera, props, renderer, lights; the
+// sub-passes check their own settings and the window size): at a still
+// camera only the radiosity's bounce changes from frame to frame. The
+// layers kept are those of a frame whose own previous frame had the same
+// inputs: the single-pass oracles build layer 1 from the previous frame,
+// so the first frame after a change has a provisional layer 1.
+void vtkDeepGIPass::DecideLayerReuse(vtkRenderer* renderer, vtkDeepGIRendererState& state)
+{
+  const SceneKey scene = SceneSignature(renderer);
+  const vtkMTimeType lighting = LightingTime(renderer);
+  const bool same = SameScene(scene, state.StillScene) && lighting == state.StillLighting;
+  state.StillFrames = same ? state.StillFrames + 1 : 0;
+  state.ReuseLayers = this->Internals->Converging && this->ConvergeReusesLayers &&
+    state.StillValid && state.StillFrames >= 2;
+  state.StillScene = scene;
+  state.StillLighting = lighting;
+  state.StillValid = false; // until this frame has layers
 }
 
 //------------------------------------------------------------------------------
@@ -859,7 +914,10 @@ void vtkDeepGIPass::RenderOpaque(const vtkRenderState* s)
   vtkDeepGBufferPass* gbuffer = this->GBufferPass;
   this->LastFrameEffects = 0;
   this->LastFrameNumberOfLayers = 0;
-  if (!gbuffer->RenderLayers(s))
+  vtkDeepGIRendererState* state = in.Current;
+  const bool reused = state && state->ReuseLayers && gbuffer->ReuseLayers(s);
+  this->LastFrameReusedLayers = reused;
+  if (!reused && !gbuffer->RenderLayers(s))
   {
     // The opaque props have been drawn the plain way.
     if (!renderer->GetSelector() && !in.WarnedUnsupported)
@@ -869,11 +927,15 @@ void vtkDeepGIPass::RenderOpaque(const vtkRenderState* s)
     }
     return;
   }
+  if (state)
+  {
+    state->StillValid = true;
+  }
   const int layers = gbuffer->GetEffectiveNumberOfLayers();
   const int secondLayer = layers >= 2 ? SECOND_LAYER : 0;
   this->LastFrameNumberOfLayers = layers;
   vtkOpenGLClearErrorMacro();
-  const int effects = this->UpdateEffects(s);
+  const int effects = this->UpdateEffects(s, reused);
   gbuffer->ResolveToFramebuffer(s);
   this->QueryLayerCoverage(renderer, layers);
   this->LastFrameEffects = effects | secondLayer;
@@ -888,14 +950,22 @@ void vtkDeepGIPass::RenderOpaque(const vtkRenderState* s)
 
 //------------------------------------------------------------------------------
 // Runs the wanted effects over the layers; returns those that produced a
-// result.
-int vtkDeepGIPass::UpdateEffects(const vtkRenderState* s)
+// result. On kept layers the obscurance is kept too where it can be.
+int vtkDeepGIPass::UpdateEffects(const vtkRenderState* s, bool layersReused)
 {
   const int wanted = this->Internals->Wanted;
   int effects = 0;
-  if ((wanted & AMBIENT_OBSCURANCE) && this->AmbientObscurancePass->UpdateAmbientVisibility(s))
+  vtkDeepAmbientObscurancePass* obscurance = this->AmbientObscurancePass;
+  vtkDeepGIRendererState* state = this->Internals->Current;
+  const bool keep = layersReused && state && state->ObscuranceOfLayers &&
+    obscurance->CanReuseAmbientVisibility(s->GetRenderer());
+  if ((wanted & AMBIENT_OBSCURANCE) && (keep || obscurance->UpdateAmbientVisibility(s)))
   {
     effects |= AMBIENT_OBSCURANCE;
+  }
+  if (state)
+  {
+    state->ObscuranceOfLayers = (effects & AMBIENT_OBSCURANCE) != 0;
   }
   if ((wanted & RADIOSITY) && this->RadiosityPass->UpdateRadiosity(s))
   {

@@ -96,6 +96,9 @@
  * data: double progress in [0, 1]) after each. See Documentation/gi.md,
  * Documentation/performance.md and Apps/Benchmarks/deepgi_convergence.py.
  *
+ * Its frames keep the layers and the ambient visibility of the frame before
+ * while nothing they depend on changed (ConvergeReusesLayers).
+ *
  * Converge stops between two frames when asked to, the way VTK's
  * rendering is aborted: the render window's AbortRender flag set (by a
  * ProgressEvent observer, or by an AbortCheckEvent observer of the window,
@@ -330,6 +333,36 @@ public:
   /// @readonly
   vtkGetMacro(LastFrameNumberOfLayers, int);
 
+  ///@{
+  /**
+   * Whether Converge's frames keep the G-buffer's layers and the ambient
+   * visibility of the frame before instead of rendering them again
+   * (default on): at a still camera only the radiosity's bounce changes
+   * between them. A frame renders everything when, in it or in the frame
+   * before, the camera (as in the layer count's probe), the modification
+   * time of a prop, of the prop collection, of the renderer or of a
+   * light, a setting of the G-buffer or the window size changed (e.g. by a
+   * ProgressEvent observer; two frames because the single-pass oracles
+   * build layer 1 from the frame before). The ambient visibility is
+   * computed again when its settings changed or its temporal filter is on.
+   * The images are the same as with it off, which renders everything every
+   * frame; input the modification times do not show (a texture's or a
+   * shader's changing input) needs it off.
+   *
+   * @range on/off
+   * @default on
+   */
+  vtkSetMacro(ConvergeReusesLayers, bool);
+  vtkGetMacro(ConvergeReusesLayers, bool);
+  vtkBooleanMacro(ConvergeReusesLayers, bool);
+  ///@}
+
+  /// Whether the last frame kept the layers of the frame before
+  /// (ConvergeReusesLayers, while Converge runs).
+  ///
+  /// @readonly
+  vtkGetMacro(LastFrameReusedLayers, bool);
+
   /// The layer-1 pixels counted by the newest occlusion query result; -1
   /// before the first.
   ///
@@ -433,6 +466,8 @@ protected:
   int LayerProbeInterval = 60;
   int LastFrameEffects = 0;
   int LastFrameNumberOfLayers = 0;
+  bool ConvergeReusesLayers = true;
+  bool LastFrameReusedLayers = false;
   long long LastLayerCoverage = -1;
   double LastConvergenceChange = -1.0;
   bool LastConvergenceReached = false;
@@ -453,7 +488,8 @@ private:
   struct vtkCompositeInputs;
   int WantedEffects(vtkRenderer* renderer) const;
   void UpdateLayerCount(vtkRenderer* renderer, vtkDeepGIRendererState& state);
-  int UpdateEffects(const vtkRenderState* s);
+  void DecideLayerReuse(vtkRenderer* renderer, vtkDeepGIRendererState& state);
+  int UpdateEffects(const vtkRenderState* s, bool layersReused);
   void QueryLayerCoverage(vtkOpenGLRenderer* renderer, int layers);
   int Composite(vtkOpenGLRenderer* renderer, int effects);
   int ActivateCompositeInputs(vtkOpenGLRenderer* renderer, int effects, vtkCompositeInputs& inputs);

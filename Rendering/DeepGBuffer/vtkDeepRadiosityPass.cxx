@@ -89,14 +89,19 @@ bool vtkDeepRadiosityPass::RendererHasLightOn(vtkRenderer* renderer)
   vtkLightCollection* lights = renderer->GetLights();
   vtkCollectionSimpleIterator it;
   lights->InitTraversal(it);
+  bool anySwitchedOn = false;
   while (vtkLight* light = lights->GetNextLight(it))
   {
+    anySwitchedOn = anySwitchedOn || light->GetSwitch();
     if (light->GetSwitch() && light->GetIntensity() > 0.0)
     {
       return true;
     }
   }
-  return false;
+  // With no light switched on VTK adds a headlight of intensity 1 in this
+  // very frame (its lights step, after the passes chose what to compute)
+  // unless AutomaticLightCreation is off: a new renderer's first frame.
+  return !anySwitchedOn && renderer->GetAutomaticLightCreation();
 }
 
 //------------------------------------------------------------------------------

@@ -667,7 +667,9 @@ public:
   bool UpdateRadiosity(const vtkRenderState* s);
 
   /// Whether `renderer` has a light that is switched on with a positive
-  /// intensity (without one there is no direct light to bounce). False for null.
+  /// intensity (without one there is no direct light to bounce), or will
+  /// have VTK's automatic headlight in this frame (no light switched on and
+  /// AutomaticLightCreation on). False for null.
   static bool RendererHasLightOn(vtkRenderer* renderer);
 
   void ReleaseGraphicsResources(vtkWindow* w) override;

@@ -1,0 +1,187 @@
+// vtkDeepGIPass::Converge keeps the G-buffer's layers and the ambient
+// visibility while nothing they depend on changes (ConvergeReusesLayers),
+// and the images are those of rendering everything every frame.
+// 1. Nothing changes: every Converge frame keeps the layers of the frame
+//    before (the first, those of the frames rendered before Converge), and
+//    the image after 5 frames equals, bit for bit, the one with
+//    ConvergeReusesLayers off, which keeps nothing.
+// 2. A ProgressEvent observer changes one input after frame 2: an actor's
+//    colour, the light's intensity, the camera, the renderer's ambient
+//    light, the window size, or the obscurance's radius. Frames 3 and 4
+//    render the layers again (the oracle's layer 1 of frame 3 is built from
+//    frame 2's camera), frame 5 keeps them; the radius keeps the layers
+//    and recomputes the obscurance. The image after
+//    frame 5 equals the one with ConvergeReusesLayers off, bit for bit.
+// The layer count is fixed (AdaptiveLayers off): the coverage query's result
+// arrives after a number of frames that depends on the machine.
+
+#include "DeepRadiosityTest.h"
+
+#include "vtkDeepAmbientObscurancePass.h"
+#include "vtkDeepGIPass.h"
+#include "vtkLightCollection.h"
+
+#include <functional>
+#include <vector>
+
+using namespace DeepRadiosityTest;
+using namespace DeepGITest;
+
+namespace
+{
+constexpr int W = 96, H = 72;
+constexpr int Frames = 5;
+constexpr int ChangeAfterFrame = 2;
+
+// The red-wall scene with an ambient term on every actor, so that the
+// obscurance and the radiosity both run.
+struct GIScene
+{
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkDeepGIPass> Pass;
+
+  GIScene()
+  {
+    this->Window = MakeWindow(W, H);
+    this->Window->AddRenderer(this->Renderer);
+    RedWallScene(this->Renderer);
+    vtkActorCollection* actors = this->Renderer->GetActors();
+    vtkCollectionSimpleIterator it;
+    actors->InitTraversal(it);
+    while (vtkActor* actor = actors->GetNextActor(it))
+    {
+      actor->GetProperty()->SetAmbient(0.3);
+    }
+    this->Renderer->ResetCameraClippingRange();
+    this->Pass->AdaptiveLayersOff();
+    this->Renderer->SetPass(this->Pass);
+  }
+  ~GIScene()
+  {
+    this->Renderer->SetPass(nullptr);
+    this->Pass->ReleaseGraphicsResources(this->Window);
+  }
+};
+
+using Change = std::function<void(GIScene&)>;
+
+struct Run
+{
+  std::vector<unsigned char> Pixels;
+  std::vector<int> Reused; // LastFrameReusedLayers after each Converge frame
+  int Effects = 0;
+};
+
+// One frame before Converge, then Converge(Frames) with `change` applied
+// after frame ChangeAfterFrame; the final image and what each frame kept.
+Run Converge(bool reuse, const Change& change)
+{
+  GIScene scene;
+  scene.Pass->SetConvergeReusesLayers(reuse);
+  // VTK adds the headlight during the first frame: the inputs are still
+  // from the third frame on.
+  for (int k = 0; k < 3; ++k)
+  {
+    scene.Window->Render();
+  }
+  Run run;
+  struct Observed
+  {
+    GIScene* Scene;
+    Run* Result;
+    const Change* Apply;
+  } observed{ &scene, &run, &change };
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetCallback(
+    [](vtkObject*, unsigned long, void* data, void*)
+    {
+      auto* o = static_cast<Observed*>(data);
+      o->Result->Reused.push_back(o->Scene->Pass->GetLastFrameReusedLayers() ? 1 : 0);
+      if (o->Result->Reused.size() == ChangeAfterFrame && *o->Apply)
+      {
+        (*o->Apply)(*o->Scene);
+      }
+    });
+  progress->SetClientData(&observed);
+  scene.Pass->AddObserver(vtkCommand::ProgressEvent, progress);
+  scene.Pass->Converge(scene.Renderer, Frames);
+  scene.Pass->RemoveObserver(progress);
+  run.Effects = scene.Pass->GetLastFrameEffects();
+  const int* size = scene.Window->GetSize();
+  vtkNew<vtkUnsignedCharArray> rgb;
+  scene.Window->GetPixelData(0, 0, size[0] - 1, size[1] - 1, /*front=*/0, rgb);
+  run.Pixels.assign(rgb->GetPointer(0), rgb->GetPointer(0) + rgb->GetNumberOfValues());
+  return run;
+}
+
+std::string Flags(const std::vector<int>& flags)
+{
+  std::string text;
+  for (int f : flags)
+  {
+    text += f ? '1' : '0';
+  }
+  return text;
+}
+
+int MaximumDifference(const Run& a, const Run& b)
+{
+  if (a.Pixels.size() != b.Pixels.size() || a.Pixels.empty())
+  {
+    return 256;
+  }
+  int maximum = 0;
+  for (size_t i = 0; i < a.Pixels.size(); ++i)
+  {
+    maximum = std::max(maximum, std::abs(a.Pixels[i] - b.Pixels[i]));
+  }
+  return maximum;
+}
+
+// Converge with and without reuse under `change`; `expected` is the
+// reuse flags of the frames with reuse on.
+void CheckCase(const char* name, const Change& change, const std::string& expected)
+{
+  const Run kept = Converge(true, change);
+  const Run full = Converge(false, change);
+  const int difference = MaximumDifference(kept, full);
+  std::printf("%s: frames keeping the layers %s (off: %s), effects %s, largest difference %d/255\n",
+    name, Flags(kept.Reused).c_str(), Flags(full.Reused).c_str(),
+    vtkDeepGIPass::GetEffectsAsString(kept.Effects).c_str(), difference);
+  Check(Flags(kept.Reused) == expected, Text(name, ": the frames keep the layers as ", expected));
+  Check(Flags(full.Reused) == std::string(Frames, '0'),
+    Text(name, ": with ConvergeReusesLayers off no frame keeps them"));
+  Check(
+    (kept.Effects & vtkDeepGIPass::AMBIENT_OBSCURANCE) && (kept.Effects & vtkDeepGIPass::RADIOSITY),
+    Text(name, ": the obscurance and the radiosity ran"));
+  Check(difference == 0, Text(name, ": the image equals the one rendering everything"));
+}
+}
+
+int TestDeepGIConvergeReuse(int, char*[])
+{
+  CheckCase("nothing changes", nullptr, "11111");
+  CheckCase(
+    "an actor's colour",
+    [](GIScene& s) { s.Renderer->GetActors()->GetLastActor()->GetProperty()->SetColor(0, 1, 0); },
+    "11001");
+  CheckCase(
+    "the light's intensity",
+    [](GIScene& s)
+    { vtkLight::SafeDownCast(s.Renderer->GetLights()->GetItemAsObject(0))->SetIntensity(0.5); },
+    "11001");
+  CheckCase(
+    "the camera", [](GIScene& s) { s.Renderer->GetActiveCamera()->Azimuth(5.0); }, "11001");
+  CheckCase(
+    "the renderer's ambient light", [](GIScene& s) { s.Renderer->SetAmbient(0.5, 0.5, 0.5); },
+    "11001");
+  CheckCase(
+    "the window size", [](GIScene& s) { s.Window->SetSize(W - 16, H - 8); }, "11001");
+  // The obscurance's own setting: the layers are kept, the obscurance is
+  // computed again (the image would differ otherwise).
+  CheckCase(
+    "the obscurance's radius",
+    [](GIScene& s) { s.Pass->GetAmbientObscurancePass()->SetRadius(0.3); }, "11111");
+  return ExitStatus();
+}
