@@ -212,13 +212,15 @@ struct vtkDeepGIRendererState
   // oracles place newly visible geometry in layer 1 one frame late.
   bool Settling = true;
   bool Reflects = false;
-  // The inputs of the last frame, for Converge's reuse of the layers:
-  // how many frames in a row had them, whether the last one has layers,
-  // and whether this frame may keep them (ReuseLayers).
+  // The inputs of the last frame, for Converge's reuse of the layers: how
+  // many frames in a row had its camera and props, whether it has layers
+  // and whether they were peeled (exact without history), and whether this
+  // frame may keep them (ReuseLayers).
   SceneKey StillScene{};
   vtkMTimeType StillLighting = 0;
   int StillFrames = 0;
   bool StillValid = false;
+  bool StillPeeled = false;
   bool ReuseLayers = false;
   bool ObscuranceOfLayers = false; // the obscurance is of the current layers
 
@@ -331,6 +333,7 @@ void vtkDeepGIPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastFrameEffects: " << GetEffectsAsString(this->LastFrameEffects) << "\n";
   os << indent << "LastFrameNumberOfLayers: " << this->LastFrameNumberOfLayers << "\n";
   os << indent << "ConvergeReusesLayers: " << this->ConvergeReusesLayers << "\n";
+  os << indent << "ConvergeExtrapolatesBounces: " << this->ConvergeExtrapolatesBounces << "\n";
   os << indent << "LastFrameReusedLayers: " << this->LastFrameReusedLayers << "\n";
   os << indent << "LastLayerCoverage: " << this->LastLayerCoverage << "\n";
   os << indent << "LastConvergenceChange: " << this->LastConvergenceChange << "\n";
@@ -622,12 +625,14 @@ private:
 class ScopedStillRadiosity
 {
 public:
-  explicit ScopedStillRadiosity(vtkDeepRadiosityPass* pass)
+  ScopedStillRadiosity(vtkDeepRadiosityPass* pass, bool extrapolate)
     : Pass(pass)
     , Alpha(pass->GetTemporalAlpha())
     , BlurRadius(pass->GetBlurRadius())
+    , Extrapolate(pass->GetExtrapolateBounces())
   {
     this->Pass->SetTemporalAlpha(0.0);
+    this->Pass->SetExtrapolateBounces(extrapolate);
     this->Pass->SetBlurRadius(std::min(
       16, static_cast<int>(std::lround(vtkDeepGIPass::STILL_BLUR_SCALE * this->BlurRadius))));
   }
@@ -635,6 +640,7 @@ public:
   {
     this->Pass->SetTemporalAlpha(this->Alpha);
     this->Pass->SetBlurRadius(this->BlurRadius);
+    this->Pass->SetExtrapolateBounces(this->Extrapolate);
   }
   ScopedStillRadiosity(const ScopedStillRadiosity&) = delete;
   void operator=(const ScopedStillRadiosity&) = delete;
@@ -643,6 +649,7 @@ private:
   vtkDeepRadiosityPass* Pass;
   double Alpha;
   int BlurRadius;
+  bool Extrapolate;
 };
 } // anonymous namespace
 
@@ -697,7 +704,7 @@ int vtkDeepGIPass::Converge(vtkRenderer* renderer, int maximumFrames, double tol
   // (and with it the spiral's rotation fixed) each frame is the previous
   // bounce plus one, exactly, and the image converges geometrically instead
   // of at the filter's pace (Documentation/performance.md).
-  ScopedStillRadiosity still(this->RadiosityPass);
+  ScopedStillRadiosity still(this->RadiosityPass, this->ConvergeExtrapolatesBounces);
   int k = 0;
   while (k < maximumFrames)
   {
@@ -823,18 +830,18 @@ void vtkDeepGIPass::Render(const vtkRenderState* s)
 // Converge's frames keep the last frame's layers and obscurance when
 // nothing they depend on changed (camera, props, renderer, lights; the
 // sub-passes check their own settings and the window size): at a still
-// camera only the radiosity's bounce changes from frame to frame. The
-// layers kept are those of a frame whose own previous frame had the same
-// inputs: the single-pass oracles build layer 1 from the previous frame,
-// so the first frame after a change has a provisional layer 1.
+// camera only the radiosity's bounce changes from frame to frame. After a
+// change of camera or props the single-pass oracles build layer 1 from the
+// frame before, so the first frame's layers are provisional unless they
+// were peeled; a change of lighting alone is redrawn once.
 void vtkDeepGIPass::DecideLayerReuse(vtkRenderer* renderer, vtkDeepGIRendererState& state)
 {
   const SceneKey scene = SceneSignature(renderer);
   const vtkMTimeType lighting = LightingTime(renderer);
-  const bool same = SameScene(scene, state.StillScene) && lighting == state.StillLighting;
-  state.StillFrames = same ? state.StillFrames + 1 : 0;
+  state.StillFrames = SameScene(scene, state.StillScene) ? state.StillFrames + 1 : 0;
+  const bool settled = state.StillFrames >= 2 || (state.StillFrames == 1 && state.StillPeeled);
   state.ReuseLayers = this->Internals->Converging && this->ConvergeReusesLayers &&
-    state.StillValid && state.StillFrames >= 2;
+    state.StillValid && settled && lighting == state.StillLighting;
   state.StillScene = scene;
   state.StillLighting = lighting;
   state.StillValid = false; // until this frame has layers
@@ -930,6 +937,7 @@ void vtkDeepGIPass::RenderOpaque(const vtkRenderState* s)
   if (state)
   {
     state->StillValid = true;
+    state->StillPeeled = gbuffer->GetEffectiveOracle() == vtkDeepGBufferPass::DEPTH_PEEL;
   }
   const int layers = gbuffer->GetEffectiveNumberOfLayers();
   const int secondLayer = layers >= 2 ? SECOND_LAYER : 0;

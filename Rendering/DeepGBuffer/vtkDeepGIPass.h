@@ -357,6 +357,24 @@ public:
   vtkBooleanMacro(ConvergeReusesLayers, bool);
   ///@}
 
+  ///@{
+  /**
+   * Whether Converge shows each frame's radiosity with the bounces still
+   * to come extrapolated from the last ones (vtkDeepRadiosityPass::
+   * ExtrapolateBounces, default on): the bounces fall geometrically, by
+   * about 0.4 per frame in a room, so from the third frame on the image
+   * is close to the fixed point, and a tolerance is met in fewer frames.
+   * The fixed point itself is unchanged. Off: each frame shows the bounces
+   * gathered so far.
+   *
+   * @range on/off
+   * @default on
+   */
+  vtkSetMacro(ConvergeExtrapolatesBounces, bool);
+  vtkGetMacro(ConvergeExtrapolatesBounces, bool);
+  vtkBooleanMacro(ConvergeExtrapolatesBounces, bool);
+  ///@}
+
   /// Whether the last frame kept the layers of the frame before
   /// (ConvergeReusesLayers, while Converge runs).
   ///
@@ -467,6 +485,7 @@ protected:
   int LastFrameEffects = 0;
   int LastFrameNumberOfLayers = 0;
   bool ConvergeReusesLayers = true;
+  bool ConvergeExtrapolatesBounces = true;
   bool LastFrameReusedLayers = false;
   long long LastLayerCoverage = -1;
   double LastConvergenceChange = -1.0;

@@ -142,11 +142,17 @@ struct vtkDeepRadiosityRendererState
   double Environment[3] = { 0.0, 0.0, 0.0 };
   bool WarnedEmpty = false;
   bool WarnedNoLights = false;
+  // Layer 0's mean irradiance of the last frames without the temporal
+  // filter, oldest first (ExtrapolateBounces), and how many are known.
+  double StillMeans[3] = { 0.0, 0.0, 0.0 };
+  int StillMeanCount = 0;
+  double Extrapolation = 0.0; // rho / (1 - rho) of the current frame
 
   void ResetHistory()
   {
     this->HistoryValid = false;
     this->FrameIndex = 0;
+    this->StillMeanCount = 0;
   }
 
   void Attach(vtkRenderer* renderer)
@@ -1129,6 +1135,65 @@ void vtkDeepRadiosityPass::FilterIrradiance(
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// The mean of a 2D RGBA32F target's colour over all its texels: the 1 x 1
+// level of its box-filtered pyramid, read back (a stall, taken only while
+// converging a still image).
+double MeanColour(vtkTextureObject* texture)
+{
+  const unsigned int size = std::max(texture->GetWidth(), texture->GetHeight());
+  int top = 0;
+  while ((size >> top) > 1)
+  {
+    ++top;
+  }
+  float texel[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+  texture->SetMaxLevel(top); // level 0 alone is read everywhere else
+  texture->Activate();
+  glGenerateMipmap(GL_TEXTURE_2D);
+  glGetTexImage(GL_TEXTURE_2D, top, GL_RGBA, GL_FLOAT, texel);
+  texture->Deactivate();
+  return (static_cast<double>(texel[0]) + texel[1] + texel[2]) / 3.0;
+}
+}
+
+//------------------------------------------------------------------------------
+// ExtrapolateBounces: records this frame's mean irradiance of layer 0 (the
+// filtered E, which is E_k without the temporal filter) and returns
+// rho / (1 - rho) from the last two increments, or 0.
+double vtkDeepRadiosityPass::EstimateBounceExtrapolation(vtkDeepRadiosityRendererState& state)
+{
+  if (!this->ExtrapolateBounces || this->TemporalAlpha > 0.0)
+  {
+    state.StillMeanCount = 0;
+    return 0.0;
+  }
+  if (!state.HistoryValid)
+  {
+    // Without history the bounces start from E = 0 (the bounce input is
+    // the direct light alone): that is the first mean.
+    std::fill(state.StillMeans, state.StillMeans + 3, 0.0);
+    state.StillMeanCount = 1;
+  }
+  vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: extrapolation");
+  double* means = state.StillMeans;
+  means[0] = means[1];
+  means[1] = means[2];
+  means[2] = MeanColour(state.Targets[FILTERED][0]);
+  state.StillMeanCount = std::min(state.StillMeanCount + 1, 3);
+  // The bounces approach the fixed point from below, or from above after
+  // frames with the temporal filter; the ratio is the same either way.
+  const double before = means[1] - means[0], last = means[2] - means[1];
+  if (state.StillMeanCount < 3 || !(std::abs(before) > 0.0))
+  {
+    return 0.0;
+  }
+  const double rho = last / before;
+  return rho >= 0.0 && rho <= MAXIMUM_EXTRAPOLATED_RATIO ? rho / (1.0 - rho) : 0.0;
+}
+
+//------------------------------------------------------------------------------
 // Step 4, the temporal filter and eq. 6 (with the confidence fallback):
 // FILTERED + History[Previous] -> History[Next], INDIRECT (BLUR_TEMP, free
 // by now, on a reduced grid: UpsampleIrradiance fills INDIRECT).
@@ -1136,6 +1201,8 @@ void vtkDeepRadiosityPass::AccumulateIrradiance(
   vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
 {
   vtkInternals& in = *this->Internals;
+  state.Extrapolation = this->EstimateBounceExtrapolation(state);
+  this->LastBounceExtrapolation = state.Extrapolation;
   vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: temporal");
   AttachLayerTextures(in.Framebuffer, state.History[frame.Next],
     &state.Targets[frame.Divisor > 1 ? BLUR_TEMP : INDIRECT]);
@@ -1152,6 +1219,7 @@ void vtkDeepRadiosityPass::AccumulateIrradiance(
   program->SetUniformMatrix4x4("deepPrevProjection", frame.PreviousProjection);
   program->SetUniformf("deepTolerance", static_cast<float>(frame.Tolerance));
   program->SetUniformf("deepAlpha", static_cast<float>(this->TemporalAlpha));
+  program->SetUniformf("deepExtrapolation", static_cast<float>(state.Extrapolation));
   this->SetOutgoingUniforms(program);
   program->SetUniformf("deepIrradianceLimit", static_cast<float>(IRRADIANCE_LIMIT));
   in.TemporalQuad->Render();
@@ -1188,10 +1256,15 @@ void vtkDeepRadiosityPass::UpsampleIrradiance(
   program->SetUniformi("deepReducedNormal", frame.NormalUnit());
   program->SetUniformf("deepPlaneTolerance", static_cast<float>(this->BlurPlaneTolerance));
   vtkTextureObject* history = state.History[frame.Next][0];
+  vtkTextureObject* previousHistory = state.History[frame.Previous][0];
   vtkTextureObject* reducedIndirect = state.Targets[BLUR_TEMP][0];
   history->Activate();
+  previousHistory->Activate();
   reducedIndirect->Activate();
   program->SetUniformi("deepHistory0", history->GetTextureUnit());
+  program->SetUniformi("deepPreviousHistory0", previousHistory->GetTextureUnit());
+  program->SetUniformf("deepExtrapolation", static_cast<float>(state.Extrapolation));
+  program->SetUniformf("deepIrradianceLimit", static_cast<float>(IRRADIANCE_LIMIT));
   program->SetUniformi("deepReducedIndirect0", reducedIndirect->GetTextureUnit());
   program->SetUniformi("deepDivisor", frame.Divisor);
   program->SetUniform2i("deepReducedMin", frame.Region);
@@ -1199,6 +1272,7 @@ void vtkDeepRadiosityPass::UpsampleIrradiance(
   this->SetOutgoingUniforms(program);
   in.UpsampleQuad->Render();
   reducedIndirect->Deactivate();
+  previousHistory->Deactivate();
   history->Deactivate();
 }
 

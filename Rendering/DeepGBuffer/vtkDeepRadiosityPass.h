@@ -147,6 +147,11 @@ public:
   /// true radiosity is infinite) finite.
   static constexpr double IRRADIANCE_LIMIT = 1e30;
 
+  /// The largest ratio of successive bounces that ExtrapolateBounces
+  /// extrapolates (a factor rho / (1 - rho) of at most 4); a larger or
+  /// negative ratio is not a converging series and is not extrapolated.
+  static constexpr double MAXIMUM_EXTRAPOLATED_RATIO = 0.8;
+
   /// The outputs accessible with ActivateTexture.
   enum Quantity
   {
@@ -502,6 +507,37 @@ public:
 
   ///@{
   /**
+   * Bounce extrapolation for still images (default off; vtkDeepGIPass::
+   * Converge turns it on). While TemporalAlpha is 0 each frame adds one
+   * bounce, E_k = E_k-1 + T^k E_1, and the increments fall geometrically,
+   * so the bounces still to come sum to about (E_k - E_k-1) rho / (1 - rho),
+   * rho the ratio of successive increments (the "ambient term" of
+   * progressive refinement radiosity, Cohen, Chen, Wallace and Greenberg
+   * 1988). On: the outgoing radiance (INDIRECT_RADIANCE, what the composite
+   * shows) is eq. 6 of E_k + (E_k - E_k-1) rho / (1 - rho) where the last
+   * frame's irradiance is of the same surface, rho being the ratio of the
+   * last two increments of layer 0's mean irradiance, from the third frame
+   * with TemporalAlpha 0 on, when it lies in [0, MAXIMUM_EXTRAPOLATED_RATIO].
+   * The bounces themselves (IRRADIANCE, the history the next bounce reads)
+   * are not changed, so the fixed point is the same. GetLastBounceExtrapolation
+   * gives the factor rho / (1 - rho) of the last frame (0 when none).
+   *
+   * @range on/off
+   * @default off
+   */
+  vtkSetMacro(ExtrapolateBounces, bool);
+  vtkGetMacro(ExtrapolateBounces, bool);
+  vtkBooleanMacro(ExtrapolateBounces, bool);
+  ///@}
+
+  /// The factor rho / (1 - rho) ExtrapolateBounces applied in the last
+  /// frame; 0 when none was.
+  ///
+  /// @readonly
+  vtkGetMacro(LastBounceExtrapolation, double);
+
+  ///@{
+  /**
    * Reprojection tolerance (world units): history is used where the
    * reprojected point's camera depth is within it of either previous
    * layer. Setting a value switches AutomaticReprojectionTolerance off;
@@ -705,6 +741,8 @@ protected:
   int ResolutionDivisor = 1;
   double Damping = 1.0;
   double TemporalAlpha = 0.85;
+  bool ExtrapolateBounces = false;
+  double LastBounceExtrapolation = 0.0;
   double ReprojectionTolerance = 0.01;
   bool AutomaticReprojectionTolerance = true;
   double AutomaticReprojectionFraction = 2.5e-4;
@@ -734,6 +772,7 @@ private:
   void ComputeBounceInput(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void Gather(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void FilterIrradiance(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
+  double EstimateBounceExtrapolation(vtkDeepRadiosityRendererState& state);
   void AccumulateIrradiance(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void UpsampleIrradiance(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   static void SetLayersUniforms(vtkShaderProgram* program, const vtkGatherFrame& frame);

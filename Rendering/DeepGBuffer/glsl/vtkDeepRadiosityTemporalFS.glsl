@@ -12,7 +12,8 @@
 //   2, 3: (L, confidence) of layers 0, 1 with the outgoing indirect
 //         radiance L = rho boost(rho) E_t / pi (eq. 6), blended with the
 //         environment fallback c L + (1 - c) rho E_env / pi when
-//         deepFallback is on (c the confidence, section 3.2, Figure 9).
+//         deepFallback is on (c the confidence, section 3.2, Figure 9);
+//         E_t extrapolated by deepExtrapolation for a still image.
 //=========================================================================
 
 in vec2 texCoord;
@@ -30,6 +31,7 @@ uniform mat4 deepToPrevious;
 uniform mat4 deepPrevProjection;
 uniform float deepTolerance;      // world units
 uniform float deepAlpha;
+uniform float deepExtrapolation;  // rho / (1 - rho), 0: none (ExtrapolateBounces)
 uniform int deepBoost;
 uniform int deepFallback;
 uniform vec3 deepEnvironment;     // environment irradiance E_env
@@ -52,6 +54,11 @@ void filterLayer(ivec2 pixel, vec2 size, int layer, out vec4 history, out vec4 i
   }
   vec4 now = layer == 0 ? texelFetch(deepInput0, pixel, 0) : texelFetch(deepInput1, pixel, 0);
   vec3 E = now.rgb;
+  vec4 last = vec4(0.0); // the last frame's (E, distance) at this texel
+  if (deepHasHistory != 0 && deepExtrapolation > 0.0)
+  {
+    last = layer == 0 ? texelFetch(deepHistory0, pixel, 0) : texelFetch(deepHistory1, pixel, 0);
+  }
   if (deepHasHistory != 0 && deepAlpha > 0.0)
   {
     vec3 X = deepPositionFromDistance(vec2(pixel) + 0.5, size, d);
@@ -78,8 +85,9 @@ void filterLayer(ivec2 pixel, vec2 size, int layer, out vec4 history, out vec4 i
   E = min(E, vec3(deepIrradianceLimit));
   history = vec4(E, d);
   vec3 rho = texelFetch(deepAlbedo, ivec3(pixel, layer), 0).rgb;
+  vec3 shown = deepExtrapolateBounces(E, last, d, deepExtrapolation, deepIrradianceLimit);
   indirect =
-    deepOutgoingIndirect(rho, E, now.a, deepBoost != 0, deepFallback != 0, deepEnvironment);
+    deepOutgoingIndirect(rho, shown, now.a, deepBoost != 0, deepFallback != 0, deepEnvironment);
 }
 
 void main()

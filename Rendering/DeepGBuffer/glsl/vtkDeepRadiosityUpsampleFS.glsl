@@ -15,8 +15,9 @@
 // across creases); when no texel passes, the one nearest to the plane.
 // The outgoing radiance is then eq. 6 with P's own albedo
 // (deepOutgoingIndirect), so that albedo edges stay sharp; only the
-// irradiance is interpolated. Output: (L, c) of layer 0; 0 where the layer
-// is empty or no reduced texel has a surface.
+// irradiance is interpolated, after the still image's bounce extrapolation
+// (deepExtrapolation, from the last frame's history). Output: (L, c) of
+// layer 0; 0 where the layer is empty or no reduced texel has a surface.
 //=========================================================================
 
 in vec2 texCoord;
@@ -26,6 +27,9 @@ uniform sampler2DArray deepNormal;
 uniform sampler2DArray deepAlbedo;
 uniform sampler2DArray deepReducedNormal;
 uniform sampler2D deepHistory0;         // reduced (E_t, distance) of layer 0
+uniform sampler2D deepPreviousHistory0; // the same of the last frame
+uniform float deepExtrapolation;        // rho / (1 - rho), 0: none
+uniform float deepIrradianceLimit;
 uniform sampler2D deepReducedIndirect0; // reduced (L, c) of layer 0
 uniform int deepDivisor;                // D
 uniform float deepPlaneTolerance;       // of the plane weight, relative to the distance
@@ -72,7 +76,9 @@ vec4 upsampleLayer0(ivec2 pixel, vec2 size)
     {
       continue;
     }
-    vec4 value = vec4(h.rgb, texelFetch(deepReducedIndirect0, q, 0).a);
+    vec4 previous = deepExtrapolation > 0.0 ? texelFetch(deepPreviousHistory0, q, 0) : vec4(0.0);
+    vec3 E = deepExtrapolateBounces(h.rgb, previous, h.a, deepExtrapolation, deepIrradianceLimit);
+    vec4 value = vec4(E, texelFetch(deepReducedIndirect0, q, 0).a);
     // The receiver's point: layer texel D q (clamped), at its distance.
     vec3 Y = deepPositionFromDistance(vec2(min(q * deepDivisor, last)) + 0.5, size, h.a);
     float error = abs(dot(Y - X, n));

@@ -168,6 +168,19 @@ vec3 deepReflectance(vec3 rho, bool useBoost)
 // of a surface of albedo rho receiving E with confidence c, blended with the
 // environment fallback c L + (1 - c) rho E_env / pi when `fallback` is on
 // (section 3.2, Figure 9).
+// Bounce extrapolation of still images (vtkDeepRadiosityPass::
+// ExtrapolateBounces): E plus the bounces still to come, `factor` times the
+// last increment, where the last frame's (E, distance) `previous` is of the
+// same surface (the camera is still: the same texel, the same distance).
+vec3 deepExtrapolateBounces(vec3 E, vec4 previous, float distance, float factor, float limit)
+{
+  if (factor > 0.0 && previous.a > 0.0 && previous.a == distance)
+  {
+    return clamp(E + factor * (E - previous.rgb), vec3(0.0), vec3(limit));
+  }
+  return E;
+}
+
 vec4 deepOutgoingIndirect(vec3 rho, vec3 E, float c, bool boost, bool fallback, vec3 environment)
 {
   c = clamp(c, 0.0, 1.0);

@@ -7,11 +7,13 @@
 //    ConvergeReusesLayers off, which keeps nothing.
 // 2. A ProgressEvent observer changes one input after frame 2: an actor's
 //    colour, the light's intensity, the camera, the renderer's ambient
-//    light, the window size, or the obscurance's radius. Frames 3 and 4
-//    render the layers again (the oracle's layer 1 of frame 3 is built from
-//    frame 2's camera), frame 5 keeps them; the radius keeps the layers
-//    and recomputes the obscurance. The image after
-//    frame 5 equals the one with ConvergeReusesLayers off, bit for bit.
+//    light, the window size, or the obscurance's radius. After a change of
+//    the camera or a prop, frames 3 and 4 render the layers again (the
+//    oracle builds frame 3's layer 1 from frame 2's camera), frame 5 keeps
+//    them; after a change of the lighting or the window size (peeled
+//    without history) only frame 3 renders them; the radius keeps the
+//    layers and recomputes the obscurance. The image after frame 5 equals
+//    the one with ConvergeReusesLayers off, bit for bit.
 // The layer count is fixed (AdaptiveLayers off): the coverage query's result
 // arrives after a number of frames that depends on the machine.
 
@@ -170,14 +172,14 @@ int TestDeepGIConvergeReuse(int, char*[])
     "the light's intensity",
     [](GIScene& s)
     { vtkLight::SafeDownCast(s.Renderer->GetLights()->GetItemAsObject(0))->SetIntensity(0.5); },
-    "11001");
+    "11011");
   CheckCase(
     "the camera", [](GIScene& s) { s.Renderer->GetActiveCamera()->Azimuth(5.0); }, "11001");
   CheckCase(
     "the renderer's ambient light", [](GIScene& s) { s.Renderer->SetAmbient(0.5, 0.5, 0.5); },
-    "11001");
+    "11011");
   CheckCase(
-    "the window size", [](GIScene& s) { s.Window->SetSize(W - 16, H - 8); }, "11001");
+    "the window size", [](GIScene& s) { s.Window->SetSize(W - 16, H - 8); }, "11011");
   // The obscurance's own setting: the layers are kept, the obscurance is
   // computed again (the image would differ otherwise).
   CheckCase(
