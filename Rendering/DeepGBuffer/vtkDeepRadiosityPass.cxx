@@ -144,7 +144,8 @@ struct vtkDeepRadiosityRendererState
   bool WarnedNoLights = false;
   // Layer 0's mean irradiance of the last frames without the temporal
   // filter, oldest first (ExtrapolateBounces), and how many are known.
-  double StillMeans[3] = { 0.0, 0.0, 0.0 };
+  static constexpr int StillMeansKept = 4;
+  double StillMeans[StillMeansKept] = { 0.0, 0.0, 0.0, 0.0 };
   int StillMeanCount = 0;
   double Extrapolation = 0.0; // rho / (1 - rho) of the current frame
 
@@ -1169,28 +1170,37 @@ double vtkDeepRadiosityPass::EstimateBounceExtrapolation(vtkDeepRadiosityRendere
     state.StillMeanCount = 0;
     return 0.0;
   }
+  constexpr int Kept = vtkDeepRadiosityRendererState::StillMeansKept;
+  double* means = state.StillMeans;
   if (!state.HistoryValid)
   {
     // Without history the bounces start from E = 0 (the bounce input is
     // the direct light alone): that is the first mean.
-    std::fill(state.StillMeans, state.StillMeans + 3, 0.0);
+    std::fill(means, means + Kept, 0.0);
     state.StillMeanCount = 1;
   }
   vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: extrapolation");
-  double* means = state.StillMeans;
-  means[0] = means[1];
-  means[1] = means[2];
-  means[2] = MeanColour(state.Targets[FILTERED][0]);
-  state.StillMeanCount = std::min(state.StillMeanCount + 1, 3);
-  // The bounces approach the fixed point from below, or from above after
-  // frames with the temporal filter; the ratio is the same either way.
-  const double before = means[1] - means[0], last = means[2] - means[1];
-  if (state.StillMeanCount < 3 || !(std::abs(before) > 0.0))
+  std::copy(means + 1, means + Kept, means);
+  means[Kept - 1] = MeanColour(state.Targets[FILTERED][0]);
+  state.StillMeanCount = std::min(state.StillMeanCount + 1, Kept);
+  if (state.StillMeanCount < Kept)
   {
     return 0.0;
   }
-  const double rho = last / before;
-  return rho >= 0.0 && rho <= MAXIMUM_EXTRAPOLATED_RATIO ? rho / (1.0 - rho) : 0.0;
+  // The series is extrapolated once it is seen to be geometric: the last
+  // two ratios of successive increments agree. After frames with the
+  // temporal filter, or a change, they do not at first (the bounces may
+  // approach the fixed point from below in some places and from above in
+  // others, and their mean increments are not a geometric series).
+  const double increments[3] = { means[1] - means[0], means[2] - means[1], means[3] - means[2] };
+  if (!(std::abs(increments[0]) > 0.0) || !(std::abs(increments[1]) > 0.0))
+  {
+    return 0.0;
+  }
+  const double before = increments[1] / increments[0], rho = increments[2] / increments[1];
+  const bool converging = rho >= 0.0 && rho <= MAXIMUM_EXTRAPOLATED_RATIO;
+  return converging && std::abs(rho - before) <= EXTRAPOLATION_RATIO_AGREEMENT ? rho / (1.0 - rho)
+                                                                               : 0.0;
 }
 
 //------------------------------------------------------------------------------

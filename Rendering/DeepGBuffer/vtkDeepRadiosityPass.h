@@ -152,6 +152,10 @@ public:
   /// negative ratio is not a converging series and is not extrapolated.
   static constexpr double MAXIMUM_EXTRAPOLATED_RATIO = 0.8;
 
+  /// How closely the last two ratios of successive bounces must agree for
+  /// ExtrapolateBounces to take the series as geometric.
+  static constexpr double EXTRAPOLATION_RATIO_AGREEMENT = 0.1;
+
   /// The outputs accessible with ActivateTexture.
   enum Quantity
   {
@@ -516,8 +520,10 @@ public:
    * 1988). On: the outgoing radiance (INDIRECT_RADIANCE, what the composite
    * shows) is eq. 6 of E_k + (E_k - E_k-1) rho / (1 - rho) where the last
    * frame's irradiance is of the same surface, rho being the ratio of the
-   * last two increments of layer 0's mean irradiance, from the third frame
-   * with TemporalAlpha 0 on, when it lies in [0, MAXIMUM_EXTRAPOLATED_RATIO].
+   * last two increments of layer 0's mean irradiance, when it lies in
+   * [0, MAXIMUM_EXTRAPOLATED_RATIO] and the ratio one frame earlier agrees
+   * within EXTRAPOLATION_RATIO_AGREEMENT (from the third frame with
+   * TemporalAlpha 0 when they start without history).
    * The bounces themselves (IRRADIANCE, the history the next bounce reads)
    * are not changed, so the fixed point is the same. GetLastBounceExtrapolation
    * gives the factor rho / (1 - rho) of the last frame (0 when none).
