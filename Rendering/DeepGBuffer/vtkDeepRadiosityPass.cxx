@@ -33,6 +33,7 @@
 #include "vtkDeepRadiosityBounceFS.h"
 #include "vtkDeepRadiosityCompositeFS.h"
 #include "vtkDeepRadiosityFS.h"
+#include "vtkDeepRadiosityIncrementFS.h"
 #include "vtkDeepRadiosityReduceFS.h"
 #include "vtkDeepRadiosityTemporalFS.h"
 #include "vtkDeepRadiosityUpsampleFS.h"
@@ -142,18 +143,17 @@ struct vtkDeepRadiosityRendererState
   double Environment[3] = { 0.0, 0.0, 0.0 };
   bool WarnedEmpty = false;
   bool WarnedNoLights = false;
-  // Layer 0's mean irradiance of the last frames without the temporal
-  // filter, oldest first (ExtrapolateBounces), and how many are known.
-  static constexpr int StillMeansKept = 4;
-  double StillMeans[StillMeansKept] = { 0.0, 0.0, 0.0, 0.0 };
-  int StillMeanCount = 0;
+  // The mean |E_k - E_k-1| of layer 0 in the last four frames without the
+  // temporal filter, oldest first (ExtrapolateBounces), and how many.
+  double Increments[4] = { 0.0, 0.0, 0.0, 0.0 };
+  int IncrementCount = 0;
   double Extrapolation = 0.0; // rho / (1 - rho) of the current frame
 
   void ResetHistory()
   {
     this->HistoryValid = false;
     this->FrameIndex = 0;
-    this->StillMeanCount = 0;
+    this->IncrementCount = 0;
   }
 
   void Attach(vtkRenderer* renderer)
@@ -267,6 +267,7 @@ public:
   vtkOpenGLQuadHelper* GatherQuad = nullptr;
   vtkOpenGLQuadHelper* BlurQuad = nullptr;
   vtkOpenGLQuadHelper* TemporalQuad = nullptr;
+  vtkOpenGLQuadHelper* IncrementQuad = nullptr; // ExtrapolateBounces
   vtkOpenGLQuadHelper* CompositeQuad = nullptr;
   vtkOpenGLQuadHelper* ReduceQuad = nullptr;
   vtkOpenGLQuadHelper* UpsampleQuad = nullptr;
@@ -291,7 +292,7 @@ vtkDeepRadiosityPass::~vtkDeepRadiosityPass()
                     "unless the context was destroyed first.");
   }
   for (vtkOpenGLQuadHelper* quad : { in.BounceQuad, in.GatherQuad, in.BlurQuad, in.TemporalQuad,
-         in.CompositeQuad, in.ReduceQuad, in.UpsampleQuad })
+         in.IncrementQuad, in.CompositeQuad, in.ReduceQuad, in.UpsampleQuad })
   {
     delete quad;
   }
@@ -1160,47 +1161,69 @@ double MeanColour(vtkTextureObject* texture)
 }
 
 //------------------------------------------------------------------------------
-// ExtrapolateBounces: records this frame's mean irradiance of layer 0 (the
-// filtered E, which is E_k without the temporal filter) and returns
-// rho / (1 - rho) from the last two increments, or 0.
-double vtkDeepRadiosityPass::EstimateBounceExtrapolation(vtkDeepRadiosityRendererState& state)
+// ExtrapolateBounces: this frame's mean |E_k - E_k-1| of layer 0 (the
+// filtered E is E_k without the temporal filter), drawn into RAW, free
+// after the blur, and averaged; returns rho / (1 - rho) from the last four
+// means, or 0.
+double vtkDeepRadiosityPass::EstimateBounceExtrapolation(
+  vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
 {
   if (!this->ExtrapolateBounces || this->TemporalAlpha > 0.0)
   {
-    state.StillMeanCount = 0;
+    state.IncrementCount = 0;
     return 0.0;
   }
-  constexpr int Kept = vtkDeepRadiosityRendererState::StillMeansKept;
-  double* means = state.StillMeans;
-  if (!state.HistoryValid)
+  vtkInternals& in = *this->Internals;
+  if (!ReadyQuad(in.IncrementQuad, frame.Window, vtkDeepRadiosityIncrementFS))
   {
-    // Without history the bounces start from E = 0 (the bounce input is
-    // the direct light alone): that is the first mean.
-    std::fill(means, means + Kept, 0.0);
-    state.StillMeanCount = 1;
+    vtkErrorMacro("The radiosity's increment shader failed to compile; no extrapolation.");
+    return 0.0;
   }
   vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: extrapolation");
-  std::copy(means + 1, means + Kept, means);
-  means[Kept - 1] = MeanColour(state.Targets[FILTERED][0]);
-  state.StillMeanCount = std::min(state.StillMeanCount + 1, Kept);
-  if (state.StillMeanCount < Kept)
+  vtkTextureObject* increment = state.Targets[RAW][0];
+  in.Framebuffer->AddColorAttachment(0, increment);
+  for (int a = 1; a < 2 * Layers; ++a)
+  {
+    in.Framebuffer->RemoveColorAttachment(a);
+  }
+  in.Framebuffer->ActivateDrawBuffers(1);
+  // The texels outside the shaded region count as 0.
+  frame.GL->vtkglDisable(GL_SCISSOR_TEST);
+  frame.GL->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+  frame.GL->vtkglClear(GL_COLOR_BUFFER_BIT);
+  frame.GL->vtkglEnable(GL_SCISSOR_TEST);
+  vtkShaderProgram* program = in.IncrementQuad->Program;
+  frame.Window->GetShaderCache()->ReadyShaderProgram(program);
+  vtkTextureObject* filtered = state.Targets[FILTERED][0];
+  vtkTextureObject* history = state.History[frame.Previous][0];
+  filtered->Activate();
+  history->Activate();
+  program->SetUniformi("deepInput0", filtered->GetTextureUnit());
+  program->SetUniformi("deepHistory0", history->GetTextureUnit());
+  program->SetUniformi("deepHasHistory", state.HistoryValid ? 1 : 0);
+  in.IncrementQuad->Render();
+  history->Deactivate();
+  filtered->Deactivate();
+  in.Framebuffer->RemoveColorAttachment(0);
+
+  double* means = state.Increments;
+  std::copy(means + 1, means + 4, means);
+  means[3] = MeanColour(increment);
+  state.IncrementCount = std::min(state.IncrementCount + 1, 4);
+  // rho over two frames, sqrt(m_k / m_k-2): the increments may also hold a
+  // component that alternates from frame to frame (light going back and
+  // forth between two surfaces), which a ratio of successive means
+  // follows and one over two frames averages out. Extrapolated once the
+  // series is seen to be geometric: the last two such ratios agree.
+  if (state.IncrementCount < 4 || !(means[0] > 0.0) || !(means[1] > 0.0))
   {
     return 0.0;
   }
-  // The series is extrapolated once it is seen to be geometric: the last
-  // two ratios of successive increments agree. After frames with the
-  // temporal filter, or a change, they do not at first (the bounces may
-  // approach the fixed point from below in some places and from above in
-  // others, and their mean increments are not a geometric series).
-  const double increments[3] = { means[1] - means[0], means[2] - means[1], means[3] - means[2] };
-  if (!(std::abs(increments[0]) > 0.0) || !(std::abs(increments[1]) > 0.0))
-  {
-    return 0.0;
-  }
-  const double before = increments[1] / increments[0], rho = increments[2] / increments[1];
-  const bool converging = rho >= 0.0 && rho <= MAXIMUM_EXTRAPOLATED_RATIO;
-  return converging && std::abs(rho - before) <= EXTRAPOLATION_RATIO_AGREEMENT ? rho / (1.0 - rho)
-                                                                               : 0.0;
+  const double before = std::sqrt(means[2] / means[0]), rho = std::sqrt(means[3] / means[1]);
+  return rho <= MAXIMUM_EXTRAPOLATED_RATIO &&
+      std::abs(rho - before) <= EXTRAPOLATION_RATIO_AGREEMENT
+    ? rho / (1.0 - rho)
+    : 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -1211,7 +1234,7 @@ void vtkDeepRadiosityPass::AccumulateIrradiance(
   vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
 {
   vtkInternals& in = *this->Internals;
-  state.Extrapolation = this->EstimateBounceExtrapolation(state);
+  state.Extrapolation = this->EstimateBounceExtrapolation(frame, state);
   this->LastBounceExtrapolation = state.Extrapolation;
   vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: temporal");
   AttachLayerTextures(in.Framebuffer, state.History[frame.Next],
@@ -1345,7 +1368,7 @@ void vtkDeepRadiosityPass::ReleaseGraphicsResources(vtkWindow* w)
   vtkInternals& in = *this->Internals;
   in.States.Release(w);
   for (vtkOpenGLQuadHelper** quad : { &in.BounceQuad, &in.GatherQuad, &in.BlurQuad,
-         &in.TemporalQuad, &in.CompositeQuad, &in.ReduceQuad, &in.UpsampleQuad })
+         &in.TemporalQuad, &in.IncrementQuad, &in.CompositeQuad, &in.ReduceQuad, &in.UpsampleQuad })
   {
     vtkDeepScreenSpace::ReleaseQuad(*quad, w);
   }

@@ -519,11 +519,12 @@ public:
    * progressive refinement radiosity, Cohen, Chen, Wallace and Greenberg
    * 1988). On: the outgoing radiance (INDIRECT_RADIANCE, what the composite
    * shows) is eq. 6 of E_k + (E_k - E_k-1) rho / (1 - rho) where the last
-   * frame's irradiance is of the same surface, rho being the ratio of the
-   * last two increments of layer 0's mean irradiance, when it lies in
-   * [0, MAXIMUM_EXTRAPOLATED_RATIO] and the ratio one frame earlier agrees
-   * within EXTRAPOLATION_RATIO_AGREEMENT (from the third frame with
-   * TemporalAlpha 0 when they start without history).
+   * frame's irradiance is of the same surface. rho is measured over two
+   * frames, sqrt(m_k / m_k-2), m_k the mean of |E_k - E_k-1| over layer 0
+   * (a part of the increments can alternate from frame to frame), and used
+   * when it is at most MAXIMUM_EXTRAPOLATED_RATIO and the same measure one
+   * frame earlier agrees within EXTRAPOLATION_RATIO_AGREEMENT: from the
+   * fourth frame with TemporalAlpha 0 when they start without history.
    * The bounces themselves (IRRADIANCE, the history the next bounce reads)
    * are not changed, so the fixed point is the same. GetLastBounceExtrapolation
    * gives the factor rho / (1 - rho) of the last frame (0 when none).
@@ -778,7 +779,7 @@ private:
   void ComputeBounceInput(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void Gather(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void FilterIrradiance(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
-  double EstimateBounceExtrapolation(vtkDeepRadiosityRendererState& state);
+  double EstimateBounceExtrapolation(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void AccumulateIrradiance(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void UpsampleIrradiance(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   static void SetLayersUniforms(vtkShaderProgram* program, const vtkGatherFrame& frame);
