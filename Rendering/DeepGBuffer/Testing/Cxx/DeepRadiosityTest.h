@@ -52,6 +52,21 @@ inline void RedWallScene(vtkRenderer* renderer, double s = 1.0)
   SetCamera(renderer, 5 * s, 2.5 * s, 4 * s, 0.8 * s, 0.4 * s, 0);
 }
 
+// RedWallScene with an ambient term of 0.3 on every actor, so that the
+// obscurance runs besides the radiosity.
+inline void RedWallSceneWithAmbient(vtkRenderer* renderer)
+{
+  RedWallScene(renderer);
+  vtkActorCollection* actors = renderer->GetActors();
+  vtkCollectionSimpleIterator it;
+  actors->InitTraversal(it);
+  while (vtkActor* actor = actors->GetNextActor(it))
+  {
+    actor->GetProperty()->SetAmbient(0.3);
+  }
+  renderer->ResetCameraClippingRange();
+}
+
 // A white floor y = 0 (x in [0, 4], z in [-3, 3]) and a blue panel x = 2.5
 // (y in [0, 1.5], z in [-1, 1]) whose lit face looks +x, AWAY from the
 // floor at x < 2.5; the sun from (5, 4, 0.5) lights the floor and that

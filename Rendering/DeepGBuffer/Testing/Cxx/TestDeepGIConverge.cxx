@@ -54,15 +54,7 @@ struct Scene
   {
     this->Window = MakeWindow(W, H);
     this->Window->AddRenderer(this->Renderer);
-    RedWallScene(this->Renderer);
-    vtkActorCollection* actors = this->Renderer->GetActors();
-    vtkCollectionSimpleIterator it;
-    actors->InitTraversal(it);
-    while (vtkActor* actor = actors->GetNextActor(it))
-    {
-      actor->GetProperty()->SetAmbient(0.3);
-    }
-    this->Renderer->ResetCameraClippingRange();
+    RedWallSceneWithAmbient(this->Renderer);
   }
   ~Scene()
   {
