@@ -338,13 +338,15 @@ public:
    * Whether Converge's frames keep the G-buffer's layers and the ambient
    * visibility of the frame before instead of rendering them again
    * (default on): at a still camera only the radiosity's bounce changes
-   * between them. A frame renders everything when, in it or in the frame
-   * before, the camera (as in the layer count's probe), the modification
-   * time of a prop, of the prop collection, of the renderer or of a
-   * light, a setting of the G-buffer or the window size changed (e.g. by a
-   * ProgressEvent observer; two frames because the single-pass oracles
-   * build layer 1 from the frame before). The ambient visibility is
-   * computed again when its settings changed or its temporal filter is on.
+   * between them. A frame renders the layers again when the renderer's
+   * or a light's modification time, a setting of the G-buffer or the
+   * window size changed since the frame before, and when the camera (as
+   * in the layer count's probe) or the modification time of a prop or of
+   * the prop collection changed in it or in the frame before (e.g. by a
+   * ProgressEvent observer; the single-pass oracles build layer 1 from the
+   * frame before, so layers are kept after such a change only when they
+   * were peeled). The ambient visibility is computed again when its
+   * settings changed or its temporal filter is on.
    * The images are the same as with it off, which renders everything every
    * frame; input the modification times do not show (a texture's or a
    * shader's changing input) needs it off.
