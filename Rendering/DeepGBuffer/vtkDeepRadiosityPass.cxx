@@ -1161,26 +1161,14 @@ double MeanColour(vtkTextureObject* texture)
 }
 
 //------------------------------------------------------------------------------
-// ExtrapolateBounces: this frame's mean |E_k - E_k-1| of layer 0 (the
-// filtered E is E_k without the temporal filter), drawn into RAW, free
-// after the blur, and averaged; returns rho / (1 - rho) from the last four
-// means, or 0.
-double vtkDeepRadiosityPass::EstimateBounceExtrapolation(
+// ExtrapolateBounces, step 1: the mean |E_k - E_k-1| of layer 0 (the
+// filtered E is E_k without the temporal filter), drawn into BLUR_TEMP,
+// free between the blur and the temporal filter and not captured.
+double vtkDeepRadiosityPass::MeasureLastBounce(
   vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
 {
-  if (!this->ExtrapolateBounces || this->TemporalAlpha > 0.0)
-  {
-    state.IncrementCount = 0;
-    return 0.0;
-  }
   vtkInternals& in = *this->Internals;
-  if (!ReadyQuad(in.IncrementQuad, frame.Window, vtkDeepRadiosityIncrementFS))
-  {
-    vtkErrorMacro("The radiosity's increment shader failed to compile; no extrapolation.");
-    return 0.0;
-  }
-  vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: extrapolation");
-  vtkTextureObject* increment = state.Targets[RAW][0];
+  vtkTextureObject* increment = state.Targets[BLUR_TEMP][0];
   in.Framebuffer->AddColorAttachment(0, increment);
   for (int a = 1; a < 2 * Layers; ++a)
   {
@@ -1205,10 +1193,29 @@ double vtkDeepRadiosityPass::EstimateBounceExtrapolation(
   history->Deactivate();
   filtered->Deactivate();
   in.Framebuffer->RemoveColorAttachment(0);
+  return MeanColour(increment);
+}
 
+//------------------------------------------------------------------------------
+// ExtrapolateBounces, step 2: rho / (1 - rho) from the last four means of
+// the last bounce, or 0.
+double vtkDeepRadiosityPass::EstimateBounceExtrapolation(
+  vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
+{
+  if (!this->ExtrapolateBounces || this->TemporalAlpha > 0.0)
+  {
+    state.IncrementCount = 0;
+    return 0.0;
+  }
+  if (!ReadyQuad(this->Internals->IncrementQuad, frame.Window, vtkDeepRadiosityIncrementFS))
+  {
+    vtkErrorMacro("The radiosity's increment shader failed to compile; no extrapolation.");
+    return 0.0;
+  }
+  vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: extrapolation");
   double* means = state.Increments;
   std::copy(means + 1, means + 4, means);
-  means[3] = MeanColour(increment);
+  means[3] = this->MeasureLastBounce(frame, state);
   state.IncrementCount = std::min(state.IncrementCount + 1, 4);
   // rho over two frames, sqrt(m_k / m_k-2): the increments may also hold a
   // component that alternates from frame to frame (light going back and

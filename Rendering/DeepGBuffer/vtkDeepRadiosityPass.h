@@ -779,6 +779,7 @@ private:
   void ComputeBounceInput(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void Gather(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void FilterIrradiance(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
+  double MeasureLastBounce(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   double EstimateBounceExtrapolation(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void AccumulateIrradiance(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void UpsampleIrradiance(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
