@@ -14,6 +14,9 @@
 //    without history) only frame 3 renders them; the radius keeps the
 //    layers and recomputes the obscurance. The image after frame 5 equals
 //    the one with ConvergeReusesLayers off, bit for bit.
+// 3. Two renderers share the pass (side by side) and the second one's
+//    camera moves after frame 2: a shared pass keeps nothing, and the
+//    window equals the one with ConvergeReusesLayers off.
 // The layer count is fixed (AdaptiveLayers off): the coverage query's result
 // arrives after a number of frames that depends on the machine.
 
@@ -41,19 +44,33 @@ struct GIScene
 {
   vtkSmartPointer<vtkRenderWindow> Window;
   vtkNew<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkRenderer> Second; // sharing the pass, when asked for
   vtkNew<vtkDeepGIPass> Pass;
 
-  GIScene()
+  explicit GIScene(bool twoRenderers)
   {
     this->Window = MakeWindow(W, H);
     this->Window->AddRenderer(this->Renderer);
     RedWallSceneWithAmbient(this->Renderer);
     this->Pass->AdaptiveLayersOff();
     this->Renderer->SetPass(this->Pass);
+    if (twoRenderers)
+    {
+      this->Renderer->SetViewport(0.0, 0.0, 0.5, 1.0);
+      this->Second = vtkSmartPointer<vtkRenderer>::New();
+      this->Second->SetViewport(0.5, 0.0, 1.0, 1.0);
+      this->Window->AddRenderer(this->Second);
+      RedWallSceneWithAmbient(this->Second);
+      this->Second->SetPass(this->Pass);
+    }
   }
   ~GIScene()
   {
     this->Renderer->SetPass(nullptr);
+    if (this->Second)
+    {
+      this->Second->SetPass(nullptr);
+    }
     this->Pass->ReleaseGraphicsResources(this->Window);
   }
 };
@@ -69,9 +86,9 @@ struct Run
 
 // One frame before Converge, then Converge(Frames) with `change` applied
 // after frame ChangeAfterFrame; the final image and what each frame kept.
-Run Converge(bool reuse, const Change& change)
+Run Converge(bool reuse, const Change& change, bool twoRenderers)
 {
-  GIScene scene;
+  GIScene scene(twoRenderers);
   scene.Pass->SetConvergeReusesLayers(reuse);
   // VTK adds the headlight during the first frame: the inputs are still
   // from the third frame on.
@@ -135,10 +152,11 @@ int MaximumDifference(const Run& a, const Run& b)
 
 // Converge with and without reuse under `change`; `expected` is the
 // reuse flags of the frames with reuse on.
-void CheckCase(const char* name, const Change& change, const std::string& expected)
+void CheckCase(
+  const char* name, const Change& change, const std::string& expected, bool twoRenderers = false)
 {
-  const Run kept = Converge(true, change);
-  const Run full = Converge(false, change);
+  const Run kept = Converge(true, change, twoRenderers);
+  const Run full = Converge(false, change, twoRenderers);
   const int difference = MaximumDifference(kept, full);
   std::printf("%s: frames keeping the layers %s (off: %s), effects %s, largest difference %d/255\n",
     name, Flags(kept.Reused).c_str(), Flags(full.Reused).c_str(),
@@ -177,5 +195,8 @@ int TestDeepGIConvergeReuse(int, char*[])
   CheckCase(
     "the obscurance's radius",
     [](GIScene& s) { s.Pass->GetAmbientObscurancePass()->SetRadius(0.3); }, "11111");
+  CheckCase(
+    "two renderers, the second's camera",
+    [](GIScene& s) { s.Second->GetActiveCamera()->Azimuth(5.0); }, "00000", true);
   return ExitStatus();
 }
