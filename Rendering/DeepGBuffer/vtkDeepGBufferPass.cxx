@@ -1306,14 +1306,20 @@ bool vtkDeepGBufferPass::ReuseLayers(const vtkRenderState* s)
   {
     return false;
   }
-  // What RecordFrame reported for those layers (another renderer may have
-  // been drawn since).
+  // Another renderer may have been drawn since.
+  this->ReportLayers(state);
+  this->LastGeometryPassCount = 0;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// The Effective* values of the layers the frame uses.
+void vtkDeepGBufferPass::ReportLayers(const vtkDeepGBufferRendererState& state)
+{
   this->EffectiveGuardBand = state.GuardBand;
   this->EffectiveMinimumSeparation = state.MinimumSeparation;
   this->EffectiveNumberOfLayers = state.RenderedLayers;
   this->EffectiveOracle = state.Oracle;
-  this->LastGeometryPassCount = 0;
-  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -1794,10 +1800,7 @@ void vtkDeepGBufferPass::RecordFrame(const vtkLayerFrame& frame)
   state.RenderedSettingsTime = this->GetMTime();
   state.RenderedWindowSize[0] = frame.Width - 2 * frame.Guard;
   state.RenderedWindowSize[1] = frame.Height - 2 * frame.Guard;
-  this->EffectiveGuardBand = frame.Guard;
-  this->EffectiveMinimumSeparation = frame.MinimumSeparation;
-  this->EffectiveNumberOfLayers = frame.Layers;
-  this->EffectiveOracle = state.Oracle;
+  this->ReportLayers(state);
   this->LastGeometryPassCount = frame.GeometryPasses;
 }
 

@@ -73,6 +73,7 @@ class vtkOpenGLRenderer;
 class vtkRenderPass;
 class vtkRenderer;
 class vtkShadowMapPass;
+struct vtkDeepGBufferRendererState;
 
 class VTKDEEPGIRENDERING_EXPORT vtkDeepGBufferPass : public vtkOpenGLRenderPass
 {
@@ -640,6 +641,7 @@ private:
   bool PeelLayers(vtkLayerFrame& frame, int allOracleMask);
   void ExchangeLayer(vtkLayerFrame& frame, int layer);
   void RecordFrame(const vtkLayerFrame& frame);
+  void ReportLayers(const vtkDeepGBufferRendererState& state);
 };
 
 #endif

@@ -814,7 +814,7 @@ void vtkDeepGIPass::Render(const vtkRenderState* s)
   const int layers = !deepEffect ? 1 : (this->AdaptiveLayers ? state.Layers : 2);
   this->GBufferPass->SetNumberOfLayers(layers);
   this->GBufferPass->SetWriteReflectivity(in.AnyReflects());
-  this->DecideLayerReuse(renderer, state);
+  this->DecideLayerReuse(renderer, state); // after UpdateLayerCount and the layer count
 
   in.Wanted = wanted;
   in.MultiplyVisibility = (wanted & AMBIENT_OBSCURANCE) &&
@@ -839,9 +839,11 @@ void vtkDeepGIPass::Render(const vtkRenderState* s)
 // (TestDeepGIConvergeReuse).
 void vtkDeepGIPass::DecideLayerReuse(vtkRenderer* renderer, vtkDeepGIRendererState& state)
 {
-  const SceneKey scene = SceneSignature(renderer);
+  // state.Scene: this frame's signature, as UpdateLayerCount kept it (it
+  // changes only when the scene did).
+  const SceneKey& scene = state.Scene;
   const vtkMTimeType lighting = LightingTime(renderer);
-  state.StillFrames = SameScene(scene, state.StillScene) ? state.StillFrames + 1 : 0;
+  state.StillFrames = scene == state.StillScene ? state.StillFrames + 1 : 0;
   const bool settled = state.StillFrames >= 2 || (state.StillFrames == 1 && state.StillPeeled);
   state.ReuseLayers = this->Internals->Converging && this->ConvergeReusesLayers &&
     this->Internals->States.size() == 1 && state.StillValid && settled &&

@@ -365,8 +365,9 @@ public:
    * Whether Converge shows each frame's radiosity with the bounces still
    * to come extrapolated from the last ones (vtkDeepRadiosityPass::
    * ExtrapolateBounces, default on): the bounces fall geometrically, by
-   * about 0.4 per frame in a room, so from the third frame on the image
-   * is close to the fixed point, and a tolerance is met in fewer frames.
+   * about 0.4 per frame in a room, so once that decay is steady (from the
+   * fourth frame when the radiosity starts without history) the image is
+   * close to the fixed point, and a tolerance is met in fewer frames.
    * The fixed point itself is unchanged. Off: each frame shows the bounces
    * gathered so far.
    *

@@ -164,10 +164,6 @@ vec3 deepReflectance(vec3 rho, bool useBoost)
   return hi > 0.0 ? rho * ((hi - lo) / hi) : vec3(0.0);
 }
 
-// (L, c): the outgoing indirect radiance L = rho boost(rho) E / pi (eq. 6)
-// of a surface of albedo rho receiving E with confidence c, blended with the
-// environment fallback c L + (1 - c) rho E_env / pi when `fallback` is on
-// (section 3.2, Figure 9).
 // Bounce extrapolation of still images (vtkDeepRadiosityPass::
 // ExtrapolateBounces): E plus the bounces still to come, `factor` times the
 // last increment, where the last frame's (E, distance) `previous` is of the
@@ -181,6 +177,10 @@ vec3 deepExtrapolateBounces(vec3 E, vec4 previous, float distance, float factor,
   return E;
 }
 
+// (L, c): the outgoing indirect radiance L = rho boost(rho) E / pi (eq. 6)
+// of a surface of albedo rho receiving E with confidence c, blended with the
+// environment fallback c L + (1 - c) rho E_env / pi when `fallback` is on
+// (section 3.2, Figure 9).
 vec4 deepOutgoingIndirect(vec3 rho, vec3 E, float c, bool boost, bool fallback, vec3 environment)
 {
   c = clamp(c, 0.0, 1.0);
