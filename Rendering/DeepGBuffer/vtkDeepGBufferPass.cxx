@@ -843,6 +843,14 @@ bool vtkDeepGBufferPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstr
   {
     return true;
   }
+  // VTK uploads a renderer's lights to a program only when they or its
+  // camera are newer than the program's last upload
+  // (vtkOpenGLRenderer::UpdateLightingUniforms). The programs are shared
+  // by the window's renderers, so a renderer whose camera and lights are
+  // older than another's would draw with that one's view-space lights.
+  // Forgetting the upload time makes the mapper's lighting step, which
+  // follows this call, upload this renderer's (a few uniforms per draw).
+  program->SetUniformGroupUpdateTime(vtkShaderProgram::LightingGroup, 0);
   SetIfUsed(program, "deepGuardBandScale", in.GuardBandScale);
   if (program->IsUniformUsed("deepOtherMCDC"))
   {

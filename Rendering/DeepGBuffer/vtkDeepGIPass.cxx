@@ -833,10 +833,8 @@ void vtkDeepGIPass::Render(const vtkRenderState* s)
 // camera only the radiosity's bounce changes from frame to frame. After a
 // change of camera or props the single-pass oracles build layer 1 from the
 // frame before, so the first frame's layers are provisional unless they
-// were peeled; a change of lighting alone is redrawn once. A pass shared by
-// several renderers renders everything: a renderer keeping its layers
-// while another one's changed was measured 6/255 off rendering everything
-// (TestDeepGIConvergeReuse).
+// were peeled; a change of lighting alone is redrawn once. Each renderer
+// sharing the pass decides for itself.
 void vtkDeepGIPass::DecideLayerReuse(vtkRenderer* renderer, vtkDeepGIRendererState& state)
 {
   // state.Scene: this frame's signature, as UpdateLayerCount kept it (it
@@ -846,8 +844,7 @@ void vtkDeepGIPass::DecideLayerReuse(vtkRenderer* renderer, vtkDeepGIRendererSta
   state.StillFrames = scene == state.StillScene ? state.StillFrames + 1 : 0;
   const bool settled = state.StillFrames >= 2 || (state.StillFrames == 1 && state.StillPeeled);
   state.ReuseLayers = this->Internals->Converging && this->ConvergeReusesLayers &&
-    this->Internals->States.size() == 1 && state.StillValid && settled &&
-    lighting == state.StillLighting;
+    state.StillValid && settled && lighting == state.StillLighting;
   state.StillScene = scene;
   state.StillLighting = lighting;
   state.StillValid = false; // until this frame has layers

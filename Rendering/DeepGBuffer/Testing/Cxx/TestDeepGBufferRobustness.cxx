@@ -5,7 +5,7 @@
 // - an empty renderer; props added and removed between frames; a window
 //   resized between frames; ReleaseGraphicsResources and render again;
 // - parallel projection; two renderers in one window (non-origin viewport),
-//   sharing one pass, each with its own history;
+//   sharing one pass, each with its own history and its own lights;
 // - meshes without normals, lines and wireframe (the per-layer path) and a
 //   translucent prop drawn by VTK after the G-buffer.
 
@@ -13,6 +13,7 @@
 
 #include "vtkCamera.h"
 #include "vtkDeepGICaptureNames.h"
+#include "vtkLight.h"
 #include "vtkLineSource.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
@@ -257,6 +258,70 @@ void TestViewportsAndProjection()
   pass->ReleaseGraphicsResources(window);
 }
 
+// Two renderers with scene lights share the pass; the left one's camera
+// turns. The right one's image must not change: VTK 9.1's shader programs
+// are shared by the renderers and take a renderer's lights only when they
+// are newer than their last upload, so plain VTK draws the right renderer
+// with the left one's view-space lights here.
+void TestRenderersKeepTheirLights()
+{
+  auto frame = [](bool usePass, bool turnLeft)
+  {
+    auto window = MakeWindow(200, 100);
+    vtkNew<vtkRenderer> left, right;
+    left->SetViewport(0.0, 0.0, 0.5, 1.0);
+    right->SetViewport(0.5, 0.0, 1.0, 1.0);
+    for (vtkRenderer* renderer : { left.Get(), right.Get() })
+    {
+      window->AddRenderer(renderer);
+      AddSphereAndWall(renderer);
+      vtkNew<vtkLight> light;
+      light->SetLightTypeToSceneLight();
+      light->PositionalOff();
+      light->SetPosition(1.0, 2.0, 1.5);
+      light->SetFocalPoint(0.0, 0.0, 0.0);
+      renderer->AddLight(light);
+    }
+    vtkNew<vtkDeepGBufferPass> pass;
+    if (usePass)
+    {
+      left->SetPass(pass);
+      right->SetPass(pass);
+    }
+    for (int k = 0; k < 4; ++k)
+    {
+      if (k == 2 && turnLeft)
+      {
+        left->GetActiveCamera()->Azimuth(30.0);
+        left->ResetCameraClippingRange();
+      }
+      window->Render();
+    }
+    vtkNew<vtkUnsignedCharArray> rgb;
+    window->GetPixelData(100, 0, 199, 99, /*front=*/0, rgb);
+    std::vector<int> pixels(rgb->GetPointer(0), rgb->GetPointer(0) + rgb->GetNumberOfValues());
+    left->SetPass(nullptr);
+    right->SetPass(nullptr);
+    pass->ReleaseGraphicsResources(window);
+    return pixels;
+  };
+  auto difference = [](const std::vector<int>& a, const std::vector<int>& b)
+  {
+    int maximum = a.size() == b.size() && !a.empty() ? 0 : 256;
+    for (size_t i = 0; maximum < 256 && i < a.size(); ++i)
+    {
+      maximum = std::max(maximum, std::abs(a[i] - b[i]));
+    }
+    return maximum;
+  };
+  const int plain = difference(frame(false, false), frame(false, true));
+  const int deep = difference(frame(true, false), frame(true, true));
+  std::printf("right renderer after the left one's camera turned: %d/255 with the pass "
+              "(plain VTK: %d/255)\n",
+    deep, plain);
+  Check(deep == 0, "a renderer sharing the pass is drawn with its own lights");
+}
+
 void TestMappersAndTranslucency()
 {
   // No normals: the shader's geometric normal faces the camera.
@@ -337,6 +402,7 @@ int TestDeepGBufferRobustness(int, char*[])
   TestLayerCounts();
   TestEmptyAndChangingScenes();
   TestViewportsAndProjection();
+  TestRenderersKeepTheirLights();
   TestMappersAndTranslucency();
   return ExitStatus();
 }
