@@ -39,6 +39,7 @@
 #include "vtkDeepAmbientObscuranceFS.h"
 #include "vtkDeepAmbientObscuranceMinifyFS.h"
 #include "vtkDeepAmbientObscuranceTemporalFS.h"
+#include "vtkDeepGeometryKeyFS.h"
 #include "vtkDeepScreenSpaceHelpers.h"
 
 #include <algorithm>
@@ -74,10 +75,13 @@ struct vtkDeepAmbientObscuranceRendererState
   vtkMTimeType SettingsTime = 0; // the pass's modification time in that frame
   double Radius = 0.0;
   int NumberOfSamples = 0;
-  // Distance pyramid: GL_TEXTURE_2D_ARRAY R32F, MipLevels levels (0 when
-  // MaximumMipLevel is 0: taps read the G-buffer directly).
+  // The geometry key's rotated-grid pyramid (vtkDeepGeometryKeyFS, then
+  // vtkDeepAmbientObscuranceMinifyFS): GL_TEXTURE_2D_ARRAY RGBA32F, two of
+  // the MipLayers layers per slice, MipLevels levels (1 when
+  // MaximumMipLevel is 0).
   GLuint MipTexture = 0;
   GLuint MipFramebuffer = 0;
+  int MipUnit = -1; // while bound (BuildKeyPyramid to UnbindKeyPyramid)
   int MipLevels = 0;
   int MipLayers = 0;
   int MipWidth = 0;
@@ -150,10 +154,10 @@ struct vtkDeepAmbientObscuranceRendererState
     {
       bytes += vtkDeepScreenSpace::TextureBytes(t);
     }
-    for (int m = 0; m < this->MipLevels; ++m) // R32F
+    for (int m = 0; m < this->MipLevels; ++m) // RGBA32F, two layers per slice
     {
-      bytes += 4LL * std::max(1, this->MipWidth >> m) * std::max(1, this->MipHeight >> m) *
-        this->MipLayers;
+      bytes += 16LL * std::max(1, this->MipWidth >> m) * std::max(1, this->MipHeight >> m) *
+        ((this->MipLayers + 1) / 2);
     }
     return bytes;
   }
@@ -184,6 +188,7 @@ public:
   vtkOpenGLQuadHelper* BlurQuad = nullptr;
   vtkOpenGLQuadHelper* CompositeQuad = nullptr;
   vtkOpenGLQuadHelper* MinifyQuad = nullptr;
+  vtkOpenGLQuadHelper* KeyQuad = nullptr;
   vtkOpenGLQuadHelper* TemporalQuad = nullptr;
 };
 
@@ -206,6 +211,7 @@ vtkDeepAmbientObscurancePass::~vtkDeepAmbientObscurancePass()
   delete in.BlurQuad;
   delete in.CompositeQuad;
   delete in.MinifyQuad;
+  delete in.KeyQuad;
   delete in.TemporalQuad;
   if (in.Framebuffer)
   {
@@ -477,13 +483,17 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
   {
     vtkOpenGLState* ostate = frame.GL;
     vtkDeepScreenSpace::ScopedStageState stageState(ostate);
-    this->ComputeRawVisibility(frame, state, radius, distanceUnit, normalUnit);
-    this->FilterVisibility(frame, state, distanceUnit, normalUnit);
-    if (temporal)
+    if (this->BuildKeyPyramid(state, frame.Window, distanceUnit, normalUnit, frame.Layers))
     {
-      this->AccumulateVisibility(frame, state, distanceUnit);
+      this->ComputeRawVisibility(frame, state, radius);
+      this->FilterVisibility(frame, state);
+      if (temporal)
+      {
+        this->AccumulateVisibility(frame, state, distanceUnit);
+      }
+      this->Internals->Framebuffer->RemoveColorAttachment(0);
+      this->UnbindKeyPyramid(state, frame.Window);
     }
-    this->Internals->Framebuffer->RemoveColorAttachment(0);
   }
   gbuffer->DeactivateTexture(frame.Renderer, vtkDeepGBufferPass::NORMAL);
   gbuffer->DeactivateTexture(frame.Renderer, vtkDeepGBufferPass::DEPTH);
@@ -546,7 +556,8 @@ bool vtkDeepAmbientObscurancePass::PrepareTargets(
   }
   const bool aoReady = ReadyQuad(in.AOQuad, window, vtkDeepAmbientObscuranceFS);
   const bool blurReady = ReadyQuad(in.BlurQuad, window, vtkDeepAmbientObscuranceBlurFS);
-  const bool minifyReady = ReadyQuad(in.MinifyQuad, window, vtkDeepAmbientObscuranceMinifyFS);
+  const bool minifyReady = ReadyQuad(in.MinifyQuad, window, vtkDeepAmbientObscuranceMinifyFS) &&
+    ReadyQuad(in.KeyQuad, window, vtkDeepGeometryKeyFS);
   const bool temporalReady =
     !temporal || ReadyQuad(in.TemporalQuad, window, vtkDeepAmbientObscuranceTemporalFS);
   if (!aoReady || !blurReady || !minifyReady || !temporalReady)
@@ -559,16 +570,14 @@ bool vtkDeepAmbientObscurancePass::PrepareTargets(
 
 //------------------------------------------------------------------------------
 // Equations 1-2 into RAW, for the frame and GuardBandShadedFraction of the
-// guard band (the scissor); the taps read the whole layers, far ones from
-// the distance pyramid (section 3.4).
-void vtkDeepAmbientObscurancePass::ComputeRawVisibility(const EffectFrame& frame,
-  vtkDeepAmbientObscuranceRendererState& state, double radius, int distanceUnit, int normalUnit)
+// guard band (the scissor); the taps read the whole layers' geometry key,
+// far ones from its coarser levels (section 3.4).
+void vtkDeepAmbientObscurancePass::ComputeRawVisibility(
+  const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state, double radius)
 {
   vtkInternals& in = *this->Internals;
   vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "obscurance: gather");
   vtkOpenGLState* ostate = frame.GL;
-  const int mipUnit =
-    this->BuildDistancePyramid(state, frame.Window, distanceUnit, std::max(1, frame.Layers));
   in.Framebuffer->Bind();
   ostate->vtkglViewport(0, 0, frame.Size[0], frame.Size[1]);
   ostate->vtkglEnable(GL_SCISSOR_TEST);
@@ -578,7 +587,10 @@ void vtkDeepAmbientObscurancePass::ComputeRawVisibility(const EffectFrame& frame
   in.Framebuffer->ActivateDrawBuffers(1);
   vtkShaderProgram* program = in.AOQuad->Program;
   frame.Window->GetShaderCache()->ReadyShaderProgram(program);
-  SetLayerUniforms(program, frame, distanceUnit, normalUnit);
+  program->SetUniform4f("deepProjXY", frame.ProjXY);
+  program->SetUniform4f("deepProjT", frame.ProjT);
+  program->SetUniformi("deepKeyMip", state.MipUnit);
+  program->SetUniformi("deepMaxMip", state.MipLevels - 1);
   program->SetUniformi("deepLayers", this->UseSecondLayer ? std::max(1, frame.Layers) : 1);
   program->SetUniformi("deepSamples", this->NumberOfSamples);
   program->SetUniformf("deepTurns", static_cast<float>(GetSpiralTurns(this->NumberOfSamples)));
@@ -588,23 +600,15 @@ void vtkDeepAmbientObscurancePass::ComputeRawVisibility(const EffectFrame& frame
     "deepEpsilon", static_cast<float>(std::max(this->Epsilon * radius * radius, 1e-30)));
   program->SetUniformf("deepIntensity", static_cast<float>(this->Intensity));
   program->SetUniformi("deepEstimator", this->Estimator);
-  program->SetUniformi("deepDistanceMip", mipUnit >= 0 ? mipUnit : distanceUnit);
-  program->SetUniformi("deepMaxMip", mipUnit >= 0 ? state.MipLevels - 1 : 0);
   program->SetUniformf("deepMipThreshold", static_cast<float>(this->MipThreshold));
   program->SetUniformf("deepRotationOffset", static_cast<float>(state.RotationOffset));
   in.AOQuad->Render();
-  if (mipUnit >= 0)
-  {
-    ostate->vtkglActiveTexture(GL_TEXTURE0 + mipUnit);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-    frame.Window->GetTextureUnitManager()->Free(mipUnit);
-  }
 }
 
 //------------------------------------------------------------------------------
 // Separable bilateral reconstruction (section 3.4): RAW -> BLUR_TEMP -> FILTERED.
-void vtkDeepAmbientObscurancePass::FilterVisibility(const EffectFrame& frame,
-  vtkDeepAmbientObscuranceRendererState& state, int distanceUnit, int normalUnit)
+void vtkDeepAmbientObscurancePass::FilterVisibility(
+  const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state)
 {
   vtkInternals& in = *this->Internals;
   vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "obscurance: blur");
@@ -619,7 +623,9 @@ void vtkDeepAmbientObscurancePass::FilterVisibility(const EffectFrame& frame,
     vtkTextureObject* input = state.Targets[pass[0]];
     input->Activate();
     program->SetUniformi("deepInput", input->GetTextureUnit());
-    SetLayerUniforms(program, frame, distanceUnit, normalUnit);
+    program->SetUniformi("deepKeyMip", state.MipUnit);
+    program->SetUniform4f("deepProjXY", frame.ProjXY);
+    program->SetUniform4f("deepProjT", frame.ProjT);
     const int axis[2] = { pass[2] == 0 ? 1 : 0, pass[2] == 0 ? 0 : 1 };
     program->SetUniform2i("deepAxis", axis);
     program->SetUniformi("deepBlurRadius", this->BlurRadius);
@@ -712,32 +718,35 @@ unsigned int vtkDeepAmbientObscurancePass::GetVisibilityTextureHandle(vtkRendere
 }
 
 //------------------------------------------------------------------------------
-int vtkDeepAmbientObscurancePass::BuildDistancePyramid(vtkDeepAmbientObscuranceRendererState& state,
-  vtkOpenGLRenderWindow* window, int distanceUnit, int layers)
+// The geometry key of the layers (level 0; two layers per slice) and its
+// rotated-grid pyramid, levels 1 to MaximumMipLevel (SAO's minification:
+// each texel is one texel of the level below, a true surface's distance
+// and normal), bound to a unit of its own (state.MipUnit) until
+// UnbindKeyPyramid. Returns false, with an error, when it cannot be built.
+bool vtkDeepAmbientObscurancePass::BuildKeyPyramid(vtkDeepAmbientObscuranceRendererState& state,
+  vtkOpenGLRenderWindow* window, int distanceUnit, int normalUnit, int layers)
 {
+  vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "obscurance: key pyramid");
   const int width = state.Width, height = state.Height;
   int finest = 0;
   while ((std::max(width, height) >> (finest + 1)) > 0)
   {
     ++finest; // floor(log2(max(width, height)))
   }
-  const int coarsest = std::min(this->MaximumMipLevel, finest);
-  if (coarsest <= 0 || distanceUnit < 0)
-  {
-    state.ReleaseMip();
-    return -1;
-  }
-  const int levels = coarsest + 1;
-  vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "obscurance: depth MIP");
+  const int levels = std::max(0, std::min(this->MaximumMipLevel, finest)) + 1;
+  layers = std::max(1, layers);
+  const int slices = (layers + 1) / 2;
   // Take a unit of our own first: binding on the active unit would unbind
   // the G-buffer texture the caller activated there.
   vtkOpenGLState* ostate = window->GetState();
-  const int mipUnit = window->GetTextureUnitManager()->Allocate();
-  if (mipUnit < 0)
+  state.MipUnit =
+    distanceUnit >= 0 && normalUnit >= 0 ? window->GetTextureUnitManager()->Allocate() : -1;
+  if (state.MipUnit < 0)
   {
-    return -1;
+    vtkErrorMacro("No texture unit for the geometry key; no ambient obscurance this frame.");
+    return false;
   }
-  ostate->vtkglActiveTexture(GL_TEXTURE0 + mipUnit);
+  ostate->vtkglActiveTexture(GL_TEXTURE0 + state.MipUnit);
   if (!state.MipTexture || state.MipLevels != levels || state.MipLayers != layers ||
     state.MipWidth != width || state.MipHeight != height)
   {
@@ -750,8 +759,8 @@ int vtkDeepAmbientObscurancePass::BuildDistancePyramid(vtkDeepAmbientObscuranceR
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     for (int m = 0; m < levels; ++m)
     {
-      glTexImage3D(GL_TEXTURE_2D_ARRAY, m, GL_R32F, std::max(1, width >> m),
-        std::max(1, height >> m), layers, 0, GL_RED, GL_FLOAT, nullptr);
+      glTexImage3D(GL_TEXTURE_2D_ARRAY, m, GL_RGBA32F, std::max(1, width >> m),
+        std::max(1, height >> m), slices, 0, GL_RGBA, GL_FLOAT, nullptr);
     }
     glGenFramebuffers(1, &state.MipFramebuffer);
     state.MipLevels = levels;
@@ -759,41 +768,58 @@ int vtkDeepAmbientObscurancePass::BuildDistancePyramid(vtkDeepAmbientObscuranceR
     state.MipWidth = width;
     state.MipHeight = height;
   }
-
   glBindTexture(GL_TEXTURE_2D_ARRAY, state.MipTexture);
   ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, state.MipFramebuffer);
   const GLenum drawBuffer = GL_COLOR_ATTACHMENT0;
   glDrawBuffers(1, &drawBuffer);
-  vtkShaderProgram* program = this->Internals->MinifyQuad->Program;
-  window->GetShaderCache()->ReadyShaderProgram(program);
+  vtkInternals& in = *this->Internals;
   for (int m = 0; m < levels; ++m)
   {
-    // Level 0 copies the G-buffer; level m reads level m - 1 of the pyramid
-    // itself, restricted to that level (base = max = m - 1) so the level
-    // being written is outside the sampled range (no feedback loop).
-    if (m > 0)
+    const int target[2] = { std::max(1, width >> m), std::max(1, height >> m) };
+    ostate->vtkglViewport(0, 0, target[0], target[1]);
+    vtkOpenGLQuadHelper* quad = m == 0 ? in.KeyQuad : in.MinifyQuad;
+    vtkShaderProgram* program = quad->Program;
+    window->GetShaderCache()->ReadyShaderProgram(program);
+    if (m == 0)
     {
-      ostate->vtkglActiveTexture(GL_TEXTURE0 + mipUnit);
+      program->SetUniformi("deepDistance", distanceUnit);
+      program->SetUniformi("deepNormal", normalUnit);
+      program->SetUniformi("deepLayers", layers);
+      program->SetUniform2i("deepKeySize", target);
+    }
+    else
+    {
+      // Level m reads level m - 1 of the pyramid itself, restricted to that
+      // level (base = max = m - 1) so the level being written is outside
+      // the sampled range (no feedback loop).
+      ostate->vtkglActiveTexture(GL_TEXTURE0 + state.MipUnit);
       glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BASE_LEVEL, m - 1);
       glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, m - 1);
+      program->SetUniformi("deepSource", state.MipUnit);
+      program->SetUniform2i("deepTargetSize", target);
     }
-    program->SetUniformi("deepSource", m == 0 ? distanceUnit : mipUnit);
-    program->SetUniformi("deepRotate", m == 0 ? 0 : 1);
-    const int target[2] = { std::max(1, width >> m), std::max(1, height >> m) };
-    program->SetUniform2i("deepTargetSize", target);
-    ostate->vtkglViewport(0, 0, std::max(1, width >> m), std::max(1, height >> m));
-    for (int j = 0; j < layers; ++j)
+    for (int slice = 0; slice < slices; ++slice)
     {
-      glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, state.MipTexture, m, j);
-      program->SetUniformi("deepLayer", j);
-      this->Internals->MinifyQuad->Render();
+      glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, state.MipTexture, m, slice);
+      program->SetUniformi(m == 0 ? "deepFirstLayer" : "deepLayer", m == 0 ? 2 * slice : slice);
+      quad->Render();
     }
   }
   glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, 0, 0, 0);
-  ostate->vtkglActiveTexture(GL_TEXTURE0 + mipUnit);
+  ostate->vtkglActiveTexture(GL_TEXTURE0 + state.MipUnit);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BASE_LEVEL, 0);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, levels - 1);
-  return mipUnit;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepAmbientObscurancePass::UnbindKeyPyramid(
+  vtkDeepAmbientObscuranceRendererState& state, vtkOpenGLRenderWindow* window)
+{
+  window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + state.MipUnit);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  window->GetTextureUnitManager()->Free(state.MipUnit);
+  state.MipUnit = -1;
 }
 
 //------------------------------------------------------------------------------
@@ -807,16 +833,8 @@ bool vtkDeepAmbientObscurancePass::CaptureDistancePyramid(
                   "renderer.");
     return false;
   }
-  const int levels = std::max(1, state->MipLevels);
-  GLuint handle = state->MipTexture;
-  int layers = state->MipLayers;
-  if (!handle)
-  {
-    double view[16], projection[16];
-    layers = std::max(1, this->GBufferPass->GetLayerCamera(state->Renderer, view, projection));
-    handle = this->GBufferPass->GetTextureHandle(state->Renderer, vtkDeepGBufferPass::DEPTH);
-  }
-  if (level < 0 || level >= levels || !handle)
+  const int levels = state->MipLevels;
+  if (level < 0 || level >= levels || !state->MipTexture)
   {
     vtkErrorMacro(
       "CaptureDistancePyramid: level " << level << " does not exist (" << levels << " levels).");
@@ -828,28 +846,33 @@ bool vtkDeepAmbientObscurancePass::CaptureDistancePyramid(
   vtkOpenGLState* ostate = window->GetState();
   vtkOpenGLClearErrorMacro();
   vtkOpenGLState::ScopedglActiveTexture savedUnit(ostate);
-  GLint previousArray = 0;
-  glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &previousArray);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, handle);
-  GLint w = 0, h = 0, depth = 0;
+  GLint previous = 0;
+  glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &previous);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, state->MipTexture);
+  GLint w = 0, h = 0, slices = 0;
   glGetTexLevelParameteriv(GL_TEXTURE_2D_ARRAY, level, GL_TEXTURE_WIDTH, &w);
   glGetTexLevelParameteriv(GL_TEXTURE_2D_ARRAY, level, GL_TEXTURE_HEIGHT, &h);
-  glGetTexLevelParameteriv(GL_TEXTURE_2D_ARRAY, level, GL_TEXTURE_DEPTH, &depth);
+  glGetTexLevelParameteriv(GL_TEXTURE_2D_ARRAY, level, GL_TEXTURE_DEPTH, &slices);
   const size_t pixels = static_cast<size_t>(w) * h;
-  std::vector<float> values(pixels * std::max(1, depth));
+  // Per slice s and texel: (distance 2s, normal 2s, distance 2s+1, normal 2s+1).
+  std::vector<float> key(pixels * 4 * std::max(1, slices));
   ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTexImage(GL_TEXTURE_2D_ARRAY, level, GL_RED, GL_FLOAT, values.data());
+  glGetTexImage(GL_TEXTURE_2D_ARRAY, level, GL_RGBA, GL_FLOAT, key.data());
   ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, previousArray);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, previous);
 
   output->Initialize();
   output->SetDimensions(w, h, 1);
-  for (int j = 0; j < std::min(layers, static_cast<int>(depth)); ++j)
+  for (int j = 0; j < std::min(state->MipLayers, 2 * static_cast<int>(slices)); ++j)
   {
     vtkNew<vtkFloatArray> array;
     array->SetName((vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Distance, j)).c_str());
     array->SetNumberOfTuples(pixels);
-    std::copy(values.begin() + j * pixels, values.begin() + (j + 1) * pixels, array->GetPointer(0));
+    const float* slice = key.data() + (j / 2) * pixels * 4;
+    for (size_t p = 0; p < pixels; ++p)
+    {
+      array->SetValue(static_cast<vtkIdType>(p), slice[4 * p + 2 * (j % 2)]);
+    }
     output->GetPointData()->AddArray(array);
   }
   vtkNew<vtkIntArray> count;
@@ -872,7 +895,7 @@ void vtkDeepAmbientObscurancePass::ReleaseGraphicsResources(vtkWindow* w)
   vtkInternals& in = *this->Internals;
   in.States.Release(w);
   for (vtkOpenGLQuadHelper** quad :
-    { &in.AOQuad, &in.BlurQuad, &in.CompositeQuad, &in.MinifyQuad, &in.TemporalQuad })
+    { &in.AOQuad, &in.BlurQuad, &in.CompositeQuad, &in.MinifyQuad, &in.KeyQuad, &in.TemporalQuad })
   {
     vtkDeepScreenSpace::ReleaseQuad(*quad, w);
   }

@@ -583,19 +583,19 @@ protected:
   /// The opaque step of the frame: layers, AO, filter, composite.
   void RenderOpaque(const vtkRenderState* s) override;
 
-  /// Builds the distance pyramid into the bound framebuffer slot; returns
-  /// the texture unit it is bound to (-1: no pyramid, taps read level 0).
-  int BuildDistancePyramid(vtkDeepAmbientObscuranceRendererState& state,
-    vtkOpenGLRenderWindow* window, int distanceUnit, int layers);
+  /// The geometry key and its pyramid, bound until UnbindKeyPyramid.
+  bool BuildKeyPyramid(vtkDeepAmbientObscuranceRendererState& state, vtkOpenGLRenderWindow* window,
+    int distanceUnit, int normalUnit, int layers);
+  static void UnbindKeyPyramid(
+    vtkDeepAmbientObscuranceRendererState& state, vtkOpenGLRenderWindow* window);
 
   ///@{
   /// The stages of UpdateAmbientVisibility, in order.
   bool PrepareTargets(
     const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state, bool temporal);
-  void ComputeRawVisibility(const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state,
-    double radius, int distanceUnit, int normalUnit);
-  void FilterVisibility(const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state,
-    int distanceUnit, int normalUnit);
+  void ComputeRawVisibility(
+    const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state, double radius);
+  void FilterVisibility(const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state);
   void AccumulateVisibility(
     const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state, int distanceUnit);
   ///@}

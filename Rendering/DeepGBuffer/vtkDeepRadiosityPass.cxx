@@ -29,6 +29,7 @@
 #include "vtkWeakPointer.h"
 #include "vtk_glew.h"
 
+#include "vtkDeepGeometryKeyFS.h"
 #include "vtkDeepRadiosityBlurFS.h"
 #include "vtkDeepRadiosityBounceFS.h"
 #include "vtkDeepRadiosityCompositeFS.h"
@@ -78,6 +79,15 @@ const int ReducedQuantities[NumberOfReducedQuantities] = { vtkDeepGBufferPass::D
 const GLenum ReducedFormats[NumberOfReducedQuantities] = { GL_R32F, GL_RG8, GL_RGBA8 };
 const int ReducedBytes[NumberOfReducedQuantities] = { 4, 2, 4 };
 
+// The geometry keys (vtkDeepGeometryKeyFS): the layers' (the gather's
+// taps) and, on a reduced grid, the grid's (the filters).
+enum GeometryKey
+{
+  LAYER_KEY = 0,
+  GRID_KEY = 1,
+  NUMBER_OF_KEYS = 2
+};
+
 }
 
 //------------------------------------------------------------------------------
@@ -111,6 +121,9 @@ struct vtkDeepRadiosityRendererState
 {
   vtkWeakPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkTextureObject> Targets[NUMBER_OF_TARGETS][Layers];
+  // Keys[LAYER_KEY] at the layers' size; Keys[GRID_KEY] at the grid's with
+  // a divisor D > 1, otherwise released (the grid is the layers').
+  vtkSmartPointer<vtkTextureObject> Keys[NUMBER_OF_KEYS];
   // History[i][j]: (E_t, distance) of layer j; History[HistoryCurrent] is
   // the last frame's.
   vtkSmartPointer<vtkTextureObject> History[2][Layers];
@@ -185,6 +198,10 @@ struct vtkDeepRadiosityRendererState
         bytes += vtkDeepScreenSpace::TextureBytes(t);
       }
     }
+    for (const auto& t : this->Keys)
+    {
+      bytes += vtkDeepScreenSpace::TextureBytes(t);
+    }
     return bytes;
   }
 
@@ -203,6 +220,10 @@ struct vtkDeepRadiosityRendererState
       {
         ReleaseTarget(t, w);
       }
+    }
+    for (auto& t : this->Keys)
+    {
+      ReleaseTarget(t, w);
     }
     this->ReleaseReduced();
     this->ResetHistory();
@@ -265,6 +286,7 @@ public:
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
   vtkOpenGLQuadHelper* BounceQuad = nullptr;
   vtkOpenGLQuadHelper* GatherQuad = nullptr;
+  vtkOpenGLQuadHelper* KeyQuad = nullptr;
   vtkOpenGLQuadHelper* BlurQuad = nullptr;
   vtkOpenGLQuadHelper* TemporalQuad = nullptr;
   vtkOpenGLQuadHelper* IncrementQuad = nullptr; // ExtrapolateBounces
@@ -291,8 +313,8 @@ vtkDeepRadiosityPass::~vtkDeepRadiosityPass()
     vtkWarningMacro("Destroyed without ReleaseGraphicsResources(); OpenGL objects are leaked "
                     "unless the context was destroyed first.");
   }
-  for (vtkOpenGLQuadHelper* quad : { in.BounceQuad, in.GatherQuad, in.BlurQuad, in.TemporalQuad,
-         in.IncrementQuad, in.CompositeQuad, in.ReduceQuad, in.UpsampleQuad })
+  for (vtkOpenGLQuadHelper* quad : { in.BounceQuad, in.GatherQuad, in.KeyQuad, in.BlurQuad,
+         in.TemporalQuad, in.IncrementQuad, in.CompositeQuad, in.ReduceQuad, in.UpsampleQuad })
   {
     delete quad;
   }
@@ -664,6 +686,7 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
       this->ReduceLayers(frame, state);
     }
     this->Internals->Framebuffer->Bind();
+    this->BuildGeometryKeys(frame, state);
     ostate->vtkglViewport(0, 0, frame.Size[0], frame.Size[1]);
     this->ComputeBounceInput(frame, state);
     // The other stages shade the frame and GuardBandShadedFraction of the
@@ -812,6 +835,7 @@ bool vtkDeepRadiosityPass::PrepareTargets(
   }
   const bool ready = ReadyQuad(in.BounceQuad, window, vtkDeepRadiosityBounceFS) &&
     ReadyQuad(in.GatherQuad, window, vtkDeepRadiosityFS) &&
+    ReadyQuad(in.KeyQuad, window, vtkDeepGeometryKeyFS) &&
     ReadyQuad(in.BlurQuad, window, vtkDeepRadiosityBlurFS) &&
     ReadyQuad(in.TemporalQuad, window, vtkDeepRadiosityTemporalFS) &&
     ReadyQuad(in.CompositeQuad, window, vtkDeepRadiosityCompositeFS) &&
@@ -892,6 +916,17 @@ bool vtkDeepRadiosityPass::AllocateTargets(
     {
       allocated = allocated && AllocateTarget(t, window, frame.Size[0], frame.Size[1], 4);
     }
+  }
+  allocated = allocated &&
+    AllocateTarget(state.Keys[LAYER_KEY], window, frame.LayerSize[0], frame.LayerSize[1], 4);
+  if (frame.Divisor > 1)
+  {
+    allocated =
+      allocated && AllocateTarget(state.Keys[GRID_KEY], window, frame.Size[0], frame.Size[1], 4);
+  }
+  else
+  {
+    ReleaseTarget(state.Keys[GRID_KEY], window);
   }
   return allocated;
 }
@@ -1001,6 +1036,41 @@ void vtkDeepRadiosityPass::UnbindReduced(vtkGatherFrame& frame)
 }
 
 //------------------------------------------------------------------------------
+// Step 0b: the geometry keys (vtkDeepGeometryKeyFS) over the whole layers
+// (the taps read the guard band too) and, on a reduced grid, over the
+// grid (from the reduced G-buffer). Leaves the framebuffer without
+// attachments.
+void vtkDeepRadiosityPass::BuildGeometryKeys(
+  vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
+{
+  vtkInternals& in = *this->Internals;
+  vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: geometry key");
+  vtkShaderProgram* program = in.KeyQuad->Program;
+  frame.Window->GetShaderCache()->ReadyShaderProgram(program);
+  program->SetUniformi("deepLayers", frame.UsedLayers);
+  program->SetUniformi("deepFirstLayer", 0);
+  for (int key = 0; key < NUMBER_OF_KEYS; ++key)
+  {
+    vtkTextureObject* target = state.Keys[key];
+    if (!target)
+    {
+      continue;
+    }
+    const int* units = key == LAYER_KEY ? frame.LayerUnits : frame.Units;
+    const int size[2] = { static_cast<int>(target->GetWidth()),
+      static_cast<int>(target->GetHeight()) };
+    in.Framebuffer->AddColorAttachment(0, target);
+    in.Framebuffer->ActivateDrawBuffers(1);
+    frame.GL->vtkglViewport(0, 0, size[0], size[1]);
+    program->SetUniformi("deepDistance", units[vtkDeepGBufferPass::DEPTH]);
+    program->SetUniformi("deepNormal", units[vtkDeepGBufferPass::NORMAL]);
+    program->SetUniform2i("deepKeySize", size);
+    in.KeyQuad->Render();
+  }
+  in.Framebuffer->RemoveColorAttachment(0);
+}
+
+//------------------------------------------------------------------------------
 // The distance, normal and projection uniforms of the layers themselves
 // (not the reduced grid's): the bounce input and the gather's taps.
 void vtkDeepRadiosityPass::SetLayersUniforms(vtkShaderProgram* program, const vtkGatherFrame& frame)
@@ -1088,11 +1158,13 @@ void vtkDeepRadiosityPass::Gather(vtkGatherFrame& frame, vtkDeepRadiosityRendere
   vtkShaderProgram* program = in.GatherQuad->Program;
   frame.Window->GetShaderCache()->ReadyShaderProgram(program);
   // Receivers on the output grid, taps and sources in the layers.
-  SetLayersUniforms(program, frame);
+  program->SetUniform4f("deepProjXY", frame.LayerProjXY);
+  program->SetUniform4f("deepProjT", frame.LayerProjT);
+  state.Keys[LAYER_KEY]->Activate();
+  program->SetUniformi("deepKey", state.Keys[LAYER_KEY]->GetTextureUnit());
   program->SetUniform2i("deepReceiverGrid", frame.Size);
   program->SetUniformi("deepDivisor", frame.Divisor);
   BindLayerTextures(program, "deepBounce", state.Targets[BOUNCE]);
-  program->SetUniformi("deepLayers", frame.UsedLayers);
   program->SetUniformi("deepSamples", this->NumberOfSamples);
   program->SetUniformf(
     "deepTurns", static_cast<float>(vtkDeepScreenSpace::SpiralTurns(this->NumberOfSamples)));
@@ -1107,6 +1179,7 @@ void vtkDeepRadiosityPass::Gather(vtkGatherFrame& frame, vtkDeepRadiosityRendere
   program->SetUniformf("deepRotationOffset", static_cast<float>(frame.RotationOffset));
   in.GatherQuad->Render();
   UnbindLayerTextures(state.Targets[BOUNCE]);
+  state.Keys[LAYER_KEY]->Deactivate();
 }
 
 //------------------------------------------------------------------------------
@@ -1118,14 +1191,17 @@ void vtkDeepRadiosityPass::FilterIrradiance(
   vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: blur");
   const int passes[2][3] = { { RAW, BLUR_TEMP, 0 }, { BLUR_TEMP, FILTERED, 1 } };
   vtkShaderProgram* program = in.BlurQuad->Program;
+  vtkTextureObject* key = state.Keys[frame.Divisor > 1 ? GRID_KEY : LAYER_KEY];
+  key->Activate();
   for (const auto& pass : passes)
   {
     AttachLayerTextures(in.Framebuffer, state.Targets[pass[1]]);
     frame.Window->GetShaderCache()->ReadyShaderProgram(program);
     vtkDeepScreenSpace::SetShadedRegionUniforms(program, frame.Region);
     BindLayerTextures(program, "deepInput", state.Targets[pass[0]]);
-    SetLayerUniforms(program, frame, frame.DistanceUnit(), frame.NormalUnit());
-    program->SetUniformi("deepLayers", frame.UsedLayers);
+    program->SetUniformi("deepKey", key->GetTextureUnit());
+    program->SetUniform4f("deepProjXY", frame.ProjXY);
+    program->SetUniform4f("deepProjT", frame.ProjT);
     const int axis[2] = { pass[2] == 0 ? 1 : 0, pass[2] == 0 ? 0 : 1 };
     program->SetUniform2i("deepAxis", axis);
     program->SetUniformi("deepBlurRadius", this->BlurRadius);
@@ -1134,6 +1210,7 @@ void vtkDeepRadiosityPass::FilterIrradiance(
     in.BlurQuad->Render();
     UnbindLayerTextures(state.Targets[pass[0]]);
   }
+  key->Deactivate();
 }
 
 //------------------------------------------------------------------------------
@@ -1374,7 +1451,7 @@ void vtkDeepRadiosityPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkInternals& in = *this->Internals;
   in.States.Release(w);
-  for (vtkOpenGLQuadHelper** quad : { &in.BounceQuad, &in.GatherQuad, &in.BlurQuad,
+  for (vtkOpenGLQuadHelper** quad : { &in.BounceQuad, &in.GatherQuad, &in.KeyQuad, &in.BlurQuad,
          &in.TemporalQuad, &in.IncrementQuad, &in.CompositeQuad, &in.ReduceQuad, &in.UpsampleQuad })
   {
     vtkDeepScreenSpace::ReleaseQuad(*quad, w);

@@ -776,6 +776,7 @@ private:
   bool AllocateTargets(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   bool AllocateReduced(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void ReduceLayers(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
+  void BuildGeometryKeys(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void ComputeBounceInput(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void Gather(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void FilterIrradiance(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);

@@ -12,8 +12,7 @@
 in vec2 texCoord;
 
 uniform sampler2D deepInput;       // AV to filter (R32F)
-uniform sampler2DArray deepDistance;
-uniform sampler2DArray deepNormal;
+uniform sampler2DArray deepKeyMip; // geometry key (level 0, slice 0: layer 0's .xy)
 uniform ivec2 deepAxis;            // (1, 0) horizontal, (0, 1) vertical
 uniform int deepBlurRadius;        // taps on each side
 uniform float deepPlaneTolerance;  // fraction of the centre's distance
@@ -27,17 +26,18 @@ uniform float deepNormalPower;
 
 void main()
 {
-  vec2 size = vec2(textureSize(deepDistance, 0).xy);
+  vec2 size = vec2(textureSize(deepKeyMip, 0).xy);
   ivec2 pixel = min(ivec2(texCoord * size), ivec2(size) - 1);
   float centerValue = texelFetch(deepInput, pixel, 0).r;
-  float d = texelFetch(deepDistance, ivec3(pixel, 0), 0).r;
+  vec2 key = texelFetch(deepKeyMip, ivec3(pixel, 0), 0).xy;
+  float d = key.x;
   if (!(d > 0.0))
   {
     gl_FragData[0] = vec4(centerValue, 0.0, 0.0, 1.0);
     return;
   }
   vec3 X = deepPositionFromDistance(vec2(pixel) + 0.5, size, d);
-  vec3 n = deepDecodeOct16(texelFetch(deepNormal, ivec3(pixel, 0), 0).rg);
+  vec3 n = deepUnpackOct16(key.y);
   float sigma = max(0.5 * float(deepBlurRadius), 0.5);
   float tolerance = deepPlaneTolerance * d;
 
@@ -54,13 +54,14 @@ void main()
     {
       continue;
     }
-    float dy = texelFetch(deepDistance, ivec3(tap, 0), 0).r;
+    vec2 tapKey = texelFetch(deepKeyMip, ivec3(tap, 0), 0).xy;
+    float dy = tapKey.x;
     if (!(dy > 0.0))
     {
       continue;
     }
     vec3 Y = deepPositionFromDistance(vec2(tap) + 0.5, size, dy);
-    vec3 ny = deepDecodeOct16(texelFetch(deepNormal, ivec3(tap, 0), 0).rg);
+    vec3 ny = deepUnpackOct16(tapKey.y);
     float w = deepBilateralWeight(k, sigma, X, n, Y, ny, tolerance, deepNormalPower);
     sum += w * texelFetch(deepInput, tap, 0).r;
     weights += w;

@@ -8,8 +8,7 @@
 
 in vec2 texCoord;
 
-uniform sampler2DArray deepDistance;
-uniform sampler2DArray deepNormal;
+uniform sampler2DArray deepKeyMip; // geometry key pyramid, two layers per slice
 uniform int deepLayers;        // layers searched for occluders (1 = layer 0 only)
 uniform int deepSamples;       // N
 uniform float deepTurns;       // tau(N), Listing 3
@@ -18,7 +17,6 @@ uniform float deepBias;        // beta, world units
 uniform float deepEpsilon;     // epsilon, world units squared
 uniform float deepIntensity;   // exponent applied to AV
 uniform int deepEstimator;     // DEEP_AO_ESTIMATOR_*
-uniform sampler2DArray deepDistanceMip; // rotated-grid distance pyramid
 uniform int deepMaxMip;        // finest..coarsest level index available
 uniform float deepMipThreshold; // q, pixels
 uniform float deepRotationOffset; // radians added to phi (0 unless temporal)
@@ -31,9 +29,10 @@ uniform float deepRotationOffset; // radians added to phi (0 unless temporal)
 
 void main()
 {
-  vec2 size = vec2(textureSize(deepDistance, 0).xy);
+  vec2 size = vec2(textureSize(deepKeyMip, 0).xy);
   ivec2 pixel = min(ivec2(texCoord * size), ivec2(size) - 1);
-  float d = texelFetch(deepDistance, ivec3(pixel, 0), 0).r;
+  vec4 key = texelFetch(deepKeyMip, ivec3(pixel, 0), 0);
+  float d = key.x;
   if (!(d > 0.0))
   {
     gl_FragData[0] = vec4(1.0);
@@ -41,7 +40,7 @@ void main()
   }
   vec2 center = vec2(pixel) + 0.5;
   vec3 X = deepPositionFromDistance(center, size, d);
-  vec3 n = deepDecodeOct16(texelFetch(deepNormal, ivec3(pixel, 0), 0).rg);
+  vec3 n = deepUnpackOct16(key.y);
   float r2 = deepRadius * deepRadius;
 
   // Screen-space radius r_p: r projected at X's depth (section 3.4).
@@ -65,18 +64,24 @@ void main()
     {
       continue;
     }
-    // MIP level m_i (section 3.4). The coarse texel holds the distance of
+    // MIP level m_i (section 3.4). The coarse texel holds the geometry of
     // one level-0 texel (the rotated grid's choice); the tap's point is
     // reconstructed at THAT texel's centre, so it is an exact surface point
     // (SAO reconstructs at the tap's own centre with the coarse distance
-    // instead).
+    // instead). One fetch gives two layers' distances and normals.
     int m = deepTapMipLevel(h, deepMipThreshold, 0, deepMaxMip);
     ivec2 coarse = deepCoarseTexel(tap, m, ivec2(size));
     vec2 tapCenter = vec2(deepRotatedGridSource(coarse, m, ivec2(size))) + 0.5;
     float best = 0.0; // max(0, A_i^0, A_i^1, ...)
+    vec4 tapKey = vec4(0.0);
     for (int j = 0; j < deepLayers; ++j)
     {
-      float dy = texelFetch(deepDistanceMip, ivec3(coarse, j), m).r;
+      if ((j & 1) == 0)
+      {
+        tapKey = texelFetch(deepKeyMip, ivec3(coarse, j >> 1), m);
+      }
+      vec2 geometry = (j & 1) == 0 ? tapKey.xy : tapKey.zw;
+      float dy = geometry.x;
       if (!(dy > 0.0))
       {
         continue;
@@ -96,7 +101,7 @@ void main()
           float along = dot(v, ray);
           float across = sqrt(max(vv - along * along, 0.0));
           float t2 = vv + deepEpsilon;
-          vec3 ny = deepDecodeOct16(texelFetch(deepNormal, ivec3(ivec2(tapCenter), j), 0).rg);
+          vec3 ny = deepUnpackOct16(geometry.y);
           vec3 rayY = normalize(deepPositionFromDistance(tapCenter, size, 2.0 * dy) - (v + X));
           float cosCamera = max(abs(dot(ny, rayY)), 0.1);
           float cosX = abs(dot(ny, v)) * inversesqrt(max(vv, 1e-30));

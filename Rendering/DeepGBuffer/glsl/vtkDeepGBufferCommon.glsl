@@ -23,15 +23,35 @@ vec2 deepEncodeOct16(vec3 n)
   return (floor(clamp(p, -1.0, 1.0) * 127.0 + 0.5) + 127.0) / 255.0;
 }
 
-vec3 deepDecodeOct16(vec2 encoded)
+// The unit normal of the octahedron levels k (0..254 per axis).
+vec3 deepNormalFromOct16Levels(vec2 k)
 {
-  vec2 p = (floor(encoded * 255.0 + 0.5) - 127.0) / 127.0;
+  vec2 p = (k - 127.0) / 127.0;
   vec3 n = vec3(p, 1.0 - abs(p.x) - abs(p.y));
   if (n.z < 0.0)
   {
     n.xy = (1.0 - abs(n.yx)) * deepSignNotZero(n.xy);
   }
   return normalize(n);
+}
+
+vec3 deepDecodeOct16(vec2 encoded)
+{
+  return deepNormalFromOct16Levels(floor(encoded * 255.0 + 0.5));
+}
+
+// Both levels of an Oct16 normal as one integer k.x + 256 k.y, exact in a
+// float (a geometry key's normal, vtkDeepGeometryKeyFS), and back.
+float deepPackOct16(vec2 encoded)
+{
+  vec2 k = floor(encoded * 255.0 + 0.5);
+  return k.x + 256.0 * k.y;
+}
+
+vec3 deepUnpackOct16(float levels)
+{
+  float y = floor(levels * (1.0 / 256.0));
+  return deepNormalFromOct16Levels(vec2(levels - 256.0 * y, y));
 }
 
 // Camera-space distance (positive in front of the camera) from clip-space

@@ -12,9 +12,7 @@ in vec2 texCoord;
 
 uniform sampler2D deepInput0;      // (E, confidence) of layer 0
 uniform sampler2D deepInput1;      // (E, confidence) of layer 1
-uniform sampler2DArray deepDistance;
-uniform sampler2DArray deepNormal;
-uniform int deepLayers;
+uniform sampler2D deepKey;         // both layers' distance and normal (vtkDeepGeometryKeyFS)
 uniform ivec2 deepAxis;            // (1, 0) horizontal, (0, 1) vertical
 uniform int deepBlurRadius;        // taps on each side
 uniform float deepPlaneTolerance;  // fraction of the centre's distance
@@ -26,50 +24,69 @@ uniform float deepNormalPower;
 
 //VTK::Output::Dec
 
-vec4 value(int layer, ivec2 p)
+// One layer's side of the filter: its centre (position X, normal n, plane
+// tolerance) and running sums, in named variables (arrays indexed in a
+// loop cost more than the fetch saved on a CPU renderer).
+struct Layer
 {
-  return layer == 0 ? texelFetch(deepInput0, p, 0) : texelFetch(deepInput1, p, 0);
+  bool Filtered;
+  vec3 X;
+  vec3 N;
+  float Tolerance;
+  vec4 Sum;
+  float Weights;
+};
+
+Layer beginLayer(vec2 geometry, ivec2 pixel, vec2 size, vec4 center)
+{
+  Layer layer;
+  layer.Filtered = geometry.x > 0.0;
+  layer.X = deepPositionFromDistance(vec2(pixel) + 0.5, size, geometry.x);
+  layer.N = deepUnpackOct16(geometry.y);
+  layer.Tolerance = deepPlaneTolerance * geometry.x;
+  layer.Sum = center;
+  layer.Weights = 1.0;
+  return layer;
 }
 
-vec4 filterLayer(ivec2 pixel, vec2 size, int layer)
+void addTap(inout Layer layer, vec2 geometry, ivec2 tap, vec2 size, int k, float sigma,
+  vec4 tapValue)
 {
-  vec4 center = value(layer, pixel);
-  float d = texelFetch(deepDistance, ivec3(pixel, layer), 0).r;
-  if (layer >= deepLayers || !(d > 0.0))
-  {
-    return center;
-  }
-  vec3 X = deepPositionFromDistance(vec2(pixel) + 0.5, size, d);
-  vec3 n = deepDecodeOct16(texelFetch(deepNormal, ivec3(pixel, layer), 0).rg);
+  vec3 Y = deepPositionFromDistance(vec2(tap) + 0.5, size, geometry.x);
+  vec3 ny = deepUnpackOct16(geometry.y);
+  float w = deepBilateralWeight(k, sigma, layer.X, layer.N, Y, ny, layer.Tolerance, deepNormalPower);
+  layer.Sum += w * tapValue;
+  layer.Weights += w;
+}
+
+// Both layers in one loop over the taps, so that a tap's geometry is one
+// fetch of the key for both.
+void main()
+{
+  ivec2 isize = textureSize(deepKey, 0);
+  vec2 size = vec2(isize);
+  ivec2 pixel = min(ivec2(texCoord * size), isize - 1);
+  vec4 key = texelFetch(deepKey, pixel, 0);
+  Layer layer0 = beginLayer(key.xy, pixel, size, texelFetch(deepInput0, pixel, 0));
+  Layer layer1 = beginLayer(key.zw, pixel, size, texelFetch(deepInput1, pixel, 0));
   float sigma = max(0.5 * float(deepBlurRadius), 0.5);
-  float tolerance = deepPlaneTolerance * d;
-  vec4 sum = center;
-  float weights = 1.0;
-  for (int k = -deepBlurRadius; k <= deepBlurRadius; ++k)
+  for (int k = -deepBlurRadius; k <= deepBlurRadius && (layer0.Filtered || layer1.Filtered); ++k)
   {
     ivec2 tap = pixel + k * deepAxis;
     if (k == 0 || !deepShaded(tap))
     {
       continue;
     }
-    float dy = texelFetch(deepDistance, ivec3(tap, layer), 0).r;
-    if (!(dy > 0.0))
+    vec4 tapKey = texelFetch(deepKey, tap, 0);
+    if (layer0.Filtered && tapKey.x > 0.0)
     {
-      continue;
+      addTap(layer0, tapKey.xy, tap, size, k, sigma, texelFetch(deepInput0, tap, 0));
     }
-    vec3 Y = deepPositionFromDistance(vec2(tap) + 0.5, size, dy);
-    vec3 ny = deepDecodeOct16(texelFetch(deepNormal, ivec3(tap, layer), 0).rg);
-    float w = deepBilateralWeight(k, sigma, X, n, Y, ny, tolerance, deepNormalPower);
-    sum += w * value(layer, tap);
-    weights += w;
+    if (layer1.Filtered && tapKey.z > 0.0)
+    {
+      addTap(layer1, tapKey.zw, tap, size, k, sigma, texelFetch(deepInput1, tap, 0));
+    }
   }
-  return sum / weights;
-}
-
-void main()
-{
-  vec2 size = vec2(textureSize(deepDistance, 0).xy);
-  ivec2 pixel = min(ivec2(texCoord * size), ivec2(size) - 1);
-  gl_FragData[0] = filterLayer(pixel, size, 0);
-  gl_FragData[1] = filterLayer(pixel, size, 1);
+  gl_FragData[0] = layer0.Sum / layer0.Weights;
+  gl_FragData[1] = layer1.Sum / layer1.Weights;
 }

@@ -38,12 +38,10 @@
 
 in vec2 texCoord;
 
-uniform sampler2DArray deepDistance;
-uniform sampler2DArray deepNormal;
+uniform sampler2D deepKey;         // both layers' distance and normal (vtkDeepGeometryKeyFS)
 uniform sampler2D deepBounce0;     // (B, coverage) of layer 0 from level deepMinMip on
 uniform sampler2D deepBounce1;     // of layer 1 (vtkDeepRadiosityBounceFS)
 uniform int deepAverageFarTaps;    // taps above deepMinMip read their block's mean B
-uniform int deepLayers;            // 1 or 2
 uniform int deepSamples;           // N
 uniform float deepTurns;           // tau(N), Listing 3
 uniform float deepRadius;          // r, world units
@@ -65,11 +63,12 @@ uniform int deepDivisor;           // D: output texel q gathers for layer texel 
 
 void main()
 {
-  vec2 size = vec2(textureSize(deepDistance, 0).xy);
-  ivec2 isize = ivec2(size);
+  ivec2 isize = textureSize(deepKey, 0);
+  vec2 size = vec2(isize);
   ivec2 receiver = min(ivec2(texCoord * vec2(deepReceiverGrid)), deepReceiverGrid - 1);
   ivec2 pixel = min(receiver * deepDivisor, isize - 1);
-  float d0 = texelFetch(deepDistance, ivec3(pixel, 0), 0).r;
+  vec4 key = texelFetch(deepKey, pixel, 0);
+  float d0 = key.x;
   gl_FragData[0] = vec4(0.0);
   gl_FragData[1] = vec4(0.0);
   if (!(d0 > 0.0) || !(deepRadius > 0.0))
@@ -82,10 +81,10 @@ void main()
   bool valid[2];
   for (int j = 0; j < 2; ++j)
   {
-    float d = j < deepLayers ? texelFetch(deepDistance, ivec3(pixel, j), 0).r : 0.0;
-    valid[j] = d > 0.0;
-    X[j] = deepPositionFromDistance(center, size, max(d, 0.0));
-    nX[j] = deepDecodeOct16(texelFetch(deepNormal, ivec3(pixel, j), 0).rg);
+    vec2 geometry = j == 0 ? key.xy : key.zw;
+    valid[j] = geometry.x > 0.0;
+    X[j] = deepPositionFromDistance(center, size, max(geometry.x, 0.0));
+    nX[j] = deepUnpackOct16(geometry.y);
   }
   float r2 = deepRadius * deepRadius;
   float rp = deepScreenRadius(deepRadius, d0, size);
@@ -138,13 +137,14 @@ void main()
     vec3 B[2];
     float area[2];
     bool present[2];
+    vec4 sourceKey = texelFetch(deepKey, source, 0);
     for (int k = 0; k < 2; ++k)
     {
-      float dy = k < deepLayers ? texelFetch(deepDistance, ivec3(source, k), 0).r : 0.0;
+      vec2 geometry = k == 0 ? sourceKey.xy : sourceKey.zw;
+      float dy = geometry.x;
       present[k] = dy > 0.0;
       Y[k] = deepPositionFromDistance(sourceCenter, size, max(dy, 0.0));
-      nY[k] = useNormals ? deepDecodeOct16(texelFetch(deepNormal, ivec3(source, k), 0).rg)
-                         : vec3(0.0);
+      nY[k] = useNormals ? deepUnpackOct16(geometry.y) : vec3(0.0);
       vec4 b = k == 0 ? texelFetch(deepBounce0, bounceTexel, bounceLevel)
                       : texelFetch(deepBounce1, bounceTexel, bounceLevel);
       B[k] = b.a > 0.0 ? b.rgb / b.a : vec3(0.0);

@@ -1,0 +1,47 @@
+//VTK::System::Dec
+
+//=========================================================================
+// The geometry key of the screen-space effects: per texel, two layers'
+// camera-space distance and Oct16 normal in one RGBA32F texel,
+//   (distance f, normal f, distance f + 1, normal f + 1), f = deepFirstLayer,
+// each normal's two 8-bit levels packed into one float (deepPackOct16,
+// exact). The gathers' and the filters' taps read a texel's geometry in
+// one fetch instead of up to four (distance and normal per layer), the
+// cost that dominates them on a CPU renderer (Documentation/performance.md).
+// Distance 0: no surface (also for a layer from deepLayers on). The
+// obscurance builds its rotated-grid pyramid from it
+// (vtkDeepAmbientObscuranceMinifyFS).
+//=========================================================================
+
+in vec2 texCoord;
+
+uniform sampler2DArray deepDistance;
+uniform sampler2DArray deepNormal;
+uniform int deepLayers;     // the G-buffer's
+uniform int deepFirstLayer; // f
+uniform ivec2 deepKeySize;
+
+//VTK::DeepGBuffer::Common
+
+//VTK::Output::Dec
+
+void main()
+{
+  ivec2 texel = min(ivec2(texCoord * vec2(deepKeySize)), deepKeySize - 1);
+  vec4 key = vec4(0.0);
+  for (int k = 0; k < 2; ++k)
+  {
+    int j = deepFirstLayer + k;
+    float d = j < deepLayers ? texelFetch(deepDistance, ivec3(texel, j), 0).r : 0.0;
+    float n = j < deepLayers ? deepPackOct16(texelFetch(deepNormal, ivec3(texel, j), 0).rg) : 0.0;
+    if (k == 0)
+    {
+      key.xy = vec2(d, n);
+    }
+    else
+    {
+      key.zw = vec2(d, n);
+    }
+  }
+  gl_FragData[0] = key;
+}
