@@ -35,9 +35,11 @@
  *   phi = 2 pi fract(52.9829189 fract(0.06711056 x + 0.00583715 y)).
  * Camera-space positions come from each layer's DEPTH (distance d along
  * -z: z = -d) and the projection the layers were rasterised with.
- * Taps read a camera-space distance MIP pyramid (section 3.4, after SAO,
- * McGuire, Mara and Luebke, HPG 2012): level 0 is a copy of each layer's
- * distance, level m + 1 texel (x, y) is level m texel
+ * Taps read the MIP pyramid of the layers' geometry key (section 3.4,
+ * after SAO, McGuire, Mara and Luebke, HPG 2012): level 0 holds, per
+ * texel, two layers' distance and Oct16 normal in one RGBA32F texel (one
+ * fetch instead of four; one slice per two layers), level m + 1 texel
+ * (x, y) is level m texel
  * (2x + (y & 1), 2y + (x & 1)) clamped to level m's size (SAO's rotated-grid
  * downsampling, SAO_minify.pix). Tap i reads level
  * m_i = clamp(floor(log2(h_i / q)), 0, L), q = MipThreshold pixels,
@@ -45,7 +47,7 @@
  * reconstructed at the centre of the level-0 texel the rotated grid chose
  * for that coarse texel, so it is an exact surface point (up to 2^m - 1
  * pixels from the tap in each axis). MaximumMipLevel = 0 reads level 0
- * only and builds no pyramid.
+ * only and builds no coarser level.
  *
  * The reconstruction is a separable bilateral filter (horizontal, then
  * vertical), BlurRadius taps on each side with Gaussian spatial weights
@@ -372,7 +374,7 @@ public:
 
   ///@{
   /**
-   * Depth MIP pyramid (see the class description): q, the screen radius in
+   * MIP pyramid (see the class description): q, the screen radius in
    * pixels at which taps start reading coarser levels: taps with h_i >= 2q
    * read coarser levels (default 8, SAO's 2^LOG_MAX_OFFSET; clamped to
    * [1, 65536]).
@@ -387,8 +389,8 @@ public:
 
   ///@{
   /**
-   * Depth MIP pyramid: the coarsest level L (0 to 15, default 5 as SAO's
-   * MAX_MIP_LEVEL; 0 disables the pyramid: taps read level 0).
+   * MIP pyramid: the coarsest level L (0 to 15, default 5 as SAO's
+   * MAX_MIP_LEVEL; 0: taps read level 0 only).
    *
    * @unit level
    * @range 0 to 15, clamped
@@ -414,7 +416,7 @@ public:
   ///@}
 
   /**
-   * Copies level `level` of the distance pyramid of the last frame rendered
+   * Copies the distances of level `level` of the pyramid of the last frame rendered
    * for `renderer` (the first renderer if null) into `output`, an image of
    * that level's size (max(1, width >> level) x max(1, height >> level), of
    * the G-buffer's layers: the frame and its guard band):
@@ -518,7 +520,7 @@ public:
   bool CaptureAmbientVisibility(vtkImageData* output, vtkRenderer* renderer = nullptr);
 
   /**
-   * Computes this frame's ambient visibility (distance pyramid, eq. 1-2,
+   * Computes this frame's ambient visibility (key pyramid, eq. 1-2,
    * bilateral filter and, with TemporalAlpha > 0, the temporal
    * accumulation) for the renderer of `s` from the layers GetGBufferPass()
    * has just built, without drawing into the renderer's framebuffer.
@@ -572,7 +574,7 @@ public:
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
   /// The memory of the textures this pass holds for all renderers, in bytes:
-  /// the obscurance targets, the temporal history and the distance pyramid. Proportional to the
+  /// the obscurance targets, the temporal history and the key pyramid. Proportional to the
   /// layers' pixels; 0 after ReleaseGraphicsResources.
   vtkTypeInt64 GetTextureBytes();
 

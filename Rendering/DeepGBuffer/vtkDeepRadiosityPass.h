@@ -40,7 +40,7 @@
  * Taps read MIP level m_i = clamp(floor(log2(h_i / q)), MinimumMipLevel,
  * MaximumMipLevel) of a rotated-grid pyramid (SAO's minification): the
  * pass reads the level-0 texel that level m stores at the tap's coarse
- * texel (the same texel vtkDeepAmbientObscurancePass's distance pyramid
+ * texel (the same texel vtkDeepAmbientObscurancePass's key pyramid
  * holds), so a coarse level moves the tap to a texel of a coarser grid
  * (more correlated taps, Table 2's trade) and every sample is an exact
  * surface point. With AverageFarTaps (the default) a tap above the minimum

@@ -6,7 +6,7 @@
 //   (x, y) -> (2x + (y & 1), 2y + (x & 1)) (each clamped to the finer
 //   level's size) select, level 0 equals the G-buffer's distance, and the
 //   number of levels is min(MaximumMipLevel, floor(log2(max(w, h)))) + 1;
-// - MaximumMipLevel = 0 builds no pyramid (level 0 only can be captured,
+// - MaximumMipLevel = 0 builds level 0 only (only level 0 can be captured,
 //   level 1 is refused) and the raw AV is finite;
 // - on the floor/wall corner at 240 x 200 (r = 1, N = 16, q = 8, L = 5)
 //   the filtered AV with the pyramid stays close to the AV read from level 0
