@@ -6,6 +6,7 @@
 // give a worst case of 0.954 degrees (measured over 2M directions); the test
 // requires max < 1.0 degree and mean < 0.35 degree over 1M directions for
 // the C++ codec and a 512 x 512 latitude-longitude grid for the GLSL encoder.
+// The geometry key's packing of the two levels into one float is exact.
 
 #include "DeepGBufferTestUtilities.h"
 #include "vtkDeepGBufferPass.h"
@@ -27,6 +28,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <vector>
 
 namespace
@@ -104,12 +106,12 @@ void CheckCppCodecAccuracy()
   CheckStatistics("C++ codec", maximum, sum, n);
 }
 
-// Encodes a latitude-longitude grid of directions with the shaders' GLSL into an RG8 target,
-// reads the bytes back and decodes them with the C++ codec.
-void CheckGlslEncoderAccuracy()
+// Runs `body` (GLSL statements writing gl_FragData[0] from `texel`, the
+// integer texel, with vtkDeepGBufferCommon included) over a size x size
+// target of the given format, then `read` while the target is bound.
+bool DrawFullScreen(const std::string& body, int size, int internalFormat, int format, int dataType,
+  int components, const std::function<void()>& read)
 {
-  const int size = 512;
-  const int n = size * size;
   vtkNew<vtkRenderer> renderer;
   vtkSmartPointer<vtkRenderWindow> window = DeepGBufferTest::MakeWindow(16, 16);
   window->AddRenderer(renderer);
@@ -117,16 +119,16 @@ void CheckGlslEncoderAccuracy()
   vtkOpenGLRenderWindow* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
   if (!DeepGITest::Check(glWindow != nullptr, "an OpenGL render window"))
   {
-    return;
+    return false;
   }
   glWindow->MakeCurrent();
 
   vtkNew<vtkTextureObject> target;
   target->SetContext(glWindow);
-  target->SetInternalFormat(GL_RG8);
-  target->SetFormat(GL_RG);
-  target->SetDataType(GL_UNSIGNED_BYTE);
-  target->Allocate2D(size, size, 2, VTK_UNSIGNED_CHAR);
+  target->SetInternalFormat(internalFormat);
+  target->SetFormat(format);
+  target->SetDataType(dataType);
+  target->Allocate2D(size, size, components, dataType == GL_FLOAT ? VTK_FLOAT : VTK_UNSIGNED_CHAR);
 
   vtkNew<vtkOpenGLFramebufferObject> fbo;
   fbo->SetContext(glWindow);
@@ -147,18 +149,13 @@ void CheckGlslEncoderAccuracy()
   fs += "//VTK::Output::Dec\n"
         "void main()\n"
         "{\n"
-        "  vec2 angles = floor(texCoord * float(width)) + 0.5;\n"
-        "  float theta = 3.14159265358979 * angles.y / float(width);\n"
-        "  float phi = 6.28318530717959 * angles.x / float(width);\n"
-        "  vec3 d = vec3(sin(theta) * cos(phi), sin(theta) * sin(phi), cos(theta));\n"
-        "  gl_FragData[0] = vec4(deepEncodeOct16(d), 0.0, 1.0);\n"
-        "}\n";
+        "  ivec2 texel = ivec2(floor(texCoord * float(width)));\n" +
+    body + "}\n";
   bool ok = false;
   {
     vtkOpenGLQuadHelper quad(
       glWindow, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), "");
-    ok =
-      DeepGITest::Check(quad.Program && quad.Program->GetCompiled(), "the encoder shader compiles");
+    ok = DeepGITest::Check(quad.Program && quad.Program->GetCompiled(), "the shader compiles");
     if (ok)
     {
       glWindow->GetShaderCache()->ReadyShaderProgram(quad.Program);
@@ -169,19 +166,35 @@ void CheckGlslEncoderAccuracy()
     }
     quad.ReleaseGraphicsResources(glWindow);
   }
-  std::vector<unsigned char> bytes(2 * n);
   if (ok)
   {
     ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
     target->Bind();
-    glGetTexImage(GL_TEXTURE_2D, 0, GL_RG, GL_UNSIGNED_BYTE, bytes.data());
+    read();
     ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
   }
   fbo->UnBind();
   ostate->PopFramebufferBindings();
   target->ReleaseGraphicsResources(glWindow);
   fbo->ReleaseGraphicsResources(glWindow);
-  if (!ok)
+  return ok;
+}
+
+// Encodes a latitude-longitude grid of directions with the shaders' GLSL into an RG8 target,
+// reads the bytes back and decodes them with the C++ codec.
+void CheckGlslEncoderAccuracy()
+{
+  const int size = 512;
+  const int n = size * size;
+  std::vector<unsigned char> bytes(2 * n);
+  const std::string body =
+    "  vec2 angles = vec2(texel) + 0.5;\n"
+    "  float theta = 3.14159265358979 * angles.y / float(width);\n"
+    "  float phi = 6.28318530717959 * angles.x / float(width);\n"
+    "  vec3 d = vec3(sin(theta) * cos(phi), sin(theta) * sin(phi), cos(theta));\n"
+    "  gl_FragData[0] = vec4(deepEncodeOct16(d), 0.0, 1.0);\n";
+  if (!DrawFullScreen(body, size, GL_RG8, GL_RG, GL_UNSIGNED_BYTE, 2,
+        [&] { glGetTexImage(GL_TEXTURE_2D, 0, GL_RG, GL_UNSIGNED_BYTE, bytes.data()); }))
   {
     return;
   }
@@ -217,11 +230,46 @@ void CheckGlslEncoderAccuracy()
   }
   CheckStatistics("GLSL encoder", maximum, sum, n);
 }
+
+// The geometry key (vtkDeepGeometryKeyFS) stores an Oct16 normal's two
+// 8-bit levels as one float, k.x + 256 k.y: for every pair of bytes, the
+// packed value is that integer and unpacking it gives exactly the normal
+// deepDecodeOct16 gives (so the effects reading the key compute bit for bit
+// what they computed from the normal texture).
+void CheckGlslKeyPacking()
+{
+  const int size = 256;
+  std::vector<float> values(4 * size * size);
+  const std::string body =
+    "  vec2 encoded = vec2(texel) / 255.0;\n"
+    "  float levels = deepPackOct16(encoded);\n"
+    "  vec3 difference = deepUnpackOct16(levels) - deepDecodeOct16(encoded);\n"
+    "  gl_FragData[0] = vec4(levels, abs(difference));\n";
+  if (!DrawFullScreen(body, size, GL_RGBA32F, GL_RGBA, GL_FLOAT, 4,
+        [&] { glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, values.data()); }))
+  {
+    return;
+  }
+  int wrongLevels = 0, inexact = 0;
+  for (int i = 0; i < size * size; ++i)
+  {
+    const float expected = static_cast<float>(i % size + 256 * (i / size));
+    wrongLevels += values[4 * i] != expected;
+    inexact += values[4 * i + 1] != 0.0f || values[4 * i + 2] != 0.0f || values[4 * i + 3] != 0.0f;
+  }
+  DeepGITest::Check(wrongLevels == 0,
+    DeepGITest::Format(
+      "the key's packed levels are k.x + 256 k.y (%d of 65536 differ)", wrongLevels));
+  DeepGITest::Check(inexact == 0,
+    DeepGITest::Format(
+      "unpacking the key gives deepDecodeOct16's normal exactly (%d of 65536 differ)", inexact));
+}
 }
 
 int TestDeepGBufferOct16(int, char*[])
 {
   CheckCppCodecAccuracy();
   CheckGlslEncoderAccuracy();
+  CheckGlslKeyPacking();
   return DeepGITest::ExitStatus();
 }
