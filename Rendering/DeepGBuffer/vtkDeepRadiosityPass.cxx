@@ -270,6 +270,13 @@ struct vtkDeepRadiosityRendererState
     return quantity == vtkDeepRadiosityPass::INDIRECT_RADIANCE ? this->Indirect(layer) : nullptr;
   }
 
+  // The key of the gather's output grid (the filters', the temporal
+  // filter's): the layers' own without a divisor.
+  vtkTextureObject* GridKey()
+  {
+    return this->Divisor > 1 ? this->Keys[GRID_KEY] : this->Keys[LAYER_KEY];
+  }
+
   // L of a layer: INDIRECT, except layer 1 on a reduced grid, which stays
   // there (BLUR_TEMP, see UpsampleIrradiance).
   vtkTextureObject* Indirect(int layer)
@@ -1191,7 +1198,7 @@ void vtkDeepRadiosityPass::FilterIrradiance(
   vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: blur");
   const int passes[2][3] = { { RAW, BLUR_TEMP, 0 }, { BLUR_TEMP, FILTERED, 1 } };
   vtkShaderProgram* program = in.BlurQuad->Program;
-  vtkTextureObject* key = state.Keys[frame.Divisor > 1 ? GRID_KEY : LAYER_KEY];
+  vtkTextureObject* key = state.GridKey();
   key->Activate();
   for (const auto& pass : passes)
   {
@@ -1328,9 +1335,12 @@ void vtkDeepRadiosityPass::AccumulateIrradiance(
   vtkDeepScreenSpace::SetShadedRegionUniforms(program, frame.Region);
   BindLayerTextures(program, "deepInput", state.Targets[FILTERED]);
   BindLayerTextures(program, "deepHistory", state.History[frame.Previous]);
-  SetLayerUniforms(program, frame, frame.DistanceUnit(), frame.NormalUnit());
+  vtkTextureObject* key = state.GridKey();
+  key->Activate();
+  program->SetUniformi("deepKey", key->GetTextureUnit());
+  program->SetUniform4f("deepProjXY", frame.ProjXY);
+  program->SetUniform4f("deepProjT", frame.ProjT);
   program->SetUniformi("deepAlbedo", frame.Units[vtkDeepGBufferPass::ALBEDO]);
-  program->SetUniformi("deepLayers", frame.UsedLayers);
   program->SetUniformi("deepHasHistory", state.HistoryValid ? 1 : 0);
   program->SetUniformMatrix4x4("deepToPrevious", frame.ToPrevious);
   program->SetUniformMatrix4x4("deepPrevProjection", frame.PreviousProjection);
@@ -1340,6 +1350,7 @@ void vtkDeepRadiosityPass::AccumulateIrradiance(
   this->SetOutgoingUniforms(program);
   program->SetUniformf("deepIrradianceLimit", static_cast<float>(IRRADIANCE_LIMIT));
   in.TemporalQuad->Render();
+  key->Deactivate();
   UnbindLayerTextures(state.History[frame.Previous]);
   UnbindLayerTextures(state.Targets[FILTERED]);
 }

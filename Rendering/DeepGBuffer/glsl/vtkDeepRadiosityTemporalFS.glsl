@@ -22,10 +22,8 @@ uniform sampler2D deepInput0;     // filtered (E, confidence) of layer 0
 uniform sampler2D deepInput1;
 uniform sampler2D deepHistory0;   // last frame's (E, distance) of layer 0
 uniform sampler2D deepHistory1;
-uniform sampler2DArray deepDistance;
-uniform sampler2DArray deepNormal;
+uniform sampler2D deepKey;        // both layers' distance and normal (vtkDeepGeometryKeyFS)
 uniform sampler2DArray deepAlbedo;
-uniform int deepLayers;
 uniform int deepHasHistory;
 uniform mat4 deepToPrevious;
 uniform mat4 deepPrevProjection;
@@ -43,12 +41,14 @@ uniform float deepIrradianceLimit;
 
 //VTK::Output::Dec
 
-void filterLayer(ivec2 pixel, vec2 size, int layer, out vec4 history, out vec4 indirect)
+// `geometry`: the layer's (distance, packed normal) from the key.
+void filterLayer(ivec2 pixel, vec2 size, int layer, vec2 geometry, out vec4 history,
+  out vec4 indirect)
 {
   history = vec4(0.0);
   indirect = vec4(0.0);
-  float d = texelFetch(deepDistance, ivec3(pixel, layer), 0).r;
-  if (layer >= deepLayers || !(d > 0.0))
+  float d = geometry.x;
+  if (!(d > 0.0))
   {
     return;
   }
@@ -66,7 +66,7 @@ void filterLayer(ivec2 pixel, vec2 size, int layer, out vec4 history, out vec4 i
     float dr;
     if (deepReproject(X, deepToPrevious, deepPrevProjection, size, texel, dr))
     {
-      vec3 n = deepDecodeOct16(texelFetch(deepNormal, ivec3(pixel, layer), 0).rg);
+      vec3 n = deepUnpackOct16(geometry.y);
       float expected =
         deepExpectedPreviousDistance(X, n, deepToPrevious, deepPrevProjection, texel, size);
       vec4 h0 = texelFetch(deepHistory0, texel, 0);
@@ -92,11 +92,12 @@ void filterLayer(ivec2 pixel, vec2 size, int layer, out vec4 history, out vec4 i
 
 void main()
 {
-  vec2 size = vec2(textureSize(deepDistance, 0).xy);
+  vec2 size = vec2(textureSize(deepKey, 0));
   ivec2 pixel = min(ivec2(texCoord * size), ivec2(size) - 1);
+  vec4 key = texelFetch(deepKey, pixel, 0);
   vec4 history0, history1, indirect0, indirect1;
-  filterLayer(pixel, size, 0, history0, indirect0);
-  filterLayer(pixel, size, 1, history1, indirect1);
+  filterLayer(pixel, size, 0, key.xy, history0, indirect0);
+  filterLayer(pixel, size, 1, key.zw, history1, indirect1);
   gl_FragData[0] = history0;
   gl_FragData[1] = history1;
   gl_FragData[2] = indirect0;
