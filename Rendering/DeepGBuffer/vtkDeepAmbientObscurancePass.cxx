@@ -480,10 +480,12 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
   vtkDeepGBufferPass* gbuffer = this->GBufferPass;
   const int distanceUnit = gbuffer->ActivateTexture(frame.Renderer, vtkDeepGBufferPass::DEPTH);
   const int normalUnit = gbuffer->ActivateTexture(frame.Renderer, vtkDeepGBufferPass::NORMAL);
+  bool computed = false;
   {
     vtkOpenGLState* ostate = frame.GL;
     vtkDeepScreenSpace::ScopedStageState stageState(ostate);
-    if (this->BuildKeyPyramid(state, frame.Window, distanceUnit, normalUnit, frame.Layers))
+    computed = this->BuildKeyPyramid(state, frame.Window, distanceUnit, normalUnit, frame.Layers);
+    if (computed)
     {
       this->ComputeRawVisibility(frame, state, radius);
       this->FilterVisibility(frame, state);
@@ -497,6 +499,10 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
   }
   gbuffer->DeactivateTexture(frame.Renderer, vtkDeepGBufferPass::NORMAL);
   gbuffer->DeactivateTexture(frame.Renderer, vtkDeepGBufferPass::DEPTH);
+  if (!computed)
+  {
+    return false;
+  }
   state.HasFrame = true;
   state.SettingsTime = this->GetMTime();
   state.Radius = radius;
