@@ -753,7 +753,9 @@ bool vtkDeepAmbientObscurancePass::BuildKeyPyramid(vtkDeepAmbientObscuranceRende
     return false;
   }
   ostate->vtkglActiveTexture(GL_TEXTURE0 + state.MipUnit);
-  if (!state.MipTexture || state.MipLevels != levels || state.MipLayers != layers ||
+  // Reallocated when its slices change, not with every change of the layer
+  // count (the adaptive count of vtkDeepGIPass alternates 1 and 2).
+  if (!state.MipTexture || state.MipLevels != levels || (state.MipLayers + 1) / 2 != slices ||
     state.MipWidth != width || state.MipHeight != height)
   {
     state.ReleaseMip();
@@ -770,10 +772,10 @@ bool vtkDeepAmbientObscurancePass::BuildKeyPyramid(vtkDeepAmbientObscuranceRende
     }
     glGenFramebuffers(1, &state.MipFramebuffer);
     state.MipLevels = levels;
-    state.MipLayers = layers;
     state.MipWidth = width;
     state.MipHeight = height;
   }
+  state.MipLayers = layers;
   glBindTexture(GL_TEXTURE_2D_ARRAY, state.MipTexture);
   ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, state.MipFramebuffer);
   const GLenum drawBuffer = GL_COLOR_ATTACHMENT0;
