@@ -115,6 +115,36 @@ struct vtkDeepAmbientObscuranceRendererState
     this->FrameIndex = 0;
   }
 
+  // The pyramid's texture (bound to the active unit) and framebuffer for
+  // `levels` levels of the layers' size and `layers` layers. Reallocated
+  // when its slices change, not with every change of the layer count (the
+  // adaptive count of vtkDeepGIPass alternates 1 and 2).
+  void AllocateMip(int levels, int layers)
+  {
+    const int slices = (layers + 1) / 2;
+    if (!this->MipTexture || this->MipLevels != levels || (this->MipLayers + 1) / 2 != slices ||
+      this->MipWidth != this->Width || this->MipHeight != this->Height)
+    {
+      this->ReleaseMip();
+      glGenTextures(1, &this->MipTexture);
+      glBindTexture(GL_TEXTURE_2D_ARRAY, this->MipTexture);
+      glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+      glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+      for (int m = 0; m < levels; ++m)
+      {
+        glTexImage3D(GL_TEXTURE_2D_ARRAY, m, GL_RGBA32F, std::max(1, this->Width >> m),
+          std::max(1, this->Height >> m), slices, 0, GL_RGBA, GL_FLOAT, nullptr);
+      }
+      glGenFramebuffers(1, &this->MipFramebuffer);
+      this->MipLevels = levels;
+      this->MipWidth = this->Width;
+      this->MipHeight = this->Height;
+    }
+    this->MipLayers = layers;
+  }
+
   void ReleaseMip()
   {
     if (this->MipTexture)
@@ -593,9 +623,7 @@ void vtkDeepAmbientObscurancePass::ComputeRawVisibility(
   in.Framebuffer->ActivateDrawBuffers(1);
   vtkShaderProgram* program = in.AOQuad->Program;
   frame.Window->GetShaderCache()->ReadyShaderProgram(program);
-  program->SetUniform4f("deepProjXY", frame.ProjXY);
-  program->SetUniform4f("deepProjT", frame.ProjT);
-  program->SetUniformi("deepKeyMip", state.MipUnit);
+  SetKeyUniforms(program, state.MipUnit, frame.ProjXY, frame.ProjT);
   program->SetUniformi("deepMaxMip", state.MipLevels - 1);
   program->SetUniformi("deepLayers", this->UseSecondLayer ? std::max(1, frame.Layers) : 1);
   program->SetUniformi("deepSamples", this->NumberOfSamples);
@@ -629,9 +657,7 @@ void vtkDeepAmbientObscurancePass::FilterVisibility(
     vtkTextureObject* input = state.Targets[pass[0]];
     input->Activate();
     program->SetUniformi("deepInput", input->GetTextureUnit());
-    program->SetUniformi("deepKeyMip", state.MipUnit);
-    program->SetUniform4f("deepProjXY", frame.ProjXY);
-    program->SetUniform4f("deepProjT", frame.ProjT);
+    SetKeyUniforms(program, state.MipUnit, frame.ProjXY, frame.ProjT);
     const int axis[2] = { pass[2] == 0 ? 1 : 0, pass[2] == 0 ? 0 : 1 };
     program->SetUniform2i("deepAxis", axis);
     program->SetUniformi("deepBlurRadius", this->BlurRadius);
@@ -753,29 +779,7 @@ bool vtkDeepAmbientObscurancePass::BuildKeyPyramid(vtkDeepAmbientObscuranceRende
     return false;
   }
   ostate->vtkglActiveTexture(GL_TEXTURE0 + state.MipUnit);
-  // Reallocated when its slices change, not with every change of the layer
-  // count (the adaptive count of vtkDeepGIPass alternates 1 and 2).
-  if (!state.MipTexture || state.MipLevels != levels || (state.MipLayers + 1) / 2 != slices ||
-    state.MipWidth != width || state.MipHeight != height)
-  {
-    state.ReleaseMip();
-    glGenTextures(1, &state.MipTexture);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, state.MipTexture);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    for (int m = 0; m < levels; ++m)
-    {
-      glTexImage3D(GL_TEXTURE_2D_ARRAY, m, GL_RGBA32F, std::max(1, width >> m),
-        std::max(1, height >> m), slices, 0, GL_RGBA, GL_FLOAT, nullptr);
-    }
-    glGenFramebuffers(1, &state.MipFramebuffer);
-    state.MipLevels = levels;
-    state.MipWidth = width;
-    state.MipHeight = height;
-  }
-  state.MipLayers = layers;
+  state.AllocateMip(levels, layers);
   glBindTexture(GL_TEXTURE_2D_ARRAY, state.MipTexture);
   ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, state.MipFramebuffer);
   const GLenum drawBuffer = GL_COLOR_ATTACHMENT0;

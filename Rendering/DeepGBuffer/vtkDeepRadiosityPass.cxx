@@ -604,7 +604,6 @@ struct vtkDeepRadiosityPass::vtkGatherFrame : vtkDeepScreenSpacePass::EffectFram
   float LayerProjT[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
   int LayerUnits[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES];
 
-  int DistanceUnit() const { return this->Units[vtkDeepGBufferPass::DEPTH]; }
   int NormalUnit() const { return this->Units[vtkDeepGBufferPass::NORMAL]; }
 };
 
@@ -1165,10 +1164,9 @@ void vtkDeepRadiosityPass::Gather(vtkGatherFrame& frame, vtkDeepRadiosityRendere
   vtkShaderProgram* program = in.GatherQuad->Program;
   frame.Window->GetShaderCache()->ReadyShaderProgram(program);
   // Receivers on the output grid, taps and sources in the layers.
-  program->SetUniform4f("deepProjXY", frame.LayerProjXY);
-  program->SetUniform4f("deepProjT", frame.LayerProjT);
   state.Keys[LAYER_KEY]->Activate();
-  program->SetUniformi("deepKey", state.Keys[LAYER_KEY]->GetTextureUnit());
+  SetKeyUniforms(
+    program, state.Keys[LAYER_KEY]->GetTextureUnit(), frame.LayerProjXY, frame.LayerProjT);
   program->SetUniform2i("deepReceiverGrid", frame.Size);
   program->SetUniformi("deepDivisor", frame.Divisor);
   BindLayerTextures(program, "deepBounce", state.Targets[BOUNCE]);
@@ -1206,9 +1204,7 @@ void vtkDeepRadiosityPass::FilterIrradiance(
     frame.Window->GetShaderCache()->ReadyShaderProgram(program);
     vtkDeepScreenSpace::SetShadedRegionUniforms(program, frame.Region);
     BindLayerTextures(program, "deepInput", state.Targets[pass[0]]);
-    program->SetUniformi("deepKey", key->GetTextureUnit());
-    program->SetUniform4f("deepProjXY", frame.ProjXY);
-    program->SetUniform4f("deepProjT", frame.ProjT);
+    SetKeyUniforms(program, key->GetTextureUnit(), frame.ProjXY, frame.ProjT);
     const int axis[2] = { pass[2] == 0 ? 1 : 0, pass[2] == 0 ? 0 : 1 };
     program->SetUniform2i("deepAxis", axis);
     program->SetUniformi("deepBlurRadius", this->BlurRadius);
@@ -1337,9 +1333,7 @@ void vtkDeepRadiosityPass::AccumulateIrradiance(
   BindLayerTextures(program, "deepHistory", state.History[frame.Previous]);
   vtkTextureObject* key = state.GridKey();
   key->Activate();
-  program->SetUniformi("deepKey", key->GetTextureUnit());
-  program->SetUniform4f("deepProjXY", frame.ProjXY);
-  program->SetUniform4f("deepProjT", frame.ProjT);
+  SetKeyUniforms(program, key->GetTextureUnit(), frame.ProjXY, frame.ProjT);
   program->SetUniformi("deepAlbedo", frame.Units[vtkDeepGBufferPass::ALBEDO]);
   program->SetUniformi("deepHasHistory", state.HistoryValid ? 1 : 0);
   program->SetUniformMatrix4x4("deepToPrevious", frame.ToPrevious);

@@ -159,6 +159,15 @@ void vtkDeepScreenSpacePass::SetLayerUniforms(
 }
 
 //------------------------------------------------------------------------------
+void vtkDeepScreenSpacePass::SetKeyUniforms(
+  vtkShaderProgram* program, int keyUnit, const float projXY[4], const float projT[4])
+{
+  program->SetUniformi("deepKey", keyUnit);
+  program->SetUniform4f("deepProjXY", projXY);
+  program->SetUniform4f("deepProjT", projT);
+}
+
+//------------------------------------------------------------------------------
 void vtkDeepScreenSpacePass::SetFraction(const char* name, double fraction, double& value)
 {
   if (std::isnan(fraction))

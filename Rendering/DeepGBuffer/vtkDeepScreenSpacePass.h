@@ -161,6 +161,12 @@ protected:
   static void SetLayerUniforms(
     vtkShaderProgram* program, const EffectFrame& frame, int distanceUnit, int normalUnit);
 
+  /// Sets the uniforms of a stage that reads the geometry key
+  /// (vtkDeepGeometryKeyFS) bound to `keyUnit`: deepKey, and the projection
+  /// of its grid (deepProjXY, deepProjT) that turns distances into positions.
+  static void SetKeyUniforms(
+    vtkShaderProgram* program, int keyUnit, const float projXY[4], const float projT[4]);
+
   /// Sets a fraction in [0, 1]: NaN keeps `value` with a warning; values
   /// outside are clamped with a warning; Modified() when it changes.
   void SetFraction(const char* name, double fraction, double& value);

@@ -12,7 +12,7 @@
 in vec2 texCoord;
 
 uniform sampler2D deepInput;       // AV to filter (R32F)
-uniform sampler2DArray deepKeyMip; // geometry key (level 0, slice 0: layer 0's .xy)
+uniform sampler2DArray deepKey; // geometry key (level 0, slice 0: layer 0's .xy)
 uniform ivec2 deepAxis;            // (1, 0) horizontal, (0, 1) vertical
 uniform int deepBlurRadius;        // taps on each side
 uniform float deepPlaneTolerance;  // fraction of the centre's distance
@@ -26,10 +26,10 @@ uniform float deepNormalPower;
 
 void main()
 {
-  vec2 size = vec2(textureSize(deepKeyMip, 0).xy);
+  vec2 size = vec2(textureSize(deepKey, 0).xy);
   ivec2 pixel = min(ivec2(texCoord * size), ivec2(size) - 1);
   float centerValue = texelFetch(deepInput, pixel, 0).r;
-  vec2 key = texelFetch(deepKeyMip, ivec3(pixel, 0), 0).xy;
+  vec2 key = texelFetch(deepKey, ivec3(pixel, 0), 0).xy;
   float d = key.x;
   if (!(d > 0.0))
   {
@@ -54,7 +54,7 @@ void main()
     {
       continue;
     }
-    vec2 tapKey = texelFetch(deepKeyMip, ivec3(tap, 0), 0).xy;
+    vec2 tapKey = texelFetch(deepKey, ivec3(tap, 0), 0).xy;
     float dy = tapKey.x;
     if (!(dy > 0.0))
     {

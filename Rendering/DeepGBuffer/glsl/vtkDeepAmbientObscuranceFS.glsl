@@ -8,7 +8,7 @@
 
 in vec2 texCoord;
 
-uniform sampler2DArray deepKeyMip; // geometry key pyramid, two layers per slice
+uniform sampler2DArray deepKey; // geometry key pyramid, two layers per slice
 uniform int deepLayers;        // layers searched for occluders (1 = layer 0 only)
 uniform int deepSamples;       // N
 uniform float deepTurns;       // tau(N), Listing 3
@@ -29,9 +29,9 @@ uniform float deepRotationOffset; // radians added to phi (0 unless temporal)
 
 void main()
 {
-  vec2 size = vec2(textureSize(deepKeyMip, 0).xy);
+  vec2 size = vec2(textureSize(deepKey, 0).xy);
   ivec2 pixel = min(ivec2(texCoord * size), ivec2(size) - 1);
-  vec4 key = texelFetch(deepKeyMip, ivec3(pixel, 0), 0);
+  vec4 key = texelFetch(deepKey, ivec3(pixel, 0), 0);
   float d = key.x;
   if (!(d > 0.0))
   {
@@ -78,7 +78,7 @@ void main()
     {
       if ((j & 1) == 0)
       {
-        tapKey = texelFetch(deepKeyMip, ivec3(coarse, j >> 1), m);
+        tapKey = texelFetch(deepKey, ivec3(coarse, j >> 1), m);
       }
       vec2 geometry = (j & 1) == 0 ? tapKey.xy : tapKey.zw;
       float dy = geometry.x;
