@@ -59,7 +59,7 @@ void main()
   for (int i = 0; i < deepSamples; ++i)
   {
     float h;
-    ivec2 tap = ivec2(floor(deepSpiralTap(i, deepSamples, deepTurns, rp, phi, center, h)));
+    ivec2 tap = ivec2(floor(deepSpiralTap(i, 0.5, deepSamples, deepTurns, rp, phi, center, h)));
     if (any(lessThan(tap, ivec2(0))) || any(greaterThanEqual(tap, ivec2(size))))
     {
       continue;

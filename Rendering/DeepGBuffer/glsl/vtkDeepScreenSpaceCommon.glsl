@@ -58,15 +58,26 @@ float deepSpiralRotation(ivec2 pixel)
     fract(52.9829189 * fract(dot(vec2(pixel), vec2(0.06711056, 0.00583715))));
 }
 
-// Tap i of N (section 3.4): kappa = (i + 0.5) / N, h = r_p kappa,
-// theta = 2 pi kappa tau + phi; returns the tap point in window pixels and
+// Tap i of N (section 3.4) at `offset` in [0, 1) across its ring:
+// kappa = (i + offset) / N, h = r_p kappa, theta = 2 pi kappa tau + phi; the
+// paper's taps have offset 0.5. Returns the tap point in window pixels and
 // h, its distance from `center` in pixels.
-vec2 deepSpiralTap(int i, int n, float turns, float rp, float phi, vec2 center, out float h)
+vec2 deepSpiralTap(int i, float offset, int n, float turns, float rp, float phi, vec2 center, out float h)
 {
-  float kappa = (float(i) + 0.5) / float(n);
+  float kappa = (float(i) + offset) / float(n);
   h = rp * kappa;
   float theta = 2.0 * deepPi * kappa * turns + phi;
   return center + h * vec2(cos(theta), sin(theta));
+}
+
+// A per-pixel offset of the taps across their rings, from the spiral's
+// rotation phi: fract(4 phi / (2 pi)). The pairs (phi, offset) lie on a
+// rank-1 lattice, so neighbouring pixels, whose rotations the interleaved
+// gradient noise spreads over the circle, also spread their offsets over
+// the ring's width.
+float deepRadialOffset(float phi)
+{
+  return fract(phi * (2.0 / deepPi));
 }
 
 // MIP level of a tap at h pixels: clamp(floor(log2(h / q)), minLevel,

@@ -121,10 +121,16 @@ Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerC
     52.9829189 * std::fmod(0.06711056 * (i / divisor) + 0.00583715 * (j / divisor), 1.0);
   const double phi = 2.0 * Pi * (ign - std::floor(ign));
   const int tau = vtkDeepAmbientObscurancePass::GetSpiralTurns(n);
+  // Taps after the first at the offset fract(4 phi / (2 pi)) across their
+  // rings where these are wider than a texel of the minimum MIP level, at
+  // full resolution.
+  const double offset = 4.0 * (ign - std::floor(ign));
+  const double radialOffset = offset - std::floor(offset);
   int used = 0;
   for (int s = 0; s < n; ++s)
   {
-    const double kappa = (s + 0.5) / n;
+    const bool middle = s == 0 || rp / n <= (1 << minMip) || divisor > 1;
+    const double kappa = (s + (middle ? 0.5 : radialOffset)) / n;
     const double theta = 2.0 * Pi * kappa * tau + phi;
     const double h = rp * kappa;
     const double tx = i + 0.5 + h * std::cos(theta), ty = j + 0.5 + h * std::sin(theta);
