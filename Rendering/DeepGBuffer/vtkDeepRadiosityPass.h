@@ -21,11 +21,15 @@
  *
  * E is the irradiance of eq. 3 with B / pi = L_o, i.e. the integral of the
  * incoming radiance times the cosine over the hemisphere, estimated from N
- * spiral taps (section 3.4: kappa_i = (i + 0.5) / N, h_i = r_p kappa_i
+ * spiral taps (section 3.4: kappa_i = (i + u_i) / N, h_i = r_p kappa_i
  * pixels, theta_i = 2 pi kappa_i tau(N) + phi, phi the interleaved
  * gradient noise of the pixel as in vtkDeepAmbientObscurancePass, r_p the
  * world radius r projected at layer 0's depth; the same screen taps serve
- * both layers). At each tap the surfaces of both layers are candidates Y; a
+ * both layers). u_i is 1/2 as in the paper, except at full resolution for
+ * the taps after the first where the rings r_p / N are wider than a texel
+ * of the minimum MIP level: there u_i = fract(2 phi / pi), an offset
+ * across the ring that keeps a bright object's light from arriving in
+ * steps (rings around it). At each tap the surfaces of both layers are candidates Y; a
  * candidate passes eq. 5 when |Y - X| < r, w.n_X > epsilon and, with
  * UseNormalTest, w.n_Y < -epsilon (w = (Y - X) / |Y - X|, epsilon =
  * COSINE_EPSILON, see below); the tap takes the passing candidate with the
