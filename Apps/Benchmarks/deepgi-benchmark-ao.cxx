@@ -81,7 +81,7 @@ const char* const SceneNames[] = { "demo", "demo-columns", "cornell-lucy", "drag
 // several N with BlurRadius 4) and named settings of ours.
 const char* const DefaultMethods = "ssao:8,ssao:16,ssao:32,ssao:64,"
                                    "ours1:4,ours1:8,ours1:16,ours1:32,"
-                                   "ours2:4,ours2:8,ours2:16,ours2:32,ours2nc:16,"
+                                   "ours2:4,ours2:8,ours2:16,ours2:32,ours2cull:16,"
                                    "low,medium,high";
 
 void Usage()
@@ -101,8 +101,8 @@ void Usage()
     "                       (default all five)\n"
     "  --methods LIST       comma list of ssao:K (vtkSSAOPass, kernel size K, blur on),\n"
     "                       ours1:N[:B] / ours2:N[:B] (one / two layers, N samples,\n"
-    "                       BlurRadius B, default 4), ours2nc:N[:B] (two layers,\n"
-    "                       layer 1 without back-face culling), ours2gb:N[:B] (two\n"
+    "                       BlurRadius B, default 4), ours2cull:N[:B] (two layers,\n"
+    "                       layer 1 with back-face culling), ours2gb:N[:B] (two\n"
     "                       layers, a G-buffer guard band of 0.1), low, medium, high (two\n"
     "                       layers with a quality preset). Default:\n"
     "                       %s\n"
@@ -121,15 +121,15 @@ void Usage()
 
 struct Method
 {
-  std::string Name;   // as in the table
-  std::string Family; // curve of the plot
-  int Kind = 0;       // 0 SSAO, 1 ours
-  int Parameter = 16; // SSAO kernel size or N
-  int Layers = 2;     // ours
-  int Blur = 4;       // ours
-  int Preset = -1;    // ours: a vtkDeepAmbientObscurancePass quality preset, or -1
-  bool DeepLayerBackfaceCulling = true; // ours: the G-buffer's culling in layer 1
-  double GuardBand = 0.0;               // ours: the G-buffer's guard band
+  std::string Name;                 // as in the table
+  std::string Family;               // curve of the plot
+  int Kind = 0;                     // 0 SSAO, 1 ours
+  int Parameter = 16;               // SSAO kernel size or N
+  int Layers = 2;                   // ours
+  int Blur = 4;                     // ours
+  int Preset = -1;                  // ours: a vtkDeepAmbientObscurancePass quality preset, or -1
+  bool CullLayer1BackFaces = false; // ours: layer 1 culled, as vtkDeepGIPass's G-buffer
+  double GuardBand = 0.0;           // ours: the G-buffer's guard band
   int Estimator = -1; // ours: vtkDeepAmbientObscurancePass::EstimatorType, or -1 (default)
 };
 
@@ -178,7 +178,7 @@ bool ParseMethod(const std::string& spec, Method& m)
     return true;
   }
   if ((p.size() == 2 || p.size() == 3) &&
-    (p[0] == "ours1" || p[0] == "ours2" || p[0] == "ours2nc" || p[0] == "ours2gb"))
+    (p[0] == "ours1" || p[0] == "ours2" || p[0] == "ours2cull" || p[0] == "ours2gb"))
   {
     int n = 0, b = 4;
     if (!ParseInt(p[1], n) || n < 1 || n > 98 ||
@@ -191,10 +191,10 @@ bool ParseMethod(const std::string& spec, Method& m)
     m.Parameter = n;
     m.Layers = layers;
     m.Blur = b;
-    m.DeepLayerBackfaceCulling = p[0] != "ours2nc";
+    m.CullLayer1BackFaces = p[0] == "ours2cull";
     m.GuardBand = p[0] == "ours2gb" ? vtkDeepRadiosityPass::DEFAULT_GUARD_BAND : 0.0;
     const std::string label = layers == 1 ? "1 layer"
-      : !m.DeepLayerBackfaceCulling       ? "2 layers, no layer-1 culling"
+      : m.CullLayer1BackFaces             ? "2 layers, layer 1 culled"
       : m.GuardBand > 0.0                 ? "2 layers, guard band"
                                           : "2 layers";
     const std::string by = estimator == "sa" ? ", solid angle"
@@ -287,7 +287,7 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     o.Scenes.insert(o.Scenes.end(), o.Files.begin(), o.Files.end());
   }
   return ParseMethodList(Program, o.MethodList, ParseMethod,
-    "ssao:K, ours1:N[:B][:E], ours2:N[:B][:E], ours2nc:N[:B][:E], ours2gb:N[:B][:E], low, "
+    "ssao:K, ours1:N[:B][:E], ours2:N[:B][:E], ours2cull:N[:B][:E], ours2gb:N[:B][:E], low, "
     "medium, high; E: sa or eq1",
     o.Methods);
 }
@@ -587,7 +587,10 @@ std::vector<vtkSmartPointer<vtkRenderPass>> MakePasses(const std::vector<Method>
     }
     ao->SetUseSecondLayer(m.Layers == 2);
     ao->GetGBufferPass()->SetNumberOfLayers(m.Layers);
-    ao->GetGBufferPass()->SetDeepLayerBackfaceCulling(m.DeepLayerBackfaceCulling);
+    if (m.CullLayer1BackFaces)
+    {
+      ao->GetGBufferPass()->SetDeepLayerBackfaceCulling(true);
+    }
     ao->GetGBufferPass()->SetGuardBand(m.GuardBand);
     passes.push_back(ao);
   }

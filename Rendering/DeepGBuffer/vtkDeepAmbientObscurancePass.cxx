@@ -226,6 +226,11 @@ public:
 vtkDeepAmbientObscurancePass::vtkDeepAmbientObscurancePass()
   : Internals(new vtkInternals)
 {
+  // Every surface within the radius occludes, whichever way it faces: the
+  // occluders the first layer hides next to a closed object (the far half
+  // of a sphere resting on a floor) are its back faces, which deeper layers
+  // keep only without culling.
+  this->GBufferPass->SetDeepLayerBackfaceCulling(false);
 }
 
 //------------------------------------------------------------------------------

@@ -7,7 +7,8 @@
  * for Stable Global Illumination Approximation" (HPG 2016). Put it on a
  * renderer (`renderer->SetPass(pass)`) and it renders the whole frame:
  * camera, lights, the opaque props into the layers of an internal
- * vtkDeepGBufferPass (GetGBufferPass(); SetGBufferPass() shares one), the
+ * vtkDeepGBufferPass (GetGBufferPass(), which keeps back faces in its deeper
+ * layers because they occlude too; SetGBufferPass() shares one), the
  * ambient visibility AV, its bilateral reconstruction, the composite, then
  * the G-buffer pass's translucent, volumetric and overlay steps (VTK's own
  * by default), which compose against layer 0's depth.

@@ -213,6 +213,9 @@ public:
    * behind it (paper Figure 2, the Sponza tapestry), unless dz exceeds the
    * column's thickness. Turn it off for open surfaces whose back faces are
    * seen (e.g. a cut-open iso-surface). Layer 0 always draws what VTK draws.
+   * vtkDeepAmbientObscurancePass turns it off on the G-buffer it creates:
+   * every surface occludes, and what layer 0 hides next to a closed object
+   * is its back faces.
    *
    * @range on/off
    * @default on
