@@ -101,7 +101,7 @@ void main()
   float minTexel = float(1 << deepMinMip);
   bool solidAngle = deepEstimator == DEEP_ESTIMATOR_SOLID_ANGLE;
   bool useNormals = deepNormalTest != 0 || solidAngle;
-  float ringArea = 2.0 * deepPi * rp / float(deepSamples); // times h: the tap's screen ring
+  float ringArea = 2.0 * deepPi * ringWidth; // times h: the tap's screen ring
 
   vec3 sum[2] = vec3[2](vec3(0.0), vec3(0.0));
   float used[2] = float[2](0.0, 0.0);

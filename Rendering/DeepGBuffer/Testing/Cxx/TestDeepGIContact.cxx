@@ -143,6 +143,58 @@ struct RingSums
   double PassVisibility = 0.0; // vtkDeepAmbientObscurancePass alone
   int Count = 0;
 };
+
+// The ray-traced reference of the scene on the converged GI frame's layers.
+vtkSmartPointer<vtkDeepGIReferenceImage> ComputeReference(Frame& gi)
+{
+  vtkNew<vtkRenderer> sceneRenderer;
+  BuildScene(sceneRenderer);
+  auto reference = vtkSmartPointer<vtkDeepGIReferenceImage>::New();
+  vtkNew<vtkPolyData> scene;
+  Check(vtkDeepGIReferenceImage::SceneFromRenderer(sceneRenderer, scene), "scene from the actors");
+  reference->SetScene(scene);
+  reference->SetLightsFromRenderer(sceneRenderer);
+  reference->SetObscuranceRadius(gi.ObscuranceRadius);
+  reference->SetSamplesPerPixel(128);
+  Check(reference->Compute(gi.Layers), "reference image");
+  return reference;
+}
+
+// Prints the rings and checks them (see the top of the file).
+void CheckRings(const std::vector<RingSums>& rings)
+{
+  std::printf("ring (world)  pixels  GI - ref  plain - ref  AO only - plain (x255)  reference AV  "
+              "obscurance pass AV\n");
+  int innermost = -1;
+  for (int r = 0; r < Rings; ++r)
+  {
+    const RingSums& s = rings[r];
+    if (s.Count == 0)
+    {
+      continue;
+    }
+    innermost = innermost < 0 ? r : innermost;
+    const double giExcess = s.GI / s.Count;
+    // The standard error of a ring's mean is at most the mean per-pixel one.
+    const double tolerance = 3.0 / 255.0 + 3.0 * s.Error / s.Count;
+    std::printf("%.1f-%.1f  %6d  %8.2f  %11.2f  %22.2f  %12.3f  %18.3f\n", r * RingWidth,
+      (r + 1) * RingWidth, s.Count, 255.0 * giExcess, 255.0 * s.Plain / s.Count,
+      255.0 * s.ObscuranceOnly / s.Count, s.Visibility / s.Count, s.PassVisibility / s.Count);
+    Check(giExcess <= tolerance,
+      "no glow: GI not brighter than the reference in ring " + std::to_string(r));
+    Check(s.PassVisibility / s.Count >= s.Visibility / s.Count - 0.05,
+      "the obscurance pass not darker than the reference in ring " + std::to_string(r));
+  }
+  Check(innermost >= 0, "floor pixels near the contact");
+  if (innermost >= 0)
+  {
+    const RingSums& s = rings[innermost];
+    Check(s.Visibility / s.Count < 0.9, "the reference occludes the contact");
+    Check(s.ObscuranceOnly / s.Count < -8.0 / 255.0, "obscurance darkens the contact");
+    Check(s.PassVisibility / s.Count <= 0.72,
+      "the obscurance pass occludes the contact with the sphere's far half");
+  }
+}
 }
 
 int TestDeepGIContact(int, char*[])
@@ -156,16 +208,7 @@ int TestDeepGIContact(int, char*[])
   vtkDataArray* passAV =
     aoPass.Visibility->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility);
 
-  vtkNew<vtkRenderer> sceneRenderer;
-  BuildScene(sceneRenderer);
-  vtkNew<vtkDeepGIReferenceImage> reference;
-  vtkNew<vtkPolyData> scene;
-  Check(vtkDeepGIReferenceImage::SceneFromRenderer(sceneRenderer, scene), "scene from the actors");
-  reference->SetScene(scene);
-  reference->SetLightsFromRenderer(sceneRenderer);
-  reference->SetObscuranceRadius(gi.ObscuranceRadius);
-  reference->SetSamplesPerPixel(128);
-  Check(reference->Compute(gi.Layers), "reference image");
+  auto reference = ComputeReference(gi);
   vtkPointData* ref = reference->GetOutput()->GetPointData();
   vtkDataArray* truth = ref->GetArray(vtkDeepGICaptureNames::Radiance);
   vtkDataArray* truthError = ref->GetArray("RadianceStandardError");
@@ -228,36 +271,6 @@ int TestDeepGIContact(int, char*[])
 
   Check(squared[2] < squared[0], "GI closer to the reference than plain VTK");
 
-  std::printf("ring (world)  pixels  GI - ref  plain - ref  AO only - plain (x255)  reference AV  "
-              "obscurance pass AV\n");
-  int innermost = -1;
-  for (int r = 0; r < Rings; ++r)
-  {
-    const RingSums& s = rings[r];
-    if (s.Count == 0)
-    {
-      continue;
-    }
-    innermost = innermost < 0 ? r : innermost;
-    const double giExcess = s.GI / s.Count;
-    // The standard error of a ring's mean is at most the mean per-pixel one.
-    const double tolerance = 3.0 / 255.0 + 3.0 * s.Error / s.Count;
-    std::printf("%.1f-%.1f  %6d  %8.2f  %11.2f  %22.2f  %12.3f  %18.3f\n", r * RingWidth,
-      (r + 1) * RingWidth, s.Count, 255.0 * giExcess, 255.0 * s.Plain / s.Count,
-      255.0 * s.ObscuranceOnly / s.Count, s.Visibility / s.Count, s.PassVisibility / s.Count);
-    Check(giExcess <= tolerance,
-      "no glow: GI not brighter than the reference in ring " + std::to_string(r));
-    Check(s.PassVisibility / s.Count >= s.Visibility / s.Count - 0.05,
-      "the obscurance pass not darker than the reference in ring " + std::to_string(r));
-  }
-  Check(innermost >= 0, "floor pixels near the contact");
-  if (innermost >= 0)
-  {
-    const RingSums& s = rings[innermost];
-    Check(s.Visibility / s.Count < 0.9, "the reference occludes the contact");
-    Check(s.ObscuranceOnly / s.Count < -8.0 / 255.0, "obscurance darkens the contact");
-    Check(s.PassVisibility / s.Count <= 0.72,
-      "the obscurance pass occludes the contact with the sphere's far half");
-  }
+  CheckRings(rings);
   return ExitStatus();
 }

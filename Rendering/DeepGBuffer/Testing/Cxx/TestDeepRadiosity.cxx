@@ -90,6 +90,79 @@ struct Gather
   double Confidence = 0.0;
 };
 
+// The level-0 texel a tap at window point (tx, ty), h pixels from the
+// receiver, reads: MIP level clamp(floor(log2(h / q)), lo, hi) and the
+// rotated-grid texel stored there.
+void SourceTexel(
+  double tx, double ty, double h, double q, int minMip, int maxMip, int W, int H, int& cx, int& cy)
+{
+  int m = minMip;
+  if (maxMip > 0 && h >= 2.0 * q)
+  {
+    m = std::max(m, static_cast<int>(std::floor(std::log2(h / q))));
+  }
+  m = std::min(m, maxMip);
+  cx = std::min(static_cast<int>(tx) >> m, std::max(W >> m, 1) - 1);
+  cy = std::min(static_cast<int>(ty) >> m, std::max(H >> m, 1) - 1);
+  for (int k = m; k > 0; --k)
+  {
+    const int nx = std::min(2 * cx + (cy & 1), std::max(W >> (k - 1), 1) - 1);
+    const int ny = std::min(2 * cy + (cx & 1), std::max(H >> (k - 1), 1) - 1);
+    cx = nx;
+    cy = ny;
+  }
+}
+
+// Of the layers' surfaces at source texel (cx, cy), the one passing eq. 5
+// for X (normal nX) with the larger contribution B (w.n_X), into `best`;
+// false when none passes.
+bool BestCandidate(vtkImageData* layers, int layerCount, const double X[3], const double nX[3],
+  int cx, int cy, double radius, bool normalTest, double best[3])
+{
+  const double eps = vtkDeepRadiosityPass::COSINE_EPSILON;
+  const vtkIdType source = static_cast<vtkIdType>(cy) * layers->GetDimensions()[0] + cx;
+  double bestScore = 0.0;
+  for (int k = 0; k < layerCount; ++k)
+  {
+    double Y[3];
+    if (!CameraPosition(layers, k, cx, cy, Y))
+    {
+      continue;
+    }
+    const double v[3] = { Y[0] - X[0], Y[1] - X[1], Y[2] - X[2] };
+    const double vv = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    if (!(vv < radius * radius) || !(vv > 0.0))
+    {
+      continue;
+    }
+    const double len = std::sqrt(vv);
+    const double w[3] = { v[0] / len, v[1] / len, v[2] / len };
+    const double cosX = w[0] * nX[0] + w[1] * nX[1] + w[2] * nX[2];
+    double nY[3];
+    Layer(layers, vtkDeepGICaptureNames::Normal, k)->GetTuple(source, nY);
+    if (!(cosX > eps) || (normalTest && !(w[0] * nY[0] + w[1] * nY[1] + w[2] * nY[2] < -eps)))
+    {
+      continue;
+    }
+    double c[3], score = 1.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double B =
+        std::max(Layer(layers, vtkDeepGICaptureNames::Radiance, k)->GetComponent(source, a) -
+            Layer(layers, vtkDeepGICaptureNames::Ambient, k)->GetComponent(source, a),
+          0.0);
+      c[a] = B * cosX;
+      score += c[a] * c[a];
+    }
+    if (score > bestScore)
+    {
+      bestScore = score;
+      std::copy(c, c + 3, best);
+    }
+  }
+  return bestScore > 0.0;
+}
+
 // Eq. 4-5 on the CPU in double precision for the surface of layer `layer`
 // at pixel (i, j), following the class documentation: taps of section 3.4
 // with r_p from layer 0's depth, MIP level clamp(floor(log2(h / q)), lo,
@@ -109,7 +182,6 @@ Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerC
   {
     return g;
   }
-  const double eps = vtkDeepRadiosityPass::COSINE_EPSILON;
   const double* P = vtkDoubleArray::SafeDownCast(
     layers->GetFieldData()->GetArray(vtkDeepGICaptureNames::ProjectionMatrix))
                       ->GetPointer(0);
@@ -138,21 +210,8 @@ Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerC
     {
       continue;
     }
-    int m = minMip;
-    if (maxMip > 0 && h >= 2.0 * q)
-    {
-      m = std::max(m, static_cast<int>(std::floor(std::log2(h / q))));
-    }
-    m = std::min(m, maxMip);
-    int cx = std::min(static_cast<int>(tx) >> m, std::max(W >> m, 1) - 1);
-    int cy = std::min(static_cast<int>(ty) >> m, std::max(H >> m, 1) - 1);
-    for (int k = m; k > 0; --k)
-    {
-      const int nx = std::min(2 * cx + (cy & 1), std::max(W >> (k - 1), 1) - 1);
-      const int ny = std::min(2 * cy + (cx & 1), std::max(H >> (k - 1), 1) - 1);
-      cx = nx;
-      cy = ny;
-    }
+    int cx, cy;
+    SourceTexel(tx, ty, h, q, minMip, maxMip, W, H, cx, cy);
     // On a reduced grid the receiver leaves out the sources whose bounce
     // input reads it: those in its cell, floor(s / D + 1 / 2) = receiver.
     if (divisor > 1 && (2 * cx + divisor) / (2 * divisor) == i / divisor &&
@@ -160,47 +219,8 @@ Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerC
     {
       continue;
     }
-    const vtkIdType source = static_cast<vtkIdType>(cy) * W + cx;
-    double bestScore = 0.0, best[3] = { 0, 0, 0 };
-    for (int k = 0; k < layerCount; ++k)
-    {
-      double Y[3];
-      if (!CameraPosition(layers, k, cx, cy, Y))
-      {
-        continue;
-      }
-      const double v[3] = { Y[0] - X[0], Y[1] - X[1], Y[2] - X[2] };
-      const double vv = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-      if (!(vv < radius * radius) || !(vv > 0.0))
-      {
-        continue;
-      }
-      const double len = std::sqrt(vv);
-      const double w[3] = { v[0] / len, v[1] / len, v[2] / len };
-      const double cosX = w[0] * nX[0] + w[1] * nX[1] + w[2] * nX[2];
-      double nY[3];
-      Layer(layers, vtkDeepGICaptureNames::Normal, k)->GetTuple(source, nY);
-      if (!(cosX > eps) || (normalTest && !(w[0] * nY[0] + w[1] * nY[1] + w[2] * nY[2] < -eps)))
-      {
-        continue;
-      }
-      double c[3], score = 1.0;
-      for (int a = 0; a < 3; ++a)
-      {
-        const double B =
-          std::max(Layer(layers, vtkDeepGICaptureNames::Radiance, k)->GetComponent(source, a) -
-              Layer(layers, vtkDeepGICaptureNames::Ambient, k)->GetComponent(source, a),
-            0.0);
-        c[a] = B * cosX;
-        score += c[a] * c[a];
-      }
-      if (score > bestScore)
-      {
-        bestScore = score;
-        std::copy(c, c + 3, best);
-      }
-    }
-    if (bestScore > 0.0)
+    double best[3] = { 0.0, 0.0, 0.0 };
+    if (BestCandidate(layers, layerCount, X, nX, cx, cy, radius, normalTest, best))
     {
       ++used;
       for (int a = 0; a < 3; ++a)
