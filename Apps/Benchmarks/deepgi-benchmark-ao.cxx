@@ -338,7 +338,8 @@ struct SecondLayerEffect
 {
   std::string Scene, TwoLayers, OneLayer;
   long Changed = 0, Valid = 0;         // pixels with |AV_2 - AV_1| > SecondLayerChange
-  double RmseOne = 0.0, RmseTwo = 0.0; // calibrated, on the changed pixels
+  double RmseOne = 0.0, RmseTwo = 0.0; // raw, on the changed pixels
+  double CalibratedRmseOne = 0.0, CalibratedRmseTwo = 0.0;
 };
 
 /// AV difference above which a pixel counts as changed by the second layer.
@@ -801,8 +802,12 @@ void CompareLayers(const std::vector<Method>& methods, const AccuracyFrame& fram
           ++e.Changed;
         }
       }
-      e.RmseOne = Errors(av[one], frame.Reference, changed, changed, results[one].A.Gamma).Rmse;
-      e.RmseTwo = Errors(av[two], frame.Reference, changed, changed, results[two].A.Gamma).Rmse;
+      e.RmseOne = Errors(av[one], frame.Reference, changed, changed, 1.0).Rmse;
+      e.RmseTwo = Errors(av[two], frame.Reference, changed, changed, 1.0).Rmse;
+      e.CalibratedRmseOne =
+        Errors(av[one], frame.Reference, changed, changed, results[one].A.Gamma).Rmse;
+      e.CalibratedRmseTwo =
+        Errors(av[two], frame.Reference, changed, changed, results[two].A.Gamma).Rmse;
       effects.push_back(e);
     }
   }
@@ -1078,15 +1083,17 @@ std::string SecondLayerSection(const Measurements& measured)
   std::ostringstream md;
   md << "\n### Where the second layer changes AV\n\n"
      << "Pixels where a two-layer setting's AV differs by more than " << SecondLayerChange
-     << " from the one-layer setting with the same N and BlurRadius, and the calibrated RMSE "
-        "of both on those pixels only.\n\n"
-     << "| scene | two layers | one layer | changed px | of valid px | RMSE cal. 1 layer | "
-        "RMSE cal. 2 layers |\n|---|---|---|---|---|---|---|\n";
+     << " from the one-layer setting with the same N and BlurRadius, and the raw and the "
+        "calibrated RMSE of both on those pixels only.\n\n"
+     << "| scene | two layers | one layer | changed px | of valid px | RMSE 1 layer | "
+        "RMSE 2 layers | 2 layers / 1 layer | RMSE cal. 1 layer | RMSE cal. 2 layers "
+        "|\n|---|---|---|---|---|---|---|---|---|---|\n";
   for (const SecondLayerEffect& e : measured.Effects)
   {
     md << "| " << e.Scene << " | " << e.TwoLayers << " | " << e.OneLayer << " | " << e.Changed
        << " | " << e.Valid << " | " << Fmt("%.4f", e.RmseOne) << " | " << Fmt("%.4f", e.RmseTwo)
-       << " |\n";
+       << " | " << Fmt("%.2f", e.RmseTwo / e.RmseOne) << " | " << Fmt("%.4f", e.CalibratedRmseOne)
+       << " | " << Fmt("%.4f", e.CalibratedRmseTwo) << " |\n";
   }
   return md.str();
 }
