@@ -10,8 +10,8 @@ scripts/heldout-scenes.sh. For the image benchmark's seven scenes (the
 demo scene, the Cornell box with Lucy, the dragon, the CT head, and the
 object on a floor, the stairs room and the wavelet of HELDOUT; the scene
 loader's materials, or with --default-actors VTK's default property on
-every actor; 320 x 240), each setting (default 0.1:0.5 0.3:1.0 0.5:1.0)
-sets the radiosity pass's AutomaticRadiusFraction and Damping of a BALANCED
+every actor; 320 x 240), each setting (default 0.1:0.5 0.3:1.0 0.5:1.0
+0.75:1.0 1.0:1.0) sets the radiosity pass's AutomaticRadiusFraction and Damping of a BALANCED
 vtkDeepGIPass, converges it as the image benchmark does (Converge(renderer,
 16, 0.07 / 255)) and prints the RMSE and bias of the 8-bit image against
 vtkDeepGIReferenceImage (128 rays per pixel, 4 bounces, clipped at 1),
@@ -58,7 +58,8 @@ def main():
     data, heldout = sys.argv[1], sys.argv[2]
     default_actors = "--default-actors" in sys.argv[3:]
     settings = [tuple(float(v) for v in s.split(":")) for s in sys.argv[3:]
-                if s != "--default-actors"] or [(0.1, 0.5), (0.3, 1.0), (0.5, 1.0)]
+                if s != "--default-actors"] or [(0.1, 0.5), (0.3, 1.0), (0.5, 1.0),
+                                                (0.75, 1.0), (1.0, 1.0)]
     scenes = ["demo", "cornell-lucy", "dragon", "headsq",
               ("mesh", os.path.join(heldout, "wuson-on-floor.vtp")),
               ("mesh", os.path.join(heldout, "stairs-room.vtp")),
@@ -85,7 +86,7 @@ def main():
             if truth is None:
                 truth, valid = reference_of(gi, renderer)
             d = image[valid] - truth[valid]
-            cells.append("r %.1f damping %.1f: RMSE %.4f bias %+.4f" % (
+            cells.append("r %.2f damping %.1f: RMSE %.4f bias %+.4f" % (
                 fraction, damping, np.sqrt(np.mean(d * d)), np.mean(d)))
             gi.ReleaseGraphicsResources(window)
         renderer.SetPass(None)
