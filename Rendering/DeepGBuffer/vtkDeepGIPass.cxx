@@ -194,6 +194,31 @@ vtkMTimeType LightingTime(vtkRenderer* renderer)
   }
   return time;
 }
+
+// What ends the hold of a converged still image besides the scene and the
+// passes' settings: the lights, and the renderer's ambient colour,
+// background and two-sided lighting, compared by value, because
+// vtkWindowToImageFilter sets and restores the renderer's viewport, which
+// moves the renderer's modification time (the layers are then drawn
+// again, LightingTime, but the still image is held).
+using HoldKey = std::array<double, 8>;
+HoldKey HoldSignature(vtkRenderer* renderer)
+{
+  HoldKey key{};
+  vtkLightCollection* lights = renderer->GetLights();
+  vtkMTimeType time = lights->GetMTime();
+  vtkCollectionSimpleIterator it;
+  lights->InitTraversal(it);
+  while (vtkLight* light = lights->GetNextLight(it))
+  {
+    time = std::max(time, light->GetMTime());
+  }
+  key[0] = static_cast<double>(time);
+  renderer->GetAmbient(key.data() + 1);
+  renderer->GetBackground(key.data() + 4);
+  key[7] = renderer->GetTwoSidedLighting();
+  return key;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -223,6 +248,12 @@ struct vtkDeepGIRendererState
   bool StillPeeled = false;
   bool ReuseLayers = false;
   bool ObscuranceOfLayers = false; // the obscurance is of the current layers
+  // After a Converge that was not aborted: the settings' time then (or
+  // after the last frame that held its image), while frames hold the
+  // converged image (HoldsStillImage).
+  bool HoldStill = false;
+  vtkMTimeType HoldSettingsTime = 0;
+  HoldKey HoldLighting{};
 
   void Release()
   {
@@ -239,6 +270,7 @@ struct vtkDeepGIRendererState
     this->Settling = true;
     this->StillValid = false;
     this->StillFrames = 0;
+    this->HoldStill = false;
   }
 };
 
@@ -620,35 +652,49 @@ private:
   bool& Flag;
 };
 
-// The radiosity's temporal filter off for a scope (restored after, also
-// when an observer throws).
-class ScopedStillRadiosity
+// A blur radius `scale` times `radius`, rounded, within the passes' 16.
+int StillBlurRadius(int radius, double scale)
+{
+  return std::min(16, static_cast<int>(std::lround(scale * radius)));
+}
+
+// Converge's settings for a scope, restored after (also when an observer
+// throws): the radiosity's temporal filter off and both blurs widened.
+class ScopedStillEffects
 {
 public:
-  ScopedStillRadiosity(vtkDeepRadiosityPass* pass, bool extrapolate)
-    : Pass(pass)
-    , Alpha(pass->GetTemporalAlpha())
-    , BlurRadius(pass->GetBlurRadius())
-    , Extrapolate(pass->GetExtrapolateBounces())
+  ScopedStillEffects(
+    vtkDeepRadiosityPass* radiosity, vtkDeepAmbientObscurancePass* obscurance, bool extrapolate)
+    : Radiosity(radiosity)
+    , Obscurance(obscurance)
+    , Alpha(radiosity->GetTemporalAlpha())
+    , RadiosityBlur(radiosity->GetBlurRadius())
+    , ObscuranceBlur(obscurance->GetBlurRadius())
+    , Extrapolate(radiosity->GetExtrapolateBounces())
   {
-    this->Pass->SetTemporalAlpha(0.0);
-    this->Pass->SetExtrapolateBounces(extrapolate);
-    this->Pass->SetBlurRadius(std::min(
-      16, static_cast<int>(std::lround(vtkDeepGIPass::STILL_BLUR_SCALE * this->BlurRadius))));
+    this->Radiosity->SetTemporalAlpha(0.0);
+    this->Radiosity->SetExtrapolateBounces(extrapolate);
+    this->Radiosity->SetBlurRadius(
+      StillBlurRadius(this->RadiosityBlur, vtkDeepGIPass::STILL_BLUR_SCALE));
+    this->Obscurance->SetBlurRadius(
+      StillBlurRadius(this->ObscuranceBlur, vtkDeepGIPass::STILL_OBSCURANCE_BLUR_SCALE));
   }
-  ~ScopedStillRadiosity()
+  ~ScopedStillEffects()
   {
-    this->Pass->SetTemporalAlpha(this->Alpha);
-    this->Pass->SetBlurRadius(this->BlurRadius);
-    this->Pass->SetExtrapolateBounces(this->Extrapolate);
+    this->Radiosity->SetTemporalAlpha(this->Alpha);
+    this->Radiosity->SetBlurRadius(this->RadiosityBlur);
+    this->Radiosity->SetExtrapolateBounces(this->Extrapolate);
+    this->Obscurance->SetBlurRadius(this->ObscuranceBlur);
   }
-  ScopedStillRadiosity(const ScopedStillRadiosity&) = delete;
-  void operator=(const ScopedStillRadiosity&) = delete;
+  ScopedStillEffects(const ScopedStillEffects&) = delete;
+  void operator=(const ScopedStillEffects&) = delete;
 
 private:
-  vtkDeepRadiosityPass* Pass;
+  vtkDeepRadiosityPass* Radiosity;
+  vtkDeepAmbientObscurancePass* Obscurance;
   double Alpha;
-  int BlurRadius;
+  int RadiosityBlur;
+  int ObscuranceBlur;
   bool Extrapolate;
 };
 } // anonymous namespace
@@ -692,6 +738,22 @@ int vtkDeepGIPass::Converge(vtkRenderer* renderer, int maximumFrames, double tol
   {
     return 0;
   }
+  const int frames = this->RenderStillFrames(renderer, maximumFrames, tolerance);
+  // The settings are restored now: their time marks the still image.
+  auto found = this->Internals->States.find(renderer);
+  if (found != this->Internals->States.end() && found->second && !this->LastConvergenceAborted)
+  {
+    found->second->HoldStill = true;
+    found->second->HoldSettingsTime = this->GetSettingsTime();
+    found->second->HoldLighting = HoldSignature(renderer);
+  }
+  return frames;
+}
+
+//------------------------------------------------------------------------------
+// Converge's frames, with its still settings in place for their duration.
+int vtkDeepGIPass::RenderStillFrames(vtkRenderer* renderer, int maximumFrames, double tolerance)
+{
   vtkRenderWindow* window = renderer->GetRenderWindow();
   const bool measure = tolerance > 0.0;
   vtkNew<vtkUnsignedCharArray> previous;
@@ -704,7 +766,8 @@ int vtkDeepGIPass::Converge(vtkRenderer* renderer, int maximumFrames, double tol
   // (and with it the spiral's rotation fixed) each frame is the previous
   // bounce plus one, exactly, and the image converges geometrically instead
   // of at the filter's pace (Documentation/performance.md).
-  ScopedStillRadiosity still(this->RadiosityPass, this->ConvergeExtrapolatesBounces);
+  ScopedStillEffects still(
+    this->RadiosityPass, this->AmbientObscurancePass, this->ConvergeExtrapolatesBounces);
   int k = 0;
   while (k < maximumFrames)
   {
@@ -806,6 +869,50 @@ void vtkDeepGIPass::Render(const vtkRenderState* s)
   vtkDeepGIRendererState& state = *slot;
   const int wanted = this->WantedEffects(renderer);
   state.Reflects = (wanted & REFLECTIONS) != 0;
+  if (this->HoldsStillImage(renderer, state))
+  {
+    {
+      ScopedFlag converging(in.Converging);
+      ScopedStillEffects still(
+        this->RadiosityPass, this->AmbientObscurancePass, this->ConvergeExtrapolatesBounces);
+      this->RenderFrame(s, state, wanted);
+    }
+    state.HoldSettingsTime = this->GetSettingsTime();
+  }
+  else
+  {
+    this->RenderFrame(s, state, wanted);
+  }
+}
+
+//------------------------------------------------------------------------------
+// A frame at the camera, props, lights and settings of the converged still
+// image that ended the last Converge renders as Converge's frames do, so
+// that it shows that image: re-rendering the window (vtkWindowToImageFilter
+// by default, VTK's regression tests, an expose event) would otherwise
+// draw it with the interactive settings. Any change ends the hold.
+bool vtkDeepGIPass::HoldsStillImage(vtkRenderer* renderer, vtkDeepGIRendererState& state)
+{
+  state.HoldStill = state.HoldStill && !this->Internals->Converging &&
+    SameScene(SceneSignature(renderer), state.StillScene) &&
+    HoldSignature(renderer) == state.HoldLighting &&
+    this->GetSettingsTime() == state.HoldSettingsTime;
+  return state.HoldStill;
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkDeepGIPass::GetSettingsTime()
+{
+  return std::max(
+    { this->GetMTime(), this->GBufferPass->GetMTime(), this->AmbientObscurancePass->GetMTime(),
+      this->RadiosityPass->GetMTime(), this->ReflectionPass->GetMTime() });
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGIPass::RenderFrame(const vtkRenderState* s, vtkDeepGIRendererState& state, int wanted)
+{
+  vtkInternals& in = *this->Internals;
+  vtkRenderer* renderer = s->GetRenderer();
   this->UpdateLayerCount(renderer, state);
   // Only layer 0 is read unless an effect looks behind it.
   const bool deepEffect = this->UseSecondLayer &&
