@@ -3,7 +3,7 @@ radius and damping change (Documentation/lighting-model.md).
 
     PYTHONPATH=<build>/lib/python3/dist-packages /usr/bin/python3 \\
         Apps/Benchmarks/deepgi_radiosity_radius_sweep.py DATA HELDOUT \\
-        [--default-actors] [FRACTION:DAMPING ...]
+        [--default-actors] [FRACTION:DAMPING[:OUTER] ...]
 
 DATA is the project's Testing/Data, HELDOUT the folder of
 scripts/heldout-scenes.sh. For the image benchmark's seven scenes (the
@@ -11,8 +11,9 @@ demo scene, the Cornell box with Lucy, the dragon, the CT head, and the
 object on a floor, the stairs room and the wavelet of HELDOUT; the scene
 loader's materials, or with --default-actors VTK's default property on
 every actor; 320 x 240), each setting (default 0.1:0.5 0.3:1.0 0.5:1.0
-0.75:1.0 1.0:1.0) sets the radiosity pass's AutomaticRadiusFraction and Damping of a BALANCED
-vtkDeepGIPass, converges it as the image benchmark does (Converge(renderer,
+0.75:1.0 1.0:1.0) sets the radiosity pass's AutomaticRadiusFraction,
+Damping and OuterSamples (OUTER, default 0) of a BALANCED vtkDeepGIPass,
+converges it as the image benchmark does (Converge(renderer,
 16, 0.07 / 255)) and prints the RMSE and bias of the 8-bit image against
 vtkDeepGIReferenceImage (128 rays per pixel, 4 bounces, clipped at 1),
 computed once per scene on the first setting's capture.
@@ -60,6 +61,7 @@ def main():
     settings = [tuple(float(v) for v in s.split(":")) for s in sys.argv[3:]
                 if s != "--default-actors"] or [(0.1, 0.5), (0.3, 1.0), (0.5, 1.0),
                                                 (0.75, 1.0), (1.0, 1.0)]
+    settings = [s if len(s) == 3 else s + (0.0,) for s in settings]
     scenes = ["demo", "cornell-lucy", "dragon", "headsq",
               ("mesh", os.path.join(heldout, "wuson-on-floor.vtp")),
               ("mesh", os.path.join(heldout, "stairs-room.vtp")),
@@ -76,18 +78,19 @@ def main():
             bench.use_default_properties(renderer)
         renderer.ResetCameraClippingRange()
         truth, valid, cells = None, None, []
-        for fraction, damping in settings:
+        for fraction, damping, outer in settings:
             gi = vtkdeepgi.vtkDeepGIPass()
             gi.GetRadiosityPass().SetAutomaticRadiusFraction(fraction)
             gi.GetRadiosityPass().SetDamping(damping)
+            gi.GetRadiosityPass().SetOuterSamples(int(outer))
             renderer.SetPass(gi)
             gi.Converge(renderer, 16, 0.07 / 255.0)
             image = bench.grab(window)
             if truth is None:
                 truth, valid = reference_of(gi, renderer)
             d = image[valid] - truth[valid]
-            cells.append("r %.2f damping %.1f: RMSE %.4f bias %+.4f" % (
-                fraction, damping, np.sqrt(np.mean(d * d)), np.mean(d)))
+            cells.append("r %.2f damping %.1f outer taps %d: RMSE %.4f bias %+.4f" % (
+                fraction, damping, outer, np.sqrt(np.mean(d * d)), np.mean(d)))
             gi.ReleaseGraphicsResources(window)
         renderer.SetPass(None)
         print(name + " | " + " | ".join(cells), flush=True)

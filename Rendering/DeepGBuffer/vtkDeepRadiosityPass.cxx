@@ -338,6 +338,7 @@ void vtkDeepRadiosityPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Radius: " << this->Radius << "\n";
   os << indent << "AutomaticRadius: " << (this->AutomaticRadius ? "On" : "Off") << "\n";
   os << indent << "AutomaticRadiusFraction: " << this->AutomaticRadiusFraction << "\n";
+  os << indent << "OuterSamples: " << this->OuterSamples << "\n";
   os << indent << "EffectiveRadius: " << this->EffectiveRadius << "\n";
   os << indent << "NumberOfSamples: " << this->NumberOfSamples << " (spiral turns "
      << vtkDeepScreenSpace::SpiralTurns(this->NumberOfSamples) << ")\n";
@@ -1174,6 +1175,8 @@ void vtkDeepRadiosityPass::Gather(vtkGatherFrame& frame, vtkDeepRadiosityRendere
   program->SetUniformf(
     "deepTurns", static_cast<float>(vtkDeepScreenSpace::SpiralTurns(this->NumberOfSamples)));
   program->SetUniformf("deepRadius", static_cast<float>(frame.Radius));
+  program->SetUniformi("deepOuterSamples", this->OuterSamples);
+  program->SetUniformf("deepOuterScale", static_cast<float>(OUTER_RADIUS_SCALE));
   program->SetUniformf("deepMipThreshold", static_cast<float>(this->MipThreshold));
   program->SetUniformi("deepMinMip", frame.MinimumMip);
   program->SetUniformi("deepMaxMip", frame.MaximumMip);

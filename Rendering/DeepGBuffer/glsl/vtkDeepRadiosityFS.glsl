@@ -27,6 +27,12 @@
 // r_p / N apart around it; the offsets turn the steps into noise that the
 // blur removes.
 //
+// With deepOuterSamples K > 0 (vtkDeepRadiosityPass::OuterSamples), K more
+// taps follow the spiral's N in the ring from r_p to deepOuterScale r_p,
+// tap k of them at the angle 2 pi (k + 1/2) / K + phi and at the same
+// offset across its ring, and every tap accepts surfaces within
+// deepOuterScale r; the confidence is then M / (N + K).
+//
 // deepEstimator (vtkDeepRadiosityPass::Estimator) chooses the sum:
 //   0 ACCEPTED_TAPS: eq. 4 as printed, 2 pi / M sum B (w.n_X);
 //   1 ALL_TAPS:      2 pi / N sum B (w.n_X) (rejected taps count as 0);
@@ -52,6 +58,8 @@ uniform int deepAverageFarTaps;    // taps above deepMinMip read their block's m
 uniform int deepSamples;           // N
 uniform float deepTurns;           // tau(N), Listing 3
 uniform float deepRadius;          // r, world units
+uniform int deepOuterSamples;      // K, taps of the outer ring
+uniform float deepOuterScale;      // the outer ring's radius over r
 uniform float deepMipThreshold;    // q, pixels
 uniform int deepMinMip;            // Table 2's minimum MIP level
 uniform int deepMaxMip;
@@ -93,7 +101,8 @@ void main()
     X[j] = deepPositionFromDistance(center, size, max(geometry.x, 0.0));
     nX[j] = deepUnpackOct16(geometry.y);
   }
-  float r2 = deepRadius * deepRadius;
+  float reach = deepOuterSamples > 0 ? deepOuterScale * deepRadius : deepRadius;
+  float r2 = reach * reach;
   float rp = deepScreenRadius(deepRadius, d0, size);
   float phi = deepSpiralRotation(receiver) + deepRotationOffset;
   float offset = deepRadialOffset(phi);
@@ -106,9 +115,12 @@ void main()
   vec3 sum[2] = vec3[2](vec3(0.0), vec3(0.0));
   float used[2] = float[2](0.0, 0.0);
   vec3 maxB[2] = vec3[2](vec3(0.0), vec3(0.0)); // of the accepted taps
-  for (int i = 0; i < deepSamples; ++i)
+  int taps = deepSamples + deepOuterSamples;
+  for (int i = 0; i < taps; ++i)
   {
     float h;
+    vec2 tapPosition;
+    float tapRingArea = ringArea; // times h: the tap's screen ring
     // Taps stay at their rings' middle (the paper's spiral) where offsets
     // would cost more than the rings: the first tap, which moved nearer
     // would read the texel that holds X, X's own surface, lighting nothing;
@@ -118,9 +130,24 @@ void main()
     // offsets' noise outlives the blur and the bounces lose light (on the
     // wavelet iso-surface the grid's bounced light fell to 0.39 of full
     // resolution's, against 0.50 with the grid's taps in the middle).
-    bool middle = i == 0 || ringWidth <= minTexel || deepDivisor > 1;
-    ivec2 tap = ivec2(floor(
-      deepSpiralTap(i, middle ? 0.5 : offset, deepSamples, deepTurns, rp, phi, center, h)));
+    if (i < deepSamples)
+    {
+      bool middle = i == 0 || ringWidth <= minTexel || deepDivisor > 1;
+      tapPosition =
+        deepSpiralTap(i, middle ? 0.5 : offset, deepSamples, deepTurns, rp, phi, center, h);
+    }
+    else
+    {
+      // The outer ring, one tap per K-th of the circle.
+      int k = i - deepSamples;
+      float width = rp * (deepOuterScale - 1.0) / float(deepOuterSamples);
+      bool middle = width <= minTexel || deepDivisor > 1;
+      h = rp + width * (float(k) + (middle ? 0.5 : offset));
+      float theta = 2.0 * deepPi * (float(k) + 0.5) / float(deepOuterSamples) + phi;
+      tapPosition = center + h * vec2(cos(theta), sin(theta));
+      tapRingArea = 2.0 * deepPi * width;
+    }
+    ivec2 tap = ivec2(floor(tapPosition));
     if (any(lessThan(tap, ivec2(0))) || any(greaterThanEqual(tap, isize)))
     {
       continue;
@@ -174,7 +201,7 @@ void main()
       {
         float pixelSize = 1.0 / deepScreenRadius(1.0, dy, size);
         float tilt = max(abs(dot(nY[k], normalize(Y[k]))), 0.1);
-        area[k] = ringArea * h * pixelSize * pixelSize / tilt;
+        area[k] = tapRingArea * h * pixelSize * pixelSize / tilt;
       }
     }
 
@@ -226,11 +253,11 @@ void main()
   for (int j = 0; j < 2; ++j)
   {
     // Equation 4 (or the chosen estimator) and the confidence M / N.
-    float norm = deepEstimator == DEEP_ESTIMATOR_ACCEPTED_TAPS ? used[j] : float(deepSamples);
+    float norm = deepEstimator == DEEP_ESTIMATOR_ACCEPTED_TAPS ? used[j] : float(taps);
     vec3 E = used[j] > 0.0
       ? (solidAngle ? min(sum[j], 2.0 * deepPi * maxB[j]) : (2.0 * deepPi / norm) * sum[j])
       : vec3(0.0);
-    vec4 result = valid[j] ? vec4(E, used[j] / float(deepSamples)) : vec4(0.0);
+    vec4 result = valid[j] ? vec4(E, used[j] / float(taps)) : vec4(0.0);
     if (j == 0)
     {
       gl_FragData[0] = result;

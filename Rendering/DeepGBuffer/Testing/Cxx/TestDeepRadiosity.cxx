@@ -5,7 +5,8 @@
 //   independent CPU evaluation with the documented taps, MIP texels and
 //   layer choice on the captured G-buffer, for the BALANCED (n_Y test, MIP
 //   level >= 2) and HIGH_PERFORMANCE (no n_Y test, level >= 3, the
-//   receivers on a grid of half the resolution: compared there) presets:
+//   receivers on a grid of half the resolution: compared there) presets,
+//   and BALANCED with 4 taps of the outer ring (OuterSamples):
 //   |E difference| <= 1e-3 (1 + |E|) and the same M on >= 99 % of the
 //   valid pixels of each layer (float vs double may move a tap across a
 //   texel border);
@@ -170,9 +171,10 @@ bool BestCandidate(vtkImageData* layers, int layerCount, const double X[3], cons
 // cosine tests with COSINE_EPSILON, the larger contribution per tap.
 // `divisor`: the gather's resolution divisor; (i, j) is then the receiver
 // (i / divisor, j / divisor) of its grid, whose index sets the rotation and
-// which leaves out the sources of its own cell.
+// which leaves out the sources of its own cell. `outer`: the taps of the
+// outer ring (OuterSamples), after the spiral's.
 Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerCount, int n,
-  double radius, double q, int minMip, int maxMip, bool normalTest, int divisor)
+  int outer, double radius, double q, int minMip, int maxMip, bool normalTest, int divisor)
 {
   Gather g;
   const int* dims = layers->GetDimensions();
@@ -189,8 +191,11 @@ Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerC
   Layer(layers, vtkDeepGICaptureNames::Normal, layer)
     ->GetTuple(static_cast<vtkIdType>(j) * W + i, nX);
   const double rp = radius * P[5] * 0.5 * H / (P[14] * X0[2] + P[15]);
-  const double ign =
-    52.9829189 * std::fmod(0.06711056 * (i / divisor) + 0.00583715 * (j / divisor), 1.0);
+  // The rotation in float, as the shader computes it: h phi moves a far
+  // tap by a twentieth of a pixel between float and double.
+  const float dotted =
+    0.06711056f * static_cast<float>(i / divisor) + 0.00583715f * static_cast<float>(j / divisor);
+  const double ign = 52.9829189f * (dotted - std::floor(dotted));
   const double phi = 2.0 * Pi * (ign - std::floor(ign));
   const int tau = vtkDeepAmbientObscurancePass::GetSpiralTurns(n);
   // Taps after the first at the offset fract(4 phi / (2 pi)) across their
@@ -198,13 +203,26 @@ Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerC
   // full resolution.
   const double offset = 4.0 * (ign - std::floor(ign));
   const double radialOffset = offset - std::floor(offset);
+  const double scale = vtkDeepRadiosityPass::OUTER_RADIUS_SCALE;
+  const double reach = outer > 0 ? scale * radius : radius;
+  const double outerWidth = outer > 0 ? rp * (scale - 1.0) / outer : 0.0;
   int used = 0;
-  for (int s = 0; s < n; ++s)
+  for (int s = 0; s < n + outer; ++s)
   {
-    const bool middle = s == 0 || rp / n <= (1 << minMip) || divisor > 1;
-    const double kappa = (s + (middle ? 0.5 : radialOffset)) / n;
-    const double theta = 2.0 * Pi * kappa * tau + phi;
-    const double h = rp * kappa;
+    double h, theta;
+    if (s < n)
+    {
+      const bool middle = s == 0 || rp / n <= (1 << minMip) || divisor > 1;
+      const double kappa = (s + (middle ? 0.5 : radialOffset)) / n;
+      theta = 2.0 * Pi * kappa * tau + phi;
+      h = rp * kappa;
+    }
+    else
+    {
+      const bool middle = outerWidth <= (1 << minMip) || divisor > 1;
+      h = rp + outerWidth * (s - n + (middle ? 0.5 : radialOffset));
+      theta = 2.0 * Pi * (s - n + 0.5) / outer + phi;
+    }
     const double tx = i + 0.5 + h * std::cos(theta), ty = j + 0.5 + h * std::sin(theta);
     if (tx < 0 || ty < 0 || tx >= W || ty >= H)
     {
@@ -220,7 +238,7 @@ Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerC
       continue;
     }
     double best[3] = { 0.0, 0.0, 0.0 };
-    if (BestCandidate(layers, layerCount, X, nX, cx, cy, radius, normalTest, best))
+    if (BestCandidate(layers, layerCount, X, nX, cx, cy, reach, normalTest, best))
     {
       ++used;
       for (int a = 0; a < 3; ++a)
@@ -233,7 +251,7 @@ Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerC
   {
     e = used > 0 ? 2.0 * Pi / used * e : 0.0;
   }
-  g.Confidence = static_cast<double>(used) / n;
+  g.Confidence = static_cast<double>(used) / (n + outer);
   return g;
 }
 
@@ -246,11 +264,15 @@ vtkSmartPointer<vtkDeepRadiosityPass> SingleBouncePass(double radius)
   return pass;
 }
 
-void TestReference(int preset)
+void TestReference(int preset, int outer = 0)
 {
   const double radius = 1.5;
   auto pass = SingleBouncePass(radius);
   pass->SetPreset(preset);
+  pass->SetOuterSamples(outer);
+  // The CPU evaluation reads a tap's B at its source texel, as the gather
+  // does without AverageFarTaps (the outer ring's taps read coarse levels).
+  pass->SetAverageFarTaps(false);
   // The CPU evaluation below is eq. 4 as printed (2 pi / M sum), not the
   // default SOLID_ANGLE estimator.
   pass->SetEstimator(vtkDeepRadiosityPass::ACCEPTED_TAPS);
@@ -302,8 +324,8 @@ void TestReference(int preset)
         }
         ++compared;
         const Gather g =
-          ReferenceGather(f.Layers, i, j, layer, layerCount, pass->GetNumberOfSamples(), radius,
-            pass->GetMipThreshold(), minMip, maxMip, pass->GetUseNormalTest(), divisor);
+          ReferenceGather(f.Layers, i, j, layer, layerCount, pass->GetNumberOfSamples(), outer,
+            radius, pass->GetMipThreshold(), minMip, maxMip, pass->GetUseNormalTest(), divisor);
         bool same = std::abs(At(f.Radiosity, vtkDeepGICaptureNames::RawConfidence + suffix, i, j) -
                       g.Confidence) < 1e-6;
         for (int c = 0; c < 3; ++c)
@@ -317,10 +339,10 @@ void TestReference(int preset)
         mismatched += same ? 0 : 1;
       }
     }
-    std::printf("%s layer %d: %ld pixels, %ld with E.r > 0.01, %ld differ from the CPU "
-                "(largest |dE| %.3g)\n",
-      vtkDeepRadiosityPass::GetPresetAsString(preset), layer, compared, withLight, mismatched,
-      worst);
+    std::printf("%s, %d outer taps, layer %d: %ld pixels, %ld with E.r > 0.01, %ld differ from "
+                "the CPU (largest |dE| %.3g)\n",
+      vtkDeepRadiosityPass::GetPresetAsString(preset), outer, layer, compared, withLight,
+      mismatched, worst);
     Check(compared > (layer == 0 ? f.Width * f.Height / (2 * divisor * divisor) : 50 / divisor),
       "layer has surface pixels");
     Check(withLight > compared / 20, "some pixels gather light");
@@ -767,6 +789,7 @@ int TestDeepRadiosity(int, char*[])
 {
   TestReference(vtkDeepRadiosityPass::BALANCED);
   TestReference(vtkDeepRadiosityPass::HIGH_PERFORMANCE);
+  TestReference(vtkDeepRadiosityPass::BALANCED, 4);
   TestBleeding();
   TestNormalTest();
   TestBoost();
