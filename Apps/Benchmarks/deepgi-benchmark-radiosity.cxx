@@ -101,31 +101,35 @@ constexpr double BorderFraction = 0.1;
 
 void Usage()
 {
-  std::printf("Usage: deepgi-benchmark-radiosity [options]\n"
-              "Time and error of vtkDeepRadiosityPass (single bounce) against the ray-traced\n"
-              "one-bounce irradiance of vtkDeepGIReferenceIrradiance, measured in one run.\n"
-              "  --size WxH           timing size in pixels (default 320x240)\n"
-              "  --accuracy-size WxH  size of the error measurement (default 200x150)\n"
-              "  --frames N           timed frames per method and round (default 5)\n"
-              "  --rounds N           rounds over all methods (default 2)\n"
-              "  --samples N          reference rays per pixel (default 64)\n"
-              "  --radius-fraction F  gather radius r = F x scene diagonal, every method\n"
-              "                       (default: vtkDeepRadiosityPass's own)\n"
-              "  --scenes LIST        comma list of demo, cornell-lucy, cornell-original,\n"
-              "                       dragon (default all four)\n"
-              "  --methods LIST       comma list of L:P[:nt][:E][:gb]: L layers (1 or 2), P the\n"
-              "                       preset (hp, balanced, hq), nt: the n_Y test off (else on),\n"
-              "                       E the estimator: n (ALL_TAPS) or sa (SOLID_ANGLE); without\n"
-              "                       it ACCEPTED_TAPS (eq. 4); gb: a G-buffer guard band of\n"
-              "                       vtkDeepRadiosityPass::DEFAULT_GUARD_BAND (else none).\n"
-              "                       Default: %s\n"
-              "  --data DIR           test data folder (default %s)\n"
-              "  --bounces N          multi-bounce comparison against the reference with N\n"
-              "                       bounces, 1..16 (default 4; 0 skips it)\n"
-              "  --no-error-maps      do not write the error-map PNGs\n"
-              "  --backend NAME       auto, x11 or egl (default auto)\n"
-              "  --output DIR         output directory (default output)\n"
-              "  --help               this text\n",
+  std::printf(
+    "Usage: deepgi-benchmark-radiosity [options]\n"
+    "Time and error of vtkDeepRadiosityPass (single bounce) against the ray-traced\n"
+    "one-bounce irradiance of vtkDeepGIReferenceIrradiance, measured in one run.\n"
+    "  --size WxH           timing size in pixels (default 320x240)\n"
+    "  --accuracy-size WxH  size of the error measurement (default 200x150)\n"
+    "  --frames N           timed frames per method and round (default 5)\n"
+    "  --rounds N           rounds over all methods (default 2)\n"
+    "  --samples N          reference rays per pixel (default 64)\n"
+    "  --radius-fraction F  gather radius r = F x scene diagonal, every method\n"
+    "                       (default: vtkDeepRadiosityPass's own)\n"
+    "  --scenes LIST        comma list of demo, cornell-lucy, cornell-original,\n"
+    "                       dragon (default all four)\n"
+    "  --methods LIST       comma list of L:P[:nt][:E][:gb][:o]: L layers (1 or 2), P the\n"
+    "                       preset (hp, balanced, hq), nt: the n_Y test off (else on),\n"
+    "                       E the estimator: n (ALL_TAPS) or sa (SOLID_ANGLE); without\n"
+    "                       it ACCEPTED_TAPS (eq. 4); gb: a G-buffer guard band of\n"
+    "                       vtkDeepRadiosityPass::DEFAULT_GUARD_BAND (else none);\n"
+    "                       o: the pass's default OuterSamples (else 0, the paper's\n"
+    "                       gather, which reaches r; with them it reaches\n"
+    "                       OUTER_RADIUS_SCALE r, beyond the limited reference).\n"
+    "                       Default: %s\n"
+    "  --data DIR           test data folder (default %s)\n"
+    "  --bounces N          multi-bounce comparison against the reference with N\n"
+    "                       bounces, 1..16 (default 4; 0 skips it)\n"
+    "  --no-error-maps      do not write the error-map PNGs\n"
+    "  --backend NAME       auto, x11 or egl (default auto)\n"
+    "  --output DIR         output directory (default output)\n"
+    "  --help               this text\n",
     DefaultMethods, DEEPGI_DATA_DIR);
 }
 
@@ -138,23 +142,29 @@ struct Method
   bool NormalTest = true;
   int Estimator = vtkDeepRadiosityPass::ACCEPTED_TAPS;
   bool GuardBand = false;
+  bool OuterRing = false; // the pass's default OuterSamples, else 0
 };
 
 bool ParseMethod(const std::string& spec, Method& m)
 {
   const std::vector<std::string> p = Split(spec, ':');
-  if (p.size() < 2 || p.size() > 5 || (p[0] != "1" && p[0] != "2"))
+  if (p.size() < 2 || p.size() > 6 || (p[0] != "1" && p[0] != "2"))
   {
     return false;
   }
   m.NormalTest = true;
   m.Estimator = vtkDeepRadiosityPass::ACCEPTED_TAPS;
   m.GuardBand = false;
+  m.OuterRing = false;
   for (size_t k = 2; k < p.size(); ++k)
   {
     if (p[k] == "gb")
     {
       m.GuardBand = true;
+    }
+    else if (p[k] == "o")
+    {
+      m.OuterRing = true;
     }
     else if (p[k] == "nt")
     {
@@ -184,7 +194,7 @@ bool ParseMethod(const std::string& spec, Method& m)
   const char* const estimators[] = { "", ", /N", ", solid angle" };
   const std::string label = std::string(m.Layers == 1 ? "1 layer" : "2 layers") +
     (m.NormalTest ? "" : ", no n_Y test") + estimators[m.Estimator] +
-    (m.GuardBand ? ", guard band" : "");
+    (m.GuardBand ? ", guard band" : "") + (m.OuterRing ? ", outer ring" : "");
   m.Name = label + ", " + vtkDeepRadiosityPass::GetPresetAsString(m.Preset);
   m.Family = label;
   return true;
@@ -518,6 +528,10 @@ std::vector<vtkSmartPointer<vtkDeepRadiosityPass>> MakePasses(const Options& o, 
     // deepgi_benchmark_frame.py and the image benchmark).
     pass->SetResolutionDivisor(1);
     pass->SetUseNormalTest(m.NormalTest);
+    if (!m.OuterRing)
+    {
+      pass->SetOuterSamples(0);
+    }
     pass->SetEstimator(m.Estimator);
     pass->SetDamping(0.0);
     pass->SetTemporalAlpha(0.0);

@@ -12,7 +12,8 @@ object on a floor, the stairs room and the wavelet of HELDOUT; the scene
 loader's materials, or with --default-actors VTK's default property on
 every actor; 320 x 240), each setting (default 0.1:0.5 0.3:1.0 0.5:1.0
 0.75:1.0 1.0:1.0) sets the radiosity pass's AutomaticRadiusFraction,
-Damping and OuterSamples (OUTER, default 0) of a BALANCED vtkDeepGIPass,
+Damping and OuterSamples (OUTER; without it the pass's own) of a BALANCED
+vtkDeepGIPass,
 converges it as the image benchmark does (Converge(renderer,
 16, 0.07 / 255)) and prints the RMSE and bias of the 8-bit image against
 vtkDeepGIReferenceImage (128 rays per pixel, 4 bounces, clipped at 1),
@@ -61,7 +62,8 @@ def main():
     settings = [tuple(float(v) for v in s.split(":")) for s in sys.argv[3:]
                 if s != "--default-actors"] or [(0.1, 0.5), (0.3, 1.0), (0.5, 1.0),
                                                 (0.75, 1.0), (1.0, 1.0)]
-    settings = [s if len(s) == 3 else s + (0.0,) for s in settings]
+    # Without OUTER the pass's own OuterSamples.
+    settings = [s if len(s) == 3 else s + (None,) for s in settings]
     scenes = ["demo", "cornell-lucy", "dragon", "headsq",
               ("mesh", os.path.join(heldout, "wuson-on-floor.vtp")),
               ("mesh", os.path.join(heldout, "stairs-room.vtp")),
@@ -82,7 +84,8 @@ def main():
             gi = vtkdeepgi.vtkDeepGIPass()
             gi.GetRadiosityPass().SetAutomaticRadiusFraction(fraction)
             gi.GetRadiosityPass().SetDamping(damping)
-            gi.GetRadiosityPass().SetOuterSamples(int(outer))
+            if outer is not None:
+                gi.GetRadiosityPass().SetOuterSamples(int(outer))
             renderer.SetPass(gi)
             gi.Converge(renderer, 16, 0.07 / 255.0)
             image = bench.grab(window)
@@ -90,7 +93,8 @@ def main():
                 truth, valid = reference_of(gi, renderer)
             d = image[valid] - truth[valid]
             cells.append("r %.2f damping %.1f outer taps %d: RMSE %.4f bias %+.4f" % (
-                fraction, damping, outer, np.sqrt(np.mean(d * d)), np.mean(d)))
+                fraction, damping, gi.GetRadiosityPass().GetOuterSamples(),
+                np.sqrt(np.mean(d * d)), np.mean(d)))
             gi.ReleaseGraphicsResources(window)
         renderer.SetPass(None)
         print(name + " | " + " | ".join(cells), flush=True)

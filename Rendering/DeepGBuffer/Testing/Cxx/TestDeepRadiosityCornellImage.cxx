@@ -18,11 +18,13 @@
 //   gets no direct light but L_ind > 0;
 // - colour bleeding: over both layers, the box faces that look at the red
 //   wall (camera-space normal x < -0.7; the camera looks down -z, so that is
-//   the world normal) have a red / green ratio of L_ind above 4 (7.43), the
-//   faces that look at the green wall below 1 (0.759);
+//   the world normal) have a red / green ratio of L_ind above 4 (6.84), the
+//   faces that look at the green wall below 1 (0.757);
 // - regression ranges (+-20 % of the measured means): L_ind on the ceiling
-//   (0.0463, 0.0246, 0.0047), over every surface pixel of both layers
-//   (0.0684, 0.0366, 0.0083).
+//   (0.0796, 0.0421, 0.0083), over every surface pixel of both layers
+//   (0.1080, 0.0582, 0.0125): 1.6-1.7 times what the gather gets without
+//   its outer ring (OuterSamples 0), light the ray-traced reference has
+//   (Documentation/radiosity.md).
 
 #include "DeepGITestData.h"
 #include "DeepRadiosityTest.h"
@@ -176,10 +178,10 @@ void CheckCeilingLitIndirectly(const CornellRegions& r)
     "L_ind > 0 on the ceiling");
   auto near = [](double value, double measured)
   { return std::abs(value - measured) <= 0.2 * measured; };
-  Check(near(r.Ceiling.Mean(0), 0.0463) && near(r.Ceiling.Mean(1), 0.0246) &&
-      near(r.Ceiling.Mean(2), 0.0047),
+  Check(near(r.Ceiling.Mean(0), 0.0796) && near(r.Ceiling.Mean(1), 0.0421) &&
+      near(r.Ceiling.Mean(2), 0.0083),
     "ceiling L_ind in the measured range");
-  Check(near(r.All.Mean(0), 0.0684) && near(r.All.Mean(1), 0.0366) && near(r.All.Mean(2), 0.0083),
+  Check(near(r.All.Mean(0), 0.1080) && near(r.All.Mean(1), 0.0582) && near(r.All.Mean(2), 0.0125),
     "mean L_ind in the measured range");
 }
 
