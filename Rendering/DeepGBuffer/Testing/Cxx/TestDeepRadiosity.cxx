@@ -416,9 +416,13 @@ void TestBleeding()
   std::printf("largest raw E.r farther than 1.5 r + 0.05 from the wall: %.3g\n", beyond);
   Check(beyond == 0.0, "no indirect light beyond the gather's reach");
   pass->ReleaseGraphicsResources(f.Window);
+}
 
-  // Composite: RADIANCE + L_ind of layer 0, background kept.
-  auto composite = SingleBouncePass(radius);
+// The composite of the red-wall scene: RADIANCE + L_ind of layer 0,
+// background kept.
+void TestComposite()
+{
+  auto composite = SingleBouncePass(1.5);
   Frame g;
   if (!RenderFrames([](vtkRenderer* r) { RedWallScene(r); }, composite, 1, g))
   {
@@ -795,6 +799,7 @@ int TestDeepRadiosity(int, char*[])
   TestReference(vtkDeepRadiosityPass::HIGH_PERFORMANCE);
   TestReference(vtkDeepRadiosityPass::BALANCED, 4);
   TestBleeding();
+  TestComposite();
   TestNormalTest();
   TestBoost();
   TestFallback();
