@@ -254,6 +254,7 @@ struct vtkDeepGIRendererState
   bool HoldStill = false;
   vtkMTimeType HoldSettingsTime = 0;
   HoldKey HoldLighting{};
+  HoldKey FrameLighting{}; // HoldSignature during the last frame
 
   void Release()
   {
@@ -745,7 +746,7 @@ int vtkDeepGIPass::Converge(vtkRenderer* renderer, int maximumFrames, double tol
   {
     found->second->HoldStill = true;
     found->second->HoldSettingsTime = this->GetSettingsTime();
-    found->second->HoldLighting = HoldSignature(renderer);
+    found->second->HoldLighting = found->second->FrameLighting;
   }
   return frames;
 }
@@ -922,6 +923,10 @@ void vtkDeepGIPass::RenderFrame(const vtkRenderState* s, vtkDeepGIRendererState&
   this->GBufferPass->SetNumberOfLayers(layers);
   this->GBufferPass->SetWriteReflectivity(in.AnyReflects());
   this->DecideLayerReuse(renderer, state); // after UpdateLayerCount and the layer count
+  // Compared with the next frame's by HoldsStillImage, both taken while
+  // the passes around this one (ParaView's IceT compositing) have set the
+  // renderer up for the frame.
+  state.FrameLighting = HoldSignature(renderer);
 
   in.Wanted = wanted;
   in.MultiplyVisibility = (wanted & AMBIENT_OBSCURANCE) &&
