@@ -182,10 +182,11 @@ bool SameScene(const SceneKey& a, const SceneKey& b)
 // the scene signature and the passes' own settings (which vtkDeepGBufferPass
 // and vtkDeepAmbientObscurancePass check): the renderer (ambient,
 // background, two-sided lighting, ...) and its lights.
-vtkMTimeType LightingTime(vtkRenderer* renderer)
+// The latest modification of the renderer's lights and of their collection.
+vtkMTimeType LightsTime(vtkRenderer* renderer)
 {
   vtkLightCollection* lights = renderer->GetLights();
-  vtkMTimeType time = std::max(renderer->GetMTime(), lights->GetMTime());
+  vtkMTimeType time = lights->GetMTime();
   vtkCollectionSimpleIterator it;
   lights->InitTraversal(it);
   while (vtkLight* light = lights->GetNextLight(it))
@@ -193,6 +194,11 @@ vtkMTimeType LightingTime(vtkRenderer* renderer)
     time = std::max(time, light->GetMTime());
   }
   return time;
+}
+
+vtkMTimeType LightingTime(vtkRenderer* renderer)
+{
+  return std::max(renderer->GetMTime(), LightsTime(renderer));
 }
 
 // What ends the hold of a converged still image besides the scene and the
@@ -205,15 +211,7 @@ using HoldKey = std::array<double, 8>;
 HoldKey HoldSignature(vtkRenderer* renderer)
 {
   HoldKey key{};
-  vtkLightCollection* lights = renderer->GetLights();
-  vtkMTimeType time = lights->GetMTime();
-  vtkCollectionSimpleIterator it;
-  lights->InitTraversal(it);
-  while (vtkLight* light = lights->GetNextLight(it))
-  {
-    time = std::max(time, light->GetMTime());
-  }
-  key[0] = static_cast<double>(time);
+  key[0] = static_cast<double>(LightsTime(renderer));
   renderer->GetAmbient(key.data() + 1);
   renderer->GetBackground(key.data() + 4);
   key[7] = renderer->GetTwoSidedLighting();
@@ -739,7 +737,9 @@ int vtkDeepGIPass::Converge(vtkRenderer* renderer, int maximumFrames, double tol
   {
     return 0;
   }
+  const vtkMTimeType before = this->GetSettingsTime();
   const int frames = this->RenderStillFrames(renderer, maximumFrames, tolerance);
+  this->KeepHolds(before);
   // The settings are restored now: their time marks the still image.
   auto found = this->Internals->States.find(renderer);
   if (found != this->Internals->States.end() && found->second && !this->LastConvergenceAborted)
@@ -872,13 +872,14 @@ void vtkDeepGIPass::Render(const vtkRenderState* s)
   state.Reflects = (wanted & REFLECTIONS) != 0;
   if (this->HoldsStillImage(renderer, state))
   {
+    const vtkMTimeType before = this->GetSettingsTime();
     {
       ScopedFlag converging(in.Converging);
       ScopedStillEffects still(
         this->RadiosityPass, this->AmbientObscurancePass, this->ConvergeExtrapolatesBounces);
       this->RenderFrame(s, state, wanted);
     }
-    state.HoldSettingsTime = this->GetSettingsTime();
+    this->KeepHolds(before);
   }
   else
   {
@@ -894,11 +895,31 @@ void vtkDeepGIPass::Render(const vtkRenderState* s)
 // draw it with the interactive settings. Any change ends the hold.
 bool vtkDeepGIPass::HoldsStillImage(vtkRenderer* renderer, vtkDeepGIRendererState& state)
 {
-  state.HoldStill = state.HoldStill && !this->Internals->Converging &&
-    SameScene(SceneSignature(renderer), state.StillScene) &&
+  if (this->Internals->Converging)
+  {
+    return false; // the still settings are in place already
+  }
+  state.HoldStill = state.HoldStill && SameScene(SceneSignature(renderer), state.StillScene) &&
     HoldSignature(renderer) == state.HoldLighting &&
     this->GetSettingsTime() == state.HoldSettingsTime;
   return state.HoldStill;
+}
+
+//------------------------------------------------------------------------------
+// Setting and restoring the still settings modifies the passes without
+// changing their settings: renderers that held a still image at the
+// settings' time `before` (the other renderers sharing this pass too)
+// keep holding it.
+void vtkDeepGIPass::KeepHolds(vtkMTimeType before)
+{
+  const vtkMTimeType after = this->GetSettingsTime();
+  for (auto& entry : this->Internals->States)
+  {
+    if (entry.second && entry.second->HoldSettingsTime == before)
+    {
+      entry.second->HoldSettingsTime = after;
+    }
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -528,6 +528,9 @@ private:
   bool HoldsStillImage(vtkRenderer* renderer, vtkDeepGIRendererState& state);
   // The latest modification of this pass's settings and its sub-passes'.
   vtkMTimeType GetSettingsTime();
+  // After the still settings were set and restored: the holds of the
+  // settings' time `before` continue.
+  void KeepHolds(vtkMTimeType before);
 
   // Whether `renderer` may be drawn with GI: its window is the one this
   // pass renders into (see the class description); otherwise one error.

@@ -111,6 +111,7 @@ void main()
   bool solidAngle = deepEstimator == DEEP_ESTIMATOR_SOLID_ANGLE;
   bool useNormals = deepNormalTest != 0 || solidAngle;
   float ringArea = 2.0 * deepPi * ringWidth; // times h: the tap's screen ring
+  float outerWidth = deepOuterSamples > 0 ? rp * (deepOuterScale - 1.0) / float(deepOuterSamples) : 0.0;
 
   vec3 sum[2] = vec3[2](vec3(0.0), vec3(0.0));
   float used[2] = float[2](0.0, 0.0);
@@ -140,12 +141,11 @@ void main()
     {
       // The outer ring, one tap per K-th of the circle.
       int k = i - deepSamples;
-      float width = rp * (deepOuterScale - 1.0) / float(deepOuterSamples);
-      bool middle = width <= minTexel || deepDivisor > 1;
-      h = rp + width * (float(k) + (middle ? 0.5 : offset));
+      bool middle = outerWidth <= minTexel || deepDivisor > 1;
+      h = rp + outerWidth * (float(k) + (middle ? 0.5 : offset));
       float theta = 2.0 * deepPi * (float(k) + 0.5) / float(deepOuterSamples) + phi;
       tapPosition = center + h * vec2(cos(theta), sin(theta));
-      tapRingArea = 2.0 * deepPi * width;
+      tapRingArea = 2.0 * deepPi * outerWidth;
     }
     ivec2 tap = ivec2(floor(tapPosition));
     if (any(lessThan(tap, ivec2(0))) || any(greaterThanEqual(tap, isize)))

@@ -27,7 +27,9 @@
 //    camera has moved, frames render with the interactive settings again:
 //    back at the converged camera, the obscurance's narrower blur moves
 //    the ambient visibility by more than 0.01 somewhere (measured 0.10).
-//    After an aborted Converge nothing is held (the same difference).
+//    After an aborted Converge nothing is held (the same difference). Two
+//    renderers sharing the pass, each converged in turn, both hold their
+//    images when the window is rendered again.
 
 #include "DeepRadiosityTest.h"
 
@@ -319,10 +321,11 @@ void ReadColour(vtkRenderWindow* window, bool render, vtkImageData* colour)
 }
 
 // The last frame's ambient visibility (filtered) of the scene's renderer.
-vtkSmartPointer<vtkDataArray> ReadVisibility(Scene& scene)
+vtkSmartPointer<vtkDataArray> ReadVisibility(Scene& scene, vtkRenderer* renderer = nullptr)
 {
   vtkNew<vtkImageData> capture;
-  Check(scene.Pass->GetAmbientObscurancePass()->CaptureAmbientVisibility(capture, scene.Renderer),
+  Check(scene.Pass->GetAmbientObscurancePass()->CaptureAmbientVisibility(
+          capture, renderer ? renderer : scene.Renderer.GetPointer()),
     "the ambient visibility is captured");
   return capture->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility);
 }
@@ -373,11 +376,40 @@ void CheckHold()
   std::printf("rendered again after an aborted Converge: AV %.4f from its frame\n", afterAbort);
   Check(afterAbort > 0.01, "after an aborted Converge, frames use the interactive settings");
 }
+
+// Two renderers sharing the pass, each converged: rendering the window
+// again holds both still images.
+void CheckSharedHold()
+{
+  Scene scene;
+  vtkNew<vtkRenderer> right;
+  scene.Renderer->SetViewport(0.0, 0.0, 0.5, 1.0);
+  right->SetViewport(0.5, 0.0, 1.0, 1.0);
+  RedWallSceneWithAmbient(right);
+  scene.Window->AddRenderer(right);
+  scene.Renderer->SetPass(scene.Pass);
+  right->SetPass(scene.Pass);
+  scene.Pass->Converge(scene.Renderer, 16, 0.07 / 255.0);
+  scene.Pass->Converge(right, 16, 0.07 / 255.0);
+  const auto left = ReadVisibility(scene);
+  const auto rightVisibility = ReadVisibility(scene, right);
+  vtkNew<vtkImageData> colour;
+  ReadColour(scene.Window, true, colour);
+  const double leftDifference = MaximumDifference(left, ReadVisibility(scene));
+  const double rightDifference = MaximumDifference(rightVisibility, ReadVisibility(scene, right));
+  std::printf("shared pass, rendered again: AV %.4f (left), %.4f (right) from the converged "
+              "frames\n",
+    leftDifference, rightDifference);
+  Check(leftDifference <= 1e-3 && rightDifference <= 1e-3,
+    "renderers sharing the pass both hold their still images");
+  right->SetPass(nullptr);
+}
 }
 
 int TestDeepGIConverge(int, char*[])
 {
   CheckHold();
+  CheckSharedHold();
   CheckAbort();
   CheckInterrupt();
   CheckWrappers();
