@@ -18,7 +18,8 @@ from vtkmodules.vtkIOImage import vtkPNGReader
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 METHODS = ["plain VTK", "vtkSSAOPass K16", "vtkSSAOPass K64", "vtkDeepGIPass BALANCED 1 layer",
-           "vtkDeepGIPass HIGH_PERFORMANCE", "vtkDeepGIPass BALANCED", "vtkDeepGIPass HIGH_QUALITY"]
+           "vtkDeepGIPass HIGH_PERFORMANCE", "vtkDeepGIPass BALANCED", "vtkDeepGIPass HIGH_QUALITY",
+           "vtkDeepGIPass BALANCED interactive"]
 # The plot's colours of the vtkSSAOPass curve and of the presets' curve
 # (deepgi_benchmark_image.save_plot: the families in the order of the rows).
 CURVES = {"vtkSSAOPass": (40, 90, 200), "vtkDeepGIPass presets": (230, 140, 20)}

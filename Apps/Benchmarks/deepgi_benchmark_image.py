@@ -10,8 +10,10 @@ at one still camera:
 - plain VTK; vtkSSAOPass with kernel 16 and 64 (radius = the obscurance
   pass's automatic radius, 0.05 x the scene's diagonal, blur on); and
   vtkDeepGIPass with each preset, converged with Converge(renderer, 16,
-  0.07 / 255) as the main job does, and BALANCED with UseSecondLayer off
-  (one G-buffer layer: what the second layer is worth);
+  0.07 / 255) as the main job does, BALANCED with UseSecondLayer off
+  (one G-buffer layer: what the second layer is worth), and BALANCED
+  without Converge after INTERACTIVE_FRAMES frames at the camera (the
+  image a user sees while interacting, once the temporal filters settled);
 - the reference: vtkDeepGIReferenceImage (the pass's lighting model,
   Documentation/lighting-model.md) on the G-buffer capture of the same
   camera, with the same obscurance radius and the same rule for what
@@ -66,6 +68,9 @@ PRESETS = ("HIGH_PERFORMANCE", "BALANCED", "HIGH_QUALITY")
 # changes. Converge renders both with the same fixed taps, so what differs
 # is the second layer's contribution, not sampling noise.
 CHANGE_THRESHOLD = 0.02
+# Frames of the interactive image: the radiosity's temporal filter (alpha
+# 0.85) then keeps 0.85^40 = 0.2 % of the first frame.
+INTERACTIVE_FRAMES = 40
 
 
 def parse_arguments():
@@ -174,9 +179,10 @@ def timed_frames(window, count):
 
 
 class Method:
-    def __init__(self, name, make_pass):
+    def __init__(self, name, make_pass, interactive=False):
         self.name = name
         self.make_pass = make_pass
+        self.interactive = interactive
         self.times = []
         self.image = None
         self.pass_ = None
@@ -234,6 +240,8 @@ def method_family(method):
         return "vtkSSAOPass (K16, K64)"
     if method.endswith("1 layer"):
         return "vtkDeepGIPass BALANCED, 1 layer"
+    if method.endswith("interactive"):
+        return "vtkDeepGIPass BALANCED, interactive"
     if method.startswith("vtkDeepGIPass"):
         return "vtkDeepGIPass (HIGH_PERFORMANCE, BALANCED, HIGH_QUALITY)"
     return method
@@ -267,7 +275,8 @@ def save_plot(path, infos, rows):
     chart.SetShowLegend(True)
     chart.GetAxis(vtkAxis.BOTTOM).SetTitle("log10 of ms per frame (reference: of ms to compute)")
     chart.GetAxis(vtkAxis.LEFT).SetTitle("RMSE (reference: its mean standard error)")
-    colors = ((60, 60, 60), (40, 90, 200), (200, 40, 40), (230, 140, 20), (30, 150, 60))
+    colors = ((60, 60, 60), (40, 90, 200), (200, 40, 40), (230, 140, 20), (150, 60, 170),
+              (30, 150, 60))
     tables = []
     for k, (family, values) in enumerate(curves.items()):
         table = vtkTable()
@@ -307,13 +316,18 @@ def measure_scene(args, scene):
     methods += [Method("vtkSSAOPass K%d" % k, make_ssao(k, radius)) for k in (16, 64)]
     methods.append(Method("vtkDeepGIPass BALANCED 1 layer", make_gi("BALANCED", False)))
     methods += [Method("vtkDeepGIPass " + p, make_gi(p)) for p in PRESETS]
+    methods.append(Method("vtkDeepGIPass BALANCED interactive", make_gi("BALANCED"), True))
     for m in methods:
         m.pass_ = m.make_pass() if m.make_pass else None
 
-    # Accuracy: each method's still image, GI converged as the main job does.
+    # Accuracy: each method's still image, GI converged as the main job does
+    # or, for the interactive method, rendered frame after frame.
     for m in methods:
         renderer.SetPass(m.pass_)
-        if isinstance(m.pass_, vtkdeepgi.vtkDeepGIPass):
+        if m.interactive:
+            for _ in range(INTERACTIVE_FRAMES):
+                window.Render()
+        elif isinstance(m.pass_, vtkdeepgi.vtkDeepGIPass):
             m.pass_.Converge(renderer, 16, 0.07 / 255.0)
         else:
             window.Render()
