@@ -356,6 +356,7 @@ void vtkDeepRadiosityPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ResolutionDivisor: " << this->ResolutionDivisor << "\n";
   os << indent << "Damping: " << this->Damping << "\n";
   os << indent << "TemporalAlpha: " << this->TemporalAlpha << "\n";
+  os << indent << "TemporalInterleave: " << this->TemporalInterleave << "\n";
   os << indent << "ReprojectionTolerance: " << this->ReprojectionTolerance << "\n";
   os << indent
      << "AutomaticReprojectionTolerance: " << (this->AutomaticReprojectionTolerance ? "On" : "Off")
@@ -586,6 +587,8 @@ struct vtkDeepRadiosityPass::vtkGatherFrame : vtkDeepScreenSpacePass::EffectFram
   double Tolerance = 0.0; // reprojection tolerance, world units
   bool HasLights = false;
   double RotationOffset = 0.0;
+  int TapStride = 1; // TemporalInterleave while the temporal filter is on
+  int TapPhase = 0;
   int Units[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES]; // of the G-buffer's textures
   int MinimumMip = 0; // the coarsest level the taps use is MaximumMip
   int MaximumMip = 0;
@@ -822,6 +825,8 @@ bool vtkDeepRadiosityPass::PrepareTargets(
   }
   ++state.FrameIndex;
   frame.RotationOffset = this->TemporalAlpha > 0.0 ? RotationOffset(state.FrameIndex) : 0.0;
+  frame.TapStride = this->TemporalAlpha > 0.0 ? this->TemporalInterleave : 1;
+  frame.TapPhase = static_cast<int>(state.FrameIndex % static_cast<unsigned int>(frame.TapStride));
   if (!this->AllocateTargets(frame, state))
   {
     vtkErrorMacro("Could not allocate the radiosity targets.");
@@ -1185,6 +1190,8 @@ void vtkDeepRadiosityPass::Gather(vtkGatherFrame& frame, vtkDeepRadiosityRendere
   program->SetUniformi("deepEstimator", this->Estimator);
   program->SetUniformf("deepCosineEpsilon", static_cast<float>(COSINE_EPSILON));
   program->SetUniformf("deepRotationOffset", static_cast<float>(frame.RotationOffset));
+  program->SetUniformi("deepTapStride", frame.TapStride);
+  program->SetUniformi("deepTapPhase", frame.TapPhase);
   in.GatherQuad->Render();
   UnbindLayerTextures(state.Targets[BOUNCE]);
   state.Keys[LAYER_KEY]->Deactivate();

@@ -6,7 +6,9 @@
 //   layer choice on the captured G-buffer, for the BALANCED (n_Y test, MIP
 //   level >= 2) and HIGH_PERFORMANCE (no n_Y test, level >= 3, the
 //   receivers on a grid of half the resolution: compared there) presets,
-//   and BALANCED with 4 taps of the outer ring (OuterSamples):
+//   and BALANCED with 4 taps of the outer ring (OuterSamples), also in the
+//   first frame of the temporal filter with the taps spread over 2 and 3
+//   frames (TemporalInterleave: every 2nd or 3rd tap):
 //   |E difference| <= 1e-3 (1 + |E|) and the same M on >= 99 % of the
 //   valid pixels of each layer (float vs double may move a tap across a
 //   texel border);
@@ -172,11 +174,32 @@ bool BestCandidate(vtkImageData* layers, int layerCount, const double X[3], cons
 // cosine tests with COSINE_EPSILON, the larger contribution per tap.
 // `divisor`: the gather's resolution divisor; (i, j) is then the receiver
 // (i / divisor, j / divisor) of its grid, whose index sets the rotation and
-// which leaves out the sources of its own cell. `outer`: the taps of the
-// outer ring (OuterSamples), after the spiral's.
-Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerCount, int n,
-  int outer, double radius, double q, int minMip, int maxMip, bool normalTest, int divisor)
+// which leaves out the sources of its own cell. `Outer`: the taps of the
+// outer ring (OuterSamples), after the spiral's. `Stride`, `Phase`: the
+// frame's share of the taps (TemporalInterleave), those i = Phase + x + y
+// mod Stride for receiver (x, y), each counting Stride times in the
+// confidence; `Rotation`: the
+// frame's rotation offset, 2 pi fract(k / golden ratio) in frame k while
+// the temporal filter is on.
+struct TapSettings
 {
+  int LayerCount = 2;
+  int Samples = 14;
+  int Outer = 0;
+  double Radius = 1.0;
+  double MipThreshold = 8.0;
+  int MinMip = 0;
+  int MaxMip = 0;
+  bool NormalTest = true;
+  int Divisor = 1;
+  int Stride = 1;
+  int Phase = 0;
+  double Rotation = 0.0;
+};
+
+Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, const TapSettings& t)
+{
+  const int n = t.Samples, outer = t.Outer, divisor = t.Divisor;
   Gather g;
   const int* dims = layers->GetDimensions();
   const int W = dims[0], H = dims[1];
@@ -191,24 +214,27 @@ Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerC
   double nX[3];
   Layer(layers, vtkDeepGICaptureNames::Normal, layer)
     ->GetTuple(static_cast<vtkIdType>(j) * W + i, nX);
-  const double rp = radius * P[5] * 0.5 * H / (P[14] * X0[2] + P[15]);
+  const double rp = t.Radius * P[5] * 0.5 * H / (P[14] * X0[2] + P[15]);
   // The rotation in float, as the shader computes it: h phi moves a far
   // tap by a twentieth of a pixel between float and double.
   const float dotted =
     0.06711056f * static_cast<float>(i / divisor) + 0.00583715f * static_cast<float>(j / divisor);
   const double ign = 52.9829189f * (dotted - std::floor(dotted));
-  const double phi = 2.0 * Pi * (ign - std::floor(ign));
+  const float phi =
+    static_cast<float>(2.0 * Pi * (ign - std::floor(ign))) + static_cast<float>(t.Rotation);
   const int tau = vtkDeepAmbientObscurancePass::GetSpiralTurns(n);
   // Taps after the first at the offset fract(4 phi / (2 pi)) across their
   // rings where these are wider than a texel of the minimum MIP level, at
   // full resolution.
-  const double offset = 4.0 * (ign - std::floor(ign));
+  const double offset = phi * (2.0f / static_cast<float>(Pi));
   const double radialOffset = offset - std::floor(offset);
   const double scale = vtkDeepRadiosityPass::OUTER_RADIUS_SCALE;
-  const double reach = outer > 0 ? scale * radius : radius;
+  const double reach = outer > 0 ? scale * t.Radius : t.Radius;
   const double outerWidth = outer > 0 ? rp * (scale - 1.0) / outer : 0.0;
+  const int minMip = t.MinMip;
   int used = 0;
-  for (int s = 0; s < n + outer; ++s)
+  const int phase = (t.Phase + i / divisor + j / divisor) % t.Stride;
+  for (int s = phase; s < n + outer; s += t.Stride)
   {
     double h, theta;
     if (s < n)
@@ -230,7 +256,7 @@ Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerC
       continue;
     }
     int cx, cy;
-    SourceTexel(tx, ty, h, q, minMip, maxMip, W, H, cx, cy);
+    SourceTexel(tx, ty, h, t.MipThreshold, minMip, t.MaxMip, W, H, cx, cy);
     // On a reduced grid the receiver leaves out the sources whose bounce
     // input reads it: those in its cell, floor(s / D + 1 / 2) = receiver.
     if (divisor > 1 && (2 * cx + divisor) / (2 * divisor) == i / divisor &&
@@ -239,7 +265,7 @@ Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerC
       continue;
     }
     double best[3] = { 0.0, 0.0, 0.0 };
-    if (BestCandidate(layers, layerCount, X, nX, cx, cy, reach, normalTest, best))
+    if (BestCandidate(layers, t.LayerCount, X, nX, cx, cy, reach, t.NormalTest, best))
     {
       ++used;
       for (int a = 0; a < 3; ++a)
@@ -252,7 +278,7 @@ Gather ReferenceGather(vtkImageData* layers, int i, int j, int layer, int layerC
   {
     e = used > 0 ? 2.0 * Pi / used * e : 0.0;
   }
-  g.Confidence = static_cast<double>(used) / (n + outer);
+  g.Confidence = std::min(static_cast<double>(used) * t.Stride / (n + outer), 1.0);
   return g;
 }
 
@@ -265,12 +291,51 @@ vtkSmartPointer<vtkDeepRadiosityPass> SingleBouncePass(double radius)
   return pass;
 }
 
-void TestReference(int preset, int outer = 0)
+// The taps `pass` gathers with in the first frame of `f`: its settings, the
+// MIP range the frame's size allows and, with `interleave` > 1, the
+// temporal filter's share of the taps and rotation in that frame.
+TapSettings TapSettingsOf(vtkDeepRadiosityPass* pass, const Frame& f, int layerCount, double radius,
+  int outer, int interleave)
+{
+  int finest = 0;
+  while ((std::max(f.Width, f.Height) >> (finest + 1)) > 0)
+  {
+    ++finest;
+  }
+  TapSettings taps;
+  taps.MaxMip = std::min(std::max(pass->GetMaximumMipLevel(), pass->GetMinimumMipLevel()), finest);
+  taps.MinMip = std::min(pass->GetMinimumMipLevel(), taps.MaxMip);
+  taps.LayerCount = layerCount;
+  taps.Samples = pass->GetNumberOfSamples();
+  taps.Outer = outer;
+  taps.Radius = radius;
+  taps.MipThreshold = pass->GetMipThreshold();
+  taps.NormalTest = pass->GetUseNormalTest();
+  taps.Divisor = pass->GetResolutionDivisor();
+  if (interleave > 1)
+  {
+    // The history's first frame, k = 1.
+    const double golden = 0.6180339887498949;
+    taps.Stride = interleave;
+    taps.Phase = 1 % interleave;
+    taps.Rotation = 2.0 * Pi * (golden - std::floor(golden));
+  }
+  return taps;
+}
+
+// `interleave` > 1: the first frame with the temporal filter on and the taps
+// spread over that many frames (TemporalInterleave).
+void TestReference(int preset, int outer = 0, int interleave = 1)
 {
   const double radius = 1.5;
   auto pass = SingleBouncePass(radius);
   pass->SetPreset(preset);
   pass->SetOuterSamples(outer);
+  if (interleave > 1)
+  {
+    pass->SetTemporalAlpha(0.5);
+    pass->SetTemporalInterleave(interleave);
+  }
   // The CPU evaluation reads a tap's B at its source texel, as the gather
   // does without AverageFarTaps (the outer ring's taps read coarse levels).
   pass->SetAverageFarTaps(false);
@@ -297,18 +362,11 @@ void TestReference(int preset, int outer = 0)
   const int layerCount = static_cast<int>(
     f.Radiosity->GetFieldData()->GetArray(vtkDeepGICaptureNames::NumberOfLayers)->GetTuple1(0));
   Check(layerCount == 2, "two layers");
-  int finest = 0;
-  while ((std::max(f.Width, f.Height) >> (finest + 1)) > 0)
-  {
-    ++finest;
-  }
-  const int maxMip =
-    std::min(std::max(pass->GetMaximumMipLevel(), pass->GetMinimumMipLevel()), finest);
-  const int minMip = std::min(pass->GetMinimumMipLevel(), maxMip);
   // On a reduced grid (HIGH_PERFORMANCE: divisor 2) the gather runs for the
   // receivers, texels (divisor i, divisor j); the capture repeats each over
   // the texels it stands for.
   const int divisor = pass->GetResolutionDivisor();
+  const TapSettings taps = TapSettingsOf(pass, f, layerCount, radius, outer, interleave);
   for (int layer = 0; layer < layerCount; ++layer)
   {
     const std::string suffix = "_" + std::to_string(layer);
@@ -324,9 +382,7 @@ void TestReference(int preset, int outer = 0)
           continue;
         }
         ++compared;
-        const Gather g =
-          ReferenceGather(f.Layers, i, j, layer, layerCount, pass->GetNumberOfSamples(), outer,
-            radius, pass->GetMipThreshold(), minMip, maxMip, pass->GetUseNormalTest(), divisor);
+        const Gather g = ReferenceGather(f.Layers, i, j, layer, taps);
         bool same = std::abs(At(f.Radiosity, vtkDeepGICaptureNames::RawConfidence + suffix, i, j) -
                       g.Confidence) < 1e-6;
         for (int c = 0; c < 3; ++c)
@@ -340,10 +396,10 @@ void TestReference(int preset, int outer = 0)
         mismatched += same ? 0 : 1;
       }
     }
-    std::printf("%s, %d outer taps, layer %d: %ld pixels, %ld with E.r > 0.01, %ld differ from "
-                "the CPU (largest |dE| %.3g)\n",
-      vtkDeepRadiosityPass::GetPresetAsString(preset), outer, layer, compared, withLight,
-      mismatched, worst);
+    std::printf("%s, %d outer taps, taps over %d frames, layer %d: %ld pixels, %ld with "
+                "E.r > 0.01, %ld differ from the CPU (largest |dE| %.3g)\n",
+      vtkDeepRadiosityPass::GetPresetAsString(preset), outer, interleave, layer, compared,
+      withLight, mismatched, worst);
     Check(compared > (layer == 0 ? f.Width * f.Height / (2 * divisor * divisor) : 50 / divisor),
       "layer has surface pixels");
     Check(withLight > compared / 20, "some pixels gather light");
@@ -781,7 +837,7 @@ void TestPresets()
     { vtkDeepGICaptureNames::Radius, "AutomaticRadius", "AutomaticRadiusFraction",
       "EffectiveRadius", vtkDeepGICaptureNames::NumberOfSamples, "UseNormalTest", "UseColorBoost",
       "BlurRadius", "BlurPlaneTolerance", "BlurNormalPower", "MipThreshold", "MinimumMipLevel",
-      "MaximumMipLevel", "ResolutionDivisor", "Damping", "TemporalAlpha",
+      "MaximumMipLevel", "ResolutionDivisor", "Damping", "TemporalAlpha", "TemporalInterleave",
       vtkDeepGICaptureNames::ReprojectionTolerance, "AutomaticReprojectionTolerance",
       "AutomaticReprojectionFraction", "EffectiveReprojectionTolerance", "ConfidenceFallback",
       vtkDeepGICaptureNames::EnvironmentIrradiance, "AutomaticEnvironmentIrradiance",
@@ -798,6 +854,8 @@ int TestDeepRadiosity(int, char*[])
   TestReference(vtkDeepRadiosityPass::BALANCED);
   TestReference(vtkDeepRadiosityPass::HIGH_PERFORMANCE);
   TestReference(vtkDeepRadiosityPass::BALANCED, 4);
+  TestReference(vtkDeepRadiosityPass::BALANCED, 4, 2);
+  TestReference(vtkDeepRadiosityPass::BALANCED, 4, 3);
   TestBleeding();
   TestComposite();
   TestNormalTest();
