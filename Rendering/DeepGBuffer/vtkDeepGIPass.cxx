@@ -178,10 +178,6 @@ bool SameScene(const SceneKey& a, const SceneKey& b)
   return a.back() == b.back();
 }
 
-// What the layers and the obscurance of a still frame depend on besides
-// the scene signature and the passes' own settings (which vtkDeepGBufferPass
-// and vtkDeepAmbientObscurancePass check): the renderer (ambient,
-// background, two-sided lighting, ...) and its lights.
 // The latest modification of the renderer's lights and of their collection.
 vtkMTimeType LightsTime(vtkRenderer* renderer)
 {
@@ -196,6 +192,10 @@ vtkMTimeType LightsTime(vtkRenderer* renderer)
   return time;
 }
 
+// What the layers and the obscurance of a still frame depend on besides
+// the scene signature and the passes' own settings (which vtkDeepGBufferPass
+// and vtkDeepAmbientObscurancePass check): the renderer (ambient,
+// background, two-sided lighting, ...) and its lights.
 vtkMTimeType LightingTime(vtkRenderer* renderer)
 {
   return std::max(renderer->GetMTime(), LightsTime(renderer));

@@ -338,10 +338,10 @@ void vtkDeepRadiosityPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Radius: " << this->Radius << "\n";
   os << indent << "AutomaticRadius: " << (this->AutomaticRadius ? "On" : "Off") << "\n";
   os << indent << "AutomaticRadiusFraction: " << this->AutomaticRadiusFraction << "\n";
-  os << indent << "OuterSamples: " << this->OuterSamples << "\n";
   os << indent << "EffectiveRadius: " << this->EffectiveRadius << "\n";
   os << indent << "NumberOfSamples: " << this->NumberOfSamples << " (spiral turns "
      << vtkDeepScreenSpace::SpiralTurns(this->NumberOfSamples) << ")\n";
+  os << indent << "OuterSamples: " << this->OuterSamples << "\n";
   os << indent << "UseNormalTest: " << (this->UseNormalTest ? "On" : "Off") << "\n";
   os << indent << "Estimator: " << GetEstimatorAsString(this->Estimator) << "\n";
   os << indent << "UseColorBoost: " << (this->UseColorBoost ? "On" : "Off") << "\n";

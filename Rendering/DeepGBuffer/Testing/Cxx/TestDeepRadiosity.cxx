@@ -178,9 +178,8 @@ bool BestCandidate(vtkImageData* layers, int layerCount, const double X[3], cons
 // outer ring (OuterSamples), after the spiral's. `Stride`, `Phase`: the
 // frame's share of the taps (TemporalInterleave), those i = Phase + x + y
 // mod Stride for receiver (x, y), each counting Stride times in the
-// confidence; `Rotation`: the
-// frame's rotation offset, 2 pi fract(k / golden ratio) in frame k while
-// the temporal filter is on.
+// confidence; `Rotation`: the frame's rotation offset, 2 pi fract(k /
+// golden ratio) in frame k while the temporal filter is on.
 struct TapSettings
 {
   int LayerCount = 2;
@@ -314,11 +313,12 @@ TapSettings TapSettingsOf(vtkDeepRadiosityPass* pass, const Frame& f, int layerC
   taps.Divisor = pass->GetResolutionDivisor();
   if (interleave > 1)
   {
-    // The history's first frame, k = 1.
-    const double golden = 0.6180339887498949;
+    // The history's first frame, k = 1: phase k mod S, rotation
+    // 2 pi fract(k / golden ratio).
+    const double inverseGoldenRatio = 0.6180339887498949;
     taps.Stride = interleave;
     taps.Phase = 1 % interleave;
-    taps.Rotation = 2.0 * Pi * (golden - std::floor(golden));
+    taps.Rotation = 2.0 * Pi * inverseGoldenRatio;
   }
   return taps;
 }
