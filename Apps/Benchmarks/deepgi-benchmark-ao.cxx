@@ -81,41 +81,42 @@ const char* const SceneNames[] = { "demo", "demo-columns", "cornell-lucy", "drag
 // several N with BlurRadius 4) and named settings of ours.
 const char* const DefaultMethods = "ssao:8,ssao:16,ssao:32,ssao:64,"
                                    "ours1:4,ours1:8,ours1:16,ours1:32,"
-                                   "ours2:4,ours2:8,ours2:16,ours2:32,ours2cull:16,"
+                                   "ours2:4,ours2:8,ours2:16,ours2:32,ours2cull:16,ours2:16:4:sa,"
                                    "low,medium,high";
 
 void Usage()
 {
-  std::printf(
-    "Usage: deepgi-benchmark-ao [options]\n"
-    "Time and error against a ray-traced reference of vtkSSAOPass and of the deep\n"
-    "ambient obscurance (1 and 2 layers) on several scenes, measured in one run.\n"
-    "  --size WxH           timing size in pixels (default 640x480)\n"
-    "  --accuracy-size WxH  size of the error measurement (default 320x240)\n"
-    "  --frames N           timed frames per method and round (default 7)\n"
-    "  --rounds N           rounds over all methods (default 2)\n"
-    "  --samples N          reference rays per pixel (default 256)\n"
-    "  --radius-fraction F  r = F x scene diagonal, every method (default 0.05)\n"
-    "  --scenes LIST        comma list of demo, demo-columns (the demo scene's\n"
-    "                       columns view), cornell-lucy, dragon, headsq\n"
-    "                       (default all five)\n"
-    "  --methods LIST       comma list of ssao:K (vtkSSAOPass, kernel size K, blur on),\n"
-    "                       ours1:N[:B] / ours2:N[:B] (one / two layers, N samples,\n"
-    "                       BlurRadius B, default 4), ours2cull:N[:B] (two layers,\n"
-    "                       layer 1 with back-face culling), ours2gb:N[:B] (two\n"
-    "                       layers, a G-buffer guard band of 0.1), low, medium, high (two\n"
-    "                       layers with a quality preset). Default:\n"
-    "                       %s\n"
-    "  --mesh FILE          one more scene: a mesh or OBJ scene the scene loader reads\n"
-    "                       (.ply, .stl, .vtk, .vtp, .obj; repeatable); --scene FILE is\n"
-    "                       the same. With any of them, only the files are measured\n"
-    "                       unless --scenes names built-in scenes too.\n"
-    "  --volume FILE --iso V  one more scene: the iso-surface V of a volume\n"
-    "  --data DIR           test data folder (default %s)\n"
-    "  --no-error-maps      do not write the error-map PNGs\n"
-    "  --backend NAME       auto, x11 or egl (default auto)\n"
-    "  --output DIR         output directory (default output)\n"
-    "  --help               this text\n",
+  std::printf("Usage: deepgi-benchmark-ao [options]\n"
+              "Time and error against a ray-traced reference of vtkSSAOPass and of the deep\n"
+              "ambient obscurance (1 and 2 layers) on several scenes, measured in one run.\n"
+              "  --size WxH           timing size in pixels (default 640x480)\n"
+              "  --accuracy-size WxH  size of the error measurement (default 320x240)\n"
+              "  --frames N           timed frames per method and round (default 7)\n"
+              "  --rounds N           rounds over all methods (default 2)\n"
+              "  --samples N          reference rays per pixel (default 256)\n"
+              "  --radius-fraction F  r = F x scene diagonal, every method (default 0.05)\n"
+              "  --scenes LIST        comma list of demo, demo-columns (the demo scene's\n"
+              "                       columns view), cornell-lucy, dragon, headsq\n"
+              "                       (default all five)\n"
+              "  --methods LIST       comma list of ssao:K (vtkSSAOPass, kernel size K, blur on),\n"
+              "                       ours1:N[:B][:E] / ours2:N[:B][:E] (one / two layers, N\n"
+              "                       samples, BlurRadius B, default 4, estimator E: vb, the\n"
+              "                       default VISIBILITY_BITMASK, sa SOLID_ANGLE or eq1\n"
+              "                       EQUATION_1), ours2cull:N[:B][:E] (two layers, layer 1 with\n"
+              "                       back-face culling), ours2gb:N[:B][:E] (two layers, a\n"
+              "                       G-buffer guard band of 0.1), low, medium, high (two\n"
+              "                       layers with a quality preset). Default:\n"
+              "                       %s\n"
+              "  --mesh FILE          one more scene: a mesh or OBJ scene the scene loader reads\n"
+              "                       (.ply, .stl, .vtk, .vtp, .obj; repeatable); --scene FILE is\n"
+              "                       the same. With any of them, only the files are measured\n"
+              "                       unless --scenes names built-in scenes too.\n"
+              "  --volume FILE --iso V  one more scene: the iso-surface V of a volume\n"
+              "  --data DIR           test data folder (default %s)\n"
+              "  --no-error-maps      do not write the error-map PNGs\n"
+              "  --backend NAME       auto, x11 or egl (default auto)\n"
+              "  --output DIR         output directory (default output)\n"
+              "  --help               this text\n",
     DefaultMethods, DEEPGI_DATA_DIR);
 }
 
@@ -160,11 +161,12 @@ bool ParseMethod(const std::string& spec, Method& m)
   }
   std::vector<std::string> p = Split(spec, ':');
   std::string estimator;
-  if (p.size() >= 3 && (p.back() == "sa" || p.back() == "eq1"))
+  if (p.size() >= 3 && (p.back() == "sa" || p.back() == "eq1" || p.back() == "vb"))
   {
     estimator = p.back();
     p.pop_back();
     m.Estimator = estimator == "sa" ? vtkDeepAmbientObscurancePass::SOLID_ANGLE
+      : estimator == "vb"           ? vtkDeepAmbientObscurancePass::VISIBILITY_BITMASK
                                     : vtkDeepAmbientObscurancePass::EQUATION_1;
   }
   if (p.size() == 2 && p[0] == "ssao" && estimator.empty())
@@ -288,7 +290,7 @@ bool ParseOptions(int argc, char* argv[], Options& o)
   }
   return ParseMethodList(Program, o.MethodList, ParseMethod,
     "ssao:K, ours1:N[:B][:E], ours2:N[:B][:E], ours2cull:N[:B][:E], ours2gb:N[:B][:E], low, "
-    "medium, high; E: sa or eq1",
+    "medium, high; E: vb, sa or eq1",
     o.Methods);
 }
 
@@ -889,7 +891,7 @@ std::string SceneTable(const Options& o, const Measurements& measured)
     << "r = " << o.RadiusFraction
     << " x scene diagonal for every method; vtkSSAOPass: Radius r, Bias 0.02 r, Blur on; "
        "ours: Radius r and the pass's defaults (Bias 0.01 r, Epsilon 1e-4 r^2, estimator "
-       "SOLID_ANGLE unless the method says otherwise); reference: Embree, "
+       "VISIBILITY_BITMASK unless the method says otherwise); reference: Embree, "
     << o.Samples
     << " rays per pixel, beta = eps = 0 (the obscurance itself), on the G-buffer capture of the "
        "same frame (layer 0).\nAV of a method = luminance(method) / luminance(plain) on white "

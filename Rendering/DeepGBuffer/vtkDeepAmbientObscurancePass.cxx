@@ -312,9 +312,10 @@ void vtkDeepAmbientObscurancePass::SetRadius(double radius)
 //------------------------------------------------------------------------------
 const char* vtkDeepAmbientObscurancePass::GetEstimatorAsString(int estimator)
 {
-  return estimator == EQUATION_1 ? "EQUATION_1"
-    : estimator == SOLID_ANGLE   ? "SOLID_ANGLE"
-                                 : "UNKNOWN";
+  return estimator == EQUATION_1      ? "EQUATION_1"
+    : estimator == SOLID_ANGLE        ? "SOLID_ANGLE"
+    : estimator == VISIBILITY_BITMASK ? "VISIBILITY_BITMASK"
+                                      : "UNKNOWN";
 }
 
 //------------------------------------------------------------------------------
@@ -354,7 +355,7 @@ void vtkDeepAmbientObscurancePass::SetPreset(int preset)
     double MipThreshold;
     int MaximumMipLevel;
   };
-  static const Settings presets[] = { { 8, 2, 4.0, 5 }, { 16, 4, 8.0, 5 }, { 32, 6, 16.0, 5 } };
+  static const Settings presets[] = { { 8, 2, 4.0, 5 }, { 12, 3, 8.0, 5 }, { 32, 3, 16.0, 5 } };
   if (preset < HIGH_PERFORMANCE || preset > HIGH_QUALITY)
   {
     vtkWarningMacro("Unknown preset " << preset << "; the settings are unchanged.");
@@ -515,11 +516,13 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
   vtkDeepGBufferPass* gbuffer = this->GBufferPass;
   const int distanceUnit = gbuffer->ActivateTexture(frame.Renderer, vtkDeepGBufferPass::DEPTH);
   const int normalUnit = gbuffer->ActivateTexture(frame.Renderer, vtkDeepGBufferPass::NORMAL);
+  const int facingUnit = gbuffer->ActivateTexture(frame.Renderer, vtkDeepGBufferPass::ALBEDO);
   bool computed = false;
   {
     vtkOpenGLState* ostate = frame.GL;
     vtkDeepScreenSpace::ScopedStageState stageState(ostate);
-    computed = this->BuildKeyPyramid(state, frame.Window, distanceUnit, normalUnit, frame.Layers);
+    computed = this->BuildKeyPyramid(
+      state, frame.Window, { distanceUnit, normalUnit, facingUnit }, frame.Layers);
     if (computed)
     {
       this->ComputeRawVisibility(frame, state, radius);
@@ -532,6 +535,7 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
       this->UnbindKeyPyramid(state, frame.Window);
     }
   }
+  gbuffer->DeactivateTexture(frame.Renderer, vtkDeepGBufferPass::ALBEDO);
   gbuffer->DeactivateTexture(frame.Renderer, vtkDeepGBufferPass::NORMAL);
   gbuffer->DeactivateTexture(frame.Renderer, vtkDeepGBufferPass::DEPTH);
   if (!computed)
@@ -639,6 +643,10 @@ void vtkDeepAmbientObscurancePass::ComputeRawVisibility(
     "deepEpsilon", static_cast<float>(std::max(this->Epsilon * radius * radius, 1e-30)));
   program->SetUniformf("deepIntensity", static_cast<float>(this->Intensity));
   program->SetUniformi("deepEstimator", this->Estimator);
+  // VISIBILITY_BITMASK: a surface whose far side no layer holds is thinner
+  // than the layers' separation dz.
+  program->SetUniformf(
+    "deepThickness", static_cast<float>(this->GBufferPass->GetEffectiveMinimumSeparation()));
   program->SetUniformf("deepMipThreshold", static_cast<float>(this->MipThreshold));
   program->SetUniformf("deepRotationOffset", static_cast<float>(state.RotationOffset));
   in.AOQuad->Render();
@@ -761,7 +769,7 @@ unsigned int vtkDeepAmbientObscurancePass::GetVisibilityTextureHandle(vtkRendere
 // and normal), bound to a unit of its own (state.MipUnit) until
 // UnbindKeyPyramid. Returns false, with an error, when it cannot be built.
 bool vtkDeepAmbientObscurancePass::BuildKeyPyramid(vtkDeepAmbientObscuranceRendererState& state,
-  vtkOpenGLRenderWindow* window, int distanceUnit, int normalUnit, int layers)
+  vtkOpenGLRenderWindow* window, const KeyUnits& units, int layers)
 {
   vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "obscurance: key pyramid");
   const int width = state.Width, height = state.Height;
@@ -776,8 +784,9 @@ bool vtkDeepAmbientObscurancePass::BuildKeyPyramid(vtkDeepAmbientObscuranceRende
   // Take a unit of our own first: binding on the active unit would unbind
   // the G-buffer texture the caller activated there.
   vtkOpenGLState* ostate = window->GetState();
-  state.MipUnit =
-    distanceUnit >= 0 && normalUnit >= 0 ? window->GetTextureUnitManager()->Allocate() : -1;
+  state.MipUnit = units.Distance >= 0 && units.Normal >= 0 && units.Facing >= 0
+    ? window->GetTextureUnitManager()->Allocate()
+    : -1;
   if (state.MipUnit < 0)
   {
     vtkErrorMacro("No texture unit for the geometry key; no ambient obscurance this frame.");
@@ -799,8 +808,9 @@ bool vtkDeepAmbientObscurancePass::BuildKeyPyramid(vtkDeepAmbientObscuranceRende
     window->GetShaderCache()->ReadyShaderProgram(program);
     if (m == 0)
     {
-      program->SetUniformi("deepDistance", distanceUnit);
-      program->SetUniformi("deepNormal", normalUnit);
+      program->SetUniformi("deepDistance", units.Distance);
+      program->SetUniformi("deepNormal", units.Normal);
+      program->SetUniformi("deepFacing", units.Facing);
       program->SetUniformi("deepLayers", layers);
       program->SetUniform2i("deepKeySize", target);
     }

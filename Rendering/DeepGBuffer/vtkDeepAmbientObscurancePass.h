@@ -15,8 +15,10 @@
  *
  * Ambient visibility at the layer-0 surface point X (camera space) with
  * normal n_X (paper eq. 1, with the Intensity exponent, see below; the
- * default Estimator SOLID_ANGLE weights each tap by its solid angle instead
- * of the square root, see SetEstimator):
+ * Estimator SOLID_ANGLE weights each tap by its solid angle instead of the
+ * square root, and the default Estimator VISIBILITY_BITMASK integrates the
+ * layers' solids over screen-space slices instead of spiral taps, see
+ * SetEstimator):
  *
  *   AV(X) = max(0, 1 - sqrt(pi / N * sum_i max(0, A_i^0, A_i^1, ...)))^Intensity
  *   A_i^j = O(X, Y_i^j), Y_i^j the surface of layer j at spiral tap i,
@@ -236,13 +238,46 @@ public:
     /// the paper's eq. 1: AV = max(0, 1 - sqrt(pi / N sum_i O_i))
     EQUATION_1 = DEEP_AO_ESTIMATOR_EQUATION_1,
     /// each tap weighted by its solid angle: AV = 1 - A, the obscurance itself
-    SOLID_ANGLE = DEEP_AO_ESTIMATOR_SOLID_ANGLE
+    SOLID_ANGLE = DEEP_AO_ESTIMATOR_SOLID_ANGLE,
+    /// the layers' solids over the sectors of screen-space slices: AV = 1 - A
+    VISIBILITY_BITMASK = DEEP_AO_ESTIMATOR_VISIBILITY_BITMASK
   };
 
   ///@{
   /**
-   * How the taps become AV. SOLID_ANGLE (default) estimates the obscurance
-   * A of the ray-traced reference (vtkDeepGIReferenceObscurance) itself:
+   * How the layers become AV. VISIBILITY_BITMASK (default) and SOLID_ANGLE
+   * estimate the obscurance A of the ray-traced reference
+   * (vtkDeepGIReferenceObscurance) itself, A = (1 / pi) x the integral over
+   * the hemisphere of (1 - t^2 / r^2) cos, t the distance of the nearest
+   * surface within r in each direction.
+   *
+   * VISIBILITY_BITMASK integrates A over max(1, N / 16) slices, the planes
+   * through X's view ray and a screen direction at phi + pi k / slices, as
+   * GTAO does (Jimenez et al., "Practical Realtime Strategies for Accurate
+   * Indirect Occlusion", 2016), each split into 32 sectors of angle
+   * (visibility bitmasks: Therrien, Levesque and Gilet, "Screen Space
+   * Indirect Lighting with Visibility Bitmasks", 2023). N / (2 slices) taps
+   * on each side of X, r_p ((j + jitter) / steps)^2 pixels away, read every
+   * searched layer there. Each surface occupies a stretch of its tap's view
+   * ray: from layer 2k to layer 2k + 1 where their facings differ (they
+   * enter and leave one solid: the thickness that only a deep G-buffer
+   * knows); dz, the G-buffer's minimum separation, behind a surface with a
+   * layer of the same facing behind it (its far side, if any, is nearer than
+   * dz); to infinity behind the last surface (a height field, as GTAO
+   * assumes everywhere). The part of a stretch within r of X and above X's
+   * tangent plane covers an interval of sectors (by the elevation of its
+   * ends), a sector keeps the largest falloff 1 - t^2 / r^2 of the stretches
+   * covering it (its nearest surface, in 1/8 steps), and
+   *   A = (1 / slices) sum_slices |n projected| sum_sectors falloff
+   *       x integral over the sector of cos(theta - gamma) |sin theta|
+   * (theta from the view vector, gamma the projected normal's angle: GTAO's
+   * cosine-weighted slice measure). A direction counts once, for its
+   * nearest surface; no bias is needed (the tangent plane bounds the
+   * sectors); a thin object in front of a wall does not darken the wall
+   * behind it, as the height field alone would. Bias and Epsilon apply to
+   * the other estimators only.
+   *
+   * SOLID_ANGLE weights each of N spiral taps by its solid angle:
    * the tap at kappa_i stands for the screen ring of area
    * 2 pi h_i r_p / N pixels, i.e. (w_Y / f)^2 / |n_Y . d_Y| of surface
    * per pixel, whose solid angle seen from X is that area times
@@ -255,16 +290,18 @@ public:
    * EQUATION_1 is the paper's eq. 1, whose square root is a contrast
    * curve: small obscurance becomes a broad grey shadow, 2-4 times darker
    * than the reference (Documentation/ambient-obscurance.md).
-   * Also SetEstimatorToEquation1(), SetEstimatorToSolidAngle().
+   * Also SetEstimatorToEquation1(), SetEstimatorToSolidAngle(),
+   * SetEstimatorToVisibilityBitmask().
    *
    * @type int (EstimatorType)
-   * @range EQUATION_1 0, SOLID_ANGLE 1; clamped
-   * @default SOLID_ANGLE
+   * @range EQUATION_1 0, SOLID_ANGLE 1, VISIBILITY_BITMASK 2; clamped
+   * @default VISIBILITY_BITMASK
    */
-  vtkSetClampMacro(Estimator, int, EQUATION_1, SOLID_ANGLE);
+  vtkSetClampMacro(Estimator, int, EQUATION_1, VISIBILITY_BITMASK);
   vtkGetMacro(Estimator, int);
   void SetEstimatorToEquation1() { this->SetEstimator(EQUATION_1); }
   void SetEstimatorToSolidAngle() { this->SetEstimator(SOLID_ANGLE); }
+  void SetEstimatorToVisibilityBitmask() { this->SetEstimator(VISIBILITY_BITMASK); }
   static const char* GetEstimatorAsString(int estimator);
   ///@}
 
@@ -285,14 +322,15 @@ public:
 
   ///@{
   /**
-   * Number of spiral taps N, 1 to MAXIMUM_NUMBER_OF_SAMPLES (98). Default
-   * 16. Values outside are clamped with a warning; in particular N = 99,
-   * which the paper's Figure 7 uses but Listing 3 does not tabulate, becomes
-   * 98 with a warning.
+   * Number of taps N, 1 to MAXIMUM_NUMBER_OF_SAMPLES (98): spiral taps, or
+   * for VISIBILITY_BITMASK the slices' taps (N / 16 slices, at least one).
+   * Default 12 (BALANCED). Values outside are clamped with a warning; in
+   * particular N = 99, which the paper's Figure 7 uses but Listing 3 does
+   * not tabulate, becomes 98 with a warning.
    *
    * @unit taps
    * @range 1 to 98; outside: warning and clamp
-   * @default 16
+   * @default 12
    */
   void SetNumberOfSamples(int samples);
   vtkGetMacro(NumberOfSamples, int);
@@ -315,11 +353,11 @@ public:
   ///@{
   /**
    * Bilateral reconstruction: taps on each side of each separable pass
-   * (0 to 16, default 4; 0 disables the filter).
+   * (0 to 16, default 3; 0 disables the filter).
    *
    * @unit pixels per side
    * @range 0 to 16, clamped
-   * @default 4
+   * @default 3
    */
   vtkSetClampMacro(BlurRadius, int, 0, 16);
   vtkGetMacro(BlurRadius, int);
@@ -473,8 +511,8 @@ public:
   enum Preset
   {
     HIGH_PERFORMANCE = 0, ///< N 8, BlurRadius 2, MipThreshold 4, MaximumMipLevel 5
-    BALANCED = 1,         ///< N 16, BlurRadius 4, MipThreshold 8, MaximumMipLevel 5 (the defaults)
-    HIGH_QUALITY = 2,     ///< N 32, BlurRadius 6, MipThreshold 16, MaximumMipLevel 5
+    BALANCED = 1,         ///< N 12, BlurRadius 3, MipThreshold 8, MaximumMipLevel 5 (the defaults)
+    HIGH_QUALITY = 2,     ///< N 32, BlurRadius 3, MipThreshold 16, MaximumMipLevel 5
     /// @deprecated the names of an earlier release (removed in the next one)
     PRESET_LOW = HIGH_PERFORMANCE,
     PRESET_MEDIUM = BALANCED,
@@ -586,9 +624,17 @@ protected:
   /// The opaque step of the frame: layers, AO, filter, composite.
   void RenderOpaque(const vtkRenderState* s) override;
 
+  /// The texture units of the G-buffer quantities the geometry key reads.
+  struct KeyUnits
+  {
+    int Distance;
+    int Normal;
+    int Facing; // ALBEDO, whose alpha is the facing
+  };
+
   /// The geometry key and its pyramid, bound until UnbindKeyPyramid.
   bool BuildKeyPyramid(vtkDeepAmbientObscuranceRendererState& state, vtkOpenGLRenderWindow* window,
-    int distanceUnit, int normalUnit, int layers);
+    const KeyUnits& units, int layers);
   static void UnbindKeyPyramid(
     vtkDeepAmbientObscuranceRendererState& state, vtkOpenGLRenderWindow* window);
 
@@ -607,13 +653,13 @@ protected:
   bool AutomaticRadius = true;
   double AutomaticRadiusFraction = 0.05;
   double EffectiveRadius = 0.0;
-  int Estimator = SOLID_ANGLE;
+  int Estimator = VISIBILITY_BITMASK;
   double Bias = 0.01;
   double Epsilon = 0.0001;
   double Intensity = 1.0;
-  int NumberOfSamples = 16;
+  int NumberOfSamples = 12;
   bool UseSecondLayer = true;
-  int BlurRadius = 4;
+  int BlurRadius = 3;
   double GuardBandShadedFraction = 0.5;
   double BlurPlaneTolerance = 0.02;
   double BlurNormalPower = 8.0;

@@ -1657,6 +1657,11 @@ void vtkDeepGBufferPass::DrawLayersWithShadows(vtkLayerFrame& frame)
 void vtkDeepGBufferPass::DrawLayers(vtkLayerFrame& frame)
 {
   vtkInternals& in = *this->Internals;
+  // ALBEDO's alpha is the surface's facing, not an opacity: its draw buffer
+  // (1) does not blend. The others keep VTK's opaque-pass blending (point
+  // splats blend their shape into RADIANCE).
+  const GLboolean albedoBlended = glIsEnabledi(GL_BLEND, 1);
+  glDisablei(GL_BLEND, 1);
   this->PreRender(frame.State);
   in.Current = frame.RendererState;
   in.OracleLayerIndex = frame.OracleSlots ? frame.Layers : -1;
@@ -1681,6 +1686,10 @@ void vtkDeepGBufferPass::DrawLayers(vtkLayerFrame& frame)
   StoreHistory(*frame.RendererState, frame.Layers, frame.OracleSlots, peeled);
   in.Current = nullptr;
   this->PostRender(frame.State);
+  if (albedoBlended)
+  {
+    glEnablei(GL_BLEND, 1);
+  }
 }
 
 //------------------------------------------------------------------------------

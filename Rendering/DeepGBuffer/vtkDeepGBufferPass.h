@@ -44,7 +44,8 @@
  * | AMBIENT   | R11F_G11F_B10F    | 4        | the ambient part of RADIANCE (0 for EMISSIVE props)
  * | | REFLECTIVITY | RGBA8 (optional) | 4      | mirror reflectance, only while requested | |
  * (z-test)  | DEPTH_COMPONENT32F| 4        | hardware depth per layer              | Reads: nothing
- * but the props. Writes: the renderer's colour and depth.
+ * but the props. Writes: the renderer's colour and depth. ALBEDO's alpha is
+ * the surface's facing: 1 on a front face, 0 on a back face.
  *
  * Bad input never crashes: a non-finite or negative separation, an
  * unsupported layer count or an OpenGL without geometry shaders or array

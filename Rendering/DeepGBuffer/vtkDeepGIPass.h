@@ -80,8 +80,8 @@
  * | preset           | AO                 | radiosity        | reflections |
  * |------------------|--------------------|------------------|-------------|
  * | HIGH_PERFORMANCE | LOW (8, 2, 4)      | HIGH_PERFORMANCE | 32, 2       |
- * | BALANCED         | MEDIUM (16, 4, 8)  | BALANCED         | 64, 4       |
- * | HIGH_QUALITY     | HIGH (32, 6, 16)   | HIGH_QUALITY     | 128, 6      |
+ * | BALANCED         | MEDIUM (12, 3, 8)  | BALANCED         | 64, 4       |
+ * | HIGH_QUALITY     | HIGH (32, 3, 16)   | HIGH_QUALITY     | 128, 6      |
  * BALANCED is the sub-passes' default.
  *
  * Still images: radiosity adds one bounce per frame and filters over time

@@ -32,6 +32,7 @@
 // paper's eq. 1 contrast curve, or each tap weighted by its solid angle).
 #define DEEP_AO_ESTIMATOR_EQUATION_1 0
 #define DEEP_AO_ESTIMATOR_SOLID_ANGLE 1
+#define DEEP_AO_ESTIMATOR_VISIBILITY_BITMASK 2
 
 // vtkDeepAmbientObscurancePass::Composition: what the visibility darkens.
 #define DEEP_COMPOSITE_MULTIPLY 0

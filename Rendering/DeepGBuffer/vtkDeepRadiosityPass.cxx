@@ -1076,6 +1076,7 @@ void vtkDeepRadiosityPass::BuildGeometryKeys(
     frame.GL->vtkglViewport(0, 0, size[0], size[1]);
     program->SetUniformi("deepDistance", units[vtkDeepGBufferPass::DEPTH]);
     program->SetUniformi("deepNormal", units[vtkDeepGBufferPass::NORMAL]);
+    program->SetUniformi("deepFacing", units[vtkDeepGBufferPass::ALBEDO]);
     program->SetUniform2i("deepKeySize", size);
     in.KeyQuad->Render();
   }

@@ -48,8 +48,21 @@ float deepPackOct16(vec2 encoded)
   return k.x + 256.0 * k.y;
 }
 
+// A geometry key's normal carries the surface's facing: 65536 is added for
+// a back face (ALBEDO's alpha 0), still exact in a float.
+float deepPackKeyNormal(vec2 encoded, bool backFace)
+{
+  return deepPackOct16(encoded) + (backFace ? 65536.0 : 0.0);
+}
+
+bool deepKeyBackFace(float levels)
+{
+  return levels >= 65536.0;
+}
+
 vec3 deepUnpackOct16(float levels)
 {
+  levels = deepKeyBackFace(levels) ? levels - 65536.0 : levels;
   float y = floor(levels * (1.0 / 256.0));
   return deepNormalFromOct16Levels(vec2(levels - 256.0 * y, y));
 }

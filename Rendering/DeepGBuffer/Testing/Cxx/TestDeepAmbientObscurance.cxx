@@ -8,11 +8,18 @@
 //   captured G-buffer (|difference| <= 2e-3 on >= 99 % of the
 //   pixels: float vs double rounding may pick a neighbouring texel for a
 //   tap that lands on a texel border);
-// - the default SOLID_ANGLE estimator on the corner's floor: bin means of AV
-//   within 0.03 of the closed form of the exact obscurance beyond r / 8 of
-//   the wall, within 0.15 nearer (measured +0.117: the taps, at least
-//   r_p / 2N pixels from X, miss the wall's nearest part, whose solid angle
-//   is largest);
+// - the estimators on the corner's floor against the closed form of the
+//   exact obscurance, bin means of AV: the default VISIBILITY_BITMASK within
+//   0.04 beyond r / 8 of the wall and 0.08 nearer (measured +0.012 to
+//   +0.031 and +0.047: a sector between two taps gets the farther tap's
+//   falloff), SOLID_ANGLE within 0.03 and 0.15 (measured +0.080: the taps,
+//   at least r_p / 2N pixels from X, miss the wall's nearest part, whose
+//   solid angle is largest);
+// - VISIBILITY_BITMASK and the layers' depth: a thin plate 1.5 r in front of
+//   a wall leaves the wall around it unobscured (AV >= 0.97, two layers),
+//   one layer (a height field) darkens it by at least 0.03, and a box that
+//   reaches back to the wall darkens the wall around it by at least 0.1
+//   more than the plate;
 // - with EQUATION_1 (every check below):
 // - a floor + wall corner: AV < 1 near the corner, 1 (1e-3) farther than r
 //   from it, increasing with the distance (bins of r / 8, each mean at least
@@ -170,7 +177,7 @@ vtkSmartPointer<vtkDeepAmbientObscurancePass> MakePass(double radius)
   auto pass = vtkSmartPointer<vtkDeepAmbientObscurancePass>::New();
   pass->SetRadius(radius);
   // The properties below are those of eq. 1, which the CPU evaluation
-  // reproduces; TestCornerSolidAngle measures the default estimator.
+  // reproduces; TestCornerClosedForm measures the other estimators.
   pass->SetEstimatorToEquation1();
   return pass;
 }
@@ -196,15 +203,16 @@ double FloorBesideWallObscurance(double s)
     (pi / 4.0 - 1.5 * s * std::sqrt(1.0 - s * s) - (0.5 + s * s) * std::asin(s) + 0.5 * pi * s * s);
 }
 
-// The default SOLID_ANGLE estimator on the corner's floor against the
-// closed form, in bins of r / 8 from the wall (see the top of the file).
-void TestCornerSolidAngle()
+// An estimator on the corner's floor against the closed form, in bins of
+// r / 8 from the wall (see the top of the file): the largest bin error
+// beyond r / 8 at most `far`, the nearest bin's at most `near`.
+void TestCornerClosedForm(int estimator, double far, double near)
 {
   const double radius = 1.0;
   auto pass = vtkSmartPointer<vtkDeepAmbientObscurancePass>::New();
   pass->SetRadius(radius);
-  Check(pass->GetEstimator() == vtkDeepAmbientObscurancePass::SOLID_ANGLE,
-    "SOLID_ANGLE is the default estimator");
+  pass->SetEstimator(estimator);
+  const char* name = vtkDeepAmbientObscurancePass::GetEstimatorAsString(estimator);
   Result r;
   if (!Render(CornerScene, pass, r))
   {
@@ -232,7 +240,7 @@ void TestCornerSolidAngle()
       }
     }
   }
-  std::printf("corner, SOLID_ANGLE: mean AV / exact AV by distance from the wall (bins of r/8):");
+  std::printf("corner, %s: mean AV / exact AV by distance from the wall (bins of r/8):", name);
   double worst = 0.0;
   for (int b = 0; b < bins; ++b)
   {
@@ -243,10 +251,79 @@ void TestCornerSolidAngle()
   }
   const double nearest = (sum[0] - exact[0]) / std::max(count[0], 1L);
   std::printf(
-    "\ncorner, SOLID_ANGLE: nearest bin %+.3f, largest error beyond it %.3f\n", nearest, worst);
-  Check(worst <= 0.03, "SOLID_ANGLE AV within 0.03 of the closed form beyond r / 8");
-  Check(std::abs(nearest) <= 0.15, "SOLID_ANGLE AV within 0.15 of the closed form within r / 8");
+    "\ncorner, %s: nearest bin %+.3f, largest error beyond it %.3f\n", name, nearest, worst);
+  Check(worst <= far, "AV near the closed form beyond r / 8");
+  Check(std::abs(nearest) <= near, "AV near the closed form within r / 8");
   pass->ReleaseGraphicsResources(r.Window);
+}
+
+// A wall z = 0 with, 1.5 r in front of it, a thin plate (one quad) on the
+// left and, on the right, a closed box whose back face is 0.05 r from the
+// wall; camera facing the wall.
+void PlateAndBoxScene(vtkRenderer* renderer)
+{
+  const double w0[3] = { -4, -3, 0 }, w1[3] = { 4, -3, 0 }, w2[3] = { -4, 3, 0 };
+  AddQuad(renderer, w0, w1, w2);
+  const double p0[3] = { -2.5, -0.5, 1.5 }, p1[3] = { -1.5, -0.5, 1.5 }, p2[3] = { -2.5, 0.5, 1.5 };
+  AddQuad(renderer, p0, p1, p2);
+  const double c[3] = { 2.0, 0.0, 0.775 }, s[3] = { 1.0, 1.0, 1.45 };
+  AddBox(renderer, c, s);
+  SetCamera(renderer, 0.0, 0.0, 9.0, 0.0, 0.0, 0.0);
+}
+
+// Mean filtered AV of the wall pixels whose point lies 0.15 to 0.4 (world
+// units, per axis) outside the unit square around (cx, 0).
+double WallBandVisibility(const Result& r, double cx)
+{
+  double sum = 0.0;
+  long count = 0;
+  for (int j = 0; j < Height; ++j)
+  {
+    for (int i = 0; i < Width; ++i)
+    {
+      double p[3];
+      if (!WorldPosition(r.Layers, 0, i, j, p) || std::abs(p[2]) > 1e-3)
+      {
+        continue;
+      }
+      const double outside = std::max(std::abs(p[0] - cx), std::abs(p[1])) - 0.5;
+      if (outside > 0.15 && outside < 0.4)
+      {
+        sum += Value(r.AO, vtkDeepGICaptureNames::AmbientVisibility, i, j);
+        ++count;
+      }
+    }
+  }
+  Check(count > 100, "the wall band has pixels");
+  return sum / std::max(count, 1L);
+}
+
+// VISIBILITY_BITMASK reads how deep the layers' surfaces are (r = 1): the
+// plate, 1.5 r from the wall and one layer thick, does not darken the wall
+// around it, which a height field (one layer: everything behind a surface
+// solid) does; the box, which layers 0 and 1 show entering and leaving,
+// darkens the wall around it (its sides are within 0.4 r).
+void TestSolidsAndThinSurfaces()
+{
+  auto twoLayers = vtkSmartPointer<vtkDeepAmbientObscurancePass>::New();
+  twoLayers->SetRadius(1.0);
+  auto heightField = vtkSmartPointer<vtkDeepAmbientObscurancePass>::New();
+  heightField->SetRadius(1.0);
+  heightField->UseSecondLayerOff();
+  Result a, b;
+  if (!Render(PlateAndBoxScene, twoLayers, a) || !Render(PlateAndBoxScene, heightField, b))
+  {
+    return;
+  }
+  const double plate = WallBandVisibility(a, -2.0), box = WallBandVisibility(a, 2.0);
+  const double plateOneLayer = WallBandVisibility(b, -2.0);
+  std::printf("wall around the plate: AV %.3f (one layer %.3f); around the box: AV %.3f\n", plate,
+    plateOneLayer, box);
+  Check(plate >= 0.97, "a thin plate 1.5 r away leaves the wall unobscured");
+  Check(plateOneLayer <= plate - 0.03, "a height field darkens the wall behind the plate");
+  Check(box <= plate - 0.1, "the box, a solid up to the wall, obscures the wall around it");
+  twoLayers->ReleaseGraphicsResources(a.Window);
+  heightField->ReleaseGraphicsResources(b.Window);
 }
 
 void TestPlane(bool parallel)
@@ -602,7 +679,9 @@ int TestDeepAmbientObscurance(int, char*[])
   TestPlane(false);
   TestPlane(true);
   TestCorner();
-  TestCornerSolidAngle();
+  TestCornerClosedForm(vtkDeepAmbientObscurancePass::VISIBILITY_BITMASK, 0.04, 0.08);
+  TestCornerClosedForm(vtkDeepAmbientObscurancePass::SOLID_ANGLE, 0.03, 0.15);
+  TestSolidsAndThinSurfaces();
   TestNoBleed();
   TestSecondLayer();
   TestSampleCountsAndRelease();

@@ -2,12 +2,14 @@
 // headsq CT volume (Testing/Data/volumes/headsq, iso-value 500 through
 // vtkDeepGISceneLoader, its default light and the documented face-on
 // view): left the AO-composited image, right the ambient visibility (see
-// DeepAmbientObscuranceImageTest.h). Automatic radius, N = 16.
+// DeepAmbientObscuranceImageTest.h). Automatic radius, the defaults.
 // Threshold 0.5 and the margins of the numeric ranges: as in
 // TestDeepAmbientObscuranceDemoImage. Measured when the baseline was made
-// (default estimator SOLID_ANGLE): mean AV 0.965, dark fraction 0.027; the
-// skin iso-surface is rippled (the quarter-resolution CT), so only 6.7 % of
-// it is fully unoccluded (AV > 0.999): required >= 4.5 %.
+// (estimator SOLID_ANGLE, N = 16): mean AV 0.965, dark fraction 0.027, 6.7 %
+// fully unoccluded (AV > 0.999); with the default VISIBILITY_BITMASK
+// (N = 12): mean AV 0.969, dark fraction 0.026, and the skin iso-surface,
+// rippled (the quarter-resolution CT), is fully unoccluded on 3.3 % (no
+// bias hides its small dents): required >= 2 %.
 
 #include "DeepAmbientObscuranceImageTest.h"
 #include "DeepGITestData.h"
@@ -39,5 +41,5 @@ int TestDeepAmbientObscuranceHeadImage(int argc, char* argv[])
       loader->ResetCamera(renderer);
       return true;
     },
-    [](vtkDeepAmbientObscurancePass*) {}, { 0.935, 0.995, 0.045, 0.018 }, 0.5);
+    [](vtkDeepAmbientObscurancePass*) {}, { 0.935, 0.995, 0.02, 0.018 }, 0.5);
 }

@@ -100,8 +100,8 @@ void CheckPresetsSetTheirValues(vtkDeepAmbientObscurancePass* pass, const int& w
     double Threshold;
     int Levels;
   } presets[] = { { vtkDeepAmbientObscurancePass::HIGH_PERFORMANCE, 8, 2, 4.0, 5 },
-    { vtkDeepAmbientObscurancePass::BALANCED, 16, 4, 8.0, 5 },
-    { vtkDeepAmbientObscurancePass::HIGH_QUALITY, 32, 6, 16.0, 5 } };
+    { vtkDeepAmbientObscurancePass::BALANCED, 12, 3, 8.0, 5 },
+    { vtkDeepAmbientObscurancePass::HIGH_QUALITY, 32, 3, 16.0, 5 } };
   for (const auto& p : presets)
   {
     const vtkMTimeType before = pass->GetMTime();
