@@ -74,15 +74,19 @@
  * When no effect runs the frame is exactly vtkDeepGBufferPass's (VTK's
  * image). GetLastFrameEffects() and PrintSelf tell what ran.
  *
- * Presets (SetPreset, one Modified()): AO quality (samples N, blur radius,
- * MIP threshold q), the radiosity pass's Table 2 preset, reflection march
- * steps and bisections:
+ * Presets (SetPreset, one Modified(); the constructor sets BALANCED): AO
+ * quality with the SOLID_ANGLE estimator (samples N, blur radius, MIP
+ * threshold q: the shared G-buffer culls back faces in layer 1, so the
+ * obscurance's default VISIBILITY_BITMASK cannot tell where a solid ends),
+ * the radiosity pass's Table 2 preset, reflection march steps and
+ * bisections:
  * | preset           | AO                 | radiosity        | reflections |
  * |------------------|--------------------|------------------|-------------|
  * | HIGH_PERFORMANCE | LOW (8, 2, 4)      | HIGH_PERFORMANCE | 32, 2       |
- * | BALANCED         | MEDIUM (12, 3, 8)  | BALANCED         | 64, 4       |
- * | HIGH_QUALITY     | HIGH (32, 3, 16)   | HIGH_QUALITY     | 128, 6      |
- * BALANCED is the sub-passes' default.
+ * | BALANCED         | MEDIUM (16, 4, 8)  | BALANCED         | 64, 4       |
+ * | HIGH_QUALITY     | HIGH (32, 6, 16)   | HIGH_QUALITY     | 128, 6      |
+ * BALANCED is the sub-passes' default, except for the obscurance's samples,
+ * blur radius and estimator.
  *
  * Still images: radiosity adds one bounce per frame and filters over time
  * (section 3.3), so a single frame shows one bounce. Converge(renderer, n)

@@ -17,10 +17,12 @@
 // - over all surface pixels, the GI image's RMSE against the reference is
 //   below plain VTK's;
 // - vtkDeepAmbientObscurancePass alone (its defaults, the same radius): its
-//   AV in the innermost ring is at most 0.72 (measured 0.665, reference
-//   0.187; 0.791 when its G-buffer culls back faces in layer 1, which drops
-//   the sphere's far half, the occluder of the contact), and in no ring is
-//   it darker than the reference by more than 0.05.
+//   AV in the innermost ring is at most 0.6 (measured 0.501 with the
+//   default VISIBILITY_BITMASK, whose layers 0 and 1 hold the whole sphere
+//   as a solid; reference 0.187; SOLID_ANGLE gave 0.665, and 0.791 when the
+//   G-buffer culls back faces in layer 1, which drops the sphere's far
+//   half, the occluder of the contact), and in no ring is it darker than
+//   the reference by more than 0.05.
 // It also prints the RMSE of vtkSSAOPass (kernel 16, the same radius). The
 // reference is clipped at 1 as the 8-bit images are.
 
@@ -191,7 +193,7 @@ void CheckRings(const std::vector<RingSums>& rings)
     const RingSums& s = rings[innermost];
     Check(s.Visibility / s.Count < 0.9, "the reference occludes the contact");
     Check(s.ObscuranceOnly / s.Count < -8.0 / 255.0, "obscurance darkens the contact");
-    Check(s.PassVisibility / s.Count <= 0.72,
+    Check(s.PassVisibility / s.Count <= 0.6,
       "the obscurance pass occludes the contact with the sphere's far half");
   }
 }
