@@ -811,6 +811,8 @@ bool vtkDeepAmbientObscurancePass::BuildKeyPyramid(vtkDeepAmbientObscuranceRende
       program->SetUniformi("deepDistance", units.Distance);
       program->SetUniformi("deepNormal", units.Normal);
       program->SetUniformi("deepFacing", units.Facing);
+      // Only VISIBILITY_BITMASK reads the facing.
+      program->SetUniformi("deepWithFacing", this->Estimator == VISIBILITY_BITMASK ? 1 : 0);
       program->SetUniformi("deepLayers", layers);
       program->SetUniform2i("deepKeySize", target);
     }

@@ -1077,6 +1077,7 @@ void vtkDeepRadiosityPass::BuildGeometryKeys(
     program->SetUniformi("deepDistance", units[vtkDeepGBufferPass::DEPTH]);
     program->SetUniformi("deepNormal", units[vtkDeepGBufferPass::NORMAL]);
     program->SetUniformi("deepFacing", units[vtkDeepGBufferPass::ALBEDO]);
+    program->SetUniformi("deepWithFacing", 0); // the radiosity does not read it
     program->SetUniform2i("deepKeySize", size);
     in.KeyQuad->Render();
   }

@@ -72,6 +72,90 @@ float deepSectorCoordinate(float wn, float ww, float wAcross, float inverseProje
   return clamp(wAcross >= 0.0 ? 0.5 + c : 0.5 - c, 0.0, 1.0);
 }
 
+// The sectors that the stretch w(s) = a + s D, s in [0, extent] (relative
+// to X, D a unit vector), covers within r of X and above X's tangent plane,
+// and its falloff 1 - t^2 / r^2 at its point nearest X; false when no part
+// of it is there. dn = D.n and dAcross = D.across (see deepSectorCoordinate).
+bool deepStretchSectors(vec3 a, vec3 D, float extent, vec3 n, float dn, vec3 across,
+  float dAcross, float inverseProjectedLength, float r2, out uint sectors, out float falloff)
+{
+  sectors = 0u;
+  falloff = 0.0;
+  // Within r of X ...
+  float along = dot(a, D);
+  float aa = dot(a, a);
+  float discriminant = along * along - (aa - r2);
+  if (!(discriminant > 0.0))
+  {
+    return false;
+  }
+  float root = sqrt(discriminant);
+  float s0 = max(0.0, -along - root);
+  float s1 = min(extent, -along + root);
+  // ... and above X's tangent plane.
+  float an = dot(a, n);
+  if (dn > 0.0)
+  {
+    s0 = max(s0, -an / dn);
+  }
+  else if (dn < 0.0)
+  {
+    s1 = min(s1, -an / dn);
+  }
+  else if (an < 0.0)
+  {
+    return false;
+  }
+  if (!(s1 > s0))
+  {
+    return false;
+  }
+  // |w(s)|^2 = aa + 2 s along + s^2, w(s).n = an + s dn.
+  float sNearest = clamp(-along, s0, s1);
+  falloff = 1.0 - (aa + sNearest * (2.0 * along + sNearest)) / r2;
+  float aAcross = dot(a, across);
+  float u0 = deepSectorCoordinate(
+    an + s0 * dn, aa + s0 * (2.0 * along + s0), aAcross + s0 * dAcross, inverseProjectedLength);
+  float u1 = deepSectorCoordinate(
+    an + s1 * dn, aa + s1 * (2.0 * along + s1), aAcross + s1 * dAcross, inverseProjectedLength);
+  int b0 = int(floor(min(u0, u1) * float(deepSectors) + 0.5));
+  int b1 = int(floor(max(u0, u1) * float(deepSectors) + 0.5));
+  int count = b1 - b0;
+  sectors = count <= 0 ? 0u
+    : count >= deepSectors  ? 0xFFFFFFFFu
+                            : ((1u << uint(count)) - 1u) << uint(b0);
+  return true;
+}
+
+// A over the sectors of one slice: those of level l are covered with a
+// falloff above (l + 1/2) / levels, so a sector's level count / levels is
+// its falloff; times the sector's cosine-weighted measure, GTAO's slice
+// integral (sector b spans theta = gamma + pi (b / 32 - 1 / 2) ..
+// gamma + pi ((b + 1) / 32 - 1 / 2)), times |n projected|.
+float deepCoveredObscurance(uint covered[deepFalloffLevels], float gamma, float projectedLength)
+{
+  // Level 0 holds every level's sectors; most pixels have none covered.
+  if (covered[0] == 0u)
+  {
+    return 0.0;
+  }
+  float A = 0.0;
+  float previous = deepSliceIntegral(gamma - 0.5 * deepPi, gamma);
+  for (int b = 0; b < deepSectors; ++b)
+  {
+    float next =
+      deepSliceIntegral(gamma + deepPi * (float(b + 1) / float(deepSectors) - 0.5), gamma);
+    float levels = 0.0;
+    for (int l = 0; l < deepFalloffLevels; ++l)
+    {
+      levels += float((covered[l] >> uint(b)) & 1u);
+    }
+    A += levels / float(deepFalloffLevels) * (next - previous);
+    previous = next;
+  }
+  return projectedLength * A;
+}
+
 // VISIBILITY_BITMASK over one slice: the slice is the plane through X's view
 // ray (V towards the camera) and the screen direction `direction`, where
 // `steps` taps per side, at r_p (j + jitter)^2 / steps^2 pixels, find the
@@ -142,50 +226,13 @@ float deepSliceObscurance(vec3 X, vec3 n, vec3 V, vec2 direction, vec2 center, v
           float extent = (segment == 0 && solid) ? (key.z - key.x) * stepLength
             : hasBack                            ? deepThickness
                                                  : 1e30;
-          // The stretch w(s) = a + s D, s in [0, extent], within r of X ...
-          vec3 a = origin + front * step;
-          float along = dot(a, D);
-          float aa = dot(a, a);
-          float discriminant = along * along - (aa - r2);
-          if (!(discriminant > 0.0))
+          uint sectors;
+          float falloff;
+          if (!deepStretchSectors(origin + front * step, D, extent, n, dn, across, dAcross,
+                inverseProjectedLength, r2, sectors, falloff))
           {
             continue;
           }
-          float root = sqrt(discriminant);
-          float s0 = max(0.0, -along - root);
-          float s1 = min(extent, -along + root);
-          // ... and above X's tangent plane.
-          float an = dot(a, n);
-          if (dn > 0.0)
-          {
-            s0 = max(s0, -an / dn);
-          }
-          else if (dn < 0.0)
-          {
-            s1 = min(s1, -an / dn);
-          }
-          else if (an < 0.0)
-          {
-            continue;
-          }
-          if (!(s1 > s0))
-          {
-            continue;
-          }
-          // |w(s)|^2 = aa + 2 s along + s^2, w(s).n = an + s dn.
-          float sNearest = clamp(-along, s0, s1);
-          float falloff = 1.0 - (aa + sNearest * (2.0 * along + sNearest)) / r2;
-          float aAcross = dot(a, across);
-          float u0 = deepSectorCoordinate(
-            an + s0 * dn, aa + s0 * (2.0 * along + s0), aAcross + s0 * dAcross, inverseProjectedLength);
-          float u1 = deepSectorCoordinate(
-            an + s1 * dn, aa + s1 * (2.0 * along + s1), aAcross + s1 * dAcross, inverseProjectedLength);
-          int b0 = int(floor(min(u0, u1) * float(deepSectors) + 0.5));
-          int b1 = int(floor(max(u0, u1) * float(deepSectors) + 0.5));
-          int count = b1 - b0;
-          uint sectors = count <= 0 ? 0u
-            : count >= deepSectors  ? 0xFFFFFFFFu
-                                    : ((1u << uint(count)) - 1u) << uint(b0);
           for (int l = 0; l < deepFalloffLevels; ++l)
           {
             if (falloff * float(deepFalloffLevels) > float(l) + 0.5)
@@ -197,28 +244,7 @@ float deepSliceObscurance(vec3 X, vec3 n, vec3 V, vec2 direction, vec2 center, v
       }
     }
   }
-  // Each level's sectors hold the lower levels' (falloffs above its
-  // threshold); most pixels have none covered at all.
-  if (covered[0] == 0u)
-  {
-    return 0.0;
-  }
-  // Sector b spans theta = gamma + pi (b / 32 - 1 / 2) .. gamma + pi ((b + 1) / 32 - 1 / 2).
-  float A = 0.0;
-  float previous = deepSliceIntegral(gamma - 0.5 * deepPi, gamma);
-  for (int b = 0; b < deepSectors; ++b)
-  {
-    float next =
-      deepSliceIntegral(gamma + deepPi * (float(b + 1) / float(deepSectors) - 0.5), gamma);
-    float levels = 0.0;
-    for (int l = 0; l < deepFalloffLevels; ++l)
-    {
-      levels += float((covered[l] >> uint(b)) & 1u);
-    }
-    A += levels / float(deepFalloffLevels) * (next - previous);
-    previous = next;
-  }
-  return projectedLength * A;
+  return deepCoveredObscurance(covered, gamma, projectedLength);
 }
 
 // VISIBILITY_BITMASK: AV = 1 - A over max(1, N / 16) slices at angles
