@@ -318,7 +318,7 @@ std::vector<float> GrabLuminance(vtkRenderWindow* window)
 
 struct Accuracy
 {
-  double Rmse = 0, Mae = 0, RmseLayer1 = 0;               // raw
+  double Rmse = 0, Mae = 0, RmseLayer1 = 0, Bias = 0;     // raw
   double Gamma = 1, CRmse = 0, CMae = 0, CRmseLayer1 = 0; // calibrated
   double CaptureDifference = -1;                          // ours: mean |ratio - captured AV|
   double MeanAV = 0;
@@ -350,12 +350,13 @@ constexpr double SecondLayerChange = 0.02;
 struct ErrorStats
 {
   double Rmse, Mae, RmseLayer1;
+  double Bias; // mean AV - AV_ref: > 0 lighter than the truth, < 0 darker
 };
 
 ErrorStats Errors(const std::vector<float>& av, const std::vector<float>& ref,
   const std::vector<unsigned char>& mask, const std::vector<unsigned char>& layer1, double gamma)
 {
-  double s2 = 0, s1 = 0, l2 = 0;
+  double s2 = 0, s1 = 0, l2 = 0, signedSum = 0;
   long n = 0, nl = 0;
   for (size_t i = 0; i < av.size(); ++i)
   {
@@ -367,6 +368,7 @@ ErrorStats Errors(const std::vector<float>& av, const std::vector<float>& ref,
     const double d = a - ref[i];
     s2 += d * d;
     s1 += std::fabs(d);
+    signedSum += d;
     ++n;
     if (layer1[i])
     {
@@ -374,7 +376,8 @@ ErrorStats Errors(const std::vector<float>& av, const std::vector<float>& ref,
       ++nl;
     }
   }
-  return { n ? std::sqrt(s2 / n) : 0.0, n ? s1 / n : 0.0, nl ? std::sqrt(l2 / nl) : 0.0 };
+  return { n ? std::sqrt(s2 / n) : 0.0, n ? s1 / n : 0.0, nl ? std::sqrt(l2 / nl) : 0.0,
+    n ? signedSum / n : 0.0 };
 }
 
 /// gamma in [0.05, 20] minimising the RMSE of AV^gamma (golden section on log gamma).
@@ -749,6 +752,7 @@ Result MeasureMethod(const View& view, const Method& m, vtkRenderPass* pass,
   res.A.Rmse = raw.Rmse;
   res.A.Mae = raw.Mae;
   res.A.RmseLayer1 = raw.RmseLayer1;
+  res.A.Bias = raw.Bias;
   res.A.Gamma = FitGamma(av, ref, px.Valid, px.Layer1);
   const ErrorStats cal = Errors(av, ref, px.Valid, px.Layer1, res.A.Gamma);
   res.A.CRmse = cal.Rmse;
@@ -929,16 +933,17 @@ double PlainMs(const Measurements& measured, const std::string& scene)
 std::string ResultTable(const Measurements& measured)
 {
   std::ostringstream md;
-  md << "\n| scene | method | frame [ms] | AO cost [ms] | RMSE | MAE | RMSE layer-1 px | gamma | "
-        "RMSE cal. | MAE cal. | RMSE cal. layer-1 px | mean AV | ratio vs captured AV |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  md << "\n| scene | method | frame [ms] | AO cost [ms] | RMSE | MAE | bias | RMSE layer-1 px | "
+        "gamma | RMSE cal. | MAE cal. | RMSE cal. layer-1 px | mean AV | ratio vs captured AV |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Result& r : measured.Results)
   {
     char b[1024];
     std::snprintf(b, sizeof(b),
-      "| %s | %s | %.2f | %.2f | %.4f | %.4f | %.4f | %.2f | %.4f | %.4f | %.4f | %.3f | %s |\n",
+      "| %s | %s | %.2f | %.2f | %.4f | %.4f | %+.4f | %.4f | %.2f | %.4f | %.4f | %.4f | %.3f | "
+      "%s |\n",
       r.Scene.c_str(), r.M.Name.c_str(), r.FrameMs, r.FrameMs - PlainMs(measured, r.Scene),
-      r.A.Rmse, r.A.Mae, r.A.RmseLayer1, r.A.Gamma, r.A.CRmse, r.A.CMae, r.A.CRmseLayer1,
+      r.A.Rmse, r.A.Mae, r.A.Bias, r.A.RmseLayer1, r.A.Gamma, r.A.CRmse, r.A.CMae, r.A.CRmseLayer1,
       r.A.MeanAV, r.A.CaptureDifference < 0 ? "" : Fmt("%.4f", r.A.CaptureDifference).c_str());
     md << b;
   }
@@ -949,18 +954,19 @@ std::string ResultTable(const Measurements& measured)
 std::string Csv(const Measurements& measured)
 {
   std::ostringstream csv;
-  csv << "scene,method,family,kind,samples,layers,blur,frame_ms,ao_cost_ms,rmse,mae,rmse_layer1,"
-         "gamma,rmse_cal,mae_cal,rmse_cal_layer1,mean_av,capture_difference\n";
+  csv << "scene,method,family,kind,samples,layers,blur,frame_ms,ao_cost_ms,rmse,mae,bias,"
+         "rmse_layer1,gamma,rmse_cal,mae_cal,rmse_cal_layer1,mean_av,capture_difference\n";
   for (const Result& r : measured.Results)
   {
     const double plainMs = PlainMs(measured, r.Scene);
     char b[1024];
     std::snprintf(b, sizeof(b),
       // Text fields are quoted: method names may contain commas.
-      "\"%s\",\"%s\",\"%s\",%s,%d,%d,%d,%.4f,%.4f,%.5f,%.5f,%.5f,%.4f,%.5f,%.5f,%.5f,%.4f,%s\n",
+      "\"%s\",\"%s\",\"%s\",%s,%d,%d,%d,%.4f,%.4f,%.5f,%.5f,%.5f,%.5f,%.4f,%.5f,%.5f,%.5f,%.4f,"
+      "%s\n",
       r.Scene.c_str(), r.M.Name.c_str(), r.M.Family.c_str(), r.M.Kind == 0 ? "ssao" : "ours",
       r.M.Parameter, r.M.Kind == 0 ? 0 : r.M.Layers, r.M.Blur, r.FrameMs, r.FrameMs - plainMs,
-      r.A.Rmse, r.A.Mae, r.A.RmseLayer1, r.A.Gamma, r.A.CRmse, r.A.CMae, r.A.CRmseLayer1,
+      r.A.Rmse, r.A.Mae, r.A.Bias, r.A.RmseLayer1, r.A.Gamma, r.A.CRmse, r.A.CMae, r.A.CRmseLayer1,
       r.A.MeanAV, r.A.CaptureDifference < 0 ? "" : Fmt("%.5f", r.A.CaptureDifference).c_str());
     csv << b;
   }

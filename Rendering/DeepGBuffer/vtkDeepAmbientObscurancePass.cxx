@@ -44,6 +44,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <string>
 #include <vector>
@@ -214,7 +215,9 @@ class vtkDeepAmbientObscurancePass::vtkInternals
 public:
   vtkDeepScreenSpace::RendererStates<vtkDeepAmbientObscuranceRendererState> States;
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
-  vtkOpenGLQuadHelper* AOQuad = nullptr;
+  // The gather, one program per estimator (DEEP_AO_ESTIMATOR), compiled
+  // when first used.
+  vtkOpenGLQuadHelper* GatherQuads[VISIBILITY_BITMASK + 1] = {};
   vtkOpenGLQuadHelper* BlurQuad = nullptr;
   vtkOpenGLQuadHelper* CompositeQuad = nullptr;
   vtkOpenGLQuadHelper* MinifyQuad = nullptr;
@@ -237,12 +240,17 @@ vtkDeepAmbientObscurancePass::vtkDeepAmbientObscurancePass()
 vtkDeepAmbientObscurancePass::~vtkDeepAmbientObscurancePass()
 {
   vtkInternals& in = *this->Internals;
-  if (in.AOQuad || in.Framebuffer || !in.States.Empty())
+  const bool gatherCompiled = std::any_of(std::begin(in.GatherQuads), std::end(in.GatherQuads),
+    [](vtkOpenGLQuadHelper* quad) { return quad != nullptr; });
+  if (gatherCompiled || in.Framebuffer || !in.States.Empty())
   {
     vtkWarningMacro("Destroyed without ReleaseGraphicsResources(); OpenGL objects are leaked "
                     "unless the context was destroyed first.");
   }
-  delete in.AOQuad;
+  for (vtkOpenGLQuadHelper* quad : in.GatherQuads)
+  {
+    delete quad;
+  }
   delete in.BlurQuad;
   delete in.CompositeQuad;
   delete in.MinifyQuad;
@@ -379,6 +387,20 @@ const char* vtkDeepAmbientObscurancePass::GetPresetAsString(int preset)
 
 using vtkDeepScreenSpace::AllocateTarget;
 using vtkDeepScreenSpace::ReadyQuad;
+
+namespace
+{
+// The gather for one estimator: the choice is compiled in, not a uniform,
+// because a CPU renderer (Mesa llvmpipe) pays for the code of every
+// estimator a uniform could select (about a tenth of the bitmask's gather).
+bool ReadyGatherQuad(vtkOpenGLQuadHelper*& quad, vtkOpenGLRenderWindow* window, int estimator)
+{
+  std::string fs = vtkDeepAmbientObscuranceFS;
+  vtkShaderProgram::Substitute(fs, "//VTK::DeepAmbientObscurance::Estimator",
+    "#define DEEP_AO_ESTIMATOR " + std::to_string(estimator));
+  return ReadyQuad(quad, window, fs.c_str());
+}
+}
 
 //------------------------------------------------------------------------------
 // True when a visible actor with opaque geometry has an ambient term, i.e.
@@ -599,7 +621,7 @@ bool vtkDeepAmbientObscurancePass::PrepareTargets(
     in.Framebuffer = vtkOpenGLFramebufferObject::New();
     in.Framebuffer->SetContext(window);
   }
-  const bool aoReady = ReadyQuad(in.AOQuad, window, vtkDeepAmbientObscuranceFS);
+  const bool aoReady = ReadyGatherQuad(in.GatherQuads[this->Estimator], window, this->Estimator);
   const bool blurReady = ReadyQuad(in.BlurQuad, window, vtkDeepAmbientObscuranceBlurFS);
   const bool minifyReady = ReadyQuad(in.MinifyQuad, window, vtkDeepAmbientObscuranceMinifyFS) &&
     ReadyQuad(in.KeyQuad, window, vtkDeepGeometryKeyFS);
@@ -630,7 +652,8 @@ void vtkDeepAmbientObscurancePass::ComputeRawVisibility(
   ostate->vtkglScissor(region[0], region[1], region[2] - region[0], region[3] - region[1]);
   in.Framebuffer->AddColorAttachment(0, state.Targets[RAW]);
   in.Framebuffer->ActivateDrawBuffers(1);
-  vtkShaderProgram* program = in.AOQuad->Program;
+  vtkOpenGLQuadHelper* gather = in.GatherQuads[this->Estimator];
+  vtkShaderProgram* program = gather->Program;
   frame.Window->GetShaderCache()->ReadyShaderProgram(program);
   SetKeyUniforms(program, state.MipUnit, frame.ProjXY, frame.ProjT);
   program->SetUniformi("deepMaxMip", state.MipLevels - 1);
@@ -642,14 +665,13 @@ void vtkDeepAmbientObscurancePass::ComputeRawVisibility(
   program->SetUniformf(
     "deepEpsilon", static_cast<float>(std::max(this->Epsilon * radius * radius, 1e-30)));
   program->SetUniformf("deepIntensity", static_cast<float>(this->Intensity));
-  program->SetUniformi("deepEstimator", this->Estimator);
   // VISIBILITY_BITMASK: a surface whose far side no layer holds is thinner
   // than the layers' separation dz.
   program->SetUniformf(
     "deepThickness", static_cast<float>(this->GBufferPass->GetEffectiveMinimumSeparation()));
   program->SetUniformf("deepMipThreshold", static_cast<float>(this->MipThreshold));
   program->SetUniformf("deepRotationOffset", static_cast<float>(state.RotationOffset));
-  in.AOQuad->Render();
+  gather->Render();
 }
 
 //------------------------------------------------------------------------------
@@ -923,8 +945,12 @@ void vtkDeepAmbientObscurancePass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkInternals& in = *this->Internals;
   in.States.Release(w);
+  for (vtkOpenGLQuadHelper*& quad : in.GatherQuads)
+  {
+    vtkDeepScreenSpace::ReleaseQuad(quad, w);
+  }
   for (vtkOpenGLQuadHelper** quad :
-    { &in.AOQuad, &in.BlurQuad, &in.CompositeQuad, &in.MinifyQuad, &in.KeyQuad, &in.TemporalQuad })
+    { &in.BlurQuad, &in.CompositeQuad, &in.MinifyQuad, &in.KeyQuad, &in.TemporalQuad })
   {
     vtkDeepScreenSpace::ReleaseQuad(*quad, w);
   }

@@ -18,7 +18,8 @@ uniform float deepRadius;      // r, world units
 uniform float deepBias;        // beta, world units
 uniform float deepEpsilon;     // epsilon, world units squared
 uniform float deepIntensity;   // exponent applied to AV
-uniform int deepEstimator;     // DEEP_AO_ESTIMATOR_*
+// DEEP_AO_ESTIMATOR: the estimator (DEEP_AO_ESTIMATOR_*), compiled in.
+//VTK::DeepAmbientObscurance::Estimator
 uniform int deepMaxMip;        // finest..coarsest level index available
 uniform float deepMipThreshold; // q, pixels
 uniform float deepRotationOffset; // radians added to phi (0 unless temporal)
@@ -74,12 +75,16 @@ float deepSectorCoordinate(float wn, float ww, float wAcross, float inverseProje
 
 // The sectors that the stretch w(s) = a + s D, s in [0, extent] (relative
 // to X, D a unit vector), covers within r of X and above X's tangent plane,
-// and its falloff 1 - t^2 / r^2 at its point nearest X; false when no part
-// of it is there. dn = D.n and dAcross = D.across (see deepSectorCoordinate).
+// (bits first..last - 1 of `sectors`) and its falloff 1 - t^2 / r^2 at its
+// point nearest X; false when no part of it is there. dn = D.n and
+// dAcross = D.across (see deepSectorCoordinate).
 bool deepStretchSectors(vec3 a, vec3 D, float extent, vec3 n, float dn, vec3 across,
-  float dAcross, float inverseProjectedLength, float r2, out uint sectors, out float falloff)
+  float dAcross, float inverseProjectedLength, float r2, out uint sectors, out int first,
+  out int last, out float falloff)
 {
   sectors = 0u;
+  first = 0;
+  last = 0;
   falloff = 0.0;
   // Within r of X ...
   float along = dot(a, D);
@@ -118,38 +123,36 @@ bool deepStretchSectors(vec3 a, vec3 D, float extent, vec3 n, float dn, vec3 acr
     an + s0 * dn, aa + s0 * (2.0 * along + s0), aAcross + s0 * dAcross, inverseProjectedLength);
   float u1 = deepSectorCoordinate(
     an + s1 * dn, aa + s1 * (2.0 * along + s1), aAcross + s1 * dAcross, inverseProjectedLength);
-  int b0 = int(floor(min(u0, u1) * float(deepSectors) + 0.5));
-  int b1 = int(floor(max(u0, u1) * float(deepSectors) + 0.5));
-  int count = b1 - b0;
+  first = int(floor(min(u0, u1) * float(deepSectors) + 0.5));
+  last = int(floor(max(u0, u1) * float(deepSectors) + 0.5));
+  int count = last - first;
   sectors = count <= 0 ? 0u
     : count >= deepSectors  ? 0xFFFFFFFFu
-                            : ((1u << uint(count)) - 1u) << uint(b0);
+                            : ((1u << uint(count)) - 1u) << uint(first);
   return true;
 }
 
-// A over the sectors of one slice: those of level l are covered with a
-// falloff above (l + 1/2) / levels, so a sector's level count / levels is
-// its falloff; times the sector's cosine-weighted measure, GTAO's slice
-// integral (sector b spans theta = gamma + pi (b / 32 - 1 / 2) ..
-// gamma + pi ((b + 1) / 32 - 1 / 2)), times |n projected|.
-float deepCoveredObscurance(uint covered[deepFalloffLevels], float gamma, float projectedLength)
+// A over the sectors of one slice: the falloff levels 0-3 and 4-7 (uvec4
+// components) hold the sectors covered with a falloff above
+// (l + 1/2) / levels, so a sector's level count / levels is its falloff;
+// times the sector's cosine-weighted measure, GTAO's slice integral (sector
+// b spans theta = gamma + pi (b / 32 - 1 / 2) .. gamma + pi ((b + 1) / 32 -
+// 1 / 2)), times |n projected|. Only sectors first..last - 1 can be
+// covered: on a CPU renderer (Mesa llvmpipe) a loop's trip count is the
+// only branch that skips work (both sides of an `if` are executed for the
+// pixels shaded together), and most pixels have few or no sectors covered.
+float deepCoveredObscurance(uvec4 coveredLow, uvec4 coveredHigh, int first, int last, float gamma,
+  float projectedLength)
 {
-  // Level 0 holds every level's sectors; most pixels have none covered.
-  if (covered[0] == 0u)
-  {
-    return 0.0;
-  }
   float A = 0.0;
-  float previous = deepSliceIntegral(gamma - 0.5 * deepPi, gamma);
-  for (int b = 0; b < deepSectors; ++b)
+  float previous =
+    deepSliceIntegral(gamma + deepPi * (float(first) / float(deepSectors) - 0.5), gamma);
+  for (int b = first; b < last; ++b)
   {
     float next =
       deepSliceIntegral(gamma + deepPi * (float(b + 1) / float(deepSectors) - 0.5), gamma);
-    float levels = 0.0;
-    for (int l = 0; l < deepFalloffLevels; ++l)
-    {
-      levels += float((covered[l] >> uint(b)) & 1u);
-    }
+    uvec4 bits = ((coveredLow >> uint(b)) & 1u) + ((coveredHigh >> uint(b)) & 1u);
+    float levels = dot(vec4(bits), vec4(1.0));
     A += levels / float(deepFalloffLevels) * (next - previous);
     previous = next;
   }
@@ -177,11 +180,10 @@ float deepSliceObscurance(vec3 X, vec3 n, vec3 V, vec2 direction, vec2 center, v
   vec3 across = cos(gamma) * ortho - sin(gamma) * V;
   float inverseProjectedLength = 1.0 / max(projectedLength, 1e-6);
   float r2 = deepRadius * deepRadius;
-  uint covered[deepFalloffLevels];
-  for (int l = 0; l < deepFalloffLevels; ++l)
-  {
-    covered[l] = 0u;
-  }
+  uvec4 coveredLow = uvec4(0u);  // falloff levels 0-3
+  uvec4 coveredHigh = uvec4(0u); // falloff levels 4-7
+  int firstCovered = deepSectors;
+  int lastCovered = 0;
   for (int j = 0; j < steps; ++j)
   {
     float t = (float(j) + jitter) / float(steps);
@@ -214,37 +216,37 @@ float deepSliceObscurance(vec3 X, vec3 n, vec3 V, vec2 direction, vec2 center, v
         // surface's far side: it is within dz (deepThickness) of a surface
         // with a layer behind it, and the last surface hides everything
         // behind it (a height field, as GTAO assumes everywhere).
+        // Stretches are counted, not skipped with a branch: a loop's trip
+        // count is what lets a CPU renderer skip work.
         bool hasBack = 2 * k + 1 < deepLayers && key.z > 0.0;
         bool solid = hasBack && (deepKeyBackFace(key.y) != deepKeyBackFace(key.w));
-        for (int segment = 0; segment < 2; ++segment)
+        int stretches = !(key.x > 0.0) ? 0 : (hasBack && !solid ? 2 : 1);
+        for (int segment = 0; segment < stretches; ++segment)
         {
           float front = segment == 0 ? key.x : key.z;
-          if (!(front > 0.0) || (segment == 1 && (solid || !hasBack)))
-          {
-            continue;
-          }
           float extent = (segment == 0 && solid) ? (key.z - key.x) * stepLength
             : hasBack                            ? deepThickness
                                                  : 1e30;
           uint sectors;
+          int first, last;
           float falloff;
           if (!deepStretchSectors(origin + front * step, D, extent, n, dn, across, dAcross,
-                inverseProjectedLength, r2, sectors, falloff))
+                inverseProjectedLength, r2, sectors, first, last, falloff) ||
+            sectors == 0u)
           {
             continue;
           }
-          for (int l = 0; l < deepFalloffLevels; ++l)
-          {
-            if (falloff * float(deepFalloffLevels) > float(l) + 0.5)
-            {
-              covered[l] |= sectors;
-            }
-          }
+          firstCovered = min(firstCovered, first);
+          lastCovered = max(lastCovered, last);
+          float level = falloff * float(deepFalloffLevels);
+          coveredLow |= uvec4(greaterThan(vec4(level), vec4(0.5, 1.5, 2.5, 3.5))) * sectors;
+          coveredHigh |= uvec4(greaterThan(vec4(level), vec4(4.5, 5.5, 6.5, 7.5))) * sectors;
         }
       }
     }
   }
-  return deepCoveredObscurance(covered, gamma, projectedLength);
+  return deepCoveredObscurance(
+    coveredLow, coveredHigh, firstCovered, lastCovered, gamma, projectedLength);
 }
 
 // VISIBILITY_BITMASK: AV = 1 - A over max(1, N / 16) slices at angles
@@ -312,7 +314,7 @@ float deepSpiralVisibility(vec3 X, vec3 n, float footprint, float phi, vec2 cent
         // (see the class description).
         float falloff = 1.0 - vv / r2;
         float o;
-        if (deepEstimator == DEEP_AO_ESTIMATOR_SOLID_ANGLE)
+        if (DEEP_AO_ESTIMATOR == DEEP_AO_ESTIMATOR_SOLID_ANGLE)
         {
           float t2 = vv + deepEpsilon;
           vec3 ny = deepUnpackOct16(geometry.y);
@@ -332,8 +334,9 @@ float deepSpiralVisibility(vec3 X, vec3 n, float footprint, float phi, vec2 cent
     sum += best;
   }
   // Equation 1 or the linear A = 2 / N sum.
-  return deepEstimator == DEEP_AO_ESTIMATOR_SOLID_ANGLE ? max(0.0, 1.0 - 2.0 * invN * sum)
-                                                        : max(0.0, 1.0 - sqrt(deepPi * invN * sum));
+  return DEEP_AO_ESTIMATOR == DEEP_AO_ESTIMATOR_SOLID_ANGLE
+    ? max(0.0, 1.0 - 2.0 * invN * sum)
+    : max(0.0, 1.0 - sqrt(deepPi * invN * sum));
 }
 
 void main()
@@ -361,9 +364,11 @@ void main()
   // The view ray through X.
   vec3 ray = normalize(deepPositionFromDistance(center, size, 2.0 * d) - X);
 
-  float av = deepEstimator == DEEP_AO_ESTIMATOR_VISIBILITY_BITMASK
-    ? deepBitmaskVisibility(X, n, -ray, phi, center, size, rp)
-    : deepSpiralVisibility(X, n, deepClipW(d), phi, center, size, rp);
+#if DEEP_AO_ESTIMATOR == DEEP_AO_ESTIMATOR_VISIBILITY_BITMASK
+  float av = deepBitmaskVisibility(X, n, -ray, phi, center, size, rp);
+#else
+  float av = deepSpiralVisibility(X, n, deepClipW(d), phi, center, size, rp);
+#endif
   // Raised to the Intensity exponent.
   if (deepIntensity != 1.0)
   {
