@@ -179,9 +179,14 @@ void main()
     // (vtkDeepRadiosityBounceFS, still camera): a receiver gathering from
     // such a texel would light its own source, with a gain of up to 2 per
     // frame at a steep crease (the bound of eq. 4), so it leaves them out,
-    // as at full resolution a receiver leaves out its own texel.
-    if (deepDivisor > 1 &&
-      all(equal((2 * source + deepDivisor) / (2 * deepDivisor), receiver)))
+    // as at full resolution a receiver leaves out its own texel. The test
+    // floor((2 s + D) / 2D) == receiver is written without an integer
+    // division: a CPU renderer (Mesa llvmpipe) divides lane by lane, and
+    // for every tap, whether D > 1 or not (both sides of a branch run).
+    ivec2 scaledSource = 2 * source + deepDivisor;
+    ivec2 receiverStart = 2 * deepDivisor * receiver;
+    if (deepDivisor > 1 && all(greaterThanEqual(scaledSource, receiverStart)) &&
+      all(lessThan(scaledSource, receiverStart + 2 * deepDivisor)))
     {
       continue;
     }
