@@ -395,9 +395,15 @@ namespace
 // estimator a uniform could select (about a tenth of the bitmask's gather).
 bool ReadyGatherQuad(vtkOpenGLQuadHelper*& quad, vtkOpenGLRenderWindow* window, int estimator)
 {
-  std::string fs = vtkDeepAmbientObscuranceFS;
-  vtkShaderProgram::Substitute(fs, "//VTK::DeepAmbientObscurance::Estimator",
-    "#define DEEP_AO_ESTIMATOR " + std::to_string(estimator));
+  // ReadyQuad reads the source only to compile: compose it only then, not
+  // every frame.
+  std::string fs;
+  if (!quad)
+  {
+    fs = vtkDeepAmbientObscuranceFS;
+    vtkShaderProgram::Substitute(fs, "//VTK::DeepAmbientObscurance::Estimator",
+      "#define DEEP_AO_ESTIMATOR " + std::to_string(estimator));
+  }
   return ReadyQuad(quad, window, fs.c_str());
 }
 }
