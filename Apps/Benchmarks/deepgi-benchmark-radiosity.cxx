@@ -114,14 +114,16 @@ void Usage()
     "                       (default: vtkDeepRadiosityPass's own)\n"
     "  --scenes LIST        comma list of demo, cornell-lucy, cornell-original,\n"
     "                       dragon (default all four)\n"
-    "  --methods LIST       comma list of L:P[:nt][:E][:gb][:o]: L layers (1 or 2), P the\n"
+    "  --methods LIST       comma list of L:P[:nt][:E][:gb][:o][:m]: L layers (1 or 2), P the\n"
     "                       preset (hp, balanced, hq), nt: the n_Y test off (else on),\n"
     "                       E the estimator: n (ALL_TAPS) or sa (SOLID_ANGLE); without\n"
     "                       it ACCEPTED_TAPS (eq. 4); gb: a G-buffer guard band of\n"
     "                       vtkDeepRadiosityPass::DEFAULT_GUARD_BAND (else none);\n"
     "                       o: the pass's default OuterSamples (else 0, the paper's\n"
     "                       gather, which reaches r; with them it reaches\n"
-    "                       OUTER_RADIUS_SCALE r, beyond the limited reference).\n"
+    "                       OUTER_RADIUS_SCALE r, beyond the limited reference);\n"
+    "                       m: the preset's MinimumMipLevel (else Table 2's, 3, 2\n"
+    "                       and 0; BALANCED's own is 1).\n"
     "                       Default: %s\n"
     "  --data DIR           test data folder (default %s)\n"
     "  --bounces N          multi-bounce comparison against the reference with N\n"
@@ -143,12 +145,16 @@ struct Method
   int Estimator = vtkDeepRadiosityPass::ACCEPTED_TAPS;
   bool GuardBand = false;
   bool OuterRing = false; // the pass's default OuterSamples, else 0
+  bool PresetMip = false; // the preset's MinimumMipLevel, else Table 2's
 };
+
+// Table 2's minimum MIP level per preset; BALANCED's own is 1.
+constexpr int Table2MinimumMipLevel[] = { 3, 2, 0 };
 
 bool ParseMethod(const std::string& spec, Method& m)
 {
   const std::vector<std::string> p = Split(spec, ':');
-  if (p.size() < 2 || p.size() > 6 || (p[0] != "1" && p[0] != "2"))
+  if (p.size() < 2 || p.size() > 7 || (p[0] != "1" && p[0] != "2"))
   {
     return false;
   }
@@ -156,6 +162,7 @@ bool ParseMethod(const std::string& spec, Method& m)
   m.Estimator = vtkDeepRadiosityPass::ACCEPTED_TAPS;
   m.GuardBand = false;
   m.OuterRing = false;
+  m.PresetMip = false;
   for (size_t k = 2; k < p.size(); ++k)
   {
     if (p[k] == "gb")
@@ -165,6 +172,10 @@ bool ParseMethod(const std::string& spec, Method& m)
     else if (p[k] == "o")
     {
       m.OuterRing = true;
+    }
+    else if (p[k] == "m")
+    {
+      m.PresetMip = true;
     }
     else if (p[k] == "nt")
     {
@@ -194,7 +205,8 @@ bool ParseMethod(const std::string& spec, Method& m)
   const char* const estimators[] = { "", ", /N", ", solid angle" };
   const std::string label = std::string(m.Layers == 1 ? "1 layer" : "2 layers") +
     (m.NormalTest ? "" : ", no n_Y test") + estimators[m.Estimator] +
-    (m.GuardBand ? ", guard band" : "") + (m.OuterRing ? ", outer ring" : "");
+    (m.GuardBand ? ", guard band" : "") + (m.OuterRing ? ", outer ring" : "") +
+    (m.PresetMip ? ", preset's minimum MIP level" : "");
   m.Name = label + ", " + vtkDeepRadiosityPass::GetPresetAsString(m.Preset);
   m.Family = label;
   return true;
@@ -525,8 +537,13 @@ std::vector<vtkSmartPointer<vtkDeepRadiosityPass>> MakePasses(const Options& o, 
     pass->SetPreset(m.Preset);
     // Table 2's configurations as the paper runs them: every texel
     // gathers (HIGH_PERFORMANCE's reduced grid is measured by
-    // deepgi_benchmark_frame.py and the image benchmark).
+    // deepgi_benchmark_frame.py and the image benchmark), at Table 2's
+    // minimum MIP level unless `m` asks for the preset's.
     pass->SetResolutionDivisor(1);
+    if (!m.PresetMip)
+    {
+      pass->SetMinimumMipLevel(Table2MinimumMipLevel[m.Preset]);
+    }
     pass->SetUseNormalTest(m.NormalTest);
     if (!m.OuterRing)
     {

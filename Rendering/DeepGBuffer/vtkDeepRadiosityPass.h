@@ -179,12 +179,13 @@ public:
     SOLID_ANGLE = DEEP_ESTIMATOR_SOLID_ANGLE ///< sum B (w.n_X) dOmega_i, each tap's solid angle
   };
 
-  /// Table 2's parameter sets, with the resolution divisor of each.
+  /// Table 2's parameter sets (BALANCED at minimum MIP level 1), with the resolution divisor of
+  /// each.
   enum Preset
   {
     HIGH_PERFORMANCE = 0, ///< N 13, 9 filter taps, no n_Y test, minimum MIP level 3, 10 % of the
                           ///< guard band shaded, divisor 2
-    BALANCED = 1,         ///< N 14, 11 filter taps, n_Y test, minimum MIP level 2, 50 %, divisor 1
+    BALANCED = 1,         ///< N 14, 11 filter taps, n_Y test, minimum MIP level 1, 50 %, divisor 1
                           ///< (defaults)
     HIGH_QUALITY = 2      ///< N 30, 13 filter taps, n_Y test, minimum MIP level 0, 80 %, divisor 1
   };
@@ -230,10 +231,11 @@ public:
    * error against the reference falls by a factor 2-4 in interiors and on
    * every other benchmark scene from 0.1 to 0.5, Documentation/
    * lighting-model.md); the far taps read coarse MIP levels, so the cost
-   * does not grow with r. Closed interiors are better served by 0.75
-   * (their error falls by up to 2x again, while an object's rises by up
-   * to 11 %: the same taps spread over a larger disc; Documentation/
-   * radiosity.md).
+   * does not grow with r. The outer ring (OuterSamples) reaches 1.5 r,
+   * the far walls of closed interiors; spreading the spiral itself over
+   * 0.75 of the diagonal instead raises an object's error by up to 12 %
+   * (fewer taps near X, where its own folds bounce most of its light;
+   * Documentation/radiosity.md).
    *
    * @unit fraction of the diagonal
    * @range 0 to 1, clamped
@@ -446,12 +448,13 @@ public:
 
   ///@{
   /**
-   * Table 2's minimum MIP level of the taps (0 to 15, default 2); also
-   * limited by floor(log2(max(width, height))).
+   * Minimum MIP level of the taps (0 to 15, default 1, BALANCED's; Table
+   * 2's is 2, whose sources, one texel in 16, made the interiors' indirect
+   * light 2-11 % darker); also limited by floor(log2(max(width, height))).
    *
    * @unit level
    * @range 0 to 15, clamped
-   * @default 2
+   * @default 1
    */
   vtkSetClampMacro(MinimumMipLevel, int, 0, 15);
   vtkGetMacro(MinimumMipLevel, int);
@@ -713,8 +716,8 @@ public:
   ///@{
   /**
    * Sets NumberOfSamples, BlurRadius, UseNormalTest, MinimumMipLevel and
-   * GuardBandShadedFraction to Table 2's values, and ResolutionDivisor
-   * (see Preset), with one
+   * GuardBandShadedFraction to Table 2's values (BALANCED's minimum MIP
+   * level 1 instead of 2), and ResolutionDivisor (see Preset), with one
    * Modified(). An unknown preset is ignored with a warning.
    */
   void SetPreset(int preset);
@@ -806,7 +809,7 @@ protected:
   double BlurPlaneTolerance = 0.02;
   double BlurNormalPower = 8.0;
   double MipThreshold = 8.0;
-  int MinimumMipLevel = 2;
+  int MinimumMipLevel = 1;
   int MaximumMipLevel = 5;
   int ResolutionDivisor = 1;
   double Damping = 1.0;

@@ -7,10 +7,14 @@
 
 #include "DeepGBufferTestUtilities.h"
 
+#include "vtkDeepGBufferPass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIDemoScene.h"
 #include "vtkDeepGIReferenceIrradiance.h"
 #include "vtkDeepGISceneLoader.h"
+#include "vtkDeepRadiosityPass.h"
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -79,6 +83,58 @@ inline std::vector<double> ReferenceIrradiance(vtkPolyData* scene, vtkRenderer* 
   }
   standardError = reference->GetMeanStandardError();
   return Luminance(reference->GetOutput(), "IndirectIrradiance");
+}
+
+// One single-bounce frame of a vtkDeepRadiosityPass against the ray-traced
+// one-bounce irradiance of the whole scene (no distance limit, 32 rays per
+// pixel), layer 0: the luminance of E after the filter and of E_ref per
+// pixel, and which pixels are valid.
+struct SingleBounceCapture
+{
+  vtkNew<vtkImageData> Radiosity; // CaptureIrradiance
+  vtkNew<vtkImageData> Layers;    // the G-buffer's CaptureLayers
+  std::vector<double> Irradiance, Reference;
+  vtkDataArray* Valid = nullptr;
+  double StandardError = 0.0;
+};
+
+// Renders scene `name` (see PopulateScene) at width x height through `pass`,
+// which keeps its settings but Damping 0 and TemporalAlpha 0, and fills `c`;
+// false (with a failed check) when the scene does not load or a capture
+// fails.
+inline bool CaptureSingleBounce(const std::string& name, const std::string& data,
+  vtkDeepRadiosityPass* pass, int width, int height, SingleBounceCapture& c)
+{
+  auto window = MakeWindow(width, height);
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(0, 0, 0);
+  window->AddRenderer(renderer);
+  vtkSmartPointer<vtkObject> keep;
+  vtkSmartPointer<vtkPolyData> scene = PopulateScene(name, data, renderer, keep);
+  if (!scene)
+  {
+    DeepGITest::Check(false, name + " loaded");
+    return false;
+  }
+  pass->SetDamping(0.0);
+  pass->SetTemporalAlpha(0.0);
+  renderer->SetPass(pass);
+  window->Render();
+  if (!pass->CaptureIrradiance(c.Radiosity, renderer) ||
+    !pass->GetGBufferPass()->CaptureLayers(c.Layers, renderer))
+  {
+    DeepGITest::Check(false, name + " captured");
+    return false;
+  }
+  c.Reference = ReferenceIrradiance(
+    scene, renderer, c.Layers, std::numeric_limits<double>::infinity(), 32, c.StandardError);
+  c.Irradiance =
+    Luminance(c.Radiosity, vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Irradiance, 0));
+  c.Valid = c.Layers->GetPointData()->GetArray(
+    vtkDeepGICaptureNames::Layer(vtkDeepGICaptureNames::Valid, 0).c_str());
+  const bool ok = c.Valid && c.Reference.size() == c.Irradiance.size();
+  pass->ReleaseGraphicsResources(window);
+  return ok;
 }
 }
 

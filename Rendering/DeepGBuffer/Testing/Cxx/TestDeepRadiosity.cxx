@@ -808,10 +808,10 @@ void TestPresets()
     int Mip, Divisor;
   };
   const Expected table[] = { { vtkDeepRadiosityPass::HIGH_PERFORMANCE, 13, 4, false, 3, 2 },
-    { vtkDeepRadiosityPass::BALANCED, 14, 5, true, 2, 1 },
+    { vtkDeepRadiosityPass::BALANCED, 14, 5, true, 1, 1 },
     { vtkDeepRadiosityPass::HIGH_QUALITY, 30, 6, true, 0, 1 } };
   Check(pass->GetNumberOfSamples() == 14 && pass->GetBlurRadius() == 5 &&
-      pass->GetUseNormalTest() && pass->GetMinimumMipLevel() == 2 &&
+      pass->GetUseNormalTest() && pass->GetMinimumMipLevel() == 1 &&
       pass->GetResolutionDivisor() == 1,
     "defaults are BALANCED");
   for (const Expected& e : table)

@@ -6,10 +6,10 @@
 // - against the ray-traced one-bounce irradiance limited to the gather
 //   radius r (vtkDeepGIReferenceIrradiance, 32 rays per pixel), the RMSE of
 //   the luminance of E (after the filter) of SOLID_ANGLE is below half that
-//   of ACCEPTED_TAPS, and ALL_TAPS's too (measured: 0.54 for eq. 4, 0.15
-//   ALL_TAPS, 0.12 SOLID_ANGLE; the reference's mean standard error 0.047),
-//   at a gather radius of 0.1 of the diagonal (at the default 0.5: 0.66,
-//   0.44 and 0.21, standard error 0.11: SOLID_ANGLE keeps its lead, ALL_TAPS
+//   of ACCEPTED_TAPS, and ALL_TAPS's too (measured: 0.70 for eq. 4, 0.12
+//   ALL_TAPS, 0.14 SOLID_ANGLE; the reference's mean standard error 0.047),
+//   at a gather radius of 0.1 of the diagonal (at the default 0.5: 0.64,
+//   0.48 and 0.21, standard error 0.11: SOLID_ANGLE keeps its lead, ALL_TAPS
 //   does not);
 // - the default is SOLID_ANGLE; an estimator outside the enum is clamped;
 //   GetEstimatorAsString names it.
