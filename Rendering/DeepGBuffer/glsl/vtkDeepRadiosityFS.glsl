@@ -113,6 +113,13 @@ void main()
     X[j] = deepPositionFromDistance(center, size, max(geometry.x, 0.0));
     nX[j] = deepUnpackOct16(geometry.y);
   }
+  // The layers are loops whose trip count leaves out an absent layer 1,
+  // not loops over both with a test inside: a CPU renderer (Mesa llvmpipe)
+  // shades 8 texels in lockstep and runs both sides of a branch for all of
+  // them, but stops a loop that none of them still runs. Most receivers and
+  // taps have no layer 1 (a floor, a wall facing the camera), and this takes
+  // 10-20 % off the gather on llvmpipe.
+  int receivers = valid[1] ? 2 : 1;
   float reach = deepOuterSamples > 0 ? deepOuterScale * deepRadius : deepRadius;
   float r2 = reach * reach;
   float rp = deepScreenRadius(deepRadius, d0, size);
@@ -208,7 +215,8 @@ void main()
     float area[2];
     bool present[2];
     vec4 sourceKey = texelFetch(deepKey, source, 0);
-    for (int k = 0; k < 2; ++k)
+    int candidates = sourceKey.z > 0.0 ? 2 : 1;
+    for (int k = 0; k < candidates; ++k)
     {
       vec2 geometry = k == 0 ? sourceKey.xy : sourceKey.zw;
       float dy = geometry.x;
@@ -227,18 +235,14 @@ void main()
       }
     }
 
-    for (int j = 0; j < 2; ++j)
+    for (int j = 0; j < receivers; ++j)
     {
-      if (!valid[j])
-      {
-        continue;
-      }
       // The passing candidate with the larger contribution |B (w.n_X)|.
       float bestScore = 0.0;
       vec3 best = vec3(0.0);
       vec3 bestB = vec3(0.0);
       float bestOmega = 0.0; // SOLID_ANGLE: dOmega_i of the best candidate
-      for (int k = 0; k < 2; ++k)
+      for (int k = 0; k < candidates; ++k)
       {
         vec3 v = Y[k] - X[j];
         float vv = dot(v, v);
