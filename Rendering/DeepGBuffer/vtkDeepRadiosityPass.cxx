@@ -913,7 +913,12 @@ bool vtkDeepRadiosityPass::AllocateTargets(
         ReleaseTarget(t, window);
         continue;
       }
-      allocated = allocated && AllocateTarget(t, window, size[0], size[1], 4);
+      // Radiances and irradiances in half floats, like the G-buffer's
+      // RADIANCE they start from (E is clamped to IRRADIANCE_LIMIT, the
+      // largest half float): half the bytes of RGBA32F for every filter tap
+      // and gather source. The history keeps 32-bit floats for the
+      // distances its reprojection compares.
+      allocated = allocated && AllocateTarget(t, window, size[0], size[1], 4, true);
       if (target == BOUNCE && t)
       {
         // With AverageFarTaps, levels MinimumMip..MaximumMip of the layers;
@@ -1142,6 +1147,7 @@ void vtkDeepRadiosityPass::ComputeBounceInput(
   program->SetUniformMatrix4x4("deepPrevProjection", frame.PreviousProjection);
   program->SetUniformf("deepTolerance", static_cast<float>(frame.Tolerance));
   program->SetUniformf("deepDamping", static_cast<float>(this->Damping));
+  program->SetUniformf("deepIrradianceLimit", static_cast<float>(IRRADIANCE_LIMIT));
   program->SetUniformi("deepBoost", this->UseColorBoost ? 1 : 0);
   program->SetUniformi("deepHasLights", frame.HasLights ? 1 : 0);
   program->SetUniformi("deepSourceLevel", frame.MinimumMip);
@@ -1194,6 +1200,7 @@ void vtkDeepRadiosityPass::Gather(vtkGatherFrame& frame, vtkDeepRadiosityRendere
   program->SetUniformi("deepNormalTest", this->UseNormalTest ? 1 : 0);
   program->SetUniformi("deepAverageFarTaps", this->AverageFarTaps ? 1 : 0);
   program->SetUniformi("deepEstimator", this->Estimator);
+  program->SetUniformf("deepIrradianceLimit", static_cast<float>(IRRADIANCE_LIMIT));
   program->SetUniformf("deepCosineEpsilon", static_cast<float>(COSINE_EPSILON));
   program->SetUniformf("deepRotationOffset", static_cast<float>(frame.RotationOffset));
   program->SetUniformi("deepTapStride", frame.TapStride);

@@ -89,12 +89,12 @@
  * Textures (per renderer, viewport size, two of each: layers 0 and 1):
  * | texture   | format  | content                                            |
  * |-----------|---------|----------------------------------------------------|
- * | bounce    | RGBA32F | B of the taps (rgb)                                |
- * | raw       | RGBA32F | eq. 4 E (rgb) and confidence M / N (a)             |
- * | blur tmp  | RGBA32F | after the horizontal pass                          |
- * | filtered  | RGBA32F | after the vertical pass                            |
+ * | bounce    | RGBA16F | B of the taps (rgb)                                |
+ * | raw       | RGBA16F | eq. 4 E (rgb) and confidence M / N (a)             |
+ * | blur tmp  | RGBA16F | after the horizontal pass                          |
+ * | filtered  | RGBA16F | after the vertical pass                            |
  * | history   | RGBA32F | x2 (ping-pong): E_t (rgb), layer distance (a)      |
- * | indirect  | RGBA32F | L_ind, fallback included (rgb), confidence (a)     |
+ * | indirect  | RGBA16F | L_ind, fallback included (rgb), confidence (a)     |
  * Reads: the G-buffer's DEPTH, NORMAL, RADIANCE, AMBIENT and ALBEDO
  * arrays (layers 0 and 1). Writes: the renderer's colour and depth.
  * IRRADIANCE (history) and INDIRECT_RADIANCE are accessible through
@@ -150,10 +150,11 @@ public:
   /// times r_p, and every tap accepts surfaces within this times r.
   static constexpr double OUTER_RADIUS_SCALE = 1.5;
 
-  /// Upper bound of E (irradiance units): a float guard that keeps a
-  /// divergent configuration (rho = 1, delta = 1 in a closed room, whose
-  /// true radiosity is infinite) finite.
-  static constexpr double IRRADIANCE_LIMIT = 1e30;
+  /// Upper bound of E, B and L (irradiance and radiance units): the largest
+  /// half float, the range of the G-buffer's RADIANCE and of the radiosity's
+  /// RGBA16F targets. It keeps a divergent configuration (rho = 1, delta = 1
+  /// in a closed room, whose true radiosity is infinite) finite.
+  static constexpr double IRRADIANCE_LIMIT = 65504.0;
 
   /// The largest ratio of successive bounces that ExtrapolateBounces
   /// extrapolates (a factor rho / (1 - rho) of at most 4); a larger or
@@ -168,7 +169,7 @@ public:
   enum Quantity
   {
     IRRADIANCE = 0,       ///< RGBA32F: E_t after both filters (rgb), layer distance (a)
-    INDIRECT_RADIANCE = 1 ///< RGBA32F: L_ind with the fallback (rgb), confidence (a)
+    INDIRECT_RADIANCE = 1 ///< RGBA16F: L_ind with the fallback (rgb), confidence (a)
   };
 
   /// How the gathered taps are summed into E (see SetEstimator).

@@ -99,13 +99,19 @@ vtkTypeInt64 TextureBytes(const vtkSmartPointer<vtkTextureObject>& texture)
     texels += static_cast<vtkTypeInt64>(std::max(1u, texture->GetWidth() >> level)) *
       std::max(1u, texture->GetHeight() >> level);
   }
+  const unsigned int internalFormat =
+    texture->GetInternalFormat(texture->GetVTKDataType(), texture->GetComponents(), false);
+  const bool halfFloat = internalFormat == GL_R16F || internalFormat == GL_RG16F ||
+    internalFormat == GL_RGB16F || internalFormat == GL_RGBA16F;
+  const int componentBytes =
+    halfFloat ? 2 : vtkAbstractArray::GetDataTypeSize(texture->GetVTKDataType());
   return texels * std::max(1, static_cast<int>(texture->GetDepth())) * texture->GetComponents() *
-    vtkAbstractArray::GetDataTypeSize(texture->GetVTKDataType());
+    componentBytes;
 }
 
 //------------------------------------------------------------------------------
 bool AllocateTarget(vtkSmartPointer<vtkTextureObject>& texture, vtkOpenGLRenderWindow* window,
-  int width, int height, int components)
+  int width, int height, int components, bool halfFloat)
 {
   if (texture && texture->GetWidth() == static_cast<unsigned int>(width) &&
     texture->GetHeight() == static_cast<unsigned int>(height))
@@ -115,10 +121,11 @@ bool AllocateTarget(vtkSmartPointer<vtkTextureObject>& texture, vtkOpenGLRenderW
   if (!texture)
   {
     static const int internalFormats[4] = { GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F };
+    static const int halfFormats[4] = { GL_R16F, GL_RG16F, GL_RGB16F, GL_RGBA16F };
     static const int formats[4] = { GL_RED, GL_RG, GL_RGB, GL_RGBA };
     texture = vtkSmartPointer<vtkTextureObject>::New();
     texture->SetContext(window);
-    texture->SetInternalFormat(internalFormats[components - 1]);
+    texture->SetInternalFormat((halfFloat ? halfFormats : internalFormats)[components - 1]);
     texture->SetFormat(formats[components - 1]);
     texture->SetDataType(GL_FLOAT);
     texture->SetMinificationFilter(vtkTextureObject::Nearest);

@@ -47,9 +47,11 @@ bool ReadyQuad(vtkOpenGLQuadHelper*& quad, vtkOpenGLRenderWindow* window, const 
 void ReleaseQuad(vtkOpenGLQuadHelper*& quad, vtkWindow* window);
 
 /// Allocates (or resizes) a nearest-filtered, edge-clamped float texture
-/// with 1, 2 or 4 components (R32F, RG32F, RGBA32F).
+/// with 1, 2 or 4 components: 32-bit floats (R32F, RG32F, RGBA32F), or
+/// 16-bit ones (R16F, RG16F, RGBA16F) with `halfFloat`. A texture keeps the
+/// precision it was first allocated with.
 bool AllocateTarget(vtkSmartPointer<vtkTextureObject>& texture, vtkOpenGLRenderWindow* window,
-  int width, int height, int components);
+  int width, int height, int components, bool halfFloat = false);
 
 /// The memory of a texture's level 0, in bytes (0 for null).
 vtkTypeInt64 TextureBytes(const vtkSmartPointer<vtkTextureObject>& texture);

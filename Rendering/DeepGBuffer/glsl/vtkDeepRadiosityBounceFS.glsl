@@ -46,6 +46,7 @@ uniform int deepBoost;            // eq. 7 on/off
 uniform int deepHasLights;        // 0: VTK drew the props unlit, no direct light
 uniform int deepSourceLevel;      // MIP level of the output's texels
 uniform ivec2 deepBounceSize;     // the output's texels
+uniform float deepIrradianceLimit; // the largest half float (RGBA16F output)
 
 //VTK::DeepGBuffer::Common
 
@@ -106,7 +107,8 @@ void main()
   for (int j = 0; j < 2; ++j)
   {
     float d = j < deepLayers ? texelFetch(deepDistance, ivec3(pixel, j), 0).r : 0.0;
-    vec4 result = vec4(bounceInput(pixel, size, j, d), d > 0.0 ? 1.0 : 0.0);
+    vec4 result =
+      vec4(min(bounceInput(pixel, size, j, d), vec3(deepIrradianceLimit)), d > 0.0 ? 1.0 : 0.0);
     if (j == 0)
     {
       gl_FragData[0] = result;

@@ -81,6 +81,7 @@ uniform ivec2 deepReceiverGrid;    // texels of the output grid
 uniform int deepDivisor;           // D: output texel q gathers for layer texel D q
 uniform int deepTapStride;         // S: this frame's taps are every S-th
 uniform int deepTapPhase;          // the frame's first of them, 0 to S - 1
+uniform float deepIrradianceLimit; // the largest half float (RGBA16F output)
 
 //VTK::DeepGBuffer::Common
 
@@ -286,6 +287,7 @@ void main()
       ? (solidAngle ? min(sum[j], 2.0 * deepPi * tapShare * maxB[j])
                     : (2.0 * deepPi * tapShare / norm) * sum[j])
       : vec3(0.0);
+    E = min(E, vec3(deepIrradianceLimit));
     vec4 result = valid[j] ? vec4(E, min(accepted / float(taps), 1.0)) : vec4(0.0);
     if (j == 0)
     {

@@ -87,7 +87,8 @@ void filterLayer(ivec2 pixel, vec2 size, int layer, vec2 geometry, out vec4 hist
   vec3 rho = texelFetch(deepAlbedo, ivec3(pixel, layer), 0).rgb;
   vec3 shown = deepExtrapolateBounces(E, last, d, deepExtrapolation, deepIrradianceLimit);
   indirect =
-    deepOutgoingIndirect(rho, shown, now.a, deepBoost != 0, deepFallback != 0, deepEnvironment);
+    deepOutgoingIndirect(rho, shown, now.a, deepBoost != 0, deepFallback != 0, deepEnvironment,
+      deepIrradianceLimit);
 }
 
 void main()

@@ -102,7 +102,8 @@ vec4 upsampleLayer0(ivec2 pixel, vec2 size)
   }
   vec4 Ec = weightSum > 1e-4 ? sum / weightSum : nearest;
   vec3 rho = texelFetch(deepAlbedo, ivec3(pixel, layer), 0).rgb;
-  return deepOutgoingIndirect(rho, Ec.rgb, Ec.a, deepBoost != 0, deepFallback != 0, deepEnvironment);
+  return deepOutgoingIndirect(
+    rho, Ec.rgb, Ec.a, deepBoost != 0, deepFallback != 0, deepEnvironment, deepIrradianceLimit);
 }
 
 void main()

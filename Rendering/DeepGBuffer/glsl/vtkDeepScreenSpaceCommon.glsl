@@ -191,8 +191,9 @@ vec3 deepExtrapolateBounces(vec3 E, vec4 previous, float distance, float factor,
 // (L, c): the outgoing indirect radiance L = rho boost(rho) E / pi (eq. 6)
 // of a surface of albedo rho receiving E with confidence c, blended with the
 // environment fallback c L + (1 - c) rho E_env / pi when `fallback` is on
-// (section 3.2, Figure 9).
-vec4 deepOutgoingIndirect(vec3 rho, vec3 E, float c, bool boost, bool fallback, vec3 environment)
+// (section 3.2, Figure 9); L at most `limit`.
+vec4 deepOutgoingIndirect(vec3 rho, vec3 E, float c, bool boost, bool fallback, vec3 environment,
+  float limit)
 {
   c = clamp(c, 0.0, 1.0);
   vec3 L = deepReflectance(rho, boost) * E / deepPi;
@@ -200,7 +201,7 @@ vec4 deepOutgoingIndirect(vec3 rho, vec3 E, float c, bool boost, bool fallback, 
   {
     L = c * L + (1.0 - c) * rho * environment / deepPi;
   }
-  return vec4(L, c);
+  return vec4(min(L, vec3(limit)), c);
 }
 
 // Camera-space point at distance d on the ray through `ndc` of a camera

@@ -383,8 +383,10 @@ void TestReference(int preset, int outer = 0, int interleave = 1)
         }
         ++compared;
         const Gather g = ReferenceGather(f.Layers, i, j, layer, taps);
+        // The targets are RGBA16F: 11 significant bits, a relative
+        // rounding of at most 2^-11 (4.9e-4).
         bool same = std::abs(At(f.Radiosity, vtkDeepGICaptureNames::RawConfidence + suffix, i, j) -
-                      g.Confidence) < 1e-6;
+                      g.Confidence) < 1e-3;
         for (int c = 0; c < 3; ++c)
         {
           const double d = std::abs(
@@ -655,7 +657,9 @@ void TestBoost()
               "largest "
               "L_ind %.3g\n",
     compared, worst, whiteFloor);
-  Check(compared > 50 && worst <= 1e-5, "L_boost = boost(rho) L for a (1, 0.5, 0.5) floor");
+  // Both radiances come from RGBA16F targets, each rounded by at most 2^-11
+  // (4.9e-4) relative; boost(rho) is at most 1.
+  Check(compared > 50 && worst <= 1e-3, "L_boost = boost(rho) L for a (1, 0.5, 0.5) floor");
   Check(whiteFloor == 0.0, "boost of a white floor is 0");
   p1->ReleaseGraphicsResources(plain.Window);
   p2->ReleaseGraphicsResources(boosted.Window);
@@ -707,7 +711,9 @@ void TestFallback()
               "%.3g\n",
     lowest, worst);
   Check(lowest < 0.5, "some pixels have a low confidence");
-  Check(worst <= 1e-5, "fallback = c L + (1 - c) rho E_env / pi");
+  // L and c come from RGBA16F targets (rounded by at most 2^-11, 4.9e-4,
+  // relative), and L is below 1 here.
+  Check(worst <= 1e-3, "fallback = c L + (1 - c) rho E_env / pi");
 
   // Automatic environment: pi times the renderer's ambient colour.
   auto automatic = SingleBouncePass(1.0);

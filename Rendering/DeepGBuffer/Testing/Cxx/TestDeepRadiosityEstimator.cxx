@@ -66,8 +66,10 @@ int TestDeepRadiosityEstimator(int, char*[])
     mismatches += confM->GetComponent(p, 0) != confN->GetComponent(p, 0);
     for (int c = 0; c < 3; ++c)
     {
+      // Three values read from RGBA16F targets, each rounded by at most
+      // 2^-11 (4.9e-4) relative.
       const double expected = rawM->GetComponent(p, c) * confM->GetComponent(p, 0);
-      mismatches += std::fabs(rawN->GetComponent(p, c) - expected) > 1e-3 * expected + 1e-5;
+      mismatches += std::fabs(rawN->GetComponent(p, c) - expected) > 2e-3 * expected + 1e-5;
       lit += expected > 0.01;
     }
   }

@@ -93,7 +93,9 @@ def main():
         print("layer %d: %d px, mean L_ind %.4f, mean confidence %.3f, max |L - rho E / pi| %.2e" % (
             j, valid.sum(), l_ind[valid].mean() if valid.any() else 0.0,
             array(radiosity, "Confidence_%d" % j)[valid].mean() if valid.any() else 0.0, worst))
-        if worst > 1e-5:
+        # L_ind is stored in an RGBA16F target: rounded by at most 2^-11
+        # (4.9e-4) of its value.
+        if worst > 1e-3:
             failures.append("L_ind is not rho E / pi on layer %d" % j)
 
     valid = array(radiosity, "Valid_0") > 0
