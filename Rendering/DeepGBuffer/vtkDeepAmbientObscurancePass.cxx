@@ -219,6 +219,7 @@ public:
   // when first used.
   vtkOpenGLQuadHelper* GatherQuads[VISIBILITY_BITMASK + 1] = {};
   vtkOpenGLQuadHelper* BlurQuad = nullptr;
+  double BlurQuadNormalPower = 0.0; // the BlurNormalPower BlurQuad was compiled for
   vtkOpenGLQuadHelper* CompositeQuad = nullptr;
   vtkOpenGLQuadHelper* MinifyQuad = nullptr;
   vtkOpenGLQuadHelper* KeyQuad = nullptr;
@@ -628,7 +629,8 @@ bool vtkDeepAmbientObscurancePass::PrepareTargets(
     in.Framebuffer->SetContext(window);
   }
   const bool aoReady = ReadyGatherQuad(in.GatherQuads[this->Estimator], window, this->Estimator);
-  const bool blurReady = ReadyQuad(in.BlurQuad, window, vtkDeepAmbientObscuranceBlurFS);
+  const bool blurReady = vtkDeepScreenSpace::ReadyBilateralQuad(in.BlurQuad, in.BlurQuadNormalPower,
+    window, vtkDeepAmbientObscuranceBlurFS, this->BlurNormalPower);
   const bool minifyReady = ReadyQuad(in.MinifyQuad, window, vtkDeepAmbientObscuranceMinifyFS) &&
     ReadyQuad(in.KeyQuad, window, vtkDeepGeometryKeyFS);
   const bool temporalReady =
@@ -703,7 +705,6 @@ void vtkDeepAmbientObscurancePass::FilterVisibility(
     program->SetUniform2i("deepAxis", axis);
     program->SetUniformi("deepBlurRadius", this->BlurRadius);
     program->SetUniformf("deepPlaneTolerance", static_cast<float>(this->BlurPlaneTolerance));
-    program->SetUniformf("deepNormalPower", static_cast<float>(this->BlurNormalPower));
     in.BlurQuad->Render();
     input->Deactivate();
   }

@@ -295,6 +295,7 @@ public:
   vtkOpenGLQuadHelper* GatherQuad = nullptr;
   vtkOpenGLQuadHelper* KeyQuad = nullptr;
   vtkOpenGLQuadHelper* BlurQuad = nullptr;
+  double BlurQuadNormalPower = 0.0; // the BlurNormalPower BlurQuad was compiled for
   vtkOpenGLQuadHelper* TemporalQuad = nullptr;
   vtkOpenGLQuadHelper* IncrementQuad = nullptr; // ExtrapolateBounces
   vtkOpenGLQuadHelper* CompositeQuad = nullptr;
@@ -852,7 +853,8 @@ bool vtkDeepRadiosityPass::PrepareTargets(
   const bool ready = ReadyQuad(in.BounceQuad, window, vtkDeepRadiosityBounceFS) &&
     ReadyQuad(in.GatherQuad, window, vtkDeepRadiosityFS) &&
     ReadyQuad(in.KeyQuad, window, vtkDeepGeometryKeyFS) &&
-    ReadyQuad(in.BlurQuad, window, vtkDeepRadiosityBlurFS) &&
+    vtkDeepScreenSpace::ReadyBilateralQuad(
+      in.BlurQuad, in.BlurQuadNormalPower, window, vtkDeepRadiosityBlurFS, this->BlurNormalPower) &&
     ReadyQuad(in.TemporalQuad, window, vtkDeepRadiosityTemporalFS) &&
     ReadyQuad(in.CompositeQuad, window, vtkDeepRadiosityCompositeFS) &&
     (frame.Divisor == 1 ||
@@ -1232,7 +1234,6 @@ void vtkDeepRadiosityPass::FilterIrradiance(
     program->SetUniform2i("deepAxis", axis);
     program->SetUniformi("deepBlurRadius", this->BlurRadius);
     program->SetUniformf("deepPlaneTolerance", static_cast<float>(this->BlurPlaneTolerance));
-    program->SetUniformf("deepNormalPower", static_cast<float>(this->BlurNormalPower));
     in.BlurQuad->Render();
     UnbindLayerTextures(state.Targets[pass[0]]);
   }

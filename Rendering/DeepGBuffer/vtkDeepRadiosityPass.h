@@ -390,8 +390,8 @@ public:
 
   ///@{
   /**
-   * Normal weight of the bilateral filter: the exponent (default 8), as in
-   * vtkDeepAmbientObscurancePass.
+   * Normal weight of the bilateral filter: the exponent (default 8),
+   * compiled into the filter's shader as in vtkDeepAmbientObscurancePass.
    *
    * @unit exponent
    * @range 0 to 128, clamped

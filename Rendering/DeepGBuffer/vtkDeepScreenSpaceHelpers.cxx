@@ -27,6 +27,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -70,6 +72,58 @@ bool ReadyQuad(vtkOpenGLQuadHelper*& quad, vtkOpenGLRenderWindow* window, const 
     window->GetShaderCache()->ReadyShaderProgram(quad->Program);
   }
   return quad->Program && quad->Program->GetCompiled();
+}
+
+//------------------------------------------------------------------------------
+std::string NormalWeightSource(double power)
+{
+  std::ostringstream glsl;
+  glsl << "float deepNormalWeight(float facing)\n{\n";
+  const int whole = static_cast<int>(power);
+  if (power == whole)
+  {
+    // facing^whole by squaring: f holds facing^(2^i) for bit i of whole.
+    glsl << "  float weight = 1.0;\n  float f = facing;\n";
+    for (int rest = whole; rest > 0; rest >>= 1)
+    {
+      if (rest & 1)
+      {
+        glsl << "  weight *= f;\n";
+      }
+      if (rest > 1)
+      {
+        glsl << "  f *= f;\n";
+      }
+    }
+    glsl << "  return weight;\n";
+  }
+  else
+  {
+    glsl << std::setprecision(9) << std::showpoint << "  return pow(max(facing, 1e-30), " << power
+         << ");\n";
+  }
+  glsl << "}\n";
+  return glsl.str();
+}
+
+//------------------------------------------------------------------------------
+bool ReadyBilateralQuad(vtkOpenGLQuadHelper*& quad, double& compiledPower,
+  vtkOpenGLRenderWindow* window, const char* source, double power)
+{
+  if (quad && compiledPower != power)
+  {
+    ReleaseQuad(quad, window);
+  }
+  // ReadyQuad reads the source only to compile: compose it only then.
+  std::string fs;
+  if (!quad)
+  {
+    fs = source;
+    vtkShaderProgram::Substitute(
+      fs, "//VTK::DeepScreenSpace::NormalWeight", NormalWeightSource(power));
+    compiledPower = power;
+  }
+  return ReadyQuad(quad, window, fs.c_str());
 }
 
 //------------------------------------------------------------------------------

@@ -16,11 +16,13 @@ uniform sampler2DArray deepKey; // geometry key (level 0, slice 0: layer 0's .xy
 uniform ivec2 deepAxis;            // (1, 0) horizontal, (0, 1) vertical
 uniform int deepBlurRadius;        // taps on each side
 uniform float deepPlaneTolerance;  // fraction of the centre's distance
-uniform float deepNormalPower;
 
 //VTK::DeepGBuffer::Common
 
 //VTK::DeepScreenSpace::Common
+
+// max(0, n.n_Y)^BlurNormalPower, the power compiled in.
+//VTK::DeepScreenSpace::NormalWeight
 
 //VTK::Output::Dec
 
@@ -62,7 +64,8 @@ void main()
     }
     vec3 Y = deepPositionFromDistance(vec2(tap) + 0.5, size, dy);
     vec3 ny = deepUnpackOct16(tapKey.y);
-    float w = deepBilateralWeight(k, sigma, X, n, Y, ny, tolerance, deepNormalPower);
+    float w =
+      deepBilateralWeight(k, sigma, X, n, Y, deepNormalWeight(max(0.0, dot(n, ny))), tolerance);
     sum += w * texelFetch(deepInput, tap, 0).r;
     weights += w;
   }

@@ -16,11 +16,13 @@ uniform sampler2D deepKey;         // both layers' distance and normal (vtkDeepG
 uniform ivec2 deepAxis;            // (1, 0) horizontal, (0, 1) vertical
 uniform int deepBlurRadius;        // taps on each side
 uniform float deepPlaneTolerance;  // fraction of the centre's distance
-uniform float deepNormalPower;
 
 //VTK::DeepGBuffer::Common
 
 //VTK::DeepScreenSpace::Common
+
+// max(0, n.n_Y)^BlurNormalPower, the power compiled in.
+//VTK::DeepScreenSpace::NormalWeight
 
 //VTK::Output::Dec
 
@@ -54,7 +56,8 @@ void addTap(inout Layer layer, vec2 geometry, ivec2 tap, vec2 size, int k, float
 {
   vec3 Y = deepPositionFromDistance(vec2(tap) + 0.5, size, geometry.x);
   vec3 ny = deepUnpackOct16(geometry.y);
-  float w = deepBilateralWeight(k, sigma, layer.X, layer.N, Y, ny, layer.Tolerance, deepNormalPower);
+  float normalWeight = deepNormalWeight(max(0.0, dot(layer.N, ny)));
+  float w = deepBilateralWeight(k, sigma, layer.X, layer.N, Y, normalWeight, layer.Tolerance);
   layer.Sum += w * tapValue;
   layer.Weights += w;
 }

@@ -150,14 +150,13 @@ bool deepReproject(vec3 X, mat4 toPrevious, mat4 prevProjection, vec2 size, out 
 // (section 3.1: normal and plane weights, after [SGNS07]): a Gaussian of
 // k (sigma pixels) times a plane weight
 // max(0, 1 - |(Y - X).n| / tolerance) (Y's distance from the centre's
-// tangent plane) times a normal weight max(0, n.n_Y)^normalPower, so that
-// values do not blur across depth or normal discontinuities.
-float deepBilateralWeight(int k, float sigma, vec3 X, vec3 n, vec3 Y, vec3 nY, float tolerance,
-  float normalPower)
+// tangent plane) times a normal weight max(0, n.n_Y)^p, so that values do
+// not blur across depth or normal discontinuities. The filter computes the
+// normal weight (deepNormalWeight, compiled with its power p).
+float deepBilateralWeight(
+  int k, float sigma, vec3 X, vec3 n, vec3 Y, float normalWeight, float tolerance)
 {
   float plane = max(0.0, 1.0 - abs(dot(Y - X, n)) / tolerance);
-  float facing = max(0.0, dot(n, nY));
-  float normalWeight = normalPower > 0.0 ? pow(facing, normalPower) : 1.0;
   return exp(-float(k * k) / (2.0 * sigma * sigma)) * plane * normalWeight;
 }
 
