@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <locale>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -78,6 +79,7 @@ bool ReadyQuad(vtkOpenGLQuadHelper*& quad, vtkOpenGLRenderWindow* window, const 
 std::string NormalWeightSource(double power)
 {
   std::ostringstream glsl;
+  glsl.imbue(std::locale::classic()); // GLSL's decimal point, whatever the user's locale
   glsl << "float deepNormalWeight(float facing)\n{\n";
   const int whole = static_cast<int>(power);
   if (power == whole)

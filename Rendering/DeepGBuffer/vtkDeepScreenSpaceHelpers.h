@@ -24,6 +24,7 @@
 
 #include <map>    // for RendererStates
 #include <memory> // for RendererStates
+#include <string> // for NormalWeightSource
 
 class vtkFieldData;
 class vtkImageData;
