@@ -48,7 +48,7 @@ bool ReadyQuad(vtkOpenGLQuadHelper*& quad, vtkOpenGLRenderWindow* window, const 
  * GLSL of `float deepNormalWeight(float facing)`, facing^power with the
  * power compiled in: products (square and multiply) for a whole power, pow
  * for any other. On a CPU renderer (Mesa llvmpipe) pow, an exponential and
- * a logarithm on every tap, was 12-14 % of the bilateral filters' time,
+ * a logarithm on every tap, was 7-13 % of the bilateral filters' time,
  * where the default power 8 takes three products; a uniform choosing
  * between both forms would run both.
  */
