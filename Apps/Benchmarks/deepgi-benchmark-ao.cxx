@@ -37,6 +37,7 @@
 #include "vtkDataArray.h"
 #include "vtkDeepAmbientObscurancePass.h"
 #include "vtkDeepGBufferPass.h"
+#include "vtkDeepGICameraText.h"
 #include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIDemoScene.h"
 #include "vtkDeepGIReferenceObscurance.h"
@@ -112,6 +113,12 @@ void Usage()
               "                       the same. With any of them, only the files are measured\n"
               "                       unless --scenes names built-in scenes too.\n"
               "  --volume FILE --iso V  one more scene: the iso-surface V of a volume\n"
+              "  --camera PX,PY,PZ,FX,FY,FZ,UX,UY,UZ[,A]\n"
+              "                       the camera of the --mesh, --scene or --volume (with its\n"
+              "                       --iso) given just before: position, focal point, view-up,\n"
+              "                       view angle in degrees (default 30), as ParaView's Adjust\n"
+              "                       Camera shows them. Without it the scene is framed along\n"
+              "                       -z. The scene table shows every scene's camera so.\n"
               "  --data DIR           test data folder (default %s)\n"
               "  --no-error-maps      do not write the error-map PNGs\n"
               "  --backend NAME       auto, x11 or egl (default auto)\n"
@@ -218,18 +225,57 @@ struct Options : AccuracyOptions
     this->RadiusFraction = 0.05;
     this->Data = DEEPGI_DATA_DIR;
   }
-  // The user's own scenes ("mesh:PATH" or "volume:ISO:PATH"), measured after
-  // the built-in ones named with --scenes (none unless --scenes is given).
+  // The user's own scenes ("mesh:CAMERA:PATH" or "volume:ISO:CAMERA:PATH",
+  // CAMERA empty for the loader's camera; a camera's text has no colon),
+  // measured after the built-in ones named with --scenes (none unless
+  // --scenes is given).
   std::vector<std::string> Files;
   std::string PendingVolume; // a --volume waiting for its --iso
   std::vector<Method> Methods;
 };
 
+/// --camera TEXT: the camera of the user's scene given last, checked here.
+bool ParseCameraOption(const std::string& value, Options& o, std::string& error)
+{
+  if (!o.PendingVolume.empty())
+  {
+    error = "--volume " + o.PendingVolume + " needs --iso V before --camera";
+    return false;
+  }
+  if (o.Files.empty())
+  {
+    error = "--camera needs a --mesh, --scene or --volume before it";
+    return false;
+  }
+  vtkNew<vtkCamera> camera;
+  const std::string reason = vtkDeepGICameraText::Apply(value.c_str(), camera);
+  if (!reason.empty())
+  {
+    error = "--camera '" + value + "': " + reason;
+    return false;
+  }
+  // The camera field follows the kind ("mesh") and, for a volume, the iso-value.
+  std::string& spec = o.Files.back();
+  const size_t field = spec.rfind("volume:", 0) == 0 ? spec.find(':', 7) + 1 : 5;
+  if (spec[field] != ':')
+  {
+    error = "a second --camera for the same scene";
+    return false;
+  }
+  spec.insert(field, vtkDeepGICameraText::Write(camera));
+  return true;
+}
+
 /// --mesh FILE, --scene FILE (any file vtkDeepGISceneLoader reads),
-/// --volume FILE --iso V: one scene each, checked for a readable file here.
+/// --volume FILE --iso V: one scene each, checked for a readable file here;
+/// --camera TEXT after one gives it a camera.
 bool ParseSceneFileOption(
   const std::string& arg, const std::string& value, Options& o, std::string& error)
 {
+  if (arg == "--camera")
+  {
+    return ParseCameraOption(value, o, error);
+  }
   if (arg != "--iso" && !vtksys::SystemTools::FileExists(value, true))
   {
     error = arg + ": no such file '" + value + "'";
@@ -249,7 +295,7 @@ bool ParseSceneFileOption(
       error = "--iso needs a finite number, got '" + value + "'";
       return false;
     }
-    o.Files.push_back("volume:" + value + ":" + o.PendingVolume);
+    o.Files.push_back("volume:" + value + "::" + o.PendingVolume);
     o.PendingVolume.clear();
   }
   else if (arg == "--volume")
@@ -263,7 +309,7 @@ bool ParseSceneFileOption(
   }
   else
   {
-    o.Files.push_back("mesh:" + value);
+    o.Files.push_back("mesh::" + value);
   }
   return true;
 }
@@ -272,7 +318,7 @@ bool ParseOptions(int argc, char* argv[], Options& o)
 {
   const CommandLine commandLine{ Program, Usage,
     std::vector<std::string>(std::begin(SceneNames), std::end(SceneNames)),
-    { "--mesh", "--scene", "--volume", "--iso" },
+    { "--mesh", "--scene", "--volume", "--iso", "--camera" },
     [&o](const std::string& arg, const std::string& value, std::string& error)
     { return ParseSceneFileOption(arg, value, o, error); } };
   if (!ParseAccuracyOptions(argc, argv, commandLine, o))
@@ -417,6 +463,38 @@ struct SceneSetup
   vtkSmartPointer<vtkPolyData> Geometry;
 };
 
+/// The position, PX,PY,PZ, of a camera's text: what names a scene seen
+/// through --camera.
+std::string PositionOf(const std::string& camera)
+{
+  std::istringstream fields(camera);
+  std::string x, y, z;
+  std::getline(fields, x, ',');
+  std::getline(fields, y, ',');
+  std::getline(fields, z, ',');
+  return x + "," + y + "," + z;
+}
+
+/// A scene of the user's ("mesh:CAMERA:PATH" or "volume:ISO:CAMERA:PATH")
+/// into `loader`; its name (the file's, with the iso-value) and camera text.
+bool LoadUserFile(
+  const std::string& spec, vtkDeepGISceneLoader* loader, std::string& name, std::string& camera)
+{
+  if (spec.rfind("mesh:", 0) == 0)
+  {
+    const size_t colon = spec.find(':', 5);
+    const std::string path = spec.substr(colon + 1);
+    camera = spec.substr(5, colon - 5);
+    name = vtksys::SystemTools::GetFilenameName(path);
+    return loader->Load(path.c_str());
+  }
+  const size_t colon = spec.find(':', 7), cameraEnd = spec.find(':', colon + 1);
+  const std::string iso = spec.substr(7, colon - 7), path = spec.substr(cameraEnd + 1);
+  camera = spec.substr(colon + 1, cameraEnd - colon - 1);
+  name = vtksys::SystemTools::GetFilenameName(path) + " iso " + iso;
+  return loader->LoadVolume(path.c_str(), std::strtod(iso.c_str(), nullptr));
+}
+
 /// Populates `renderer` with `name`; white ambient-only materials, still camera.
 bool LoadScene(const Options& o, const std::string& name, vtkRenderer* renderer, SceneSetup& s,
   vtkSmartPointer<vtkObject>& keep)
@@ -442,18 +520,10 @@ bool LoadScene(const Options& o, const std::string& name, vtkRenderer* renderer,
   {
     auto loader = vtkSmartPointer<vtkDeepGISceneLoader>::New();
     bool ok = false;
-    if (name.rfind("mesh:", 0) == 0)
+    std::string camera; // the user's --camera, or empty
+    if (name.rfind("mesh:", 0) == 0 || name.rfind("volume:", 0) == 0)
     {
-      s.Name = vtksys::SystemTools::GetFilenameName(name.substr(5));
-      ok = loader->Load(name.substr(5).c_str());
-    }
-    else if (name.rfind("volume:", 0) == 0)
-    {
-      const size_t colon = name.find(':', 7);
-      const std::string path = name.substr(colon + 1);
-      s.Name = vtksys::SystemTools::GetFilenameName(path) + " iso " + name.substr(7, colon - 7);
-      ok =
-        loader->LoadVolume(path.c_str(), std::strtod(name.substr(7, colon - 7).c_str(), nullptr));
+      ok = LoadUserFile(name, loader, s.Name, camera);
     }
     else if (name == "cornell-lucy")
     {
@@ -477,6 +547,12 @@ bool LoadScene(const Options& o, const std::string& name, vtkRenderer* renderer,
     }
     loader->Populate(renderer);
     loader->ResetCamera(renderer);
+    if (!camera.empty())
+    {
+      // Checked when the options were read; named by where it stands.
+      vtkDeepGICameraText::Apply(camera.c_str(), renderer->GetActiveCamera());
+      s.Name += " from " + PositionOf(camera);
+    }
     s.Geometry = loader->GetScenePolyData();
     keep = loader;
   }
@@ -503,6 +579,7 @@ struct SceneInfo
   double Radius, RefError, PlainMs, GBufferMs;
   long Valid, Excluded, Layer1;
   double ReferenceSeconds;
+  std::string Camera; // as --camera takes it
 };
 
 /// Everything measured, in the order of the scenes.
@@ -869,9 +946,9 @@ bool MeasureScene(const Options& o, const std::string& sceneSpec, Measurements& 
   const std::vector<double> plainMs = TimeMethods(view, o, { nullptr, gbuffer }, passes, results);
   measured.Results.insert(measured.Results.end(), results.begin(), results.end());
   const PixelMasks& px = frame.Pixels;
-  measured.Scenes.push_back(
-    { frame.Scene, scene.Geometry->GetNumberOfPolys(), r, frame.ReferenceError, plainMs[0],
-      plainMs[1], px.ValidCount, px.Excluded, px.Layer1Count, frame.ReferenceSeconds });
+  measured.Scenes.push_back({ frame.Scene, scene.Geometry->GetNumberOfPolys(), r,
+    frame.ReferenceError, plainMs[0], plainMs[1], px.ValidCount, px.Excluded, px.Layer1Count,
+    frame.ReferenceSeconds, vtkDeepGICameraText::Write(view.Renderer->GetActiveCamera()) });
 
   view.Renderer->SetPass(nullptr);
   for (const auto& pass : passes)
@@ -901,16 +978,16 @@ std::string SceneTable(const Options& o, const Measurements& measured)
        "same frame (layer 0).\nAV of a method = luminance(method) / luminance(plain) on white "
        "ambient-only surfaces (plain = VTK for vtkSSAOPass, the G-buffer pass alone for ours).\n\n";
   md << "| scene | triangles | r | valid px | excluded px | layer-1 px | reference std. error | "
-        "reference [s] | VTK frame [ms] | G-buffer (2 layers) frame [ms] "
-        "|\n|---|---|---|---|---|---|---|---|---|---|\n";
+        "reference [s] | VTK frame [ms] | G-buffer (2 layers) frame [ms] | camera (--camera) "
+        "|\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const SceneInfo& s : measured.Scenes)
   {
-    char b[512];
-    std::snprintf(b, sizeof(b),
-      "| %s | %lld | %.4g | %ld | %ld | %ld | %.4f | %.1f | %.2f | %.2f |\n", s.Name.c_str(),
+    // The name and the camera are of any length: streamed, not formatted.
+    char b[256];
+    std::snprintf(b, sizeof(b), " | %lld | %.4g | %ld | %ld | %ld | %.4f | %.1f | %.2f | %.2f | ",
       static_cast<long long>(s.Triangles), s.Radius, s.Valid, s.Excluded, s.Layer1, s.RefError,
       s.ReferenceSeconds, s.PlainMs, s.GBufferMs);
-    md << b;
+    md << "| " << s.Name << b << s.Camera << " |\n";
   }
   return md.str();
 }

@@ -19,7 +19,10 @@ choosing materials):
   (vtkLoopSubdivisionFilter, about 1.1 million triangles); same camera and
   floor, so nearly the same pixels are shaded;
 - headsq: the iso-surface 500 of Testing/Data/volumes/headsq/quarter;
-- --mesh FILE (repeatable) and --volume FILE --iso V: the user's own.
+- --mesh FILE (repeatable) and --volume FILE --iso V: the user's own;
+  --camera PX,PY,PZ,FX,FY,FZ,UX,UY,UZ[,A] after one gives it its start
+  camera (vtkDeepGICameraText; each scene's heading shows its start
+  camera so).
 
 Each scene has its own window; for each size of --sizes the methods run
 side by side in that window: plain VTK; vtkSSAOPass with kernel 16 and 64
@@ -75,7 +78,8 @@ from vtkmodules.vtkRenderingCore import vtkActor, vtkCamera, vtkPolyDataMapper, 
 import vtkdeepgi
 # The image benchmark's scenes, default actors and vtkSSAOPass, shared.
 import deepgi_benchmark_image
-from deepgi_benchmark_image import load_shared_scene, use_default_properties
+from deepgi_benchmark_image import (add_user_scene_options, apply_user_camera, load_shared_scene,
+                                    use_default_properties, user_scene_list)
 
 SCENES = ("bunny-floor", "bunny-floor-1m", "headsq")
 PRESETS = ("HIGH_PERFORMANCE", "BALANCED", "HIGH_QUALITY")
@@ -108,9 +112,7 @@ def parse_arguments():
     parser.add_argument("--rounds", type=int, default=2, help="rounds over the methods")
     parser.add_argument("--scenes", default=",".join(SCENES),
                         help="comma list of " + ", ".join(SCENES))
-    parser.add_argument("--mesh", action="append", default=[], help="a mesh or OBJ scene")
-    parser.add_argument("--volume", action="append", default=[], help="a volume (with --iso)")
-    parser.add_argument("--iso", action="append", type=float, default=[], help="iso-value")
+    add_user_scene_options(parser)
     parser.add_argument("--data", required=True, help="the project's Testing/Data folder")
     parser.add_argument("--output", default="output", help="folder of the files (default output)")
     parser.add_argument("--methods", default="",
@@ -120,14 +122,12 @@ def parse_arguments():
     args.sizes = parse_sizes(parser, args.sizes)
     if not (1 <= args.frames <= 1000 and 1 <= args.rounds <= 100):
         parser.error("--frames 1..1000, --rounds 1..100")
-    if len(args.volume) != len(args.iso):
-        parser.error("every --volume needs one --iso")
     args.method_words = [w for w in args.methods.split(",") if w]
     args.scene_list = [s for s in args.scenes.split(",") if s]
     for name in args.scene_list:
         if name not in SCENES:
             parser.error("unknown scene %s (known: %s)" % (name, ", ".join(SCENES)))
-    needed = list(args.mesh + args.volume)
+    needed = []
     if any(s.startswith("bunny") for s in args.scene_list):
         needed.append(os.path.join(args.data, "meshes", "bunny.ply"))
     if "headsq" in args.scene_list:
@@ -135,8 +135,7 @@ def parse_arguments():
     for path in needed:
         if not os.path.isfile(path):
             parser.error("no such file: " + path)
-    args.scene_list += [("mesh", path) for path in args.mesh]
-    args.scene_list += [("volume", path, iso) for path, iso in zip(args.volume, args.iso)]
+    args.scene_list += user_scene_list(parser, args)
     if not args.scene_list:
         parser.error("no scene: give --scenes, --mesh or --volume")
     return args
@@ -187,6 +186,7 @@ def populate(renderer, scene, data):
     # The camera frames the loaded parts only, so both bunny scenes have the
     # camera of the original mesh and the floor does not move it.
     loader.ResetCamera(renderer)
+    apply_user_camera(renderer, scene)
     if name == "bunny-floor-1m":
         subdivide(renderer.GetActors().GetLastActor())
     if name.startswith("bunny-floor"):
@@ -352,7 +352,8 @@ def measure_size(args, orbit, radius, size):
 
 
 def measure_scene(args, scene):
-    """Returns (OpenGL renderer, [(scene, triangles, size, methods)])."""
+    """Returns (OpenGL renderer, [(scene, triangles, size, methods)], the
+    start camera's text)."""
     factory = vtkdeepgi.vtkDeepGIRenderWindowFactory
     window = factory.NewRenderWindow(factory.BACKEND_AUTO)
     window.SetMultiSamples(0)
@@ -367,13 +368,14 @@ def measure_scene(args, scene):
     bounds = renderer.ComputeVisiblePropBounds()
     radius = 0.05 * np.linalg.norm(np.array(bounds[1::2]) - np.array(bounds[0::2]))
     triangles = count_triangles(renderer)
+    camera = vtkdeepgi.vtkDeepGICameraText.Write(renderer.GetActiveCamera())
     orbit, results = Orbit(window, renderer), []
     for size in args.sizes:
         results.append((name, triangles, size, measure_size(args, orbit, radius, size)))
         print("%s %dx%d done" % ((name,) + size), file=sys.stderr)
     device = opengl_renderer(window)
     del keep
-    return device, results
+    return device, results, camera
 
 
 def cell(value, form):
@@ -448,7 +450,7 @@ def flat_section(results):
     return lines
 
 
-def markdown(args, device, results):
+def markdown(args, device, results, cameras):
     lines = ["OpenGL renderer: %s; %d CPUs; command: `%s`; %s." % (
                  device, os.cpu_count(), shlex.join(sys.argv),
                  datetime.datetime.now().isoformat(sep=" ", timespec="seconds")),
@@ -458,7 +460,8 @@ def markdown(args, device, results):
              "from the same start; every actor with VTK's default property." % (
                  args.frames, args.rounds, WARM_UP_FRAMES, ORBIT_DEGREES)]
     for scene, triangles, size, methods in results:
-        lines += ["", "### %s, %d triangles, %dx%d" % ((scene, triangles) + size), ""]
+        lines += ["", "### %s, %d triangles, %dx%d" % ((scene, triangles) + size), "",
+                  "Start camera (`--camera`): `%s`" % cameras[scene], ""]
         lines += frame_table(methods) + [""] + stage_table(methods, args.frames)
         lines += [""] + converge_table(methods)
     flat = flat_section(results)
@@ -497,12 +500,13 @@ def write_atomically(path, text):
 def main():
     args = parse_arguments()
     os.makedirs(args.output, exist_ok=True)
-    device, results = None, []
+    device, results, cameras = None, [], {}
     for scene in args.scene_list:
-        scene_device, scene_results = measure_scene(args, scene)
+        scene_device, scene_results, camera = measure_scene(args, scene)
         device = device or scene_device
         results += scene_results
-    text = markdown(args, device, results)
+        cameras[scene_results[0][0]] = camera
+    text = markdown(args, device, results, cameras)
     print(text)
     write_atomically(os.path.join(args.output, "benchmark-frame.md"), text)
     write_atomically(os.path.join(args.output, "benchmark-frame.csv"), csv_text(results))

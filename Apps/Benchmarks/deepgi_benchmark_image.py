@@ -32,7 +32,9 @@ at one still camera:
 
 Scenes: --scenes takes the built-in demo, cornell-lucy, dragon and headsq;
 --mesh FILE (repeatable: .ply .stl .vtk .vtp .obj) and --volume FILE --iso V
-add the user's own. --default-actors gives every actor VTK's default
+add the user's own, and --camera PX,PY,PZ,FX,FY,FZ,UX,UY,UZ[,A] after one
+gives it a camera (vtkDeepGICameraText; the scene table shows every
+scene's camera so). --default-actors gives every actor VTK's default
 property (white, Ambient 0, Diffuse 1, Specular 0), i.e. what a VTK user
 gets without choosing materials; otherwise the scene loader's materials.
 
@@ -55,7 +57,7 @@ from vtkmodules.vtkChartsCore import vtkAxis, vtkChart, vtkChartXY
 from vtkmodules.vtkCommonCore import vtkFloatArray
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData, vtkTable
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import vtkRenderer, vtkWindowToImageFilter
+from vtkmodules.vtkRenderingCore import vtkCamera, vtkRenderer, vtkWindowToImageFilter
 from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass, vtkSSAOPass
 from vtkmodules.vtkViewsContext2D import vtkContextView
 import vtkmodules.vtkRenderingContextOpenGL2  # noqa: F401 (the charts' OpenGL device)
@@ -73,6 +75,62 @@ CHANGE_THRESHOLD = 0.02
 INTERACTIVE_FRAMES = 40
 
 
+class UserSceneAction(argparse.Action):
+    """--mesh FILE, --volume FILE, --iso V and --camera TEXT in the order
+    given: each --mesh and each --volume is a scene of the user's
+    (args.user_scenes), the k-th --iso the iso-value of the k-th --volume,
+    and --camera the camera of the scene given just before it (a volume's
+    after its --iso)."""
+
+    def __call__(self, parser, namespace, value, option_string=None):
+        scenes = list(getattr(namespace, "user_scenes", None) or [])
+        if option_string == "--mesh":
+            scenes.append({"kind": "mesh", "path": value, "camera": None})
+        elif option_string == "--volume":
+            scenes.append({"kind": "volume", "path": value, "iso": None, "camera": None})
+        elif option_string == "--iso":
+            volume = next((s for s in scenes if s["kind"] == "volume" and s["iso"] is None), None)
+            if volume is None:
+                parser.error("--iso needs a --volume before it")
+            volume["iso"] = value
+        else:
+            if not scenes or (scenes[-1]["kind"] == "volume" and scenes[-1]["iso"] is None):
+                parser.error("--camera needs a --mesh, or a --volume and its --iso, before it")
+            if scenes[-1]["camera"] is not None:
+                parser.error("a second --camera for the same scene")
+            camera = vtkCamera()
+            error = vtkdeepgi.vtkDeepGICameraText.Apply(value, camera)
+            if error:
+                parser.error("--camera '%s': %s" % (value, error))
+            scenes[-1]["camera"] = vtkdeepgi.vtkDeepGICameraText.Write(camera)
+        namespace.user_scenes = scenes
+
+
+def add_user_scene_options(parser):
+    """The options of the user's own scenes, shared by the Python benchmarks."""
+    parser.set_defaults(user_scenes=[])
+    parser.add_argument("--mesh", action=UserSceneAction, help="a mesh or OBJ scene")
+    parser.add_argument("--volume", action=UserSceneAction, help="a volume (with --iso)")
+    parser.add_argument("--iso", action=UserSceneAction, type=float, help="iso-value")
+    parser.add_argument("--camera", action=UserSceneAction,
+                        help="PX,PY,PZ,FX,FY,FZ,UX,UY,UZ[,A]: the camera of the scene just "
+                        "before (position, focal point, view-up, view angle in degrees)")
+
+
+def user_scene_list(parser, args):
+    """The user's scenes as ("mesh", path, camera) and ("volume", path, iso,
+    camera), camera None for the loader's; their files checked."""
+    scenes = []
+    for s in args.user_scenes:
+        if s["kind"] == "volume" and s["iso"] is None:
+            parser.error("--volume %s needs --iso V after it" % s["path"])
+        if not os.path.isfile(s["path"]):
+            parser.error("no such file: " + s["path"])
+        scenes.append(("mesh", s["path"], s["camera"]) if s["kind"] == "mesh"
+                      else ("volume", s["path"], s["iso"], s["camera"]))
+    return scenes
+
+
 def parse_arguments():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--size", default="320x240", help="WxH (default 320x240)")
@@ -81,9 +139,7 @@ def parse_arguments():
     parser.add_argument("--frames", type=int, default=5, help="timed frames per method and round")
     parser.add_argument("--rounds", type=int, default=2, help="rounds over the methods")
     parser.add_argument("--scenes", default="demo,cornell-lucy,dragon,headsq")
-    parser.add_argument("--mesh", action="append", default=[], help="a mesh or OBJ scene")
-    parser.add_argument("--volume", action="append", default=[], help="a volume (with --iso)")
-    parser.add_argument("--iso", action="append", type=float, default=[], help="iso-value")
+    add_user_scene_options(parser)
     parser.add_argument("--default-actors", action="store_true")
     parser.add_argument("--data", required=True, help="the project's Testing/Data folder")
     parser.add_argument("--output", default="output")
@@ -95,11 +151,6 @@ def parse_arguments():
     if not (16 <= width <= 8192 and 16 <= height <= 8192):
         parser.error("--size needs 16..8192 pixels per side")
     args.width, args.height = width, height
-    if len(args.volume) != len(args.iso):
-        parser.error("every --volume needs one --iso")
-    for path in args.mesh + args.volume:
-        if not os.path.isfile(path):
-            parser.error("no such file: " + path)
     if not (1 <= args.samples <= 1048576 and 1 <= args.bounces <= 16):
         parser.error("--samples 1..1048576, --bounces 1..16")
     if not (1 <= args.frames <= 1000 and 1 <= args.rounds <= 100):
@@ -108,21 +159,32 @@ def parse_arguments():
     for name in args.scene_list:
         if name not in ("demo", "cornell-lucy", "dragon", "headsq"):
             parser.error("unknown scene " + name)
-    args.scene_list += [("mesh", path) for path in args.mesh]
-    args.scene_list += [("volume", path, iso) for path, iso in zip(args.volume, args.iso)]
+    args.scene_list += user_scene_list(parser, args)
     return args
 
 
 def load_shared_scene(loader, scene, data):
     """The scenes every benchmark has: the CT head's skin ("headsq"), a
-    ("mesh", path) and a ("volume", path, iso). Returns (loaded, name)."""
+    ("mesh", path, camera) and a ("volume", path, iso, camera). Returns
+    (loaded, name); a scene with a camera is named by its position too."""
     if scene == "headsq":
         loader.SetViewDirection(0.0, -1.0, 0.0)
         loader.SetViewUp(0.0, 0.0, -1.0)
         return loader.LoadVolume(data + "/volumes/headsq/quarter", 500.0), scene
     if scene[0] == "mesh":
-        return loader.Load(scene[1]), os.path.basename(scene[1])
-    return loader.LoadVolume(scene[1], scene[2]), "%s iso %g" % (os.path.basename(scene[1]), scene[2])
+        ok, name = loader.Load(scene[1]), os.path.basename(scene[1])
+    else:
+        ok, name = (loader.LoadVolume(scene[1], scene[2]),
+                    "%s iso %g" % (os.path.basename(scene[1]), scene[2]))
+    camera = scene[-1]
+    return ok, name + (" from " + ",".join(camera.split(",")[:3]) if camera else "")
+
+
+def apply_user_camera(renderer, scene):
+    """A user's scene with --camera: its camera replaces the loader's."""
+    if isinstance(scene, tuple) and scene[-1]:
+        vtkdeepgi.vtkDeepGICameraText.Apply(scene[-1], renderer.GetActiveCamera())
+        renderer.ResetCameraClippingRange()
 
 
 def populate(renderer, scene, data):
@@ -144,6 +206,7 @@ def populate(renderer, scene, data):
         sys.exit("deepgi_benchmark_image.py: cannot load %s" % (name if ok is not None else scene))
     loader.Populate(renderer)
     loader.ResetCamera(renderer)
+    apply_user_camera(renderer, scene)
     return name, loader
 
 
@@ -382,7 +445,8 @@ def measure_scene(args, scene):
                [methods[0].image, methods[1].image, balanced.image, truth, difference],
                args.width, args.height)
     info = (name, int(valid.sum()), int(second.sum()), int(changed.sum()), reference.GetMeanStandardError(),
-            reference_seconds, "AV x RADIANCE" if multiply else "AV x AMBIENT")
+            reference_seconds, "AV x RADIANCE" if multiply else "AV x AMBIENT",
+            vtkdeepgi.vtkDeepGICameraText.Write(renderer.GetActiveCamera()))
     del keep
     return info, rows
 
@@ -403,10 +467,10 @@ def main():
             "every actor with VTK's default property" if args.default_actors
             else "the scene loader's materials", args.frames, args.rounds),
         "",
-        "| scene | surface px | 2-layer px | px the 2nd layer changes | reference std. error | reference [s] | AV scales |",
-        "|---|---|---|---|---|---|---|",
+        "| scene | surface px | 2-layer px | px the 2nd layer changes | reference std. error | reference [s] | AV scales | camera (--camera) |",
+        "|---|---|---|---|---|---|---|---|",
     ]
-    lines += ["| %s | %d | %d | %d | %.4f | %.1f | %s |" % i for i in infos]
+    lines += ["| %s | %d | %d | %d | %.4f | %.1f | %s | %s |" % i for i in infos]
     lines += ["", "| scene | method | ms per frame | x plain | RMSE | MAE | bias | RMSE 2-layer px | RMSE changed px |",
               "|---|---|---|---|---|---|---|---|---|"]
     lines += ["| %s | %s | %.1f | %.2f | %.4f | %.4f | %+.4f | %.4f | %.4f |" % r for r in rows]

@@ -11,6 +11,7 @@
 #include "vtkCamera.h"
 #include "vtkDeepAmbientObscurancePass.h"
 #include "vtkDeepGBufferPass.h"
+#include "vtkDeepGICameraText.h"
 #include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIDemoScene.h"
 #include "vtkDeepGIPass.h"
@@ -102,6 +103,11 @@ banners, mouldings, a decal and a thin panel):
   --scale S           demo scene: uniform scale factor (default 1)
   --view NAME         demo scene: the camera, one of default, overview,
                       columns, decal, panel (default: default)
+  --camera PX,PY,PZ,FX,FY,FZ,UX,UY,UZ[,A]
+                      the camera, for any scene: position, focal point,
+                      view-up and view angle in degrees (default 30), the
+                      values ParaView's Adjust Camera dialog shows. The
+                      camera rendered is printed in this form.
 
 Deep G-buffer:
   --layers K          layers with --preset off, 1 to 8 (default 2); the GI
@@ -132,6 +138,7 @@ struct Options
   double Scale = 1.0;
   std::string View = "default";
   bool ViewGiven = false;
+  std::string Camera; // --camera's text, empty for the scene's own camera
   int Layers = 2;
   bool LayersGiven = false;
   double Dz = -1.0; // < 0: automatic
@@ -310,6 +317,14 @@ const OptionEntry OptionTable[] = {
       }
       return "needs one of default, overview, columns, decal, panel";
     } },
+  { "--camera",
+    [](const std::string& v, Options& o) -> std::string
+    {
+      vtkNew<vtkCamera> camera;
+      const std::string problem = vtkDeepGICameraText::Apply(v.c_str(), camera);
+      o.Camera = v;
+      return problem.empty() ? "" : "is not a camera (" + problem + ")";
+    } },
   { "--layers",
     [](const std::string& v, Options& o) -> std::string
     {
@@ -367,6 +382,10 @@ std::string CheckCombinations(const Options& o)
   if (o.Loaded() && o.ViewGiven)
   {
     return "--view is for the demo scene; loaded data gets a still camera framing it";
+  }
+  if (o.ViewGiven && !o.Camera.empty())
+  {
+    return "--view and --camera both choose the camera; give one";
   }
   return "";
 }
@@ -445,7 +464,8 @@ bool DemoSceneFits(long long triangles)
   return true;
 }
 
-bool LoadScene(const Options& o, vtkRenderer* renderer, Scene& scene)
+// The demo scene or the user's data, with the scene's own camera.
+bool PopulateScene(const Options& o, vtkRenderer* renderer, Scene& scene)
 {
   if (!o.Loaded())
   {
@@ -487,6 +507,22 @@ bool LoadScene(const Options& o, vtkRenderer* renderer, Scene& scene)
   scene.Loader->ResetCamera(renderer);
   scene.Triangles = scene.Loader->GetNumberOfTriangles();
   scene.Description = "loaded data";
+  return true;
+}
+
+// The scene, with its own camera or the user's (--camera, checked with the
+// options).
+bool LoadScene(const Options& o, vtkRenderer* renderer, Scene& scene)
+{
+  if (!PopulateScene(o, renderer, scene))
+  {
+    return false;
+  }
+  if (!o.Camera.empty())
+  {
+    vtkDeepGICameraText::Apply(o.Camera.c_str(), renderer->GetActiveCamera());
+    renderer->ResetCameraClippingRange();
+  }
   return true;
 }
 
@@ -834,6 +870,8 @@ int main(int argc, char* argv[])
   std::cout << "deepgi-render: " << scene.Description << ", " << scene.Triangles << " triangles, "
             << o.Width << "x" << o.Height << ", backend " << o.Backend << ", preset "
             << (o.Preset < 0 ? "off" : vtkDeepGIPass::GetPresetAsString(o.Preset)) << std::endl;
+  std::cout << "  camera (--camera): " << vtkDeepGICameraText::Write(renderer->GetActiveCamera())
+            << std::endl;
 
   std::vector<std::string> written;
   double plainMilliseconds = 0.0;
