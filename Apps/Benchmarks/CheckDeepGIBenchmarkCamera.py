@@ -3,7 +3,8 @@
 misplaced --camera stops either one before anything renders, with exit
 status 2 and the reason; a good one is the start camera of its scene (the
 frame benchmark on the dragon at 64x48, one frame of vtkDeepGIPass
-BALANCED): the scene is named by the camera's position, and the heading
+BALANCED; the second file given with --scene, which is --mesh's other
+name): the scene is named by the camera's position, and the heading
 shows exactly the camera given, where the same file without --camera has
 the loader's. Exits non-zero on failure.
 
@@ -46,7 +47,7 @@ def check_rejections(data, out):
 def check_camera(data, out):
     mesh = os.path.join(data, "meshes", "dragon.ply")
     code, text, err = run("deepgi_benchmark_frame.py", [
-        "--data", data, "--scenes", "", "--mesh", mesh, "--mesh", mesh, "--camera", CAMERA,
+        "--data", data, "--scenes", "", "--mesh", mesh, "--scene", mesh, "--camera", CAMERA,
         "--sizes", "64x48", "--frames", "1", "--rounds", "1", "--methods", "BALANCED",
         "--output", out])
     if code != 0:

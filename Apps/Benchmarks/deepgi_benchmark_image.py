@@ -31,8 +31,8 @@ at one still camera:
   undamped bounces exceed 1).
 
 Scenes: --scenes takes the built-in demo, cornell-lucy, dragon and headsq;
---mesh FILE (repeatable: .ply .stl .vtk .vtp .obj) and --volume FILE --iso V
-add the user's own, and --camera PX,PY,PZ,FX,FY,FZ,UX,UY,UZ[,A] after one
+--mesh FILE (repeatable: .ply .stl .vtk .vtp .obj; --scene FILE is the
+same) and --volume FILE --iso V add the user's own, and --camera PX,PY,PZ,FX,FY,FZ,UX,UY,UZ[,A] after one
 gives it a camera (vtkDeepGICameraText; the scene table shows every
 scene's camera so). --default-actors gives every actor VTK's default
 property (white, Ambient 0, Diffuse 1, Specular 0), i.e. what a VTK user
@@ -76,15 +76,15 @@ INTERACTIVE_FRAMES = 40
 
 
 class UserSceneAction(argparse.Action):
-    """--mesh FILE, --volume FILE, --iso V and --camera TEXT in the order
-    given: each --mesh and each --volume is a scene of the user's
-    (args.user_scenes), the k-th --iso the iso-value of the k-th --volume,
-    and --camera the camera of the scene given just before it (a volume's
-    after its --iso)."""
+    """--mesh FILE (or --scene FILE), --volume FILE, --iso V and --camera
+    TEXT in the order given: each --mesh and each --volume is a scene of
+    the user's (args.user_scenes), the k-th --iso the iso-value of the k-th
+    --volume, and --camera the camera of the scene given just before it (a
+    volume's after its --iso)."""
 
     def __call__(self, parser, namespace, value, option_string=None):
         scenes = list(getattr(namespace, "user_scenes", None) or [])
-        if option_string == "--mesh":
+        if option_string in ("--mesh", "--scene"):
             scenes.append({"kind": "mesh", "path": value, "camera": None})
         elif option_string == "--volume":
             scenes.append({"kind": "volume", "path": value, "iso": None, "camera": None})
@@ -109,7 +109,8 @@ class UserSceneAction(argparse.Action):
 def add_user_scene_options(parser):
     """The options of the user's own scenes, shared by the Python benchmarks."""
     parser.set_defaults(user_scenes=[])
-    parser.add_argument("--mesh", action=UserSceneAction, help="a mesh or OBJ scene")
+    parser.add_argument("--mesh", "--scene", action=UserSceneAction,
+                        help="a mesh or OBJ scene (--scene is the same)")
     parser.add_argument("--volume", action=UserSceneAction, help="a volume (with --iso)")
     parser.add_argument("--iso", action=UserSceneAction, type=float, help="iso-value")
     parser.add_argument("--camera", action=UserSceneAction,
