@@ -53,7 +53,7 @@ bool ReadNumbers(const std::string& text, std::vector<double>& numbers, std::str
 // Why the position, focal point, view-up and angle make no camera, or "".
 std::string CheckGeometry(const std::vector<double>& v)
 {
-  double direction[3] = { v[3] - v[0], v[4] - v[1], v[5] - v[2] };
+  const double direction[3] = { v[3] - v[0], v[4] - v[1], v[5] - v[2] };
   const double up[3] = { v[6], v[7], v[8] };
   const double scale = std::max({ 1e-300, std::abs(v[0]), std::abs(v[1]), std::abs(v[2]),
     std::abs(v[3]), std::abs(v[4]), std::abs(v[5]) });

@@ -32,9 +32,10 @@ at one still camera:
 
 Scenes: --scenes takes the built-in demo, cornell-lucy, dragon and headsq;
 --mesh FILE (repeatable: .ply .stl .vtk .vtp .obj; --scene FILE is the
-same) and --volume FILE --iso V add the user's own, and --camera PX,PY,PZ,FX,FY,FZ,UX,UY,UZ[,A] after one
-gives it a camera (vtkDeepGICameraText; the scene table shows every
-scene's camera so). --default-actors gives every actor VTK's default
+same) and --volume FILE --iso V add the user's own, and
+--camera PX,PY,PZ,FX,FY,FZ,UX,UY,UZ[,A] after one gives it a camera
+(vtkDeepGICameraText; the scene table shows every scene's camera so).
+--default-actors gives every actor VTK's default
 property (white, Ambient 0, Diffuse 1, Specular 0), i.e. what a VTK user
 gets without choosing materials; otherwise the scene loader's materials.
 
