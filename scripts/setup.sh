@@ -43,6 +43,7 @@ packages=(
   libglm-dev libopenexr-dev libembree-dev
   libegl-dev libegl-mesa0 libgl1-mesa-dri  # EGL backend: headers, Mesa's EGL, llvmpipe
   xvfb xauth                          # X11 backend without a display (scripts/with-display.sh)
+  valgrind                            # instructions per frame (scripts/count-instructions.sh)
 )
 if ((with_paraview)); then
   packages+=(paraview-dev openmpi-bin)  # the ParaView plugin (ParaView/), pvbatch under mpiexec

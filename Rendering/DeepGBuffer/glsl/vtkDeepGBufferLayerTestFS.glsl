@@ -20,6 +20,9 @@
 #endif
     return;
   }
+#ifndef DEEP_GBUFFER_SINGLE_LAYER
+  // With one layer these tests never pass their first condition; compiled
+  // in, they would still cost llvmpipe, which runs both sides of a branch.
   if (deepLayer > 0 && deepCullBackFaces != 0 && gl_FrontFacing == false)
   {
     discard;
@@ -52,3 +55,4 @@
       discard;
     }
   }
+#endif

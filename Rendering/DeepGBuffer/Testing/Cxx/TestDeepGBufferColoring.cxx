@@ -1,7 +1,8 @@
 // The albedo layer holds VTK's colouring, whatever its source, and the
 // G-buffer composes with what VTK draws after it:
 // - the ambient layer holds VTK's ambient term (Ka x ambient colour), a
-//   part of the radiance;
+//   part of the radiance, and zeros once no prop has an ambient term (the
+//   target is then not written), and the term again when one has;
 // - actor colour; point scalars through a lookup table (interpolated as
 //   colours, and through VTK's colour texture with
 //   InterpolateScalarsBeforeMapping); an actor texture: each quad's
@@ -80,7 +81,7 @@ void CheckAlbedo(vtkRenderer* renderer, vtkImageData* capture, double x, double 
 }
 
 // Actor colour, with the diffuse coefficient: albedo = Kd * colour.
-void AddColouredQuad(vtkRenderer* renderer)
+vtkActor* AddColouredQuad(vtkRenderer* renderer)
 {
   auto plain = Quad(-1.0, 1.0);
   vtkNew<vtkPolyDataMapper> plainMapper;
@@ -92,6 +93,7 @@ void AddColouredQuad(vtkRenderer* renderer)
   plainActor->GetProperty()->SetAmbientColor(1.0, 0.5, 0.25);
   plainActor->GetProperty()->SetAmbient(0.2);
   renderer->AddActor(plainActor);
+  return plainActor;
 }
 
 // Point scalars (all 0.25) through a lookup table, mapped per vertex and
@@ -196,6 +198,33 @@ void CheckAmbientLayer(vtkRenderer* renderer, vtkImageData* capture)
   Check(error <= 0.01 * 0.2 && leastDirect > 0.0, "ambient layer = Ka x ambient colour");
 }
 
+// With Ambient 0 on every actor the AMBIENT target is not written: it must
+// read as zeros, not as the last frame that wrote it; with Ambient back on
+// it holds the term again.
+void CheckAmbientFollowsProperties(
+  vtkRenderWindow* window, vtkRenderer* renderer, vtkDeepGBufferPass* pass, vtkActor* ambientActor)
+{
+  ambientActor->GetProperty()->SetAmbient(0.0);
+  window->Render();
+  vtkNew<vtkImageData> capture;
+  pass->CaptureLayers(capture, renderer);
+  vtkDataArray* ambient = Layer(capture, vtkDeepGICaptureNames::Ambient, 0);
+  double largest = 0.0;
+  for (vtkIdType p = 0; p < ambient->GetNumberOfTuples(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      largest = std::max(largest, std::abs(ambient->GetComponent(p, c)));
+    }
+  }
+  std::printf("  Ambient 0 everywhere: largest captured ambient %g\n", largest);
+  Check(largest == 0.0, "no ambient term: the ambient layer reads zero");
+  ambientActor->GetProperty()->SetAmbient(0.2);
+  window->Render();
+  pass->CaptureLayers(capture, renderer);
+  CheckAmbientLayer(renderer, capture);
+}
+
 // The volume (magenta) is composited where the G-buffer is empty; the
 // overlay text is white at the bottom left.
 void CheckVolumeAndOverlayDrawn(vtkRenderer* renderer, vtkImageData* image)
@@ -250,7 +279,7 @@ int TestDeepGBufferColoring(int, char*[])
   auto window = MakeWindow(300, 300);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
-  AddColouredQuad(renderer);
+  vtkActor* ambientActor = AddColouredQuad(renderer);
   vtkNew<vtkLookupTable> lut;
   lut->SetHueRange(0.0, 0.66);
   lut->SetRange(0.0, 1.0);
@@ -280,6 +309,7 @@ int TestDeepGBufferColoring(int, char*[])
   CheckAlbedo(renderer, capture, -1.0, 0.0, { 0.2, 0.8, 0.4 }, "actor texture");
   CheckAmbientLayer(renderer, capture);
   CheckVolumeAndOverlayDrawn(renderer, image);
+  CheckAmbientFollowsProperties(window, renderer, pass, ambientActor);
   CheckTextureAccess(window, renderer, pass);
   return ExitStatus();
 }
