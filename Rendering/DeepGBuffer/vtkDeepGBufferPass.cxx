@@ -234,9 +234,8 @@ struct vtkDeepGBufferRendererState
   GLuint LayeredFramebuffer = 0;
   std::vector<GLuint> LayerFramebuffers; // one per layer, for mappers without the routing GS
   // Whether the fragment shader's AMBIENT output is stored (see
-  // UpdateAmbientWrites); unknown after an allocation.
+  // UpdateAmbientWrites); new targets store it.
   bool WritesAmbient = true;
-  bool AmbientWritesKnown = false;
 
   // History for the oracles.
   unsigned long long FrameIndex = 0;
@@ -988,7 +987,6 @@ static bool AllocateTargets(vtkDeepGBufferRendererState& state, vtkOpenGLState* 
   state.Slots = slots;
   state.HistoryLayers = historyLayers;
   state.WritesAmbient = true;
-  state.AmbientWritesKnown = false;
   for (int q = 0; q < BaseQuantities; ++q)
   {
     state.Textures[q] = NewArrayTexture(
@@ -1106,31 +1104,28 @@ static bool UpdateReflectivityTarget(
 static void UpdateAmbientWrites(
   vtkDeepGBufferRendererState& state, vtkOpenGLState* ostate, bool write)
 {
-  if (state.AmbientWritesKnown && state.WritesAmbient == write)
+  if (state.WritesAmbient == write)
   {
     return;
   }
   ostate->PushFramebufferBindings();
-  auto applyDrawBuffers = [&](GLuint framebuffer)
-  {
-    GLenum drawBuffers[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES];
-    const GLsizei count = DrawBufferList(state, drawBuffers);
-    ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    glDrawBuffers(count, drawBuffers);
-  };
   if (!write)
   {
-    state.WritesAmbient = true;
-    applyDrawBuffers(state.LayeredFramebuffer);
+    // The zeros, once, while AMBIENT is still a draw buffer (the per-frame
+    // clear skips it afterwards).
+    ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, state.LayeredFramebuffer);
     const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
     glClearBufferfv(GL_COLOR, vtkDeepGBufferPass::AMBIENT, zero);
   }
   state.WritesAmbient = write;
-  state.AmbientWritesKnown = true;
-  applyDrawBuffers(state.LayeredFramebuffer);
+  GLenum drawBuffers[vtkDeepGBufferPass::NUMBER_OF_QUANTITIES];
+  const GLsizei count = DrawBufferList(state, drawBuffers);
+  ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, state.LayeredFramebuffer);
+  glDrawBuffers(count, drawBuffers);
   for (GLuint framebuffer : state.LayerFramebuffers)
   {
-    applyDrawBuffers(framebuffer);
+    ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glDrawBuffers(count, drawBuffers);
   }
   ostate->PopFramebufferBindings();
 }
