@@ -3,10 +3,11 @@
 On Mesa's llvmpipe every stage of a frame runs on the CPU, so the
 instructions it executes measure its cost without the noise of a shared
 machine's clock: the same build, scene and camera give the same count to
-within a fraction of a percent. scripts/count-instructions.sh runs this
-script under Valgrind's callgrind with llvmpipe rasterising in the calling
-thread (LP_NUM_THREADS=0); Documentation/performance.md explains the
-results.
+within a fraction of a percent. The script runs itself again under
+Valgrind's callgrind, with llvmpipe rasterising in the calling thread
+(LP_NUM_THREADS=0, so the count does not depend on how threads
+interleave); scripts/count-instructions.sh builds what it needs and runs
+it. Documentation/performance.md explains the results.
 
     scripts/count-instructions.sh --scenes bunny-floor --methods "plain VTK,2 layers"
 
@@ -17,13 +18,23 @@ start, 3 warm-up frames (shader compilation) are rendered uncounted, then
 --frames frames are counted (callgrind's instrumentation on), and the count
 is dumped. Printed and written to OUTDIR/count-instructions.md: per scene,
 millions of instructions per frame and the ratio to plain VTK's.
+
+With --stages each deep method's frames are counted a second time with a
+vtkDeepGIStageTimer attached (glFinish around every stage) whose stage
+boundaries dump callgrind's counts (DumpCallgrindCounts), and a second
+table gives the millions of instructions per frame of each stage
+(exclusive of the stages nested in it), in the order the stages first ran,
+and of the whole profiled frame.
 """
 
 import argparse
 import glob
 import os
+import re
+import shutil
 import subprocess
 import sys
+import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -48,8 +59,9 @@ def parse_arguments():
     parser.add_argument("--methods", default="",
                         help="comma list of substrings of the frame benchmark's method "
                              "names (default: every method)")
-    parser.add_argument("--callgrind-output", required=True,
-                        help="the --callgrind-out-file prefix callgrind writes its dumps to")
+    parser.add_argument("--stages", action="store_true",
+                        help="also count each deep method's stages (a second run per method)")
+    parser.add_argument("--callgrind-output", help=argparse.SUPPRESS)  # set under callgrind
     parser.add_argument("--output", default="output", help="directory of count-instructions.md")
     args = parser.parse_args()
     args.size = frame.parse_sizes(parser, args.size)[0]
@@ -59,26 +71,96 @@ def parse_arguments():
     return args
 
 
+def run_under_callgrind():
+    """Runs this script with these arguments under callgrind; its exit status."""
+    dumps = tempfile.mkdtemp()
+    try:
+        prefix = os.path.join(dumps, "callgrind.out")
+        log = os.path.join(dumps, "valgrind.log")
+        status = subprocess.call(
+            ["valgrind", "--tool=callgrind", "--instr-atstart=no", "--log-file=" + log,
+             "--callgrind-out-file=" + prefix, sys.executable, os.path.abspath(__file__)] +
+            sys.argv[1:] + ["--callgrind-output", prefix],
+            env=dict(os.environ, LP_NUM_THREADS="0"))
+        if status != 0 and os.path.exists(log):
+            with open(log) as f:
+                sys.stderr.write(f.read())
+        return status
+    finally:
+        shutil.rmtree(dumps)
+
+
 def callgrind(*words):
     subprocess.run(["callgrind_control"] + list(words) + [str(os.getpid())],
                    stdout=subprocess.DEVNULL, check=True)
 
 
-def dumped_instructions(prefix, index):
-    """The total of callgrind's dump number `index` (written by callgrind_control -d)."""
-    path = "%s.%d" % (prefix, index)
+def dump_number(path):
+    return int(path.rsplit(".", 1)[1])
+
+
+def take_dumps(prefix, expected_label):
+    """[(label, instructions)] of callgrind's dumps so far, in order, removed.
+
+    A stage boundary's dump (vtkDeepGIStageTimer::DumpCallgrindCounts) is
+    labelled with its stage; the one callgrind_control -d writes last gets
+    `expected_label`. Waits for that last dump, written asynchronously.
+    """
     for _ in range(100):
-        if os.path.exists(path):
-            with open(path) as dump:
-                for line in dump:
-                    if line.startswith("totals:"):
-                        return int(line.split()[1])
+        paths = sorted(glob.glob(prefix + ".*"), key=dump_number)
+        dumps = [read_dump(path) for path in paths]
+        if dumps and None not in dumps and dumps[-1][0] is None:
+            for path in paths:
+                os.remove(path)
+            return [(label or expected_label, count) for label, count in dumps]
         time.sleep(0.1)
-    sys.exit("deepgi_count_instructions.py: no callgrind dump %s" % path)
+    sys.exit("deepgi_count_instructions.py: no complete callgrind dump %s.*" % prefix)
 
 
-def count_scene(args, scene, dumps):
-    """Returns (display name, triangles, [(method, instructions per frame)])."""
+CLIENT_REQUEST = re.compile(r"^desc: Trigger: Client Request: (.*)$")
+
+
+def read_dump(path):
+    """(the stage label or None, total instructions), or None while incomplete."""
+    label, total = None, None
+    with open(path) as dump:
+        for line in dump:
+            match = CLIENT_REQUEST.match(line.rstrip("\n"))
+            if match:
+                label = match.group(1)
+            elif line.startswith("totals:"):
+                total = int(line.split()[1])
+    return None if total is None else (label, total)
+
+
+def count_frames(args, orbit):
+    """Instructions of --frames frames of the current pass: [(label, count)]."""
+    orbit.restart()
+    orbit.frames(WARM_UP_FRAMES)
+    for path in glob.glob(args.callgrind_output + ".*"):
+        os.remove(path)  # the warm-up's stage boundaries, counted while off
+    callgrind("-i", "on")
+    orbit.frames(args.frames)
+    callgrind("-i", "off")
+    callgrind("-d")
+    return take_dumps(args.callgrind_output, vtkdeepgi.vtkDeepGIStageTimer.GetOutsideStagesLabel())
+
+
+def count_stages(args, orbit, m):
+    """{stage: instructions per frame} of a deep method, in the order they first ran."""
+    timer = vtkdeepgi.vtkDeepGIStageTimer()
+    timer.DumpCallgrindCountsOn()
+    m.gbuffer.SetStageTimer(timer)
+    stages = {}
+    for label, count in count_frames(args, orbit):
+        stages[label] = stages.get(label, 0) + count / args.frames
+    m.gbuffer.SetStageTimer(None)
+    return stages
+
+
+def count_scene(args, scene):
+    """Returns (display name, triangles, [(method, instructions per frame)],
+    [(method, {stage: instructions per frame})])."""
     factory = vtkdeepgi.vtkDeepGIRenderWindowFactory
     window = factory.NewRenderWindow(factory.BACKEND_AUTO)
     window.SetMultiSamples(0)
@@ -91,23 +173,19 @@ def count_scene(args, scene, dumps):
     window.Render()
     bounds = renderer.ComputeVisiblePropBounds()
     radius = 0.05 * np.linalg.norm(np.array(bounds[1::2]) - np.array(bounds[0::2]))
-    orbit, rows = frame.Orbit(window, renderer), []
+    orbit, rows, stage_rows = frame.Orbit(window, renderer), [], []
     for m in frame.make_methods(radius, args.method_words):
         renderer.SetPass(m.pass_)
-        orbit.restart()
-        orbit.frames(WARM_UP_FRAMES)
-        callgrind("-i", "on")
-        orbit.frames(args.frames)
-        callgrind("-i", "off")
-        callgrind("-d")
-        dumps[0] += 1
-        rows.append((m.name, dumped_instructions(args.callgrind_output, dumps[0]) / args.frames))
+        counts = count_frames(args, orbit)
+        rows.append((m.name, sum(count for _, count in counts) / args.frames))
+        if args.stages and m.gbuffer:
+            stage_rows.append((m.name, count_stages(args, orbit, m)))
         renderer.SetPass(None)
         if m.pass_:
             m.pass_.ReleaseGraphicsResources(window)
     triangles = frame.count_triangles(renderer)
     del keep
-    return name, triangles, rows
+    return name, triangles, rows, stage_rows
 
 
 def user_arguments():
@@ -126,7 +204,7 @@ def user_arguments():
 def markdown(args, results):
     lines = ["Command: `scripts/count-instructions.sh %s`; %s." % (
         " ".join(user_arguments()), time.strftime("%Y-%m-%d %H:%M:%S")), ""]
-    for name, triangles, rows in results:
+    for name, triangles, rows, stage_rows in results:
         lines += ["#### %s, %d triangles, %dx%d" % ((name, triangles) + args.size), "",
                   "| method | millions of instructions per frame | x plain |", "|---|---|---|"]
         plain = dict(rows).get("plain VTK")
@@ -134,20 +212,42 @@ def markdown(args, results):
             ratio = "%.2f" % (count / plain) if plain else "—"
             lines.append("| %s | %.0f | %s |" % (method, count / 1e6, ratio))
         lines.append("")
+        if stage_rows:
+            lines += stage_table(stage_rows) + [""]
     return "\n".join(lines)
+
+
+def stage_table(stage_rows):
+    """Millions of instructions per frame of each stage (rows) and method."""
+    outside = vtkdeepgi.vtkDeepGIStageTimer.GetOutsideStagesLabel()
+    names = list(dict.fromkeys(stage for _, stages in stage_rows for stage in stages
+                               if stage != outside)) + [outside]
+    lines = ["Stages, millions of instructions per frame (glFinish around every stage):", "",
+             "| stage | " + " | ".join(method for method, _ in stage_rows) + " |",
+             "|---|" + "---|" * len(stage_rows)]
+    for stage in names:
+        cells = [stages.get(stage) for _, stages in stage_rows]
+        lines.append("| %s | %s |" % (stage, " | ".join(
+            "—" if c is None else "%.1f" % (c / 1e6) for c in cells)))
+    lines.append("| profiled frame | %s |" % " | ".join(
+        "%.0f" % (sum(stages.values()) / 1e6) for _, stages in stage_rows))
+    return lines
 
 
 def main():
     args = parse_arguments()
-    dumps = [0]
-    results = [count_scene(args, scene, dumps) for scene in args.scenes.split(",") if scene]
+    if not args.callgrind_output:
+        return run_under_callgrind()
+    if args.stages and not vtkdeepgi.vtkDeepGIStageTimer.CanDumpCallgrindCounts():
+        sys.exit("deepgi_count_instructions.py: --stages needs a library built with "
+                 "Valgrind's valgrind/callgrind.h")
+    results = [count_scene(args, scene) for scene in args.scenes.split(",") if scene]
     text = markdown(args, results)
     print(text)
     os.makedirs(args.output, exist_ok=True)
     frame.write_atomically(os.path.join(args.output, "count-instructions.md"), text)
-    for path in glob.glob(args.callgrind_output + "*"):
-        os.remove(path)
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

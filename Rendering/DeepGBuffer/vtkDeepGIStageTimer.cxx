@@ -5,6 +5,15 @@
 
 #include <chrono>
 
+// Valgrind's client requests: a few no-op instructions outside Valgrind.
+// Optional: without the header, stage boundaries cannot dump counts.
+#if defined(__has_include)
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#define VTK_DEEPGI_HAS_CALLGRIND 1
+#endif
+#endif
+
 vtkStandardNewMacro(vtkDeepGIStageTimer);
 
 namespace
@@ -20,6 +29,7 @@ double NowSeconds()
 void vtkDeepGIStageTimer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "DumpCallgrindCounts: " << this->DumpCallgrindCounts << "\n";
   for (const Stage& stage : this->Stages)
   {
     os << indent << stage.Name << ": " << stage.Milliseconds << " ms in " << stage.Count
@@ -30,10 +40,7 @@ void vtkDeepGIStageTimer::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 void vtkDeepGIStageTimer::StartStage(const char* stage)
 {
-  // What was queued before belongs to the stage that ran before.
-  glFinish();
-  const double now = NowSeconds();
-  this->AddElapsed(now);
+  this->EndInterval();
   const std::string name = stage ? stage : "";
   int index = 0;
   while (index < this->GetNumberOfStages() && this->Stages[index].Name != name)
@@ -45,7 +52,6 @@ void vtkDeepGIStageTimer::StartStage(const char* stage)
     this->Stages.push_back(Stage{ name });
   }
   this->Running.push_back(index);
-  this->StartSeconds = now;
 }
 
 //------------------------------------------------------------------------------
@@ -55,20 +61,55 @@ void vtkDeepGIStageTimer::StopStage()
   {
     return;
   }
-  glFinish();
-  const double now = NowSeconds();
-  this->AddElapsed(now);
+  this->EndInterval();
   ++this->Stages[this->Running.back()].Count;
   this->Running.pop_back();
-  this->StartSeconds = now;
 }
 
 //------------------------------------------------------------------------------
-void vtkDeepGIStageTimer::AddElapsed(double now)
+void vtkDeepGIStageTimer::EndInterval()
 {
+  // What was queued before belongs to the stage that ran before.
+  glFinish();
+  const double now = NowSeconds();
   if (!this->Running.empty())
   {
     this->Stages[this->Running.back()].Milliseconds += 1000.0 * (now - this->StartSeconds);
+  }
+  this->StartSeconds = now;
+#ifdef VTK_DEEPGI_HAS_CALLGRIND
+  if (this->DumpCallgrindCounts)
+  {
+    CALLGRIND_DUMP_STATS_AT(this->Running.empty()
+        ? GetOutsideStagesLabel()
+        : this->Stages[this->Running.back()].Name.c_str());
+  }
+#endif
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeepGIStageTimer::CanDumpCallgrindCounts()
+{
+#ifdef VTK_DEEPGI_HAS_CALLGRIND
+  return true;
+#else
+  return false;
+#endif
+}
+
+//------------------------------------------------------------------------------
+void vtkDeepGIStageTimer::SetDumpCallgrindCounts(bool dump)
+{
+  if (dump && !CanDumpCallgrindCounts())
+  {
+    vtkErrorMacro("Cannot dump callgrind's counts: this library was built without Valgrind's "
+                  "valgrind/callgrind.h.");
+    return;
+  }
+  if (this->DumpCallgrindCounts != dump)
+  {
+    this->DumpCallgrindCounts = dump;
+    this->Modified();
   }
 }
 

@@ -16,6 +16,13 @@
  * all stages. Times add up over frames until Reset; the stages are listed
  * in the order they first ran.
  *
+ * Under Valgrind's callgrind, DumpCallgrindCounts makes every stage
+ * boundary dump callgrind's counts, labelled with the stage the
+ * instructions since the last boundary belong to (GetOutsideStagesLabel() between
+ * stages): scripts/count-instructions.sh --stages adds them up into
+ * instructions per stage, free of a shared machine's clock noise on a CPU
+ * renderer.
+ *
  * @sa vtkDeepGBufferPass::SetStageTimer
  */
 
@@ -57,6 +64,24 @@ public:
   /// The sum of every stage's milliseconds.
   double GetTotalMilliseconds() const;
 
+  /// The label of the instructions counted while no stage runs.
+  static const char* GetOutsideStagesLabel() { return "outside the stages"; }
+
+  ///@{
+  /**
+   * Whether each stage boundary (after its glFinish) dumps Valgrind
+   * callgrind's counts with CALLGRIND_DUMP_STATS_AT, labelled with the
+   * name of the stage that ran since the last boundary, or GetOutsideStagesLabel().
+   * Off by default; outside Valgrind a dump does nothing. It needs
+   * Valgrind's header when the library is built (CanDumpCallgrindCounts);
+   * without it, turning it on is refused with an error.
+   */
+  void SetDumpCallgrindCounts(bool dump);
+  vtkGetMacro(DumpCallgrindCounts, bool);
+  vtkBooleanMacro(DumpCallgrindCounts, bool);
+  static bool CanDumpCallgrindCounts();
+  ///@}
+
 protected:
   vtkDeepGIStageTimer() = default;
   ~vtkDeepGIStageTimer() override = default;
@@ -74,7 +99,9 @@ private:
   std::vector<Stage> Stages;
   std::vector<int> Running; // innermost last
   double StartSeconds = 0.0;
-  void AddElapsed(double now);
+  bool DumpCallgrindCounts = false;
+  // What ran since the last boundary goes to the running stage.
+  void EndInterval();
 };
 
 #endif
