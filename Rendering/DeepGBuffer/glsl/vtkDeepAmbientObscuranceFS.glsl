@@ -300,9 +300,13 @@ float deepSpiralVisibility(vec3 X, vec3 n, float footprint, float phi, vec2 cent
       }
       vec2 geometry = (j & 1) == 0 ? tapKey.xy : tapKey.zw;
       float dy = geometry.x;
+      // A layer without a surface has none behind it either. Leaving the
+      // loop (not skipping the layer) lets a CPU renderer (Mesa llvmpipe),
+      // which runs both sides of a branch for the 8 pixels it shades
+      // together, skip layer 1 where none of their taps has one.
       if (!(dy > 0.0))
       {
-        continue;
+        break;
       }
       vec3 v = deepPositionFromDistance(tapCenter, size, dy) - X;
       float vv = dot(v, v);

@@ -104,9 +104,16 @@ void main()
   // Alpha: whether the layer has a surface there, so that the box-filtered
   // levels of AverageFarTaps hold (mean of B over the block's surfaces) x
   // (their share of the block).
-  for (int j = 0; j < 2; ++j)
+  gl_FragData[1] = vec4(0.0);
+  // Layer 1 is the second iteration of a loop that leaves it out where it
+  // has no surface: a CPU renderer (Mesa llvmpipe) shades 8 texels in
+  // lockstep and runs both sides of a branch, but stops a loop that none
+  // of them still runs, and most texels have no layer 1.
+  float d1 = deepLayers > 1 ? texelFetch(deepDistance, ivec3(pixel, 1), 0).r : 0.0;
+  int layers = d1 > 0.0 ? 2 : 1;
+  for (int j = 0; j < layers; ++j)
   {
-    float d = j < deepLayers ? texelFetch(deepDistance, ivec3(pixel, j), 0).r : 0.0;
+    float d = j == 0 ? texelFetch(deepDistance, ivec3(pixel, 0), 0).r : d1;
     vec4 result =
       vec4(min(bounceInput(pixel, size, j, d), vec3(deepIrradianceLimit)), d > 0.0 ? 1.0 : 0.0);
     if (j == 0)

@@ -144,8 +144,10 @@ void main()
   int tapPhase = (deepTapPhase + receiver.x + receiver.y) % deepTapStride;
   for (int i = tapPhase; i < taps; i += deepTapStride)
   {
+    // The tap at distance h and angle theta from the centre; one cosine and
+    // sine for both kinds of tap (llvmpipe runs both sides of the branch).
     float h;
-    vec2 tapPosition;
+    float theta;
     float tapRingArea = ringArea; // times h: the tap's screen ring
     // Taps stay at their rings' middle (the paper's spiral) where offsets
     // would cost more than the rings: the first tap, which moved nearer
@@ -159,8 +161,7 @@ void main()
     if (i < deepSamples)
     {
       bool middle = i == 0 || ringWidth <= minTexel || deepDivisor > 1;
-      tapPosition =
-        deepSpiralTap(i, middle ? 0.5 : offset, deepSamples, deepTurns, rp, phi, center, h);
+      deepSpiralTapPolar(i, middle ? 0.5 : offset, deepSamples, deepTurns, rp, phi, h, theta);
     }
     else
     {
@@ -168,11 +169,10 @@ void main()
       int k = i - deepSamples;
       bool middle = outerWidth <= minTexel || deepDivisor > 1;
       h = rp + outerWidth * (float(k) + (middle ? 0.5 : offset));
-      float theta = 2.0 * deepPi * (float(k) + 0.5) / float(deepOuterSamples) + phi;
-      tapPosition = center + h * vec2(cos(theta), sin(theta));
+      theta = 2.0 * deepPi * (float(k) + 0.5) / float(deepOuterSamples) + phi;
       tapRingArea = outerArea;
     }
-    ivec2 tap = ivec2(floor(tapPosition));
+    ivec2 tap = ivec2(floor(center + h * vec2(cos(theta), sin(theta))));
     if (any(lessThan(tap, ivec2(0))) || any(greaterThanEqual(tap, isize)))
     {
       continue;

@@ -58,15 +58,25 @@ float deepSpiralRotation(ivec2 pixel)
     fract(52.9829189 * fract(dot(vec2(pixel), vec2(0.06711056, 0.00583715))));
 }
 
+// Tap i of the spiral in polar form around its centre: h (pixels) and
+// theta (radians), as deepSpiralTap below; a gather that also has taps
+// elsewhere computes one cosine and sine for either kind.
+void deepSpiralTapPolar(int i, float offset, int n, float turns, float rp, float phi, out float h,
+  out float theta)
+{
+  float kappa = (float(i) + offset) / float(n);
+  h = rp * kappa;
+  theta = 2.0 * deepPi * kappa * turns + phi;
+}
+
 // Tap i of N (section 3.4) at `offset` in [0, 1) across its ring:
 // kappa = (i + offset) / N, h = r_p kappa, theta = 2 pi kappa tau + phi; the
 // paper's taps have offset 0.5. Returns the tap point in window pixels and
 // h, its distance from `center` in pixels.
 vec2 deepSpiralTap(int i, float offset, int n, float turns, float rp, float phi, vec2 center, out float h)
 {
-  float kappa = (float(i) + offset) / float(n);
-  h = rp * kappa;
-  float theta = 2.0 * deepPi * kappa * turns + phi;
+  float theta;
+  deepSpiralTapPolar(i, offset, n, turns, rp, phi, h, theta);
   return center + h * vec2(cos(theta), sin(theta));
 }
 
