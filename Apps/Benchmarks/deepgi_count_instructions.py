@@ -73,6 +73,9 @@ def parse_arguments():
 
 def run_under_callgrind():
     """Runs this script with these arguments under callgrind; its exit status."""
+    if not shutil.which("valgrind"):
+        sys.exit("deepgi_count_instructions.py: needs Valgrind (Debian: apt-get install valgrind; "
+                 "scripts/count-instructions.sh installs it)")
     dumps = tempfile.mkdtemp()
     try:
         prefix = os.path.join(dumps, "callgrind.out")
