@@ -18,10 +18,10 @@
  *
  * Under Valgrind's callgrind, DumpCallgrindCounts makes every stage
  * boundary dump callgrind's counts, labelled with the stage the
- * instructions since the last boundary belong to (GetOutsideStagesLabel() between
- * stages): scripts/count-instructions.sh --stages adds them up into
- * instructions per stage, free of a shared machine's clock noise on a CPU
- * renderer.
+ * instructions since the last boundary belong to (GetOutsideStagesLabel()
+ * between stages): scripts/count-instructions.sh --stages adds them up
+ * into instructions per stage, free of a shared machine's clock noise on a
+ * CPU renderer.
  *
  * @sa vtkDeepGBufferPass::SetStageTimer
  */
@@ -71,8 +71,9 @@ public:
   /**
    * Whether each stage boundary (after its glFinish) dumps Valgrind
    * callgrind's counts with CALLGRIND_DUMP_STATS_AT, labelled with the
-   * name of the stage that ran since the last boundary, or GetOutsideStagesLabel().
-   * Off by default; outside Valgrind a dump does nothing. It needs
+   * name of the stage that ran since the last boundary, or
+   * GetOutsideStagesLabel(). Off by default; outside Valgrind a dump does
+   * nothing. It needs
    * Valgrind's header when the library is built (CanDumpCallgrindCounts);
    * without it, turning it on is refused with an error.
    */
