@@ -60,6 +60,10 @@ enum Target
   FILTERED = 2,
   NUMBER_OF_TARGETS = 3
 };
+
+// What the gather, the filter and the temporal filter write where layer 0
+// holds no surface (ScopedBackgroundSkip): AV 1, no distance.
+const float FullVisibility[4] = { 1.0f, 0.0f, 0.0f, 1.0f };
 }
 
 //------------------------------------------------------------------------------
@@ -68,6 +72,10 @@ struct vtkDeepAmbientObscuranceRendererState
 {
   vtkWeakPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkTextureObject> Targets[NUMBER_OF_TARGETS];
+  // Where layer 0 holds a surface (vtkDeepScreenSpace::AllocateCoverage),
+  // written with the key's level 0; null while the G-buffer's
+  // SkipBackgroundTexels is off.
+  vtkSmartPointer<vtkTextureObject> Coverage;
   int Width = 0; // of the G-buffer's layers (frame and guard band)
   int Height = 0;
   int GuardBand = 0;
@@ -185,6 +193,7 @@ struct vtkDeepAmbientObscuranceRendererState
     {
       bytes += vtkDeepScreenSpace::TextureBytes(t);
     }
+    bytes += vtkDeepScreenSpace::TextureBytes(this->Coverage);
     for (int m = 0; m < this->MipLevels; ++m) // RGBA32F, two layers per slice
     {
       bytes += 16LL * std::max(1, this->MipWidth >> m) * std::max(1, this->MipHeight >> m) *
@@ -199,12 +208,9 @@ struct vtkDeepAmbientObscuranceRendererState
     this->ResetHistory(w);
     for (auto& t : this->Targets)
     {
-      if (t)
-      {
-        t->ReleaseGraphicsResources(w);
-        t = nullptr;
-      }
+      vtkDeepScreenSpace::ReleaseTarget(t, w);
     }
+    vtkDeepScreenSpace::ReleaseTarget(this->Coverage, w);
     this->Width = this->Height = 0;
     this->HasFrame = false;
   }
@@ -619,6 +625,15 @@ bool vtkDeepAmbientObscurancePass::PrepareTargets(
       return false;
     }
   }
+  if (!frame.SkipBackground)
+  {
+    vtkDeepScreenSpace::ReleaseTarget(state.Coverage, window);
+  }
+  else if (!vtkDeepScreenSpace::AllocateCoverage(state.Coverage, window, width, height))
+  {
+    vtkWarningMacro("Could not allocate the surface coverage; every texel is shaded.");
+    vtkDeepScreenSpace::ReleaseTarget(state.Coverage, window);
+  }
   state.Width = width;
   state.Height = height;
   state.GuardBand = frame.GuardBand;
@@ -679,7 +694,9 @@ void vtkDeepAmbientObscurancePass::ComputeRawVisibility(
     "deepThickness", static_cast<float>(this->GBufferPass->GetEffectiveMinimumSeparation()));
   program->SetUniformf("deepMipThreshold", static_cast<float>(this->MipThreshold));
   program->SetUniformf("deepRotationOffset", static_cast<float>(state.RotationOffset));
-  gather->Render();
+  vtkDeepScreenSpace::ScopedBackgroundSkip skip(
+    ostate, in.Framebuffer->GetFBOIndex(), state.Coverage);
+  skip.Draw(gather, FullVisibility);
 }
 
 //------------------------------------------------------------------------------
@@ -691,6 +708,8 @@ void vtkDeepAmbientObscurancePass::FilterVisibility(
   vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "obscurance: blur");
   const int passes[2][3] = { { RAW, BLUR_TEMP, 0 }, { BLUR_TEMP, FILTERED, 1 } };
   vtkShaderProgram* program = in.BlurQuad->Program;
+  vtkDeepScreenSpace::ScopedBackgroundSkip skip(
+    frame.GL, in.Framebuffer->GetFBOIndex(), state.Coverage);
   for (const auto& pass : passes)
   {
     in.Framebuffer->AddColorAttachment(0, state.Targets[pass[1]]);
@@ -705,7 +724,7 @@ void vtkDeepAmbientObscurancePass::FilterVisibility(
     program->SetUniform2i("deepAxis", axis);
     program->SetUniformi("deepBlurRadius", this->BlurRadius);
     program->SetUniformf("deepPlaneTolerance", static_cast<float>(this->BlurPlaneTolerance));
-    in.BlurQuad->Render();
+    skip.Draw(in.BlurQuad, FullVisibility);
     input->Deactivate();
   }
 }
@@ -750,7 +769,9 @@ void vtkDeepAmbientObscurancePass::AccumulateVisibility(
   program->SetUniformf("deepAlpha", static_cast<float>(this->TemporalAlpha));
   program->SetUniformi("deepHasHistory", state.HistoryValid ? 1 : 0);
   program->SetUniformf("deepTolerance", static_cast<float>(TEMPORAL_DISTANCE_TOLERANCE));
-  in.TemporalQuad->Render();
+  vtkDeepScreenSpace::ScopedBackgroundSkip skip(
+    frame.GL, in.Framebuffer->GetFBOIndex(), state.Coverage);
+  skip.Draw(in.TemporalQuad, FullVisibility);
   history->Deactivate();
   input->Deactivate();
   state.HistoryCurrent = next;
@@ -860,6 +881,9 @@ bool vtkDeepAmbientObscurancePass::BuildKeyPyramid(vtkDeepAmbientObscuranceRende
     {
       glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, state.MipTexture, m, slice);
       program->SetUniformi(m == 0 ? "deepFirstLayer" : "deepLayer", m == 0 ? 2 * slice : slice);
+      // Layer 0's key also marks the surface coverage.
+      vtkDeepScreenSpace::ScopedCoverageWrite coverage(
+        ostate, state.MipFramebuffer, m == 0 && slice == 0 ? state.Coverage.Get() : nullptr);
       quad->Render();
     }
   }

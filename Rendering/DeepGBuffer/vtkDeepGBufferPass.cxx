@@ -453,6 +453,7 @@ void vtkDeepGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AutomaticMinimumSeparation: " << this->AutomaticMinimumSeparation << "\n";
   os << indent << "AutomaticSeparationFraction: " << this->AutomaticSeparationFraction << "\n";
   os << indent << "DeepLayerBackfaceCulling: " << this->DeepLayerBackfaceCulling << "\n";
+  os << indent << "SkipBackgroundTexels: " << this->SkipBackgroundTexels << "\n";
   os << indent << "WriteReflectivity: " << this->WriteReflectivity << "\n";
   os << indent << "GuardBand: " << this->GuardBand << "\n";
   os << indent << "EffectiveGuardBand: " << this->EffectiveGuardBand << " pixels\n";

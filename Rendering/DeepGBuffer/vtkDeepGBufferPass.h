@@ -250,6 +250,25 @@ public:
 
   ///@{
   /**
+   * When on, the effects that read these layers (obscurance, radiosity)
+   * shade only the texels where layer 0 holds a surface in their
+   * full-screen stages: an early depth test against a coverage texture
+   * their geometry key writes (4 bytes per texel) skips the background,
+   * whose texels get the value the stage writes there (the same pixels as
+   * with it off). On a CPU renderer this takes those stages' cost down
+   * roughly in proportion to the frame's background; off is for
+   * comparisons.
+   *
+   * @range on/off
+   * @default on
+   */
+  vtkSetMacro(SkipBackgroundTexels, bool);
+  vtkGetMacro(SkipBackgroundTexels, bool);
+  vtkBooleanMacro(SkipBackgroundTexels, bool);
+  ///@}
+
+  ///@{
+  /**
    * Guard band (paper section 3.5): the layers extend beyond the frame by
    * round(GuardBand x viewport height) pixels on each side, rounded up to a
    * multiple of GUARD_BAND_ALIGNMENT so that the frame keeps its alignment
@@ -602,6 +621,7 @@ protected:
   bool AutomaticMinimumSeparation = true;
   double AutomaticSeparationFraction = 0.015;
   bool DeepLayerBackfaceCulling = true;
+  bool SkipBackgroundTexels = true;
   bool WriteReflectivity = false;
   double GuardBand = 0.0;
   int DisplayQuantity = RADIANCE;

@@ -66,6 +66,11 @@ enum Target
   NUMBER_OF_TARGETS = 5
 };
 
+// What the gather, the filters, the temporal filter and the upsampling
+// write where layer 0 holds no surface (ScopedBackgroundSkip): no
+// irradiance, no history.
+const float NoIrradiance[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+
 // The G-buffer quantities the passes read.
 const int GBufferQuantities[] = { vtkDeepGBufferPass::DEPTH, vtkDeepGBufferPass::NORMAL,
   vtkDeepGBufferPass::RADIANCE, vtkDeepGBufferPass::AMBIENT, vtkDeepGBufferPass::ALBEDO };
@@ -124,6 +129,10 @@ struct vtkDeepRadiosityRendererState
   // Keys[LAYER_KEY] at the layers' size; Keys[GRID_KEY] at the grid's with
   // a divisor D > 1, otherwise released (the grid is the layers').
   vtkSmartPointer<vtkTextureObject> Keys[NUMBER_OF_KEYS];
+  // Coverage[key]: where layer 0 holds a surface on the key's texels
+  // (vtkDeepScreenSpace::AllocateCoverage), written with the key; null
+  // while the G-buffer's SkipBackgroundTexels is off.
+  vtkSmartPointer<vtkTextureObject> Coverage[NUMBER_OF_KEYS];
   // History[i][j]: (E_t, distance) of layer j; History[HistoryCurrent] is
   // the last frame's.
   vtkSmartPointer<vtkTextureObject> History[2][Layers];
@@ -198,9 +207,10 @@ struct vtkDeepRadiosityRendererState
         bytes += vtkDeepScreenSpace::TextureBytes(t);
       }
     }
-    for (const auto& t : this->Keys)
+    for (int key = 0; key < NUMBER_OF_KEYS; ++key)
     {
-      bytes += vtkDeepScreenSpace::TextureBytes(t);
+      bytes += vtkDeepScreenSpace::TextureBytes(this->Keys[key]) +
+        vtkDeepScreenSpace::TextureBytes(this->Coverage[key]);
     }
     return bytes;
   }
@@ -221,9 +231,10 @@ struct vtkDeepRadiosityRendererState
         ReleaseTarget(t, w);
       }
     }
-    for (auto& t : this->Keys)
+    for (int key = 0; key < NUMBER_OF_KEYS; ++key)
     {
-      ReleaseTarget(t, w);
+      ReleaseTarget(this->Keys[key], w);
+      ReleaseTarget(this->Coverage[key], w);
     }
     this->ReleaseReduced();
     this->ResetHistory();
@@ -275,6 +286,12 @@ struct vtkDeepRadiosityRendererState
   vtkTextureObject* GridKey()
   {
     return this->Divisor > 1 ? this->Keys[GRID_KEY] : this->Keys[LAYER_KEY];
+  }
+
+  // The coverage of the grid's texels (null: none).
+  vtkTextureObject* GridCoverage()
+  {
+    return this->Divisor > 1 ? this->Coverage[GRID_KEY] : this->Coverage[LAYER_KEY];
   }
 
   // L of a layer: INDIRECT, except layer 1 on a reduced grid, which stays
@@ -951,6 +968,7 @@ bool vtkDeepRadiosityPass::AllocateTargets(
   {
     ReleaseTarget(state.Keys[GRID_KEY], window);
   }
+  this->AllocateCoverage(frame, state);
   return allocated;
 }
 
@@ -996,6 +1014,28 @@ bool vtkDeepRadiosityPass::AllocateReduced(
   }
   std::copy(frame.Size, frame.Size + 2, state.ReducedSize);
   return true;
+}
+
+//------------------------------------------------------------------------------
+// The coverage of each key (with the G-buffer's SkipBackgroundTexels on):
+// without it every texel is shaded, so a failed allocation only warns.
+void vtkDeepRadiosityPass::AllocateCoverage(
+  vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
+{
+  for (int key = 0; key < NUMBER_OF_KEYS; ++key)
+  {
+    vtkSmartPointer<vtkTextureObject>& coverage = state.Coverage[key];
+    const int* size = key == LAYER_KEY ? frame.LayerSize : frame.Size;
+    if (!frame.SkipBackground || !state.Keys[key])
+    {
+      ReleaseTarget(coverage, frame.Window);
+    }
+    else if (!vtkDeepScreenSpace::AllocateCoverage(coverage, frame.Window, size[0], size[1]))
+    {
+      vtkWarningMacro("Could not allocate the surface coverage; every texel is shaded.");
+      ReleaseTarget(coverage, frame.Window);
+    }
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -1090,6 +1130,8 @@ void vtkDeepRadiosityPass::BuildGeometryKeys(
     program->SetUniformi("deepFacing", units[vtkDeepGBufferPass::ALBEDO]);
     program->SetUniformi("deepWithFacing", 0); // the radiosity does not read it
     program->SetUniform2i("deepKeySize", size);
+    vtkDeepScreenSpace::ScopedCoverageWrite coverage(
+      frame.GL, in.Framebuffer->GetFBOIndex(), state.Coverage[key]);
     in.KeyQuad->Render();
   }
   in.Framebuffer->RemoveColorAttachment(0);
@@ -1207,7 +1249,9 @@ void vtkDeepRadiosityPass::Gather(vtkGatherFrame& frame, vtkDeepRadiosityRendere
   program->SetUniformf("deepRotationOffset", static_cast<float>(frame.RotationOffset));
   program->SetUniformi("deepTapStride", frame.TapStride);
   program->SetUniformi("deepTapPhase", frame.TapPhase);
-  in.GatherQuad->Render();
+  vtkDeepScreenSpace::ScopedBackgroundSkip skip(
+    frame.GL, in.Framebuffer->GetFBOIndex(), state.GridCoverage());
+  skip.Draw(in.GatherQuad, NoIrradiance);
   UnbindLayerTextures(state.Targets[BOUNCE]);
   state.Keys[LAYER_KEY]->Deactivate();
 }
@@ -1223,6 +1267,8 @@ void vtkDeepRadiosityPass::FilterIrradiance(
   vtkShaderProgram* program = in.BlurQuad->Program;
   vtkTextureObject* key = state.GridKey();
   key->Activate();
+  vtkDeepScreenSpace::ScopedBackgroundSkip skip(
+    frame.GL, in.Framebuffer->GetFBOIndex(), state.GridCoverage());
   for (const auto& pass : passes)
   {
     AttachLayerTextures(in.Framebuffer, state.Targets[pass[1]]);
@@ -1234,7 +1280,7 @@ void vtkDeepRadiosityPass::FilterIrradiance(
     program->SetUniform2i("deepAxis", axis);
     program->SetUniformi("deepBlurRadius", this->BlurRadius);
     program->SetUniformf("deepPlaneTolerance", static_cast<float>(this->BlurPlaneTolerance));
-    in.BlurQuad->Render();
+    skip.Draw(in.BlurQuad, NoIrradiance);
     UnbindLayerTextures(state.Targets[pass[0]]);
   }
   key->Deactivate();
@@ -1367,7 +1413,9 @@ void vtkDeepRadiosityPass::AccumulateIrradiance(
   program->SetUniformf("deepExtrapolation", static_cast<float>(state.Extrapolation));
   this->SetOutgoingUniforms(program);
   program->SetUniformf("deepIrradianceLimit", static_cast<float>(IRRADIANCE_LIMIT));
-  in.TemporalQuad->Render();
+  vtkDeepScreenSpace::ScopedBackgroundSkip skip(
+    frame.GL, in.Framebuffer->GetFBOIndex(), state.GridCoverage());
+  skip.Draw(in.TemporalQuad, NoIrradiance);
   key->Deactivate();
   UnbindLayerTextures(state.History[frame.Previous]);
   UnbindLayerTextures(state.Targets[FILTERED]);
@@ -1416,7 +1464,9 @@ void vtkDeepRadiosityPass::UpsampleIrradiance(
   program->SetUniform2i("deepReducedMin", frame.Region);
   program->SetUniform2i("deepReducedMax", frame.Region + 2);
   this->SetOutgoingUniforms(program);
-  in.UpsampleQuad->Render();
+  vtkDeepScreenSpace::ScopedBackgroundSkip skip(
+    ostate, in.Framebuffer->GetFBOIndex(), state.Coverage[LAYER_KEY]);
+  skip.Draw(in.UpsampleQuad, NoIrradiance);
   reducedIndirect->Deactivate();
   previousHistory->Deactivate();
   history->Deactivate();

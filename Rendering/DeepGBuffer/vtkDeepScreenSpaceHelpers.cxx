@@ -225,6 +225,101 @@ ScopedStageState::~ScopedStageState()
 }
 
 //------------------------------------------------------------------------------
+bool AllocateCoverage(
+  vtkSmartPointer<vtkTextureObject>& coverage, vtkOpenGLRenderWindow* window, int width, int height)
+{
+  if (coverage && coverage->GetWidth() == static_cast<unsigned int>(width) &&
+    coverage->GetHeight() == static_cast<unsigned int>(height))
+  {
+    return true;
+  }
+  if (!coverage)
+  {
+    coverage = vtkSmartPointer<vtkTextureObject>::New();
+    coverage->SetContext(window);
+    coverage->SetMinificationFilter(vtkTextureObject::Nearest);
+    coverage->SetMagnificationFilter(vtkTextureObject::Nearest);
+    return coverage->AllocateDepth(width, height, vtkTextureObject::Float32);
+  }
+  coverage->Resize(width, height);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+ScopedCoverageAttachment::ScopedCoverageAttachment(
+  vtkOpenGLState* state, unsigned int framebuffer, vtkTextureObject* coverage)
+  : State(state)
+  , Framebuffer(framebuffer)
+  , Attached(coverage && coverage->GetHandle() && framebuffer)
+  , DepthTest(state, GL_DEPTH_TEST)
+  , DepthFunc(state)
+  , DepthMask(state)
+{
+  if (this->Attached)
+  {
+    glFramebufferTexture2D(
+      GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, coverage->GetHandle(), 0);
+    state->vtkglEnable(GL_DEPTH_TEST);
+  }
+}
+
+ScopedCoverageAttachment::~ScopedCoverageAttachment()
+{
+  if (this->Attached)
+  {
+    this->State->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, this->Framebuffer);
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
+  }
+}
+
+//------------------------------------------------------------------------------
+ScopedCoverageWrite::ScopedCoverageWrite(
+  vtkOpenGLState* state, unsigned int framebuffer, vtkTextureObject* coverage)
+  : ScopedCoverageAttachment(state, framebuffer, coverage)
+{
+  if (this->Attached)
+  {
+    state->vtkglDepthFunc(GL_ALWAYS);
+    state->vtkglDepthMask(GL_TRUE);
+  }
+}
+
+//------------------------------------------------------------------------------
+ScopedBackgroundSkip::ScopedBackgroundSkip(
+  vtkOpenGLState* state, unsigned int framebuffer, vtkTextureObject* coverage)
+  : ScopedCoverageAttachment(state, framebuffer, coverage)
+  , ClearColor(state)
+{
+  if (this->Attached)
+  {
+    // Every quad at depth 1: GL_GREATER passes where the coverage is 0.
+    // vtkOpenGLState does not track the depth range: saved and restored here.
+    glGetDoublev(GL_DEPTH_RANGE, this->DepthRange);
+    glDepthRange(1.0, 1.0);
+    state->vtkglDepthFunc(GL_GREATER);
+    state->vtkglDepthMask(GL_FALSE);
+  }
+}
+
+ScopedBackgroundSkip::~ScopedBackgroundSkip()
+{
+  if (this->Attached)
+  {
+    glDepthRange(this->DepthRange[0], this->DepthRange[1]);
+  }
+}
+
+void ScopedBackgroundSkip::Draw(vtkOpenGLQuadHelper* quad, const float background[4])
+{
+  if (this->Attached)
+  {
+    this->State->vtkglClearColor(background[0], background[1], background[2], background[3]);
+    this->State->vtkglClear(GL_COLOR_BUFFER_BIT);
+  }
+  quad->Render();
+}
+
+//------------------------------------------------------------------------------
 ScopedCompositeState::ScopedCompositeState(
   vtkOpenGLState* state, unsigned int sourceFactor, unsigned int destinationFactor)
   : Blend(state, GL_BLEND)

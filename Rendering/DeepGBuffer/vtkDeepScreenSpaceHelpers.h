@@ -152,6 +152,78 @@ private:
   vtkOpenGLState::ScopedglEnableDisable DepthTest;
 };
 
+/**
+ * Surface coverage: where layer 0 holds a surface, as a depth texture that
+ * lets an effect's full-screen stages skip the rest.
+ *
+ * A CPU renderer (Mesa llvmpipe) shades 8 texels in lockstep and runs
+ * every branch of a shader for all of them, so a texel that only writes
+ * the background value costs nearly what a surface texel costs; what it
+ * does skip is a block whose texels all fail an early depth test. The
+ * effect's geometry key draw (vtkDeepGeometryKeyFS, which writes depth 0
+ * where layer 0 holds a surface and 1 where it holds none) fills the
+ * coverage under ScopedCoverageWrite; its later stages draw under
+ * ScopedBackgroundSkip. A GPU's early and hierarchical depth tests skip
+ * the same texels.
+ *
+ * The coverage is not the G-buffer's own depth: a surface can lie at
+ * window depth 1 (the far plane of a very small near/far ratio), where
+ * only the distance tells it from the background.
+ */
+bool AllocateCoverage(vtkSmartPointer<vtkTextureObject>& coverage, vtkOpenGLRenderWindow* window,
+  int width, int height);
+
+/// Attaches a coverage texture (null: none) as the depth of `framebuffer`,
+/// the draw framebuffer bound now, with the depth state a scope needs;
+/// detaches it and restores the state when it goes out of scope.
+class ScopedCoverageAttachment
+{
+protected:
+  ScopedCoverageAttachment(
+    vtkOpenGLState* state, unsigned int framebuffer, vtkTextureObject* coverage);
+  ~ScopedCoverageAttachment();
+  ScopedCoverageAttachment(const ScopedCoverageAttachment&) = delete;
+  void operator=(const ScopedCoverageAttachment&) = delete;
+
+  vtkOpenGLState* State;
+  unsigned int Framebuffer;
+  bool Attached;
+  vtkOpenGLState::ScopedglEnableDisable DepthTest;
+  vtkOpenGLState::ScopedglDepthFunc DepthFunc;
+  vtkOpenGLState::ScopedglDepthMask DepthMask;
+};
+
+/// The geometry key's draw in scope writes `coverage` (null: nothing):
+/// its depth, through GL_ALWAYS.
+class ScopedCoverageWrite : private ScopedCoverageAttachment
+{
+public:
+  ScopedCoverageWrite(vtkOpenGLState* state, unsigned int framebuffer, vtkTextureObject* coverage);
+};
+
+/**
+ * The full-screen stages drawn with Draw in scope shade only the texels
+ * `coverage` marks as surface (null: every texel): each quad is drawn at
+ * depth 1 with GL_GREATER against it, read-only. Draw first clears the
+ * stage's targets, within the scissor, to the value its shader writes
+ * where layer 0 holds no surface, so they hold what they would hold with
+ * every texel shaded (the same pixels). The colour attachments must have
+ * the coverage's size.
+ */
+class ScopedBackgroundSkip : private ScopedCoverageAttachment
+{
+public:
+  ScopedBackgroundSkip(vtkOpenGLState* state, unsigned int framebuffer, vtkTextureObject* coverage);
+  ~ScopedBackgroundSkip();
+
+  /// Clears the draw buffers to `background`, then draws `quad`.
+  void Draw(vtkOpenGLQuadHelper* quad, const float background[4]);
+
+private:
+  double DepthRange[2] = { 0.0, 1.0 };
+  vtkOpenGLState::ScopedglClearColor ClearColor;
+};
+
 /// Times the enclosing block as `stage` on `timer` (null: nothing timed,
 /// no glFinish), see vtkDeepGIStageTimer.
 class ScopedStageTime

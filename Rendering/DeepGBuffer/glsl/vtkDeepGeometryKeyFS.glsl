@@ -51,4 +51,8 @@ void main()
     }
   }
   gl_FragData[0] = key;
+  // The surface coverage, where a depth texture is attached to receive it
+  // (vtkDeepScreenSpace::ScopedCoverageWrite): 0 where layer f holds a
+  // surface, 1 where it holds none.
+  gl_FragDepth = key.x > 0.0 ? 0.0 : 1.0;
 }

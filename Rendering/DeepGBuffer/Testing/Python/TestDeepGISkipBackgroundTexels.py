@@ -1,0 +1,165 @@
+"""vtkDeepGBufferPass::SkipBackgroundTexels gives the same pixels as
+shading every texel.
+
+A sphere on a floor, actors with VTK's default properties, with a third of
+the frame background, rendered by each GI preset, the radiosity and the
+obscurance passes with the skip on and off. The camera turns 12 degrees
+per frame, so that texels change between surface and background and the
+temporal filters reproject history across silhouettes: a stage that left
+stale values in skipped texels, or wrote other values there than its
+shader writes for the background, would change the image or a capture.
+
+For each method the final image and every array of the irradiance and
+ambient visibility captures must be equal, bit for bit. Exits non-zero on
+failure.
+"""
+import sys
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonDataModel import vtkImageData
+from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
+                                         vtkWindowToImageFilter)
+
+import vtkdeepgi
+
+WIDTH, HEIGHT = 160, 120
+FRAMES = 4
+DEGREES_PER_FRAME = 12.0
+MINIMUM_BACKGROUND = 0.2  # of the layers' texels, so that skipping matters
+
+
+def add_actor(renderer, source):
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(source.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    renderer.AddActor(actor)
+
+
+def scene():
+    factory = vtkdeepgi.vtkDeepGIRenderWindowFactory
+    window = factory.NewRenderWindow(factory.BACKEND_AUTO)
+    window.SetMultiSamples(0)
+    window.SetSize(WIDTH, HEIGHT)
+    renderer = vtkRenderer()
+    window.AddRenderer(renderer)
+    sphere = vtkSphereSource()
+    sphere.SetThetaResolution(48)
+    sphere.SetPhiResolution(24)
+    add_actor(renderer, sphere)
+    floor = vtkPlaneSource()
+    floor.SetOrigin(-1.5, -0.5, 1.5)
+    floor.SetPoint1(1.5, -0.5, 1.5)
+    floor.SetPoint2(-1.5, -0.5, -1.5)
+    add_actor(renderer, floor)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(0.0, 1.2, 3.5)
+    camera.SetFocalPoint(0.0, -0.2, 0.0)
+    renderer.ResetCameraClippingRange()
+    return window, renderer
+
+
+def grab(window):
+    g = vtkWindowToImageFilter()
+    g.SetInput(window)
+    g.ReadFrontBufferOff()
+    g.Update()
+    return vtk_to_numpy(g.GetOutput().GetPointData().GetScalars()).copy()
+
+
+def capture_arrays(capture, renderer, prefix, out):
+    image = vtkImageData()
+    if not capture(image, renderer):
+        out[prefix] = None
+        return
+    data = image.GetPointData()
+    for i in range(data.GetNumberOfArrays()):
+        out[prefix + data.GetArrayName(i)] = vtk_to_numpy(data.GetArray(i)).copy()
+
+
+def background_fraction(gbuffer, renderer):
+    layers = vtkImageData()
+    if not gbuffer.CaptureLayers(layers, renderer):
+        return 0.0
+    return float(np.mean(vtk_to_numpy(layers.GetPointData().GetArray("Depth_0")) <= 0.0))
+
+
+def render(make, skip):
+    """The image and captures after FRAMES frames; the layers' background fraction."""
+    window, renderer = scene()
+    effect = make()
+    effect.GetGBufferPass().SetSkipBackgroundTexels(skip)
+    renderer.SetPass(effect)
+    camera = renderer.GetActiveCamera()
+    for _ in range(FRAMES):
+        camera.Azimuth(DEGREES_PER_FRAME)
+        renderer.ResetCameraClippingRange()
+        window.Render()
+    out = {"image": grab(window)}
+    radiosity = obscurance = None
+    if isinstance(effect, vtkdeepgi.vtkDeepGIPass):
+        radiosity, obscurance = effect.GetRadiosityPass(), effect.GetAmbientObscurancePass()
+    elif isinstance(effect, vtkdeepgi.vtkDeepRadiosityPass):
+        radiosity = effect
+    else:
+        obscurance = effect
+    if radiosity:
+        capture_arrays(radiosity.CaptureIrradiance, renderer, "irradiance ", out)
+    if obscurance:
+        capture_arrays(obscurance.CaptureAmbientVisibility, renderer, "visibility ", out)
+    fraction = background_fraction(effect.GetGBufferPass(), renderer)
+    renderer.SetPass(None)
+    effect.ReleaseGraphicsResources(window)
+    return out, fraction
+
+
+def preset(name):
+    def make():
+        gi = vtkdeepgi.vtkDeepGIPass()
+        gi.SetPreset(getattr(vtkdeepgi.vtkDeepGIPass, name))
+        return gi
+    return make
+
+
+METHODS = {
+    "HIGH_PERFORMANCE": preset("HIGH_PERFORMANCE"),
+    "BALANCED": preset("BALANCED"),
+    "HIGH_QUALITY": preset("HIGH_QUALITY"),
+    "vtkDeepRadiosityPass": vtkdeepgi.vtkDeepRadiosityPass,
+    "vtkDeepAmbientObscurancePass": vtkdeepgi.vtkDeepAmbientObscurancePass,
+}
+
+
+def compare(name, skipped, shaded, failures):
+    if set(skipped) != set(shaded):
+        failures.append("%s: the captures differ in their arrays: %s"
+                        % (name, sorted(set(skipped) ^ set(shaded))))
+        return
+    for key in sorted(shaded):
+        a, b = skipped[key], shaded[key]
+        if a is None or b is None:
+            failures.append("%s: %s could not be captured" % (name, key))
+        elif a.shape != b.shape or not np.array_equal(a, b):
+            differing = np.count_nonzero(a != b) if a.shape == b.shape else "all"
+            failures.append("%s: %s differs with the skip on (%s values)" % (name, key, differing))
+
+
+def main():
+    failures = []
+    for name, make in METHODS.items():
+        skipped, fraction = render(make, True)
+        shaded, _ = render(make, False)
+        print("%s: %d arrays compared, %.2f of the layers background"
+              % (name, len(shaded), fraction))
+        if fraction < MINIMUM_BACKGROUND:
+            failures.append("%s: only %.2f of the layers is background" % (name, fraction))
+        compare(name, skipped, shaded, failures)
+    for f in failures:
+        print("FAIL:", f)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
