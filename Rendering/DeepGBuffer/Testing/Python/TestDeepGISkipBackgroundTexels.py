@@ -8,6 +8,7 @@ per frame, so that texels change between surface and background and the
 temporal filters reproject history across silhouettes: a stage that left
 stale values in skipped texels, or wrote other values there than its
 shader writes for the background, would change the image or a capture.
+The window is resized before the last frames.
 
 For each method the final image and every array of the irradiance and
 ambient visibility captures must be equal, bit for bit. Exits non-zero on
@@ -25,6 +26,7 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRendere
 import vtkdeepgi
 
 WIDTH, HEIGHT = 160, 120
+RESIZED = 200, 150  # the last frames' size: the coverage follows a resize
 FRAMES = 4
 DEGREES_PER_FRAME = 12.0
 MINIMUM_BACKGROUND = 0.2  # of the layers' texels, so that skipping matters
@@ -93,7 +95,9 @@ def render(make, skip):
     effect.GetGBufferPass().SetSkipBackgroundTexels(skip)
     renderer.SetPass(effect)
     camera = renderer.GetActiveCamera()
-    for _ in range(FRAMES):
+    for frame in range(FRAMES):
+        if frame == FRAMES - 2:
+            window.SetSize(*RESIZED)
         camera.Azimuth(DEGREES_PER_FRAME)
         renderer.ResetCameraClippingRange()
         window.Render()
