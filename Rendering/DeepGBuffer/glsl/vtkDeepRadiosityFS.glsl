@@ -245,23 +245,22 @@ void main()
       float bestOmega = 0.0; // SOLID_ANGLE: dOmega_i of the best candidate
       for (int k = 0; k < candidates; ++k)
       {
+        // Every candidate's terms are computed and its tests folded into
+        // one condition, without a `continue`: with one in this loop the
+        // gather counted 2.4 times the instructions on a CPU renderer
+        // (Mesa llvmpipe, BALANCED, a bunny on a floor, 320 x 240: 481
+        // against 203 million, the same pixels).
         vec3 v = Y[k] - X[j];
         float vv = dot(v, v);
-        if (!present[k] || !(vv < r2) || !(vv > 0.0))
-        {
-          continue;
-        }
         vec3 w = v * inversesqrt(vv);
         float cosX = dot(w, nX[j]);
         float cosY = dot(w, nY[k]);
-        // Equation 5.
-        if (!(cosX > deepCosineEpsilon) || (deepNormalTest != 0 && !(cosY < -deepCosineEpsilon)))
-        {
-          continue;
-        }
         vec3 c = B[k] * cosX;
         float score = dot(c, c) + 1.0;
-        if (score > bestScore)
+        // Equation 5.
+        bool passes = present[k] && vv < r2 && vv > 0.0 && cosX > deepCosineEpsilon &&
+          (deepNormalTest == 0 || cosY < -deepCosineEpsilon);
+        if (passes && score > bestScore)
         {
           bestScore = score;
           best = c;
