@@ -21,20 +21,16 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.vtkCommonCore import VTK_DOUBLE, vtkCommand
 from vtkmodules.vtkCommonDataModel import vtkImageData
-from vtkmodules.vtkRenderingCore import vtkRenderer, vtkWindowToImageFilter
 
+import deepgi_testing
 import vtkdeepgi
+from deepgi_testing import new_window
 
 WIDTH, HEIGHT = 200, 150
 
 
 def scene():
-    factory = vtkdeepgi.vtkDeepGIRenderWindowFactory
-    window = factory.NewRenderWindow(factory.BACKEND_AUTO)
-    window.SetMultiSamples(0)
-    window.SetSize(WIDTH, HEIGHT)
-    renderer = vtkRenderer()
-    window.AddRenderer(renderer)
+    window, renderer = new_window(WIDTH, HEIGHT)
     demo = vtkdeepgi.vtkDeepGIDemoScene()
     demo.SetTargetNumberOfTriangles(10000)
     demo.Populate(renderer)
@@ -44,11 +40,7 @@ def scene():
 
 
 def grab(window):
-    g = vtkWindowToImageFilter()
-    g.SetInput(window)
-    g.ReadFrontBufferOff()
-    g.Update()
-    return vtk_to_numpy(g.GetOutput().GetPointData().GetScalars()).astype(float)
+    return deepgi_testing.grab(window).astype(float)
 
 
 def main():

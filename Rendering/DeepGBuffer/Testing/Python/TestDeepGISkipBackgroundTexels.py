@@ -20,10 +20,10 @@ import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
-                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
 
 import vtkdeepgi
+from deepgi_testing import grab, new_window
 
 WIDTH, HEIGHT = 160, 120
 RESIZED = 200, 150  # the last frames' size: the coverage follows a resize
@@ -41,12 +41,7 @@ def add_actor(renderer, source):
 
 
 def scene():
-    factory = vtkdeepgi.vtkDeepGIRenderWindowFactory
-    window = factory.NewRenderWindow(factory.BACKEND_AUTO)
-    window.SetMultiSamples(0)
-    window.SetSize(WIDTH, HEIGHT)
-    renderer = vtkRenderer()
-    window.AddRenderer(renderer)
+    window, renderer = new_window(WIDTH, HEIGHT)
     sphere = vtkSphereSource()
     sphere.SetThetaResolution(48)
     sphere.SetPhiResolution(24)
@@ -61,14 +56,6 @@ def scene():
     camera.SetFocalPoint(0.0, -0.2, 0.0)
     renderer.ResetCameraClippingRange()
     return window, renderer
-
-
-def grab(window):
-    g = vtkWindowToImageFilter()
-    g.SetInput(window)
-    g.ReadFrontBufferOff()
-    g.Update()
-    return vtk_to_numpy(g.GetOutput().GetPointData().GetScalars()).copy()
 
 
 def capture_arrays(capture, renderer, prefix, out):

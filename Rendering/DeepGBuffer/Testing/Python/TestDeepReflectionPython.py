@@ -19,9 +19,10 @@ import sys
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkImageData
-from vtkmodules.vtkRenderingCore import vtkRenderer, vtkWindowToImageFilter
+from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 
 import vtkdeepgi
+from deepgi_testing import new_window
 
 WIDTH, HEIGHT = 256, 192
 
@@ -31,12 +32,7 @@ def array(image, name):
 
 
 def render(make_pass, mirror):
-    factory = vtkdeepgi.vtkDeepGIRenderWindowFactory
-    window = factory.NewRenderWindow(factory.BACKEND_AUTO)
-    window.SetMultiSamples(0)
-    window.SetSize(WIDTH, HEIGHT)
-    renderer = vtkRenderer()
-    window.AddRenderer(renderer)
+    window, renderer = new_window(WIDTH, HEIGHT)
     scene = vtkdeepgi.vtkDeepGIDemoScene()
     scene.SetTargetNumberOfTriangles(10000)
     scene.Populate(renderer)
