@@ -62,7 +62,7 @@ run() {
   bash "$repo/scripts/with-display.sh" ctest --test-dir "$build" --output-on-failure \
     -j"$jobs" --timeout 1800 "$@" || status=1
 }
-python_tests="Python|python|getting-started|deepgi-install$|benchmark-frame|benchmark-image|parameters-defaults"
+python_tests="Python|python|getting-started|deepgi-install$|benchmark-frame|benchmark-image|benchmark-camera|parameters-defaults"
 unloaded_driver="EGL|Factory|one-line-recipe"
 ASAN_OPTIONS=detect_leaks=1:intercept_tls_get_addr=0 LSAN_OPTIONS="suppressions=$suppressions" \
   run -E "$unloaded_driver|$python_tests|find-package|install|paraview|count-instructions"
