@@ -72,7 +72,7 @@ struct vtkDeepAmbientObscuranceRendererState
 {
   vtkWeakPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkTextureObject> Targets[NUMBER_OF_TARGETS];
-  // Where layer 0 holds a surface (vtkDeepScreenSpace::AllocateCoverage),
+  // Where layer 0 holds a surface (vtkDeepScreenSpace::ReadyCoverage),
   // written with the key's level 0; null while the G-buffer's
   // SkipBackgroundTexels is off.
   vtkSmartPointer<vtkTextureObject> Coverage;
@@ -625,15 +625,8 @@ bool vtkDeepAmbientObscurancePass::PrepareTargets(
       return false;
     }
   }
-  if (!frame.SkipBackground)
-  {
-    vtkDeepScreenSpace::ReleaseTarget(state.Coverage, window);
-  }
-  else if (!vtkDeepScreenSpace::AllocateCoverage(state.Coverage, window, width, height))
-  {
-    vtkWarningMacro("Could not allocate the surface coverage; every texel is shaded.");
-    vtkDeepScreenSpace::ReleaseTarget(state.Coverage, window);
-  }
+  vtkDeepScreenSpace::ReadyCoverage(
+    state.Coverage, window, width, height, this->GBufferPass->GetSkipBackgroundTexels());
   state.Width = width;
   state.Height = height;
   state.GuardBand = frame.GuardBand;

@@ -130,7 +130,7 @@ struct vtkDeepRadiosityRendererState
   // a divisor D > 1, otherwise released (the grid is the layers').
   vtkSmartPointer<vtkTextureObject> Keys[NUMBER_OF_KEYS];
   // Coverage[key]: where layer 0 holds a surface on the key's texels
-  // (vtkDeepScreenSpace::AllocateCoverage), written with the key; null
+  // (vtkDeepScreenSpace::ReadyCoverage), written with the key; null
   // while the G-buffer's SkipBackgroundTexels is off.
   vtkSmartPointer<vtkTextureObject> Coverage[NUMBER_OF_KEYS];
   // History[i][j]: (E_t, distance) of layer j; History[HistoryCurrent] is
@@ -968,7 +968,12 @@ bool vtkDeepRadiosityPass::AllocateTargets(
   {
     ReleaseTarget(state.Keys[GRID_KEY], window);
   }
-  this->AllocateCoverage(frame, state);
+  for (int key = 0; key < NUMBER_OF_KEYS; ++key)
+  {
+    const int* size = key == LAYER_KEY ? frame.LayerSize : frame.Size;
+    vtkDeepScreenSpace::ReadyCoverage(state.Coverage[key], window, size[0], size[1],
+      this->GBufferPass->GetSkipBackgroundTexels() && state.Keys[key]);
+  }
   return allocated;
 }
 
@@ -1014,28 +1019,6 @@ bool vtkDeepRadiosityPass::AllocateReduced(
   }
   std::copy(frame.Size, frame.Size + 2, state.ReducedSize);
   return true;
-}
-
-//------------------------------------------------------------------------------
-// The coverage of each key (with the G-buffer's SkipBackgroundTexels on):
-// without it every texel is shaded, so a failed allocation only warns.
-void vtkDeepRadiosityPass::AllocateCoverage(
-  vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state)
-{
-  for (int key = 0; key < NUMBER_OF_KEYS; ++key)
-  {
-    vtkSmartPointer<vtkTextureObject>& coverage = state.Coverage[key];
-    const int* size = key == LAYER_KEY ? frame.LayerSize : frame.Size;
-    if (!frame.SkipBackground || !state.Keys[key])
-    {
-      ReleaseTarget(coverage, frame.Window);
-    }
-    else if (!vtkDeepScreenSpace::AllocateCoverage(coverage, frame.Window, size[0], size[1]))
-    {
-      vtkWarningMacro("Could not allocate the surface coverage; every texel is shaded.");
-      ReleaseTarget(coverage, frame.Window);
-    }
-  }
 }
 
 //------------------------------------------------------------------------------

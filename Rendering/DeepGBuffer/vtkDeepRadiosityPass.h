@@ -842,7 +842,6 @@ private:
   bool PrepareTargets(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void ChooseTapLevels(vtkGatherFrame& frame) const;
   bool AllocateTargets(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
-  void AllocateCoverage(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   bool AllocateReduced(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void ReduceLayers(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void BuildGeometryKeys(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);

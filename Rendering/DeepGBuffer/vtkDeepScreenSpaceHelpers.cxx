@@ -225,24 +225,32 @@ ScopedStageState::~ScopedStageState()
 }
 
 //------------------------------------------------------------------------------
-bool AllocateCoverage(
-  vtkSmartPointer<vtkTextureObject>& coverage, vtkOpenGLRenderWindow* window, int width, int height)
+void ReadyCoverage(vtkSmartPointer<vtkTextureObject>& coverage, vtkOpenGLRenderWindow* window,
+  int width, int height, bool wanted)
 {
-  if (coverage && coverage->GetWidth() == static_cast<unsigned int>(width) &&
-    coverage->GetHeight() == static_cast<unsigned int>(height))
+  if (!wanted)
   {
-    return true;
+    ReleaseTarget(coverage, window);
+    return;
   }
-  if (!coverage)
+  if (coverage)
   {
-    coverage = vtkSmartPointer<vtkTextureObject>::New();
-    coverage->SetContext(window);
-    coverage->SetMinificationFilter(vtkTextureObject::Nearest);
-    coverage->SetMagnificationFilter(vtkTextureObject::Nearest);
-    return coverage->AllocateDepth(width, height, vtkTextureObject::Float32);
+    if (coverage->GetWidth() != static_cast<unsigned int>(width) ||
+      coverage->GetHeight() != static_cast<unsigned int>(height))
+    {
+      coverage->Resize(width, height);
+    }
+    return;
   }
-  coverage->Resize(width, height);
-  return true;
+  coverage = vtkSmartPointer<vtkTextureObject>::New();
+  coverage->SetContext(window);
+  coverage->SetMinificationFilter(vtkTextureObject::Nearest);
+  coverage->SetMagnificationFilter(vtkTextureObject::Nearest);
+  if (!coverage->AllocateDepth(width, height, vtkTextureObject::Float32))
+  {
+    vtkGenericWarningMacro("Could not allocate the surface coverage; every texel is shaded.");
+    ReleaseTarget(coverage, window);
+  }
 }
 
 //------------------------------------------------------------------------------

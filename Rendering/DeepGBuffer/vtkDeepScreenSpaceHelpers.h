@@ -169,9 +169,14 @@ private:
  * The coverage is not the G-buffer's own depth: a surface can lie at
  * window depth 1 (the far plane of a very small near/far ratio), where
  * only the distance tells it from the background.
+ *
+ * ReadyCoverage keeps `coverage` a GL_DEPTH_COMPONENT32F texture of
+ * width x height while `wanted` (the G-buffer's SkipBackgroundTexels),
+ * released otherwise. A failed allocation releases it with a warning:
+ * every texel is then shaded.
  */
-bool AllocateCoverage(vtkSmartPointer<vtkTextureObject>& coverage, vtkOpenGLRenderWindow* window,
-  int width, int height);
+void ReadyCoverage(vtkSmartPointer<vtkTextureObject>& coverage, vtkOpenGLRenderWindow* window,
+  int width, int height, bool wanted);
 
 /// Attaches a coverage texture (null: none) as the depth of `framebuffer`,
 /// the draw framebuffer bound now, with the depth state a scope needs;

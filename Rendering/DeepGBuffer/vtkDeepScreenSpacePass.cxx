@@ -134,7 +134,6 @@ bool vtkDeepScreenSpacePass::BeginEffectFrame(
   }
   vtkDeepScreenSpace::ShadedRegion(frame.Size, frame.GuardBand, shadedFraction, frame.Region);
   vtkDeepScreenSpace::ProjectionUniforms(frame.Projection, frame.ProjXY, frame.ProjT);
-  frame.SkipBackground = this->GBufferPass->GetSkipBackgroundTexels();
   return true;
 }
 

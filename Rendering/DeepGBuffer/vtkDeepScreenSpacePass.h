@@ -137,9 +137,6 @@ protected:
     int Region[4] = { 0, 0, 0, 0 }; ///< shaded texels [x0, x1) x [y0, y1) of the layers
     float ProjXY[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
     float ProjT[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
-    /// The G-buffer's SkipBackgroundTexels: the stages skip the texels
-    /// without a surface (vtkDeepScreenSpace::ScopedBackgroundSkip).
-    bool SkipBackground = false;
   };
 
   /// Fills `frame` for `s`'s renderer (see GetLayerFrame), shading the frame
