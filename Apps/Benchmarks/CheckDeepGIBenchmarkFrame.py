@@ -15,7 +15,8 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 PLAIN = ["plain VTK", "vtkSSAOPass K16", "vtkSSAOPass K64"]
 DEEP = ["vtkDeepGBufferPass 1 layer", "vtkDeepGBufferPass 2 layers",
-        "vtkDeepGBufferPass 2 layers DEPTH_PEEL", "vtkDeepAmbientObscurancePass 1 layer",
+        "vtkDeepGBufferPass 2 layers DEPTH_PEEL", "vtkDeepGBufferPass 2 layers REPROJECT",
+        "vtkDeepAmbientObscurancePass 1 layer",
         "vtkDeepAmbientObscurancePass 2 layers", "vtkDeepRadiosityPass"]
 GI = ["vtkDeepGIPass HIGH_PERFORMANCE", "vtkDeepGIPass BALANCED", "vtkDeepGIPass HIGH_QUALITY"]
 

@@ -27,8 +27,9 @@ choosing materials):
 Each scene has its own window; for each size of --sizes the methods run
 side by side in that window: plain VTK; vtkSSAOPass with kernel 16 and 64
 (radius 0.05 x the diagonal of the visible props' bounding box, blur on);
-vtkDeepGBufferPass with 1 layer, 2 layers and 2 layers built by depth
-peeling; vtkDeepAmbientObscurancePass with 1 layer (UseSecondLayer off
+vtkDeepGBufferPass with 1 layer, 2 layers (the default oracle, AUTOMATIC:
+DEPTH_PEEL on a CPU renderer, REPROJECT on a GPU), and 2 layers with each
+of those two oracles; vtkDeepAmbientObscurancePass with 1 layer (UseSecondLayer off
 and a one-layer G-buffer) and 2 layers; vtkDeepRadiosityPass;
 vtkDeepGIPass with each preset (the "deep methods": vtkDeepGBufferPass
 on). The
@@ -260,6 +261,8 @@ def make_methods(radius, wanted):
                make_gbuffer("vtkDeepGBufferPass 2 layers", 2),
                make_gbuffer("vtkDeepGBufferPass 2 layers DEPTH_PEEL", 2,
                             vtkdeepgi.vtkDeepGBufferPass.DEPTH_PEEL),
+               make_gbuffer("vtkDeepGBufferPass 2 layers REPROJECT", 2,
+                            vtkdeepgi.vtkDeepGBufferPass.REPROJECT),
                make_effect("vtkDeepAmbientObscurancePass 1 layer", one_layer_ao),
                make_effect("vtkDeepAmbientObscurancePass 2 layers",
                            vtkdeepgi.vtkDeepAmbientObscurancePass()),

@@ -77,6 +77,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <map>
 #include <sstream>
@@ -193,7 +194,8 @@ enum TestMode
   TEST_REPROJECTED = DEEP_TEST_REPROJECTED // REPROJECT: tested in the previous frame
 };
 
-const char* const OracleNames[] = { "DEPTH_PEEL", "PREVIOUS", "REPROJECT", "PREDICT", "DELAY" };
+const char* const OracleNames[] = { "DEPTH_PEEL", "PREVIOUS", "REPROJECT", "PREDICT", "DELAY",
+  "AUTOMATIC" };
 const char* const QuantityNames[] = { "RADIANCE", "ALBEDO", "NORMAL", "DEPTH", "AMBIENT",
   "REFLECTIVITY" };
 
@@ -348,6 +350,9 @@ public:
   int TestMode = TEST_NONE;
   int OracleLayerIndex = -1;
   int HistoryUnit = -1;
+  // Set while a deeper layer is peeled with back faces culled: the state
+  // through which SetShaderParameters culls them.
+  vtkOpenGLState* CullingState = nullptr;
   float MinimumSeparation = 0.0f;
   std::array<float, 4> ProjectionZ{}, OtherProjectionZ{};
   std::array<float, 16> InverseProjection{};
@@ -373,6 +378,7 @@ public:
   vtkOpenGLRenderWindow* CheckedWindow = nullptr;
   bool Supported = false;
   int MaximumSlots = 1;
+  bool CPURenderer = false;   // Mesa llvmpipe or softpipe: AUTOMATIC peels
   int MaximumTextureSize = 0; // GL_MAX_TEXTURE_SIZE, which limits the guard band
   bool Warned[NUMBER_OF_WARNINGS] = {};
 
@@ -472,7 +478,7 @@ void vtkDeepGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 const char* vtkDeepGBufferPass::GetOracleAsString(int oracle)
 {
-  return (oracle >= DEPTH_PEEL && oracle <= DELAY) ? OracleNames[oracle] : "UNKNOWN";
+  return (oracle >= DEPTH_PEEL && oracle <= AUTOMATIC) ? OracleNames[oracle] : "UNKNOWN";
 }
 
 int vtkDeepGBufferPass::GetOracleFromString(const char* name)
@@ -484,7 +490,7 @@ int vtkDeepGBufferPass::GetOracleFromString(const char* name)
   std::string upper(name);
   std::transform(upper.begin(), upper.end(), upper.begin(),
     [](unsigned char c) { return c == '-' ? '_' : static_cast<char>(std::toupper(c)); });
-  for (int i = DEPTH_PEEL; i <= DELAY; ++i)
+  for (int i = DEPTH_PEEL; i <= AUTOMATIC; ++i)
   {
     if (upper == OracleNames[i])
     {
@@ -775,6 +781,45 @@ vtkMTimeType vtkDeepGBufferPass::GetShaderStageMTime()
 //------------------------------------------------------------------------------
 namespace
 {
+// Adds the back faces to the faces the rasteriser culls for the draw that
+// follows, on top of what the prop's property culls (vtkOpenGLProperty sets
+// the culling per actor just before its mapper draws, which is when the
+// render pass's SetShaderParameters runs).
+void CullBackFaces(vtkOpenGLState* state)
+{
+  GLint mode = GL_BACK;
+  if (state->GetEnumState(GL_CULL_FACE))
+  {
+    glGetIntegerv(GL_CULL_FACE_MODE, &mode);
+  }
+  state->vtkglCullFace(mode == GL_BACK ? GL_BACK : GL_FRONT_AND_BACK);
+  state->vtkglEnable(GL_CULL_FACE);
+}
+
+// The face culling of the renderer's state, restored when the scope ends.
+class ScopedFaceCulling
+{
+public:
+  explicit ScopedFaceCulling(vtkOpenGLState* state)
+    : State(state)
+    , Enabled(state->GetEnumState(GL_CULL_FACE))
+  {
+    glGetIntegerv(GL_CULL_FACE_MODE, &this->Mode);
+  }
+  ~ScopedFaceCulling()
+  {
+    this->State->vtkglCullFace(static_cast<unsigned int>(this->Mode));
+    this->State->SetEnumState(GL_CULL_FACE, this->Enabled);
+  }
+  ScopedFaceCulling(const ScopedFaceCulling&) = delete;
+  ScopedFaceCulling& operator=(const ScopedFaceCulling&) = delete;
+
+private:
+  vtkOpenGLState* State;
+  bool Enabled;
+  GLint Mode = GL_BACK;
+};
+
 // The model-to-stored-coordinates matrix of a mapper's vertex buffer: the
 // same association as vtkOpenGLPolyDataMapper, (P V) (M S^-1), where stored
 // coordinates are (x - shift) * scale.
@@ -893,6 +938,10 @@ bool vtkDeepGBufferPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstr
   vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
   SetIfUsed(
     program, "deepEmissive", keys && keys->Has(EMISSIVE()) && keys->Get(EMISSIVE()) != 0 ? 1 : 0);
+  if (in.CullingState && !routedProgram)
+  {
+    CullBackFaces(in.CullingState);
+  }
   return true;
 }
 
@@ -1291,6 +1340,17 @@ static bool CheckSupport(vtkOpenGLRenderWindow* window, int& maximumSlots, std::
 }
 
 //------------------------------------------------------------------------------
+// Whether the current context renders on the CPU (Mesa llvmpipe or
+// softpipe), where AUTOMATIC peels: there a geometry shader's single pass
+// costs more than the second pass it saves (see the class description).
+static bool IsCPURenderer()
+{
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return renderer &&
+    (std::strstr(renderer, "llvmpipe") != nullptr || std::strstr(renderer, "softpipe") != nullptr);
+}
+
+//------------------------------------------------------------------------------
 // What one RenderLayers call decides and carries from stage to stage.
 struct vtkDeepGBufferPass::vtkLayerFrame
 {
@@ -1455,6 +1515,7 @@ void vtkDeepGBufferPass::CheckContext(vtkOpenGLRenderWindow* window)
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maximumTextureSize);
   in.MaximumTextureSize = static_cast<int>(maximumTextureSize);
   in.Supported = CheckSupport(window, in.MaximumSlots, why);
+  in.CPURenderer = IsCPURenderer();
   if (!in.Supported)
   {
     vtkWarningMacro(
@@ -1507,6 +1568,10 @@ void vtkDeepGBufferPass::ChooseLayout(vtkLayerFrame& frame)
   // tested against the composited layer k, which no single-pass oracle
   // (built from this process's history) knows.
   frame.Oracle = this->LayerExchange ? DEPTH_PEEL : this->Oracle;
+  if (frame.Oracle == AUTOMATIC)
+  {
+    frame.Oracle = in.CPURenderer ? DEPTH_PEEL : REPROJECT;
+  }
   frame.Layers = this->NumberOfLayers;
   if ((frame.Oracle == PREDICT || frame.Oracle == DELAY) && frame.Layers > 2)
   {
@@ -1834,7 +1899,13 @@ bool vtkDeepGBufferPass::PeelLayers(vtkLayerFrame& frame, int allOracleMask)
       frame.GL->vtkglBindFramebuffer(GL_FRAMEBUFFER, state.LayerFramebuffers[j]);
       in.EmitMask = 1 << j;
       in.TargetLayer = j;
+      // Deeper layers keep front faces only (the fragment shader's rule):
+      // culled by the rasteriser, a back face costs no shading, which a
+      // CPU renderer (Mesa llvmpipe) runs in full before a discard.
+      ScopedFaceCulling culling(frame.GL);
+      in.CullingState = j > 0 && this->DeepLayerBackfaceCulling ? frame.GL : nullptr;
       DrawOpaque(frame.OtherProps, frame.Renderer);
+      in.CullingState = nullptr;
     }
     ++frame.GeometryPasses;
     if (this->LayerExchange)

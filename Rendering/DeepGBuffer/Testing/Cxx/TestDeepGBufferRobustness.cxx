@@ -1,7 +1,8 @@
 // Bad input and the situations a VTK scene puts a render pass in. Each case
 // checks numbers, not only that nothing crashed:
 // - NaN, negative and huge dz; layer counts 0, 1, 4 and 100; PREDICT with
-//   more than two layers: a warning and a safe value;
+//   more than two layers: a warning and a safe value; the default oracle
+//   AUTOMATIC peels on a CPU renderer and reprojects on a GPU;
 // - an empty renderer; props added and removed between frames; a window
 //   resized between frames; ReleaseGraphicsResources and render again;
 // - parallel projection; two renderers in one window (non-origin viewport),
@@ -120,6 +121,7 @@ void TestParameters()
     "100 layers warns, clamped to the maximum");
   Check(vtkDeepGBufferPass::GetOracleFromString("reproject") == vtkDeepGBufferPass::REPROJECT &&
       vtkDeepGBufferPass::GetOracleFromString("depth-peel") == vtkDeepGBufferPass::DEPTH_PEEL &&
+      vtkDeepGBufferPass::GetOracleFromString("automatic") == vtkDeepGBufferPass::AUTOMATIC &&
       vtkDeepGBufferPass::GetOracleFromString("nonsense") == -1 &&
       vtkDeepGBufferPass::GetOracleFromString(nullptr) == -1,
     "oracle names parse, unknown ones give -1");
@@ -166,6 +168,32 @@ void TestLayerCounts()
   Check(capture && warnings.Count == 1 &&
       predict->GetEffectiveOracle() == vtkDeepGBufferPass::REPROJECT,
     "PREDICT with 3 layers warns and uses REPROJECT");
+
+  // AUTOMATIC, the default, peels on a CPU renderer (two geometry passes)
+  // and reprojects on a GPU (one).
+  auto window = MakeWindow(200, 150);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  AddSphereAndWall(renderer);
+  vtkNew<vtkDeepGBufferPass> automatic;
+  renderer->SetPass(automatic);
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    window->Render();
+  }
+  const std::string capabilities = window->ReportCapabilities();
+  const bool cpu = capabilities.find("llvmpipe") != std::string::npos ||
+    capabilities.find("softpipe") != std::string::npos;
+  const int expected = cpu ? vtkDeepGBufferPass::DEPTH_PEEL : vtkDeepGBufferPass::REPROJECT;
+  std::printf("  AUTOMATIC on %s renderer: %s, %d geometry pass(es)\n", cpu ? "a CPU" : "a GPU",
+    vtkDeepGBufferPass::GetOracleAsString(automatic->GetEffectiveOracle()),
+    automatic->GetLastGeometryPassCount());
+  Check(automatic->GetOracle() == vtkDeepGBufferPass::AUTOMATIC &&
+      automatic->GetEffectiveOracle() == expected &&
+      automatic->GetLastGeometryPassCount() == (cpu ? 2 : 1),
+    "AUTOMATIC is the default: DEPTH_PEEL on a CPU renderer, REPROJECT on a GPU");
+  renderer->SetPass(nullptr);
+  automatic->ReleaseGraphicsResources(window);
 }
 
 void TestEmptyAndChangingScenes()
@@ -181,6 +209,7 @@ void TestEmptyAndChangingScenes()
   window->AddRenderer(renderer);
   AddSphereAndWall(renderer);
   vtkNew<vtkDeepGBufferPass> reproject;
+  reproject->SetOracleToReproject();
   renderer->SetPass(reproject);
   window->Render();
   window->Render();
@@ -364,6 +393,7 @@ void TestMappersAndTranslucency()
   glass->GetProperty()->SetOpacity(0.4);
   renderer->AddActor(glass);
   vtkNew<vtkDeepGBufferPass> mixed;
+  mixed->SetOracleToReproject();
   mixed->SetMinimumSeparation(0.25);
   renderer->SetPass(mixed);
   window->Render();

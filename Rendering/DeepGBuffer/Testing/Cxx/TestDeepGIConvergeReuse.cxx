@@ -8,12 +8,13 @@
 // 2. A ProgressEvent observer changes one input after frame 2: an actor's
 //    colour, the light's intensity, the camera, the renderer's ambient
 //    light, the window size, or the obscurance's radius. After a change of
-//    the camera or a prop, frames 3 and 4 render the layers again (the
-//    oracle builds frame 3's layer 1 from frame 2's camera), frame 5 keeps
-//    them; after a change of the lighting or the window size (peeled
-//    without history) only frame 3 renders them; the radius keeps the
-//    layers and recomputes the obscurance. The image after frame 5 equals
-//    the one with ConvergeReusesLayers off, bit for bit.
+//    the camera or a prop, frames 3 and 4 render the layers again with
+//    REPROJECT (the oracle builds frame 3's layer 1 from frame 2's camera),
+//    frame 5 keeps them; with DEPTH_PEEL (exact in every frame) and after a
+//    change of the lighting or the window size (peeled without history)
+//    only frame 3 renders them; the radius keeps the layers and recomputes
+//    the obscurance. The image after frame 5 equals the one with
+//    ConvergeReusesLayers off, bit for bit.
 // 3. Two renderers share the pass (side by side) and one of them's camera
 //    moves after frame 2. Each renderer decides for itself: the second
 //    (whose flags are the window's last) renders its layers again when its
@@ -29,6 +30,7 @@
 #include "DeepRadiosityTest.h"
 
 #include "vtkDeepAmbientObscurancePass.h"
+#include "vtkDeepGBufferPass.h"
 #include "vtkDeepGIPass.h"
 #include "vtkLightCollection.h"
 
@@ -53,12 +55,13 @@ struct GIScene
   vtkSmartPointer<vtkRenderer> Second; // sharing the pass, when asked for
   vtkNew<vtkDeepGIPass> Pass;
 
-  explicit GIScene(bool twoRenderers)
+  GIScene(bool twoRenderers, int oracle)
   {
     this->Window = MakeWindow(W, H);
     this->Window->AddRenderer(this->Renderer);
     RedWallSceneWithAmbient(this->Renderer);
     this->Pass->AdaptiveLayersOff();
+    this->Pass->GetGBufferPass()->SetOracle(oracle);
     this->Renderer->SetPass(this->Pass);
     if (twoRenderers)
     {
@@ -92,9 +95,9 @@ struct Run
 
 // One frame before Converge, then Converge(Frames) with `change` applied
 // after frame ChangeAfterFrame; the final image and what each frame kept.
-Run Converge(bool reuse, const Change& change, bool twoRenderers)
+Run Converge(bool reuse, const Change& change, bool twoRenderers, int oracle)
 {
-  GIScene scene(twoRenderers);
+  GIScene scene(twoRenderers, oracle);
   scene.Pass->SetConvergeReusesLayers(reuse);
   // VTK adds the headlight during the first frame: the inputs are still
   // from the third frame on.
@@ -158,11 +161,11 @@ int MaximumDifference(const Run& a, const Run& b)
 
 // Converge with and without reuse under `change`; `expected` is the
 // reuse flags of the frames with reuse on.
-void CheckCase(
-  const char* name, const Change& change, const std::string& expected, bool twoRenderers = false)
+void CheckCase(const char* name, const Change& change, const std::string& expected,
+  bool twoRenderers = false, int oracle = vtkDeepGBufferPass::REPROJECT)
 {
-  const Run kept = Converge(true, change, twoRenderers);
-  const Run full = Converge(false, change, twoRenderers);
+  const Run kept = Converge(true, change, twoRenderers, oracle);
+  const Run full = Converge(false, change, twoRenderers, oracle);
   const int difference = MaximumDifference(kept, full);
   std::printf("%s: frames keeping the layers %s (off: %s), effects %s, largest difference %d/255\n",
     name, Flags(kept.Reused).c_str(), Flags(full.Reused).c_str(),
@@ -191,6 +194,9 @@ int TestDeepGIConvergeReuse(int, char*[])
     "11011");
   CheckCase(
     "the camera", [](GIScene& s) { s.Renderer->GetActiveCamera()->Azimuth(5.0); }, "11001");
+  CheckCase(
+    "the camera, peeled", [](GIScene& s) { s.Renderer->GetActiveCamera()->Azimuth(5.0); }, "11011",
+    false, vtkDeepGBufferPass::DEPTH_PEEL);
   CheckCase(
     "the renderer's ambient light", [](GIScene& s) { s.Renderer->SetAmbient(0.5, 0.5, 0.5); },
     "11011");
