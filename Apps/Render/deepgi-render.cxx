@@ -114,8 +114,9 @@ Deep G-buffer:
                       pass chooses 1 or 2 itself
   --dz VALUE          minimum separation between layers in world units
                       (default: automatic, 1.5 % of the scene's diagonal)
-  --oracle NAME       depth_peel, previous, reproject, predict or delay
-                      (default reproject)
+  --oracle NAME       depth_peel, previous, reproject, predict, delay or
+                      automatic (default: depth_peel on a CPU renderer,
+                      reproject on a GPU)
 
 Output:
   --size WxH          image size in pixels (default 640x480)
@@ -142,7 +143,7 @@ struct Options
   int Layers = 2;
   bool LayersGiven = false;
   double Dz = -1.0; // < 0: automatic
-  int Oracle = vtkDeepGBufferPass::REPROJECT;
+  int Oracle = vtkDeepGBufferPass::AUTOMATIC;
   int Width = 640;
   int Height = 480;
   std::string Backend = "auto";
@@ -342,7 +343,8 @@ const OptionEntry OptionTable[] = {
     [](const std::string& v, Options& o) -> std::string
     {
       o.Oracle = vtkDeepGBufferPass::GetOracleFromString(v.c_str());
-      return o.Oracle >= 0 ? "" : "needs depth_peel, previous, reproject, predict or delay";
+      return o.Oracle >= 0 ? ""
+                           : "needs depth_peel, previous, reproject, predict, delay or automatic";
     } },
   { "--size",
     [](const std::string& v, Options& o) -> std::string

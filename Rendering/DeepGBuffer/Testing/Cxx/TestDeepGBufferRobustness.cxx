@@ -168,9 +168,12 @@ void TestLayerCounts()
   Check(capture && warnings.Count == 1 &&
       predict->GetEffectiveOracle() == vtkDeepGBufferPass::REPROJECT,
     "PREDICT with 3 layers warns and uses REPROJECT");
+}
 
-  // AUTOMATIC, the default, peels on a CPU renderer (two geometry passes)
-  // and reprojects on a GPU (one).
+// AUTOMATIC, the default oracle, peels on a CPU renderer (two geometry
+// passes) and reprojects on a GPU (one).
+void TestAutomaticOracle()
+{
   auto window = MakeWindow(200, 150);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
@@ -430,6 +433,7 @@ int TestDeepGBufferRobustness(int, char*[])
 {
   TestParameters();
   TestLayerCounts();
+  TestAutomaticOracle();
   TestEmptyAndChangingScenes();
   TestViewportsAndProjection();
   TestRenderersKeepTheirLights();
