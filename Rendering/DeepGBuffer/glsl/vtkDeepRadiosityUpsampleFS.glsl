@@ -63,38 +63,41 @@ vec4 upsampleLayer0(ivec2 pixel, vec2 size)
   float weightSum = 0.0;
   vec4 nearest = vec4(0.0);
   float nearestError = 1e30;
+  // Every reduced texel's terms are computed and its tests folded into
+  // conditions, without a `continue`: a CPU renderer (Mesa llvmpipe) runs
+  // a loop's `continue` at a high cost (see vtkDeepRadiosityFS).
+  ivec2 lastReduced = textureSize(deepHistory0, 0) - 1;
   for (int k = 0; k < 4; ++k)
   {
     ivec2 offset = ivec2(k & 1, k >> 1);
     ivec2 q = q0 + offset;
-    if (any(lessThan(q, deepReducedMin)) || any(greaterThanEqual(q, deepReducedMax)))
-    {
-      continue;
-    }
-    vec4 h = texelFetch(deepHistory0, q, 0);
-    if (!(h.a > 0.0))
-    {
-      continue;
-    }
-    vec4 previous = deepExtrapolation > 0.0 ? texelFetch(deepPreviousHistory0, q, 0) : vec4(0.0);
+    ivec2 fetched = clamp(q, ivec2(0), lastReduced);
+    vec4 h = texelFetch(deepHistory0, fetched, 0);
+    bool usable = all(greaterThanEqual(q, deepReducedMin)) && all(lessThan(q, deepReducedMax)) &&
+      h.a > 0.0;
+    vec4 previous =
+      deepExtrapolation > 0.0 ? texelFetch(deepPreviousHistory0, fetched, 0) : vec4(0.0);
     vec3 E = deepExtrapolateBounces(h.rgb, previous, h.a, deepExtrapolation, deepIrradianceLimit);
-    vec4 value = vec4(E, texelFetch(deepReducedIndirect0, q, 0).a);
+    vec4 value = vec4(E, texelFetch(deepReducedIndirect0, fetched, 0).a);
     // The receiver's point: layer texel D q (clamped), at its distance.
     vec3 Y = deepPositionFromDistance(vec2(min(q * deepDivisor, last)) + 0.5, size, h.a);
     float error = abs(dot(Y - X, n));
-    if (error < nearestError)
+    if (usable && error < nearestError)
     {
       nearestError = error;
       nearest = value;
     }
-    vec3 nq = deepDecodeOct16(texelFetch(deepReducedNormal, ivec3(q, layer), 0).rg);
+    vec3 nq = deepDecodeOct16(texelFetch(deepReducedNormal, ivec3(fetched, layer), 0).rg);
     vec2 b = mix(vec2(1.0) - f, f, vec2(offset));
     float facing = max(0.0, dot(n, nq));
     facing *= facing;
     facing *= facing;
     float w = b.x * b.y * max(0.0, 1.0 - error / (deepPlaneTolerance * d)) * facing * facing;
-    sum += w * value;
-    weightSum += w;
+    if (usable)
+    {
+      sum += w * value;
+      weightSum += w;
+    }
   }
   if (nearestError == 1e30)
   {
