@@ -274,10 +274,19 @@ float deepSpiralVisibility(vec3 X, vec3 n, float footprint, float phi, vec2 cent
   float r2 = deepRadius * deepRadius;
   float sum = 0.0;
   float invN = 1.0 / float(deepSamples);
+  // Tap i (section 3.4) at h = r_p (i + 1/2) / N pixels from the centre, in
+  // the direction theta = 2 pi tau (i + 1/2) / N + phi: the first direction
+  // and then steps of 2 pi tau / N (deepRotate).
+  float h;
+  float theta;
+  deepSpiralTapPolar(0, 0.5, deepSamples, deepTurns, rp, phi, h, theta);
+  vec2 direction = deepDirection(theta);
+  vec2 turn = deepDirection(2.0 * deepPi * deepTurns * invN);
   for (int i = 0; i < deepSamples; ++i)
   {
-    float h;
-    ivec2 tap = ivec2(floor(deepSpiralTap(i, 0.5, deepSamples, deepTurns, rp, phi, center, h)));
+    deepSpiralTapPolar(i, 0.5, deepSamples, deepTurns, rp, phi, h, theta);
+    ivec2 tap = ivec2(floor(center + h * direction));
+    direction = deepRotate(direction, turn);
     if (any(lessThan(tap, ivec2(0))) || any(greaterThanEqual(tap, ivec2(size))))
     {
       continue;

@@ -58,9 +58,9 @@ float deepSpiralRotation(ivec2 pixel)
     fract(52.9829189 * fract(dot(vec2(pixel), vec2(0.06711056, 0.00583715))));
 }
 
-// Tap i of the spiral in polar form around its centre: h (pixels) and
-// theta (radians), as deepSpiralTap below; a gather that also has taps
-// elsewhere computes one cosine and sine for either kind.
+// Tap i of N (section 3.4) at `offset` in [0, 1) across its ring:
+// kappa = (i + offset) / N, h = r_p kappa (pixels from the centre) and
+// theta = 2 pi kappa tau + phi (radians); the paper's taps have offset 0.5.
 void deepSpiralTapPolar(int i, float offset, int n, float turns, float rp, float phi, out float h,
   out float theta)
 {
@@ -69,15 +69,23 @@ void deepSpiralTapPolar(int i, float offset, int n, float turns, float rp, float
   theta = 2.0 * deepPi * kappa * turns + phi;
 }
 
-// Tap i of N (section 3.4) at `offset` in [0, 1) across its ring:
-// kappa = (i + offset) / N, h = r_p kappa, theta = 2 pi kappa tau + phi; the
-// paper's taps have offset 0.5. Returns the tap point in window pixels and
-// h, its distance from `center` in pixels.
-vec2 deepSpiralTap(int i, float offset, int n, float turns, float rp, float phi, vec2 center, out float h)
+// The unit vector at angle theta.
+vec2 deepDirection(float theta)
 {
-  float theta;
-  deepSpiralTapPolar(i, offset, n, turns, rp, phi, h, theta);
-  return center + h * vec2(cos(theta), sin(theta));
+  return vec2(cos(theta), sin(theta));
+}
+
+// `direction` turned by the angle whose cosine and sine are `turn`. The
+// obscurance's spiral taps lie at equal steps of angle, so one cosine and
+// sine for the first tap and a rotation for each next one give their
+// directions: a CPU renderer (Mesa llvmpipe) computes a cosine and a sine as
+// polynomials, 4 % of the obscurance's gather when taken at every tap.
+// After N steps the directions differ from the exact ones by about N float
+// roundings, far below a texel at the gather's radius.
+vec2 deepRotate(vec2 direction, vec2 turn)
+{
+  return vec2(direction.x * turn.x - direction.y * turn.y,
+    direction.x * turn.y + direction.y * turn.x);
 }
 
 // A per-pixel offset of the taps across their rings, from the spiral's
