@@ -270,6 +270,7 @@ struct vtkDeepGBufferRendererState
   // What the last frame rendered, for capture and display, and what it was
   // rendered with, for ReuseLayers.
   int RenderedLayers = 0;
+  vtkMTimeType LayersTime = 0; // GetLayersTime
   vtkMTimeType RenderedSettingsTime = 0;
   int RenderedWindowSize[2] = { 0, 0 };
   double ClippingRange[2] = { 0.0, 1.0 };
@@ -320,6 +321,7 @@ struct vtkDeepGBufferRendererState
     this->Width = this->Height = this->Slots = this->HistoryLayers = 0;
     this->HistoryValid = false;
     this->RenderedSettingsTime = 0;
+    this->LayersTime = 0;
   }
 };
 
@@ -1445,6 +1447,13 @@ bool vtkDeepGBufferPass::ReuseLayers(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
+vtkMTimeType vtkDeepGBufferPass::GetLayersTime(vtkRenderer* renderer) const
+{
+  const auto it = this->Internals->States.find(renderer);
+  return it == this->Internals->States.end() ? 0 : it->second->LayersTime;
+}
+
+//------------------------------------------------------------------------------
 // The Effective* values of the layers the frame uses.
 void vtkDeepGBufferPass::ReportLayers(const vtkDeepGBufferRendererState& state)
 {
@@ -1996,6 +2005,9 @@ void vtkDeepGBufferPass::RecordFrame(const vtkLayerFrame& frame)
   state.MinimumSeparation = frame.MinimumSeparation;
   state.Oracle = frame.RoutedDone ? frame.Oracle : DEPTH_PEEL;
   state.RenderedSettingsTime = this->GetMTime();
+  vtkTimeStamp rendered;
+  rendered.Modified();
+  state.LayersTime = rendered.GetMTime();
   state.RenderedWindowSize[0] = frame.Width - 2 * frame.Guard;
   state.RenderedWindowSize[1] = frame.Height - 2 * frame.Guard;
   this->ReportLayers(state);

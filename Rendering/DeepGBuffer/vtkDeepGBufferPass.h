@@ -447,6 +447,15 @@ public:
   bool ReuseLayers(const vtkRenderState* s);
 
   /**
+   * When the renderer's layers were last rendered: a modification time that
+   * changes with every frame that renders them and stays while frames keep
+   * them (ReuseLayers); 0 while the renderer has none. What a consumer
+   * derives from the layers alone (vtkDeepRadiosityPass's geometry keys)
+   * stays valid while it stays the same.
+   */
+  vtkMTimeType GetLayersTime(vtkRenderer* renderer) const;
+
+  /**
    * Draws the displayed quantity (layer 0 radiance by default) and that
    * layer's depth into the framebuffer and viewport bound for the renderer.
    */

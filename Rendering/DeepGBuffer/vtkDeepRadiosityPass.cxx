@@ -170,6 +170,15 @@ struct vtkDeepRadiosityRendererState
   double Increments[4] = { 0.0, 0.0, 0.0, 0.0 };
   int IncrementCount = 0;
   double Extrapolation = 0.0; // rho / (1 - rho) of the current frame
+  // What the geometry keys and the reduced G-buffer were built from
+  // (GeometryKeysCurrent): the G-buffer's layers (their GetLayersTime), the
+  // layers used, the divisor, the grid's size and whether the keys write a
+  // coverage; 0: not built.
+  vtkMTimeType KeysLayersTime = 0;
+  int KeysUsedLayers = 0;
+  int KeysDivisor = 0;
+  int KeysSize[2] = { 0, 0 };
+  bool KeysCoverage = false;
 
   void ResetHistory()
   {
@@ -713,12 +722,22 @@ bool vtkDeepRadiosityPass::UpdateRadiosity(const vtkRenderState* s)
   {
     vtkOpenGLState* ostate = frame.GL;
     vtkDeepScreenSpace::ScopedStageState stageState(ostate);
+    // Frames that keep the G-buffer's layers (vtkDeepGIPass::Converge) keep
+    // what is derived from them alone.
+    const bool keysCurrent = this->GeometryKeysCurrent(frame, state);
     if (frame.Divisor > 1)
     {
-      this->ReduceLayers(frame, state);
+      if (!keysCurrent)
+      {
+        this->ReduceLayers(frame, state);
+      }
+      BindReduced(frame, state);
     }
     this->Internals->Framebuffer->Bind();
-    this->BuildGeometryKeys(frame, state);
+    if (!keysCurrent)
+    {
+      this->BuildGeometryKeys(frame, state);
+    }
     ostate->vtkglViewport(0, 0, frame.Size[0], frame.Size[1]);
     this->ComputeBounceInput(frame, state);
     // The other stages shade the frame and GuardBandShadedFraction of the
@@ -1053,7 +1072,14 @@ void vtkDeepRadiosityPass::ReduceLayers(vtkGatherFrame& frame, vtkDeepRadiosityR
     program->SetUniformi("deepLayer", layer);
     in.ReduceQuad->Render();
   }
-  // The later stages read the reduced G-buffer.
+}
+
+//------------------------------------------------------------------------------
+// The later stages read the reduced G-buffer (ReduceLayers).
+void vtkDeepRadiosityPass::BindReduced(
+  vtkGatherFrame& frame, const vtkDeepRadiosityRendererState& state)
+{
+  vtkOpenGLState* ostate = frame.GL;
   vtkTextureUnitManager* units = frame.Window->GetTextureUnitManager();
   for (int q = 0; q < NumberOfReducedQuantities; ++q)
   {
@@ -1118,6 +1144,26 @@ void vtkDeepRadiosityPass::BuildGeometryKeys(
     in.KeyQuad->Render();
   }
   in.Framebuffer->RemoveColorAttachment(0);
+  state.KeysLayersTime = this->GBufferPass->GetLayersTime(frame.Renderer);
+  state.KeysUsedLayers = frame.UsedLayers;
+  state.KeysDivisor = frame.Divisor;
+  std::copy(frame.Size, frame.Size + 2, state.KeysSize);
+  state.KeysCoverage = state.Coverage[LAYER_KEY] != nullptr;
+}
+
+//------------------------------------------------------------------------------
+// Whether the geometry keys (and, with a divisor, the reduced G-buffer) are
+// those of this frame's layers: built from the layers the G-buffer still
+// holds (vtkDeepGBufferPass::GetLayersTime, which stays while a frame
+// keeps them), with the same layers used, grid and coverage.
+bool vtkDeepRadiosityPass::GeometryKeysCurrent(
+  const vtkGatherFrame& frame, const vtkDeepRadiosityRendererState& state)
+{
+  return state.KeysLayersTime != 0 &&
+    state.KeysLayersTime == this->GBufferPass->GetLayersTime(frame.Renderer) &&
+    state.KeysUsedLayers == frame.UsedLayers && state.KeysDivisor == frame.Divisor &&
+    state.KeysSize[0] == frame.Size[0] && state.KeysSize[1] == frame.Size[1] &&
+    state.KeysCoverage == (state.Coverage[LAYER_KEY] != nullptr);
 }
 
 //------------------------------------------------------------------------------

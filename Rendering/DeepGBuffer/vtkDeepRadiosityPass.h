@@ -843,7 +843,9 @@ private:
   void ChooseTapLevels(vtkGatherFrame& frame) const;
   bool AllocateTargets(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   bool AllocateReduced(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
+  bool GeometryKeysCurrent(const vtkGatherFrame& frame, const vtkDeepRadiosityRendererState& state);
   void ReduceLayers(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
+  static void BindReduced(vtkGatherFrame& frame, const vtkDeepRadiosityRendererState& state);
   void BuildGeometryKeys(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void ComputeBounceInput(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);
   void Gather(vtkGatherFrame& frame, vtkDeepRadiosityRendererState& state);

@@ -15,6 +15,9 @@
 //    only frame 3 renders them; the radius keeps the layers and recomputes
 //    the obscurance. The image after frame 5 equals the one with
 //    ConvergeReusesLayers off, bit for bit.
+//    The radiosity builds its geometry keys (the stage timer's "radiosity:
+//    geometry key") in exactly the frames that render the layers; with
+//    HIGH_PERFORMANCE's reduced grid it also keeps its copy of the layers.
 // 3. Two renderers share the pass (side by side) and one of them's camera
 //    moves after frame 2. Each renderer decides for itself: the second
 //    (whose flags are the window's last) renders its layers again when its
@@ -32,6 +35,7 @@
 #include "vtkDeepAmbientObscurancePass.h"
 #include "vtkDeepGBufferPass.h"
 #include "vtkDeepGIPass.h"
+#include "vtkDeepGIStageTimer.h"
 #include "vtkLightCollection.h"
 
 #include <functional>
@@ -55,11 +59,12 @@ struct GIScene
   vtkSmartPointer<vtkRenderer> Second; // sharing the pass, when asked for
   vtkNew<vtkDeepGIPass> Pass;
 
-  GIScene(bool twoRenderers, int oracle)
+  GIScene(bool twoRenderers, int oracle, int preset)
   {
     this->Window = MakeWindow(W, H);
     this->Window->AddRenderer(this->Renderer);
     RedWallSceneWithAmbient(this->Renderer);
+    this->Pass->SetPreset(preset);
     this->Pass->AdaptiveLayersOff();
     this->Pass->GetGBufferPass()->SetOracle(oracle);
     this->Renderer->SetPass(this->Pass);
@@ -90,14 +95,30 @@ struct Run
 {
   std::vector<unsigned char> Pixels;
   std::vector<int> Reused; // LastFrameReusedLayers after each Converge frame
+  std::vector<int> Keyed;  // whether each frame built the radiosity's geometry keys
   int Effects = 0;
 };
 
+// Whether the stages timed since the last Reset include `name`.
+bool Ran(vtkDeepGIStageTimer* timer, const char* name)
+{
+  for (int stage = 0; stage < timer->GetNumberOfStages(); ++stage)
+  {
+    if (std::string(timer->GetStageName(stage)) == name)
+    {
+      return timer->GetStageCount(stage) > 0;
+    }
+  }
+  return false;
+}
+
 // One frame before Converge, then Converge(Frames) with `change` applied
 // after frame ChangeAfterFrame; the final image and what each frame kept.
-Run Converge(bool reuse, const Change& change, bool twoRenderers, int oracle)
+Run Converge(bool reuse, const Change& change, bool twoRenderers, int oracle, int preset)
 {
-  GIScene scene(twoRenderers, oracle);
+  GIScene scene(twoRenderers, oracle, preset);
+  vtkNew<vtkDeepGIStageTimer> timer;
+  scene.Pass->GetGBufferPass()->SetStageTimer(timer);
   scene.Pass->SetConvergeReusesLayers(reuse);
   // VTK adds the headlight during the first frame: the inputs are still
   // from the third frame on.
@@ -106,18 +127,22 @@ Run Converge(bool reuse, const Change& change, bool twoRenderers, int oracle)
     scene.Window->Render();
   }
   Run run;
+  timer->Reset();
   struct Observed
   {
     GIScene* Scene;
     Run* Result;
     const Change* Apply;
-  } observed{ &scene, &run, &change };
+    vtkDeepGIStageTimer* Timer;
+  } observed{ &scene, &run, &change, timer };
   vtkNew<vtkCallbackCommand> progress;
   progress->SetCallback(
     [](vtkObject*, unsigned long, void* data, void*)
     {
       auto* o = static_cast<Observed*>(data);
       o->Result->Reused.push_back(o->Scene->Pass->GetLastFrameReusedLayers() ? 1 : 0);
+      o->Result->Keyed.push_back(Ran(o->Timer, "radiosity: geometry key") ? 1 : 0);
+      o->Timer->Reset();
       if (o->Result->Reused.size() == ChangeAfterFrame && *o->Apply)
       {
         (*o->Apply)(*o->Scene);
@@ -162,10 +187,11 @@ int MaximumDifference(const Run& a, const Run& b)
 // Converge with and without reuse under `change`; `expected` is the
 // reuse flags of the frames with reuse on.
 void CheckCase(const char* name, const Change& change, const std::string& expected,
-  bool twoRenderers = false, int oracle = vtkDeepGBufferPass::REPROJECT)
+  bool twoRenderers = false, int oracle = vtkDeepGBufferPass::REPROJECT,
+  int preset = vtkDeepGIPass::BALANCED)
 {
-  const Run kept = Converge(true, change, twoRenderers, oracle);
-  const Run full = Converge(false, change, twoRenderers, oracle);
+  const Run kept = Converge(true, change, twoRenderers, oracle, preset);
+  const Run full = Converge(false, change, twoRenderers, oracle, preset);
   const int difference = MaximumDifference(kept, full);
   std::printf("%s: frames keeping the layers %s (off: %s), effects %s, largest difference %d/255\n",
     name, Flags(kept.Reused).c_str(), Flags(full.Reused).c_str(),
@@ -177,12 +203,28 @@ void CheckCase(const char* name, const Change& change, const std::string& expect
     (kept.Effects & vtkDeepGIPass::AMBIENT_OBSCURANCE) && (kept.Effects & vtkDeepGIPass::RADIOSITY),
     Text(name, ": the obscurance and the radiosity ran"));
   Check(difference == 0, Text(name, ": the image equals the one rendering everything"));
+  // With two renderers the flags are the second's, the keys both's.
+  std::string rendered = expected;
+  for (char& c : rendered)
+  {
+    c = c == '1' ? '0' : '1';
+  }
+  Check(twoRenderers || Flags(kept.Keyed) == rendered,
+    Text(name, ": the radiosity's geometry keys are built as ", rendered, ", not as ",
+      Flags(kept.Keyed)));
+  Check(Flags(full.Keyed) == std::string(Frames, '1'),
+    Text(name, ": with ConvergeReusesLayers off every frame builds the keys"));
 }
 }
 
 int TestDeepGIConvergeReuse(int, char*[])
 {
   CheckCase("nothing changes", nullptr, "11111");
+  CheckCase("nothing changes, HIGH_PERFORMANCE", nullptr, "11111", false,
+    vtkDeepGBufferPass::REPROJECT, vtkDeepGIPass::HIGH_PERFORMANCE);
+  CheckCase(
+    "the camera, HIGH_PERFORMANCE", [](GIScene& s) { s.Renderer->GetActiveCamera()->Azimuth(5.0); },
+    "11001", false, vtkDeepGBufferPass::REPROJECT, vtkDeepGIPass::HIGH_PERFORMANCE);
   CheckCase(
     "an actor's colour",
     [](GIScene& s) { s.Renderer->GetActors()->GetLastActor()->GetProperty()->SetColor(0, 1, 0); },
