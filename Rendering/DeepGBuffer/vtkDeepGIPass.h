@@ -460,8 +460,9 @@ public:
    * tolerance was met.
    *
    * Without the temporal filter the change falls geometrically with the
-   * bounces (deepgi-render's default tolerance 0.07/255 stops after 2-3
-   * frames on the benchmark scenes; Documentation/performance.md).
+   * bounces (deepgi-render's default tolerance 0.07/255 stops after 3
+   * frames on the head and 6-8 in the bunny and the demo rooms;
+   * Documentation/performance.md).
    */
   int Converge(vtkRenderer* renderer, int maximumFrames, double tolerance);
 
