@@ -369,8 +369,10 @@ public:
    * ProgressEvent observer; the single-pass oracles build layer 1 from the
    * frame before, so layers are kept after such a change only when they
    * were peeled). The ambient visibility is computed again when its
-   * settings changed or its temporal filter is on. Renderers sharing the
-   * pass decide each for itself.
+   * settings changed or its temporal filter is on. The radiosity keeps
+   * what it derives from the layers alone (its geometry keys and, with a
+   * resolution divisor, its reduced copy of the layers) while they are
+   * kept. Renderers sharing the pass decide each for itself.
    * The images are the same as with it off, which renders everything every
    * frame; input the modification times do not show (a texture's or a
    * shader's changing input) needs it off.
