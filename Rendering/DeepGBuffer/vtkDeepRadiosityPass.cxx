@@ -171,14 +171,10 @@ struct vtkDeepRadiosityRendererState
   int IncrementCount = 0;
   double Extrapolation = 0.0; // rho / (1 - rho) of the current frame
   // What the geometry keys and the reduced G-buffer were built from
-  // (GeometryKeysCurrent): the G-buffer's layers (their GetLayersTime), the
-  // layers used, the divisor, the grid's size and whether the keys write a
-  // coverage; 0: not built.
+  // (GeometryKeysCurrent): the G-buffer's layers (their GetLayersTime; 0:
+  // not built) and the divisor.
   vtkMTimeType KeysLayersTime = 0;
-  int KeysUsedLayers = 0;
   int KeysDivisor = 0;
-  int KeysSize[2] = { 0, 0 };
-  bool KeysCoverage = false;
 
   void ResetHistory()
   {
@@ -1145,25 +1141,23 @@ void vtkDeepRadiosityPass::BuildGeometryKeys(
   }
   in.Framebuffer->RemoveColorAttachment(0);
   state.KeysLayersTime = this->GBufferPass->GetLayersTime(frame.Renderer);
-  state.KeysUsedLayers = frame.UsedLayers;
   state.KeysDivisor = frame.Divisor;
-  std::copy(frame.Size, frame.Size + 2, state.KeysSize);
-  state.KeysCoverage = state.Coverage[LAYER_KEY] != nullptr;
 }
 
 //------------------------------------------------------------------------------
 // Whether the geometry keys (and, with a divisor, the reduced G-buffer) are
 // those of this frame's layers: built from the layers the G-buffer still
-// holds (vtkDeepGBufferPass::GetLayersTime, which stays while a frame
-// keeps them), with the same layers used, grid and coverage.
+// holds (vtkDeepGBufferPass::GetLayersTime, which stays while a frame keeps
+// them) on the same grid. The rest they depend on comes with the layers:
+// their size and count, and the coverage, which follows the G-buffer's
+// SkipBackgroundTexels (a changed G-buffer setting renders the layers
+// again).
 bool vtkDeepRadiosityPass::GeometryKeysCurrent(
   const vtkGatherFrame& frame, const vtkDeepRadiosityRendererState& state)
 {
   return state.KeysLayersTime != 0 &&
     state.KeysLayersTime == this->GBufferPass->GetLayersTime(frame.Renderer) &&
-    state.KeysUsedLayers == frame.UsedLayers && state.KeysDivisor == frame.Divisor &&
-    state.KeysSize[0] == frame.Size[0] && state.KeysSize[1] == frame.Size[1] &&
-    state.KeysCoverage == (state.Coverage[LAYER_KEY] != nullptr);
+    state.KeysDivisor == frame.Divisor;
 }
 
 //------------------------------------------------------------------------------
