@@ -543,6 +543,13 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
   vtkDeepAmbientObscuranceRendererState& state = this->Internals->States.Get(frame.Renderer);
   state.HasFrame = false;
   const bool temporal = this->TemporalAlpha > 0.0 && frame.Layers > 0;
+  if (!temporal)
+  {
+    // Without the temporal filter only the blur reads AV outside the frame,
+    // BlurRadius texels deep: AV shaded beyond is read by nothing.
+    vtkDeepScreenSpace::LimitShadedRegion(
+      frame.Size, frame.GuardBand, this->BlurRadius, frame.Region);
+  }
   if (!this->PrepareTargets(frame, state, temporal))
   {
     return false;
@@ -653,7 +660,8 @@ bool vtkDeepAmbientObscurancePass::PrepareTargets(
 
 //------------------------------------------------------------------------------
 // Equations 1-2 into RAW, for the frame and GuardBandShadedFraction of the
-// guard band (the scissor); the taps read the whole layers' geometry key,
+// guard band, at most BlurRadius texels of it without the temporal filter
+// (the scissor); the taps read the whole layers' geometry key,
 // far ones from its coarser levels (section 3.4).
 void vtkDeepAmbientObscurancePass::ComputeRawVisibility(
   const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state, double radius)

@@ -397,7 +397,9 @@ public:
    * 0 by default: then this has no effect) for which AV is computed, 0 to 1,
    * default 0.5. The taps always read the whole guard band (occluders just
    * off-screen); the shaded part lets the filter and the temporal history
-   * work across the frame's edges. NaN is ignored and values outside
+   * work across the frame's edges. With TemporalAlpha 0 only the filter
+   * reads it, so at most BlurRadius pixels of the band are shaded (the
+   * frame's AV is the same, for less work). NaN is ignored and values outside
    * [0, 1] are clamped, with a warning. A change resets the history.
    * Because the taps read the whole band, occluders just off-screen
    * darken the frame's edges (see Documentation/radiosity.md, "Guard

@@ -503,6 +503,16 @@ void ShadedRegion(const int size[2], int guardBand, double shadedFraction, int r
 }
 
 //------------------------------------------------------------------------------
+void LimitShadedRegion(const int size[2], int guardBand, int reach, int region[4])
+{
+  const int margin = std::max(region[0], guardBand - std::max(reach, 0));
+  region[0] = margin;
+  region[1] = margin;
+  region[2] = std::max(margin, size[0] - margin);
+  region[3] = std::max(margin, size[1] - margin);
+}
+
+//------------------------------------------------------------------------------
 void FrameProjection(
   const double layerProjection[16], const int size[2], int guardBand, double frame[16])
 {

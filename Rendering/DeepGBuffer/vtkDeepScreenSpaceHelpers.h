@@ -312,6 +312,14 @@ void CropGuardBand(vtkImageData* image, int guardBand);
  */
 void ShadedRegion(const int size[2], int guardBand, double shadedFraction, int region[4]);
 
+/**
+ * Narrows a ShadedRegion to the frame and at most `reach` pixels of the
+ * guard band around it: the shaded texels that a filter of that radius
+ * reads for the frame's (with a pass's temporal filter off, nothing else
+ * reads the band's result).
+ */
+void LimitShadedRegion(const int size[2], int guardBand, int reach, int region[4]);
+
 /// The projection of the frame alone from the projection of layers of
 /// `size` texels with a guard band of `guardBand` pixels (row-major):
 /// clip x and y scaled by layers / frame per axis.
