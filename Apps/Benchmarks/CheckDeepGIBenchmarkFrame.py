@@ -2,8 +2,8 @@
 at 64x48 with one frame and one round, then checks that benchmark-frame.md
 and benchmark-frame.csv were written and hold every method: a row of the
 frame table each, a positive frame time, textures and a "G-buffer: layers"
-stage for the deep methods, a converged frame count for the vtkDeepGIPass
-presets. Exits non-zero on failure.
+stage for the deep methods, a converged frame count in both scenarios for
+the vtkDeepGIPass presets. Exits non-zero on failure.
 
     CheckDeepGIBenchmarkFrame.py DATA_DIR OUTPUT_DIR
 """
@@ -33,10 +33,11 @@ def check_csv(path):
         deep = name in DEEP + GI
         if deep and not (float(row["texture_mib"] or 0) > 0.0 and row["G-buffer: layers [ms]"]):
             failures.append("%s: no textures or no G-buffer: layers stage" % name)
-        if (name in GI) != bool(row["converge_frames"]):
-            failures.append("%s: converge_frames %r" % (name, row["converge_frames"]))
-        elif name in GI and not 1 <= int(row["converge_frames"]) <= 16:
-            failures.append("%s: converged in %s frames" % (name, row["converge_frames"]))
+        for column in ("converge_stop_frames", "converge_jump_frames"):
+            if (name in GI) != bool(row[column]):
+                failures.append("%s: %s %r" % (name, column, row[column]))
+            elif name in GI and not 1 <= int(row[column]) <= 16:
+                failures.append("%s: %s %s" % (name, column, row[column]))
     return failures
 
 
@@ -46,7 +47,7 @@ def check_markdown(path):
     failures = ["no frame-table row for " + name for name in PLAIN + DEEP + GI
                 if "\n| %s | " % name not in text]
     for expected in ("OpenGL renderer: ", "| G-buffer: layers | ", "| outside the stages",
-                     "| method | frames | seconds | GI frames |"):
+                     "| method | scenario | frames | seconds | GI frames |"):
         if expected not in text:
             failures.append("the markdown lacks %r" % expected)
     return failures

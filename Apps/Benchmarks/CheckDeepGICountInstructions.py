@@ -5,8 +5,11 @@ count-instructions.md: both rows with a positive count, the G-buffer frame
 counting more instructions than plain VTK's (it draws the same triangles
 into more targets and resolves them), and the G-buffer's stage table:
 building the layers its largest stage, its stages adding up to within
-10 % of the frame counted without the stage timer. Exits non-zero on
-failure.
+10 % of the frame counted without the stage timer. A second run counts
+vtkDeepGIPass HIGH_PERFORMANCE with --converge and checks its converge
+table: a row for each scenario with 1 to 16 frames and a positive count,
+and fewer instructions than as many full frames where the camera stopped
+(Converge keeps the layers there). Exits non-zero on failure.
 
     CheckDeepGICountInstructions.py DATA_DIR OUTPUT_DIR
 """
@@ -18,6 +21,8 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 METHODS = ["plain VTK", "vtkDeepGBufferPass 1 layer"]
 LAYERS_STAGE = "G-buffer: layers"
+GI_METHOD = "vtkDeepGIPass HIGH_PERFORMANCE"
+STOP_SCENARIO = "after the camera stops"
 
 
 def tables(path):
@@ -56,9 +61,36 @@ def main(argv):
         failures.append("the stage table's largest stage is not %s" % LAYERS_STAGE)
     if not failures and not abs(profiled - rows[METHODS[1]]) <= 0.1 * rows[METHODS[1]]:
         failures.append("the stages add up to %g, the frame %d" % (profiled, rows[METHODS[1]]))
+    failures += check_converge(data, out, path)
     for failure in failures:
         print("FAILED:", failure)
     return 1 if failures else 0
+
+
+def check_converge(data, out, path):
+    os.remove(path)
+    subprocess.check_call(
+        [sys.executable, os.path.join(HERE, "deepgi_count_instructions.py"), "--data", data,
+         "--scenes", "bunny-floor", "--size", "64x48", "--frames", "1", "--methods",
+         GI_METHOD, "--converge", "--output", out])
+    with open(path) as f:
+        text = f.read()
+    print(text)
+    rows, _ = tables(path)
+    per_frame = rows.get(GI_METHOD, 0)
+    scenarios = {m.group(1): (int(m.group(2)), int(m.group(3))) for m in re.finditer(
+        r"^\| %s \| (.+?) \| (\d+) \| (\d+) \| [\d.]+ \|$" % GI_METHOD, text, re.M)}
+    failures = []
+    for scenario in (STOP_SCENARIO, "after a jump to the start camera"):
+        frames, count = scenarios.get(scenario, (0, 0))
+        if not (1 <= frames <= 16 and count > 0):
+            failures.append("converge %r: %d frames, %d million instructions" % (
+                scenario, frames, count))
+    frames, count = scenarios.get(STOP_SCENARIO, (0, 0))
+    if not failures and not count < frames * per_frame:
+        failures.append("Converge after the camera stopped counted %d million instructions, "
+                        "no fewer than %d frames of %d" % (count, frames, per_frame))
+    return failures
 
 
 if __name__ == "__main__":

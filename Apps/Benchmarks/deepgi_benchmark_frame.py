@@ -53,8 +53,13 @@ each written to a temporary file and then renamed), per scene and size:
   stages' sum (VTK's camera, lights, translucent and overlay steps,
   Python);
 - converging a still image (vtkDeepGIPass presets): Converge(renderer, 16,
-  0.07 / 255) at the start camera: the frames it rendered, its seconds and
-  those seconds in the preset's median frames ("GI frames").
+  0.07 / 255) after 3 orbit frames, once where the orbit stopped (a user
+  who stops moving the camera) and once back at the start camera (a view
+  set by a script, the temporal filter's history from another view), each
+  after one untimed Converge (llvmpipe compiles the programs and state
+  variants that only Converge's frames use the first time): the frames it
+  rendered, its seconds and those seconds in the preset's median frames
+  ("GI frames").
 
 When both bunny scenes ran, "Flat in triangle count" compares, per size
 and deep method, the shading cost (profiled frame minus the stage
@@ -86,6 +91,13 @@ SCENES = ("bunny-floor", "bunny-floor-1m", "headsq")
 PRESETS = ("HIGH_PERFORMANCE", "BALANCED", "HIGH_QUALITY")
 WARM_UP_FRAMES = 3
 ORBIT_DEGREES = 0.5
+# Converge's arguments: deepgi-render's tolerance, 0.07 of a colour level.
+CONVERGE_FRAMES = 16
+CONVERGE_TOLERANCE = 0.07 / 255.0
+# Where Converge starts: where the orbit stopped, or back at the start camera.
+STOP_SCENARIO = "after the camera stops"
+JUMP_SCENARIO = "after a jump to the start camera"
+CONVERGE_SCENARIOS = (STOP_SCENARIO, JUMP_SCENARIO)
 LAYERS_STAGE = "G-buffer: layers"
 OUTSIDE_ROW = "outside the stages (VTK's camera, lights, translucent and overlay steps, Python)"
 
@@ -231,7 +243,7 @@ class Method:
         self.stages = {}  # stage name -> ms per frame, in the order the stages first ran
         self.profiled_ms = None
         self.texture_mib = None
-        self.converge = None  # (frames, seconds)
+        self.converge = {}  # CONVERGE_SCENARIOS name -> (frames, seconds)
 
 
 def make_ssao(kernel, radius):
@@ -326,13 +338,29 @@ def profile(args, renderer, orbit, m):
     m.texture_mib = m.pass_.GetTextureBytes() / 2.0 ** 20
 
 
+def prepare_still(orbit, scenario):
+    """The camera Converge starts from in a CONVERGE_SCENARIOS scenario."""
+    orbit.restart()
+    orbit.frames(WARM_UP_FRAMES)
+    if scenario == JUMP_SCENARIO:
+        orbit.restart()
+
+
+def converge_still(orbit, gi):
+    """Converge(renderer, CONVERGE_FRAMES, CONVERGE_TOLERANCE); its frames."""
+    return gi.Converge(orbit.renderer, CONVERGE_FRAMES, CONVERGE_TOLERANCE)
+
+
 def converge(renderer, orbit, m):
     renderer.SetPass(m.pass_)
-    orbit.restart()
-    start = time.perf_counter()
-    frames = m.pass_.Converge(renderer, 16, 0.07 / 255.0)
-    renderer.GetRenderWindow().WaitForCompletion()
-    m.converge = (frames, time.perf_counter() - start)
+    prepare_still(orbit, JUMP_SCENARIO)
+    converge_still(orbit, m.pass_)
+    for scenario in CONVERGE_SCENARIOS:
+        prepare_still(orbit, scenario)
+        start = time.perf_counter()
+        frames = converge_still(orbit, m.pass_)
+        renderer.GetRenderWindow().WaitForCompletion()
+        m.converge[scenario] = (frames, time.perf_counter() - start)
 
 
 def measure_size(args, orbit, radius, size):
@@ -419,12 +447,15 @@ def stage_table(methods, frames):
 
 
 def converge_table(methods):
-    lines = ["Converging a still image: Converge(renderer, 16, 0.07 / 255) at the start camera.",
-             "", "| method | frames | seconds | GI frames |", "|---|---|---|---|"]
+    lines = ["Converging a still image: Converge(renderer, %d, %.2f / 255) after %d orbit frames, "
+             "where the orbit stopped and back at the start camera, each after one untimed "
+             "Converge." % (CONVERGE_FRAMES, CONVERGE_TOLERANCE * 255.0, WARM_UP_FRAMES), "",
+             "| method | scenario | frames | seconds | GI frames |", "|---|---|---|---|---|"]
     for m in (m for m in methods if m.converge):
-        frames, seconds = m.converge
-        gi_frames = 1000.0 * seconds / statistics.median(m.times)
-        lines.append("| %s | %d | %.2f | %.1f |" % (m.name, frames, seconds, gi_frames))
+        for scenario, (frames, seconds) in m.converge.items():
+            gi_frames = 1000.0 * seconds / statistics.median(m.times)
+            lines.append("| %s | %s | %d | %.2f | %.1f |" % (
+                m.name, scenario, frames, seconds, gi_frames))
     return lines
 
 
@@ -477,16 +508,18 @@ def csv_text(results):
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
     writer.writerow(["scene", "triangles", "width", "height", "method", "frame_ms", "x_plain",
-                     "texture_mib", "profiled_frame_ms", "outside_stages_ms", "converge_frames",
-                     "converge_s", "converge_gi_frames"] + [s + " [ms]" for s in stages])
+                     "texture_mib", "profiled_frame_ms", "outside_stages_ms"] +
+                    [prefix + column for prefix in ("converge_stop_", "converge_jump_")
+                     for column in ("frames", "s", "gi_frames")] + [s + " [ms]" for s in stages])
     for scene, triangles, size, methods in results:
         plain = statistics.median(methods[0].times)
         for m in methods:
             ms = statistics.median(m.times)
             row = [scene, triangles, size[0], size[1], m.name, ms, ms / plain, m.texture_mib,
                    m.profiled_ms, outside_ms(m) if m.gbuffer else None]
-            frames, seconds = m.converge or (None, None)
-            row += [frames, seconds, 1000.0 * seconds / ms if seconds else None]
+            for scenario in CONVERGE_SCENARIOS:
+                frames, seconds = m.converge.get(scenario, (None, None))
+                row += [frames, seconds, 1000.0 * seconds / ms if seconds else None]
             row += [m.stages.get(s) for s in stages]
             writer.writerow(["" if v is None else round(v, 4) if isinstance(v, float) else v
                              for v in row])

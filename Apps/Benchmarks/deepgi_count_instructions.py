@@ -25,6 +25,12 @@ boundaries dump callgrind's counts (DumpCallgrindCounts), and a second
 table gives the millions of instructions per frame of each stage
 (exclusive of the stages nested in it), in the order the stages first ran,
 and of the whole profiled frame.
+
+With --converge each vtkDeepGIPass preset's Converge is counted in the
+frame benchmark's two scenarios (after the camera stops, after a jump to
+the start camera; each after one uncounted Converge): the frames it
+rendered, its instructions and those in the preset's counted frames ("GI
+frames").
 """
 
 import argparse
@@ -61,6 +67,9 @@ def parse_arguments():
                              "names (default: every method)")
     parser.add_argument("--stages", action="store_true",
                         help="also count each deep method's stages (a second run per method)")
+    parser.add_argument("--converge", action="store_true",
+                        help="also count the vtkDeepGIPass presets' Converge in the frame "
+                             "benchmark's two scenarios")
     parser.add_argument("--callgrind-output", help=argparse.SUPPRESS)  # set under callgrind
     parser.add_argument("--output", default="output", help="directory of count-instructions.md")
     args = parser.parse_args()
@@ -136,17 +145,39 @@ def read_dump(path):
     return None if total is None else (label, total)
 
 
+def count_call(args, call, label):
+    """(call()'s result, [(label, count)] of the instructions it executed):
+    callgrind's instrumentation is on for the call only."""
+    for path in glob.glob(args.callgrind_output + ".*"):
+        os.remove(path)  # stage boundaries passed while counting was off
+    callgrind("-i", "on")
+    result = call()
+    callgrind("-i", "off")
+    callgrind("-d")
+    return result, take_dumps(args.callgrind_output, label)
+
+
 def count_frames(args, orbit):
     """Instructions of --frames frames of the current pass: [(label, count)]."""
     orbit.restart()
     orbit.frames(WARM_UP_FRAMES)
-    for path in glob.glob(args.callgrind_output + ".*"):
-        os.remove(path)  # the warm-up's stage boundaries, counted while off
-    callgrind("-i", "on")
-    orbit.frames(args.frames)
-    callgrind("-i", "off")
-    callgrind("-d")
-    return take_dumps(args.callgrind_output, vtkdeepgi.vtkDeepGIStageTimer.GetOutsideStagesLabel())
+    _, dumps = count_call(args, lambda: orbit.frames(args.frames),
+                          vtkdeepgi.vtkDeepGIStageTimer.GetOutsideStagesLabel())
+    return dumps
+
+
+def count_converge(args, orbit, m):
+    """[(scenario, frames, instructions)] of the frame benchmark's Converge
+    scenarios, each counted after one uncounted Converge (the programs and
+    state variants that only Converge's frames use are compiled in it)."""
+    frame.prepare_still(orbit, frame.JUMP_SCENARIO)
+    frame.converge_still(orbit, m.pass_)
+    results = []
+    for scenario in frame.CONVERGE_SCENARIOS:
+        frame.prepare_still(orbit, scenario)
+        frames, dumps = count_call(args, lambda: frame.converge_still(orbit, m.pass_), scenario)
+        results.append((scenario, frames, sum(count for _, count in dumps)))
+    return results
 
 
 def count_stages(args, orbit, m):
@@ -163,7 +194,8 @@ def count_stages(args, orbit, m):
 
 def count_scene(args, scene):
     """Returns (display name, triangles, [(method, instructions per frame)],
-    [(method, {stage: instructions per frame})])."""
+    [(method, {stage: instructions per frame})], [(method, instructions per
+    frame, count_converge's list)])."""
     factory = vtkdeepgi.vtkDeepGIRenderWindowFactory
     window = factory.NewRenderWindow(factory.BACKEND_AUTO)
     window.SetMultiSamples(0)
@@ -176,19 +208,21 @@ def count_scene(args, scene):
     window.Render()
     bounds = renderer.ComputeVisiblePropBounds()
     radius = 0.05 * np.linalg.norm(np.array(bounds[1::2]) - np.array(bounds[0::2]))
-    orbit, rows, stage_rows = frame.Orbit(window, renderer), [], []
+    orbit, rows, stage_rows, converge_rows = frame.Orbit(window, renderer), [], [], []
     for m in frame.make_methods(radius, args.method_words):
         renderer.SetPass(m.pass_)
         counts = count_frames(args, orbit)
         rows.append((m.name, sum(count for _, count in counts) / args.frames))
         if args.stages and m.gbuffer:
             stage_rows.append((m.name, count_stages(args, orbit, m)))
+        if args.converge and isinstance(m.pass_, vtkdeepgi.vtkDeepGIPass):
+            converge_rows.append((m.name, rows[-1][1], count_converge(args, orbit, m)))
         renderer.SetPass(None)
         if m.pass_:
             m.pass_.ReleaseGraphicsResources(window)
     triangles = frame.count_triangles(renderer)
     del keep
-    return name, triangles, rows, stage_rows
+    return name, triangles, rows, stage_rows, converge_rows
 
 
 def user_arguments():
@@ -207,7 +241,7 @@ def user_arguments():
 def markdown(args, results):
     lines = ["Command: `scripts/count-instructions.sh %s`; %s." % (
         " ".join(user_arguments()), time.strftime("%Y-%m-%d %H:%M:%S")), ""]
-    for name, triangles, rows, stage_rows in results:
+    for name, triangles, rows, stage_rows, converge_rows in results:
         lines += ["#### %s, %d triangles, %dx%d" % ((name, triangles) + args.size), "",
                   "| method | millions of instructions per frame | x plain |", "|---|---|---|"]
         plain = dict(rows).get("plain VTK")
@@ -217,7 +251,24 @@ def markdown(args, results):
         lines.append("")
         if stage_rows:
             lines += stage_table(stage_rows) + [""]
+        if converge_rows:
+            lines += converge_table(converge_rows) + [""]
     return "\n".join(lines)
+
+
+def converge_table(converge_rows):
+    """Converge's frames and instructions, also in frames of the method."""
+    lines = ["Converging a still image: Converge(renderer, %d, %.2f / 255) after %d orbit "
+             "frames, where the orbit stopped and back at the start camera, each after one "
+             "uncounted Converge:" % (frame.CONVERGE_FRAMES, frame.CONVERGE_TOLERANCE * 255.0,
+                                      frame.WARM_UP_FRAMES), "",
+             "| method | scenario | frames | millions of instructions | GI frames |",
+             "|---|---|---|---|---|"]
+    for method, per_frame, scenarios in converge_rows:
+        for scenario, frames, count in scenarios:
+            lines.append("| %s | %s | %d | %.0f | %.2f |" % (
+                method, scenario, frames, count / 1e6, count / per_frame))
+    return lines
 
 
 def stage_table(stage_rows):
