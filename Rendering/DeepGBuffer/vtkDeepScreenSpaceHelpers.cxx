@@ -492,24 +492,29 @@ void CropGuardBand(vtkImageData* image, int guardBand)
 }
 
 //------------------------------------------------------------------------------
-void ShadedRegion(const int size[2], int guardBand, double shadedFraction, int region[4])
+namespace
 {
-  const double fraction = std::min(std::max(shadedFraction, 0.0), 1.0);
-  const int margin = guardBand - static_cast<int>(std::lround(fraction * guardBand));
+// The texels of layers of `size` at least `margin` from every edge.
+void RegionInside(const int size[2], int margin, int region[4])
+{
   region[0] = margin;
   region[1] = margin;
   region[2] = std::max(margin, size[0] - margin);
   region[3] = std::max(margin, size[1] - margin);
 }
+}
+
+//------------------------------------------------------------------------------
+void ShadedRegion(const int size[2], int guardBand, double shadedFraction, int region[4])
+{
+  const double fraction = std::min(std::max(shadedFraction, 0.0), 1.0);
+  RegionInside(size, guardBand - static_cast<int>(std::lround(fraction * guardBand)), region);
+}
 
 //------------------------------------------------------------------------------
 void LimitShadedRegion(const int size[2], int guardBand, int reach, int region[4])
 {
-  const int margin = std::max(region[0], guardBand - std::max(reach, 0));
-  region[0] = margin;
-  region[1] = margin;
-  region[2] = std::max(margin, size[0] - margin);
-  region[3] = std::max(margin, size[1] - margin);
+  RegionInside(size, std::max(region[0], guardBand - std::max(reach, 0)), region);
 }
 
 //------------------------------------------------------------------------------
