@@ -43,10 +43,12 @@
 #include "vtkDeepScreenSpaceHelpers.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 vtkStandardNewMacro(vtkDeepAmbientObscurancePass);
@@ -64,6 +66,61 @@ enum Target
 // What the gather, the filter and the temporal filter write where layer 0
 // holds no surface (ScopedBackgroundSkip): AV 1, no distance.
 const float FullVisibility[4] = { 1.0f, 0.0f, 0.0f, 1.0f };
+
+// What the gather reads besides the layers: vtkDeepAmbientObscuranceFS's
+// uniforms and what the key pyramid is built with. Over the same layers,
+// the same inputs give the same raw AV.
+struct GatherInputs
+{
+  int Estimator = -1;
+  int Size[2] = { 0, 0 };
+  int KeyLayers = 0;       // the layers the key pyramid holds
+  int MaximumMipLevel = 0; // of the pyramid
+  int Layers = 0;          // the layers the taps read
+  int Samples = 0;
+  float Turns = 0.0f;
+  float Radius = 0.0f;
+  float Bias = 0.0f;
+  float Epsilon = 0.0f;
+  float Intensity = 0.0f;
+  float Thickness = 0.0f;
+  float MipThreshold = 0.0f;
+  float RotationOffset = 0.0f;
+  std::array<float, 4> ProjXY = {};
+  std::array<float, 4> ProjT = {};
+
+  auto Tied() const
+  {
+    return std::tie(Estimator, Size[0], Size[1], KeyLayers, MaximumMipLevel, Layers, Samples, Turns,
+      Radius, Bias, Epsilon, Intensity, Thickness, MipThreshold, RotationOffset, ProjXY, ProjT);
+  }
+  bool operator==(const GatherInputs& other) const { return this->Tied() == other.Tied(); }
+};
+
+GatherInputs GatherInputsOf(vtkDeepAmbientObscurancePass* pass, const int size[2], int layers,
+  const float projXY[4], const float projT[4], double radius, double rotationOffset)
+{
+  GatherInputs inputs;
+  inputs.Estimator = pass->GetEstimator();
+  std::copy(size, size + 2, inputs.Size);
+  inputs.KeyLayers = std::max(1, layers);
+  inputs.MaximumMipLevel = pass->GetMaximumMipLevel();
+  inputs.Layers = pass->GetUseSecondLayer() ? std::max(1, layers) : 1;
+  inputs.Samples = pass->GetNumberOfSamples();
+  inputs.Turns = static_cast<float>(vtkDeepAmbientObscurancePass::GetSpiralTurns(inputs.Samples));
+  inputs.Radius = static_cast<float>(radius);
+  inputs.Bias = static_cast<float>(pass->GetBias() * radius);
+  inputs.Epsilon = static_cast<float>(std::max(pass->GetEpsilon() * radius * radius, 1e-30));
+  inputs.Intensity = static_cast<float>(pass->GetIntensity());
+  // VISIBILITY_BITMASK: a surface whose far side no layer holds is thinner
+  // than the layers' separation dz.
+  inputs.Thickness = static_cast<float>(pass->GetGBufferPass()->GetEffectiveMinimumSeparation());
+  inputs.MipThreshold = static_cast<float>(pass->GetMipThreshold());
+  inputs.RotationOffset = static_cast<float>(rotationOffset);
+  std::copy(projXY, projXY + 4, inputs.ProjXY.begin());
+  std::copy(projT, projT + 4, inputs.ProjT.begin());
+  return inputs;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -108,6 +165,22 @@ struct vtkDeepAmbientObscuranceRendererState
   vtkDeepScreenSpace::RenderCounter Renders;
   unsigned int FrameIndex = 0;
   double RotationOffset = 0.0; // of the spiral taps in the current frame, radians
+  // What RAW and the key pyramid hold: the gather with RawInputs over
+  // RawRegion of the layers of RawLayersTime (vtkDeepGBufferPass::
+  // GetLayersTime; 0: nothing).
+  vtkMTimeType RawLayersTime = 0;
+  GatherInputs RawInputs;
+  int RawRegion[4] = { 0, 0, 0, 0 };
+
+  // Whether RAW holds the gather of these layers with these inputs, over
+  // `region` or over a part of it (ComputeRawVisibility gathers the rest).
+  bool RawExtends(vtkMTimeType layersTime, const GatherInputs& inputs, const int region[4]) const
+  {
+    return this->RawLayersTime != 0 && this->RawLayersTime == layersTime &&
+      this->RawInputs == inputs &&
+      (vtkDeepScreenSpace::RegionContains(region, this->RawRegion) ||
+        vtkDeepScreenSpace::RegionContains(this->RawRegion, region));
+  }
 
   void ResetHistory(vtkWindow* w)
   {
@@ -213,6 +286,7 @@ struct vtkDeepAmbientObscuranceRendererState
     vtkDeepScreenSpace::ReleaseTarget(this->Coverage, w);
     this->Width = this->Height = 0;
     this->HasFrame = false;
+    this->RawLayersTime = 0;
   }
 };
 
@@ -556,6 +630,18 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
   }
 
   vtkDeepGBufferPass* gbuffer = this->GBufferPass;
+  // The gather of the same layers with the same inputs is kept, as when
+  // only the blur changed (vtkDeepGIPass::Converge widens it where the
+  // camera stopped), and extended where this frame shades more of the band.
+  const vtkMTimeType layersTime = gbuffer->GetLayersTime(frame.Renderer);
+  const GatherInputs inputs = GatherInputsOf(
+    this, frame.Size, frame.Layers, frame.ProjXY, frame.ProjT, radius, state.RotationOffset);
+  const bool extendRaw = state.RawExtends(layersTime, inputs, frame.Region);
+  if (!extendRaw)
+  {
+    state.RawLayersTime = 0;
+    state.RawInputs = inputs;
+  }
   const int distanceUnit = gbuffer->ActivateTexture(frame.Renderer, vtkDeepGBufferPass::DEPTH);
   const int normalUnit = gbuffer->ActivateTexture(frame.Renderer, vtkDeepGBufferPass::NORMAL);
   const int facingUnit = gbuffer->ActivateTexture(frame.Renderer, vtkDeepGBufferPass::ALBEDO);
@@ -563,11 +649,13 @@ bool vtkDeepAmbientObscurancePass::UpdateAmbientVisibility(const vtkRenderState*
   {
     vtkOpenGLState* ostate = frame.GL;
     vtkDeepScreenSpace::ScopedStageState stageState(ostate);
-    computed = this->BuildKeyPyramid(
-      state, frame.Window, { distanceUnit, normalUnit, facingUnit }, frame.Layers);
+    computed = extendRaw ? this->BindKeyPyramid(state, frame.Window)
+                         : this->BuildKeyPyramid(state, frame.Window,
+                             { distanceUnit, normalUnit, facingUnit }, frame.Layers);
     if (computed)
     {
-      this->ComputeRawVisibility(frame, state, radius);
+      this->ComputeRawVisibility(frame, state, extendRaw);
+      state.RawLayersTime = layersTime;
       this->FilterVisibility(frame, state);
       if (temporal)
       {
@@ -659,45 +747,66 @@ bool vtkDeepAmbientObscurancePass::PrepareTargets(
 }
 
 //------------------------------------------------------------------------------
-// Equations 1-2 into RAW, for the frame and GuardBandShadedFraction of the
-// guard band, at most BlurRadius texels of it without the temporal filter
-// (the scissor); the taps read the whole layers' geometry key,
-// far ones from its coarser levels (section 3.4).
+// Equations 1-2 into RAW with state.RawInputs, for the frame and
+// GuardBandShadedFraction of the guard band, at most BlurRadius texels of
+// it without the temporal filter; the taps read the whole layers' geometry
+// key, far ones from its coarser levels (section 3.4). With `extendRaw`,
+// RAW already holds this gather over state.RawRegion, and only the texels
+// of the frame's region outside it are gathered. Leaves the scissor on the
+// frame's region, where the filters shade.
 void vtkDeepAmbientObscurancePass::ComputeRawVisibility(
-  const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state, double radius)
+  const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state, bool extendRaw)
 {
   vtkInternals& in = *this->Internals;
-  vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "obscurance: gather");
   vtkOpenGLState* ostate = frame.GL;
   in.Framebuffer->Bind();
   ostate->vtkglViewport(0, 0, frame.Size[0], frame.Size[1]);
   ostate->vtkglEnable(GL_SCISSOR_TEST);
   const int* region = frame.Region;
   ostate->vtkglScissor(region[0], region[1], region[2] - region[0], region[3] - region[1]);
+  // The rectangles to gather: the region, or where it exceeds state.RawRegion.
+  int gathered[4][4];
+  int count = 1;
+  std::copy(region, region + 4, gathered[0]);
+  if (extendRaw)
+  {
+    count = vtkDeepScreenSpace::RegionContains(state.RawRegion, region)
+      ? 0
+      : vtkDeepScreenSpace::RegionRing(region, state.RawRegion, gathered);
+  }
+  if (count == 0)
+  {
+    return;
+  }
+  std::copy(region, region + 4, state.RawRegion);
+  vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "obscurance: gather");
   in.Framebuffer->AddColorAttachment(0, state.Targets[RAW]);
   in.Framebuffer->ActivateDrawBuffers(1);
-  vtkOpenGLQuadHelper* gather = in.GatherQuads[this->Estimator];
+  const GatherInputs& inputs = state.RawInputs;
+  vtkOpenGLQuadHelper* gather = in.GatherQuads[inputs.Estimator];
   vtkShaderProgram* program = gather->Program;
   frame.Window->GetShaderCache()->ReadyShaderProgram(program);
-  SetKeyUniforms(program, state.MipUnit, frame.ProjXY, frame.ProjT);
+  SetKeyUniforms(program, state.MipUnit, inputs.ProjXY.data(), inputs.ProjT.data());
   program->SetUniformi("deepMaxMip", state.MipLevels - 1);
-  program->SetUniformi("deepLayers", this->UseSecondLayer ? std::max(1, frame.Layers) : 1);
-  program->SetUniformi("deepSamples", this->NumberOfSamples);
-  program->SetUniformf("deepTurns", static_cast<float>(GetSpiralTurns(this->NumberOfSamples)));
-  program->SetUniformf("deepRadius", static_cast<float>(radius));
-  program->SetUniformf("deepBias", static_cast<float>(this->Bias * radius));
-  program->SetUniformf(
-    "deepEpsilon", static_cast<float>(std::max(this->Epsilon * radius * radius, 1e-30)));
-  program->SetUniformf("deepIntensity", static_cast<float>(this->Intensity));
-  // VISIBILITY_BITMASK: a surface whose far side no layer holds is thinner
-  // than the layers' separation dz.
-  program->SetUniformf(
-    "deepThickness", static_cast<float>(this->GBufferPass->GetEffectiveMinimumSeparation()));
-  program->SetUniformf("deepMipThreshold", static_cast<float>(this->MipThreshold));
-  program->SetUniformf("deepRotationOffset", static_cast<float>(state.RotationOffset));
+  program->SetUniformi("deepLayers", inputs.Layers);
+  program->SetUniformi("deepSamples", inputs.Samples);
+  program->SetUniformf("deepTurns", inputs.Turns);
+  program->SetUniformf("deepRadius", inputs.Radius);
+  program->SetUniformf("deepBias", inputs.Bias);
+  program->SetUniformf("deepEpsilon", inputs.Epsilon);
+  program->SetUniformf("deepIntensity", inputs.Intensity);
+  program->SetUniformf("deepThickness", inputs.Thickness);
+  program->SetUniformf("deepMipThreshold", inputs.MipThreshold);
+  program->SetUniformf("deepRotationOffset", inputs.RotationOffset);
   vtkDeepScreenSpace::ScopedBackgroundSkip skip(
     ostate, in.Framebuffer->GetFBOIndex(), state.Coverage);
-  skip.Draw(gather, FullVisibility);
+  for (int i = 0; i < count; ++i)
+  {
+    const int* part = gathered[i];
+    ostate->vtkglScissor(part[0], part[1], part[2] - part[0], part[3] - part[1]);
+    skip.Draw(gather, FullVisibility);
+  }
+  ostate->vtkglScissor(region[0], region[1], region[2] - region[0], region[3] - region[1]);
 }
 
 //------------------------------------------------------------------------------
@@ -832,18 +941,17 @@ bool vtkDeepAmbientObscurancePass::BuildKeyPyramid(vtkDeepAmbientObscuranceRende
   const int levels = std::max(0, std::min(this->MaximumMipLevel, finest)) + 1;
   layers = std::max(1, layers);
   const int slices = (layers + 1) / 2;
-  // Take a unit of our own first: binding on the active unit would unbind
-  // the G-buffer texture the caller activated there.
-  vtkOpenGLState* ostate = window->GetState();
-  state.MipUnit = units.Distance >= 0 && units.Normal >= 0 && units.Facing >= 0
-    ? window->GetTextureUnitManager()->Allocate()
-    : -1;
-  if (state.MipUnit < 0)
+  if (units.Distance < 0 || units.Normal < 0 || units.Facing < 0)
   {
-    vtkErrorMacro("No texture unit for the geometry key; no ambient obscurance this frame.");
+    vtkErrorMacro("No texture unit for the G-buffer's layers; no ambient obscurance this frame.");
     return false;
   }
-  ostate->vtkglActiveTexture(GL_TEXTURE0 + state.MipUnit);
+  if (!this->BindKeyPyramid(state, window))
+  {
+    return false;
+  }
+  // The pyramid's texture, (re)allocated on the unit just taken.
+  vtkOpenGLState* ostate = window->GetState();
   state.AllocateMip(levels, layers);
   glBindTexture(GL_TEXTURE_2D_ARRAY, state.MipTexture);
   ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, state.MipFramebuffer);
@@ -892,6 +1000,25 @@ bool vtkDeepAmbientObscurancePass::BuildKeyPyramid(vtkDeepAmbientObscuranceRende
   ostate->vtkglActiveTexture(GL_TEXTURE0 + state.MipUnit);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BASE_LEVEL, 0);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, levels - 1);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Binds the key pyramid the state holds to a unit of its own (state.MipUnit):
+// taken first, since binding on the active unit would unbind the G-buffer
+// texture the caller activated there. Returns false, with an error, when no
+// unit is free.
+bool vtkDeepAmbientObscurancePass::BindKeyPyramid(
+  vtkDeepAmbientObscuranceRendererState& state, vtkOpenGLRenderWindow* window)
+{
+  state.MipUnit = window->GetTextureUnitManager()->Allocate();
+  if (state.MipUnit < 0)
+  {
+    vtkErrorMacro("No texture unit for the geometry key; no ambient obscurance this frame.");
+    return false;
+  }
+  window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + state.MipUnit);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, state.MipTexture);
   return true;
 }
 

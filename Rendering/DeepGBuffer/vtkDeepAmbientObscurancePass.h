@@ -571,9 +571,14 @@ public:
    * Render() calls it between RenderLayers and its composite; a pass that
    * composites AV itself (vtkDeepGIPass) calls it after its own
    * GetGBufferPass()->RenderLayers(s) returned true, then reads the result
-   * with ActivateVisibilityTexture. Returns false (with an error) when the
-   * G-buffer has no layers for the renderer or the targets or shaders are
-   * unavailable.
+   * with ActivateVisibilityTexture. The key pyramid and the gather are
+   * those of the renderer's last frame when the G-buffer kept its layers
+   * (vtkDeepGBufferPass::GetLayersTime) and every setting the gather reads
+   * is the same, as when only the blur changed (vtkDeepGIPass::Converge
+   * widens it); where the frame shades more of the guard band than that
+   * gather covered, only the added texels are gathered. Returns false (with
+   * an error) when the G-buffer has no layers for the renderer or the
+   * targets or shaders are unavailable.
    */
   bool UpdateAmbientVisibility(const vtkRenderState* s);
 
@@ -637,9 +642,13 @@ protected:
     int Facing; // ALBEDO, whose alpha is the facing
   };
 
-  /// The geometry key and its pyramid, bound until UnbindKeyPyramid.
+  ///@{
+  /// The geometry key and its pyramid, built, or kept from an earlier frame,
+  /// and bound until UnbindKeyPyramid.
   bool BuildKeyPyramid(vtkDeepAmbientObscuranceRendererState& state, vtkOpenGLRenderWindow* window,
     const KeyUnits& units, int layers);
+  bool BindKeyPyramid(vtkDeepAmbientObscuranceRendererState& state, vtkOpenGLRenderWindow* window);
+  ///@}
   static void UnbindKeyPyramid(
     vtkDeepAmbientObscuranceRendererState& state, vtkOpenGLRenderWindow* window);
 
@@ -648,7 +657,7 @@ protected:
   bool PrepareTargets(
     const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state, bool temporal);
   void ComputeRawVisibility(
-    const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state, double radius);
+    const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state, bool extendRaw);
   void FilterVisibility(const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state);
   void AccumulateVisibility(
     const EffectFrame& frame, vtkDeepAmbientObscuranceRendererState& state, int distanceUnit);

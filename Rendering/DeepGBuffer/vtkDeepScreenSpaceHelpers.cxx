@@ -518,6 +518,30 @@ void LimitShadedRegion(const int size[2], int guardBand, int reach, int region[4
 }
 
 //------------------------------------------------------------------------------
+bool RegionContains(const int outer[4], const int inner[4])
+{
+  return outer[0] <= inner[0] && outer[1] <= inner[1] && inner[2] <= outer[2] &&
+    inner[3] <= outer[3];
+}
+
+//------------------------------------------------------------------------------
+int RegionRing(const int outer[4], const int inner[4], int rings[4][4])
+{
+  const int candidates[4][4] = { { outer[0], outer[1], outer[2], inner[1] },
+    { outer[0], inner[3], outer[2], outer[3] }, { outer[0], inner[1], inner[0], inner[3] },
+    { inner[2], inner[1], outer[2], inner[3] } };
+  int count = 0;
+  for (const auto& candidate : candidates)
+  {
+    if (candidate[0] < candidate[2] && candidate[1] < candidate[3])
+    {
+      std::copy(candidate, candidate + 4, rings[count++]);
+    }
+  }
+  return count;
+}
+
+//------------------------------------------------------------------------------
 void FrameProjection(
   const double layerProjection[16], const int size[2], int guardBand, double frame[16])
 {

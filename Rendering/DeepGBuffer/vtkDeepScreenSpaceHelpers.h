@@ -320,6 +320,17 @@ void ShadedRegion(const int size[2], int guardBand, double shadedFraction, int r
  */
 void LimitShadedRegion(const int size[2], int guardBand, int reach, int region[4]);
 
+/// Whether region `outer` (x0, y0, x1, y1) contains region `inner`.
+bool RegionContains(const int outer[4], const int inner[4]);
+
+/**
+ * The texels of region `outer` outside region `inner`, which it contains
+ * (RegionContains), as at most four disjoint rectangles (below and above
+ * `inner` across the whole width, then left and right of it); returns how
+ * many. A pass that extends a result to a larger region shades only these.
+ */
+int RegionRing(const int outer[4], const int inner[4], int rings[4][4]);
+
 /// The projection of the frame alone from the projection of layers of
 /// `size` texels with a guard band of `guardBand` pixels (row-major):
 /// clip x and y scaled by layers / frame per axis.

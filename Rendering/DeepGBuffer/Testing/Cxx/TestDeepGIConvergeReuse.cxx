@@ -18,6 +18,10 @@
 //    The radiosity builds its geometry keys (the stage timer's "radiosity:
 //    geometry key") in exactly the frames that render the layers; with
 //    HIGH_PERFORMANCE's reduced grid it also keeps its copy of the layers.
+//    The obscurance builds its key pyramid in those frames too, and after
+//    a change of its radius; it gathers in them and in frame 1, where
+//    Converge's wider blur reads more of the guard band than the frames
+//    before shaded: its gather is kept and extended by that ring.
 // 3. Two renderers share the pass (side by side) and one of them's camera
 //    moves after frame 2. Each renderer decides for itself: the second
 //    (whose flags are the window's last) renders its layers again when its
@@ -34,9 +38,13 @@
 
 #include "vtkDeepAmbientObscurancePass.h"
 #include "vtkDeepGBufferPass.h"
+#include "vtkDeepGICaptureNames.h"
 #include "vtkDeepGIPass.h"
 #include "vtkDeepGIStageTimer.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
 #include "vtkLightCollection.h"
+#include "vtkPointData.h"
 
 #include <functional>
 #include <vector>
@@ -66,6 +74,9 @@ struct GIScene
     RedWallSceneWithAmbient(this->Renderer);
     this->Pass->SetPreset(preset);
     this->Pass->AdaptiveLayersOff();
+    // A guard band wide enough (24 pixels) that the obscurance shades as
+    // much of it as its blur reads, 4 pixels more in Converge than before.
+    this->Pass->GetGBufferPass()->SetGuardBand(0.25);
     this->Pass->GetGBufferPass()->SetOracle(oracle);
     this->Renderer->SetPass(this->Pass);
     if (twoRenderers)
@@ -94,8 +105,11 @@ using Change = std::function<void(GIScene&)>;
 struct Run
 {
   std::vector<unsigned char> Pixels;
-  std::vector<int> Reused; // LastFrameReusedLayers after each Converge frame
-  std::vector<int> Keyed;  // whether each frame built the radiosity's geometry keys
+  std::vector<float> Visibility;       // the first renderer's AV after Converge
+  std::vector<int> Reused;             // LastFrameReusedLayers after each Converge frame
+  std::vector<int> Keyed;              // whether each frame built the radiosity's geometry keys
+  std::vector<int> ObscuranceKeyed;    // the obscurance's key pyramid
+  std::vector<int> ObscuranceGathered; // ran the obscurance's gather
   int Effects = 0;
 };
 
@@ -142,6 +156,8 @@ Run Converge(bool reuse, const Change& change, bool twoRenderers, int oracle, in
       auto* o = static_cast<Observed*>(data);
       o->Result->Reused.push_back(o->Scene->Pass->GetLastFrameReusedLayers() ? 1 : 0);
       o->Result->Keyed.push_back(Ran(o->Timer, "radiosity: geometry key") ? 1 : 0);
+      o->Result->ObscuranceKeyed.push_back(Ran(o->Timer, "obscurance: key pyramid") ? 1 : 0);
+      o->Result->ObscuranceGathered.push_back(Ran(o->Timer, "obscurance: gather") ? 1 : 0);
       o->Timer->Reset();
       if (o->Result->Reused.size() == ChangeAfterFrame && *o->Apply)
       {
@@ -157,6 +173,13 @@ Run Converge(bool reuse, const Change& change, bool twoRenderers, int oracle, in
   vtkNew<vtkUnsignedCharArray> rgb;
   scene.Window->GetPixelData(0, 0, size[0] - 1, size[1] - 1, /*front=*/0, rgb);
   run.Pixels.assign(rgb->GetPointer(0), rgb->GetPointer(0) + rgb->GetNumberOfValues());
+  vtkNew<vtkImageData> visibility;
+  scene.Pass->GetAmbientObscurancePass()->CaptureAmbientVisibility(visibility, scene.Renderer);
+  if (vtkFloatArray* av = vtkFloatArray::SafeDownCast(
+        visibility->GetPointData()->GetArray(vtkDeepGICaptureNames::AmbientVisibility)))
+  {
+    run.Visibility.assign(av->GetPointer(0), av->GetPointer(0) + av->GetNumberOfValues());
+  }
   return run;
 }
 
@@ -185,10 +208,12 @@ int MaximumDifference(const Run& a, const Run& b)
 }
 
 // Converge with and without reuse under `change`; `expected` is the
-// reuse flags of the frames with reuse on.
+// reuse flags of the frames with reuse on; `obscuranceKeyed` the frames
+// building the obscurance's key pyramid, when not those rendering the
+// layers.
 void CheckCase(const char* name, const Change& change, const std::string& expected,
   bool twoRenderers = false, int oracle = vtkDeepGBufferPass::REPROJECT,
-  int preset = vtkDeepGIPass::BALANCED)
+  int preset = vtkDeepGIPass::BALANCED, std::string obscuranceKeyed = "")
 {
   const Run kept = Converge(true, change, twoRenderers, oracle, preset);
   const Run full = Converge(false, change, twoRenderers, oracle, preset);
@@ -203,6 +228,8 @@ void CheckCase(const char* name, const Change& change, const std::string& expect
     (kept.Effects & vtkDeepGIPass::AMBIENT_OBSCURANCE) && (kept.Effects & vtkDeepGIPass::RADIOSITY),
     Text(name, ": the obscurance and the radiosity ran"));
   Check(difference == 0, Text(name, ": the image equals the one rendering everything"));
+  Check(!kept.Visibility.empty() && kept.Visibility == full.Visibility,
+    Text(name, ": the ambient visibility equals the one computing everything"));
   // With two renderers the flags are the second's, the keys both's.
   std::string rendered = expected;
   for (char& c : rendered)
@@ -214,6 +241,22 @@ void CheckCase(const char* name, const Change& change, const std::string& expect
       Flags(kept.Keyed)));
   Check(Flags(full.Keyed) == std::string(Frames, '1'),
     Text(name, ": with ConvergeReusesLayers off every frame builds the keys"));
+  if (obscuranceKeyed.empty())
+  {
+    obscuranceKeyed = rendered;
+  }
+  std::string gathered = obscuranceKeyed;
+  gathered[0] = '1';
+  Check(twoRenderers || Flags(kept.ObscuranceKeyed) == obscuranceKeyed,
+    Text(name, ": the obscurance's key pyramid is built as ", obscuranceKeyed, ", not as ",
+      Flags(kept.ObscuranceKeyed)));
+  Check(twoRenderers || Flags(kept.ObscuranceGathered) == gathered,
+    Text(
+      name, ": the obscurance gathers as ", gathered, ", not as ", Flags(kept.ObscuranceGathered)));
+  Check(Flags(full.ObscuranceKeyed) == std::string(Frames, '1') &&
+      Flags(full.ObscuranceGathered) == std::string(Frames, '1'),
+    Text(
+      name, ": with ConvergeReusesLayers off every frame builds the obscurance's key and gathers"));
 }
 }
 
@@ -248,7 +291,8 @@ int TestDeepGIConvergeReuse(int, char*[])
   // computed again (the image would differ otherwise).
   CheckCase(
     "the obscurance's radius",
-    [](GIScene& s) { s.Pass->GetAmbientObscurancePass()->SetRadius(0.3); }, "11111");
+    [](GIScene& s) { s.Pass->GetAmbientObscurancePass()->SetRadius(0.3); }, "11111", false,
+    vtkDeepGBufferPass::REPROJECT, vtkDeepGIPass::BALANCED, "00100");
   CheckCase(
     "two renderers, the second's camera",
     [](GIScene& s) { s.Second->GetActiveCamera()->Azimuth(5.0); }, "11001", true);
