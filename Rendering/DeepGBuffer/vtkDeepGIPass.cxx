@@ -800,8 +800,10 @@ int vtkDeepGIPass::RenderStillFrames(vtkRenderer* renderer, int maximumFrames, d
     {
       if (havePrevious && current->GetNumberOfValues() == previous->GetNumberOfValues())
       {
-        this->LastConvergenceChange = MeanAbsoluteChange(current, previous);
-        done = this->LastConvergenceChange <= tolerance;
+        const double change = MeanAbsoluteChange(current, previous);
+        done = change <= tolerance;
+        this->HoldOffExtrapolation(this->LastConvergenceChange, change, tolerance);
+        this->LastConvergenceChange = change;
       }
       previous->DeepCopy(current);
       havePrevious = true;
@@ -823,6 +825,23 @@ int vtkDeepGIPass::RenderStillFrames(vtkRenderer* renderer, int maximumFrames, d
     }
   }
   return k;
+}
+
+//------------------------------------------------------------------------------
+// Extrapolated bounces (ConvergeExtrapolatesBounces) move the image towards
+// the fixed point in one step when they start, a change of about
+// 1 / (1 - rho) times the frame's own, after which a frame more is needed:
+// two frames at best. They do not start while the image's next change,
+// its last one times the ratio rho of the last two, is expected within the
+// tolerance (one frame without them). Once started, this does not stop
+// them.
+void vtkDeepGIPass::HoldOffExtrapolation(double lastChange, double change, double tolerance)
+{
+  const bool extrapolating = this->RadiosityPass->GetLastBounceExtrapolation() > 0.0;
+  const double rho = lastChange > 0.0 ? change / lastChange : 1.0;
+  const bool nearlyConverged = change * rho <= tolerance;
+  this->RadiosityPass->SetExtrapolateBounces(
+    this->ConvergeExtrapolatesBounces && (extrapolating || !nearlyConverged));
 }
 
 //------------------------------------------------------------------------------

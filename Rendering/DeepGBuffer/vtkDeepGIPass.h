@@ -393,8 +393,13 @@ public:
    * about 0.4 per frame in a room, so once that decay is steady (from the
    * fourth frame when the radiosity starts without history) the image is
    * close to the fixed point, and a tolerance is met in fewer frames.
-   * The fixed point itself is unchanged. Off: each frame shows the bounces
-   * gathered so far.
+   * Starting is itself a large change of the image (the jump to the fixed
+   * point), with a frame more after it, so with a tolerance Converge does
+   * not start extrapolating while the image's next change, its last one
+   * times the ratio of the last two, is expected within the tolerance (as
+   * when Converge starts where an interactive camera stopped, its radiosity
+   * nearly converged). The fixed point itself is unchanged. Off:
+   * each frame shows the bounces gathered so far.
    *
    * @range on/off
    * @default on
@@ -531,6 +536,9 @@ private:
   bool CheckConvergeArguments(vtkRenderer* renderer, int& maximumFrames, double& tolerance);
   // Converge's frames, with its still settings in place; returns how many.
   int RenderStillFrames(vtkRenderer* renderer, int maximumFrames, double tolerance);
+  // Whether the next still frame may start extrapolating the bounces, from
+  // the image's last two changes (lastChange < 0: none before `change`).
+  void HoldOffExtrapolation(double lastChange, double change, double tolerance);
   // Whether this frame holds the last Converge's still image (see Render).
   bool HoldsStillImage(vtkRenderer* renderer, vtkDeepGIRendererState& state);
   // The latest modification of this pass's settings and its sub-passes'.

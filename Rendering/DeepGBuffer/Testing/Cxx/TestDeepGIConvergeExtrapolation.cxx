@@ -11,7 +11,13 @@
 // 3. The fixed point is unchanged: after 40 frames with extrapolation the
 //    image is within 1/255 of it everywhere.
 // 4. Converge(16, 0.07/255) meets the tolerance in fewer frames with it.
-// 5. Afterwards ExtrapolateBounces is off again. A Render() at the same
+// 5. After interactive frames at the camera (the temporal filter on), as
+//    when Converge starts where a user's camera stopped, the radiosity is
+//    nearly converged: no frame starts extrapolating once the image's
+//    change c_k times c_k / c_k-1 is within the tolerance (the next frame
+//    is expected to meet it), and the tolerance is met in no more frames
+//    than without extrapolation.
+// 6. Afterwards ExtrapolateBounces is off again. A Render() at the same
 //    camera holds the converged image, extrapolating as Converge's frames
 //    do; once the camera has moved a Render() (the temporal filter on)
 //    extrapolates nothing.
@@ -21,6 +27,7 @@
 #include "vtkCamera.h"
 #include "vtkDeepGIPass.h"
 
+#include <memory>
 #include <vector>
 
 using namespace DeepRadiosityTest;
@@ -37,6 +44,7 @@ struct Room
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkDeepGIPass> Pass;
   std::vector<double> Factors; // LastBounceExtrapolation after each frame
+  std::vector<double> Changes; // LastConvergenceChange after each frame
   vtkNew<vtkCallbackCommand> Progress;
 
   explicit Room(bool extrapolate)
@@ -52,6 +60,7 @@ struct Room
       {
         auto* room = static_cast<Room*>(data);
         room->Factors.push_back(room->Pass->GetRadiosityPass()->GetLastBounceExtrapolation());
+        room->Changes.push_back(room->Pass->GetLastConvergenceChange());
       });
     this->Pass->AddObserver(vtkCommand::ProgressEvent, this->Progress);
   }
@@ -160,12 +169,59 @@ void CheckTolerance()
   {
     Room room(extrapolate != 0);
     frames[extrapolate] = room.Pass->Converge(room.Renderer, 16, 0.07 / 255.0);
+
     Check(room.Pass->GetLastConvergenceReached(),
       Text(extrapolate ? "with" : "without", " extrapolation the tolerance is met"));
   }
   std::printf(
     "Converge(16, 0.07/255): %d frames without, %d with extrapolation\n", frames[0], frames[1]);
   Check(frames[1] < frames[0], "with extrapolation the tolerance is met in fewer frames");
+}
+
+// Converge(16, 0.07/255) after `interactiveFrames` Render() at the camera.
+Room* ConvergeAfterInteraction(bool extrapolate, int interactiveFrames, int& frames)
+{
+  auto* room = new Room(extrapolate);
+  for (int k = 0; k < interactiveFrames; ++k)
+  {
+    room->Window->Render();
+  }
+  room->Factors.clear();
+  room->Changes.clear();
+  frames = room->Pass->Converge(room->Renderer, 16, 0.07 / 255.0);
+  return room;
+}
+
+void CheckAfterInteraction()
+{
+  // 24-28 frames: the radiosity would start extrapolating in frame 5,
+  // which then needs frame 6, where frame 5 meets the tolerance without.
+  constexpr int InteractiveFrames = 26;
+  constexpr double Tolerance = 0.07 / 255.0;
+  int frames[2] = { 0, 0 };
+  std::unique_ptr<Room> without(ConvergeAfterInteraction(false, InteractiveFrames, frames[0]));
+  std::unique_ptr<Room> with(ConvergeAfterInteraction(true, InteractiveFrames, frames[1]));
+  std::string sequence;
+  bool held = true;
+  int holds = 0;
+  const std::vector<double>& c = with->Changes;
+  for (size_t k = 0; k < c.size(); ++k)
+  {
+    sequence += Format(" %.3f (%.2f)", 255.0 * c[k], with->Factors[k]);
+    if (k >= 1 && k + 1 < c.size() && c[k - 1] > 0.0 && with->Factors[k] == 0.0 &&
+      c[k] * (c[k] / c[k - 1]) <= Tolerance)
+    {
+      ++holds;
+      held = held && with->Factors[k + 1] == 0.0;
+    }
+  }
+  std::printf("after %d interactive frames, changes/255 (factors):%s; %d frames without, %d with "
+              "extrapolation\n",
+    InteractiveFrames, sequence.c_str(), frames[0], frames[1]);
+  Check(holds > 0 && held,
+    "no frame starts extrapolating once the next frame is expected to meet the tolerance");
+  Check(with->Pass->GetLastConvergenceReached() && frames[1] <= frames[0],
+    "after interaction the tolerance is met in no more frames with extrapolation");
 }
 }
 
@@ -175,5 +231,6 @@ int TestDeepGIConvergeExtrapolation(int, char*[])
   CheckFactorsAndEarlyImage(fixedPoint);
   CheckFixedPoint(fixedPoint);
   CheckTolerance();
+  CheckAfterInteraction();
   return ExitStatus();
 }
