@@ -772,6 +772,7 @@ int vtkDeepGIPass::RenderStillFrames(vtkRenderer* renderer, int maximumFrames, d
   vtkNew<vtkUnsignedCharArray> previous;
   vtkNew<vtkUnsignedCharArray> current;
   bool havePrevious = false;
+  double changes[3] = { -1.0, -1.0, -1.0 }; // the image's last three changes, oldest first
   // All restored also when an observer throws.
   ScopedFlag converging(this->Internals->Converging);
   ScopedInterruptCatcher interrupt;
@@ -800,10 +801,11 @@ int vtkDeepGIPass::RenderStillFrames(vtkRenderer* renderer, int maximumFrames, d
     {
       if (havePrevious && current->GetNumberOfValues() == previous->GetNumberOfValues())
       {
-        const double change = MeanAbsoluteChange(current, previous);
-        done = change <= tolerance;
-        this->HoldOffExtrapolation(this->LastConvergenceChange, change, tolerance);
-        this->LastConvergenceChange = change;
+        this->LastConvergenceChange = MeanAbsoluteChange(current, previous);
+        done = this->LastConvergenceChange <= tolerance;
+        std::copy(changes + 1, changes + 3, changes);
+        changes[2] = this->LastConvergenceChange;
+        this->HoldOffExtrapolation(changes, tolerance);
       }
       previous->DeepCopy(current);
       havePrevious = true;
@@ -831,15 +833,17 @@ int vtkDeepGIPass::RenderStillFrames(vtkRenderer* renderer, int maximumFrames, d
 // Extrapolated bounces (ConvergeExtrapolatesBounces) move the image towards
 // the fixed point in one step when they start, a change of about
 // 1 / (1 - rho) times the frame's own, after which a frame more is needed:
-// two frames at best. They do not start while the image's next change,
-// its last one times the ratio rho of the last two, is expected within the
-// tolerance (one frame without them). Once started, this does not stop
-// them.
-void vtkDeepGIPass::HoldOffExtrapolation(double lastChange, double change, double tolerance)
+// two frames at best. They do not start while the image's next change is
+// expected within the tolerance without them: its last change times the
+// larger of the ratios of its last three (the first changes fall faster
+// than the later ones; a single ratio underestimated the next change of a
+// room by half). Once started, this does not stop them.
+void vtkDeepGIPass::HoldOffExtrapolation(const double changes[3], double tolerance)
 {
   const bool extrapolating = this->RadiosityPass->GetLastBounceExtrapolation() > 0.0;
-  const double rho = lastChange > 0.0 ? change / lastChange : 1.0;
-  const bool nearlyConverged = change * rho <= tolerance;
+  const bool measured = changes[0] > 0.0 && changes[1] > 0.0;
+  const double rho = measured ? std::max(changes[1] / changes[0], changes[2] / changes[1]) : 1.0;
+  const bool nearlyConverged = measured && changes[2] * rho <= tolerance;
   this->RadiosityPass->SetExtrapolateBounces(
     this->ConvergeExtrapolatesBounces && (extrapolating || !nearlyConverged));
 }

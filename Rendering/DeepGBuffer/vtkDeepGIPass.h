@@ -396,9 +396,9 @@ public:
    * Starting is itself a large change of the image (the jump to the fixed
    * point), with a frame more after it, so with a tolerance Converge does
    * not start extrapolating while the image's next change, its last one
-   * times the ratio of the last two, is expected within the tolerance (as
-   * when Converge starts where an interactive camera stopped, its radiosity
-   * nearly converged). The fixed point itself is unchanged. Off:
+   * times the larger ratio of its last three, is expected within the
+   * tolerance (as when Converge starts where an interactive camera
+   * stopped, its radiosity nearly converged). The fixed point itself is unchanged. Off:
    * each frame shows the bounces gathered so far.
    *
    * @range on/off
@@ -537,8 +537,8 @@ private:
   // Converge's frames, with its still settings in place; returns how many.
   int RenderStillFrames(vtkRenderer* renderer, int maximumFrames, double tolerance);
   // Whether the next still frame may start extrapolating the bounces, from
-  // the image's last two changes (lastChange < 0: none before `change`).
-  void HoldOffExtrapolation(double lastChange, double change, double tolerance);
+  // the image's last three changes, oldest first (< 0: not measured).
+  void HoldOffExtrapolation(const double changes[3], double tolerance);
   // Whether this frame holds the last Converge's still image (see Render).
   bool HoldsStillImage(vtkRenderer* renderer, vtkDeepGIRendererState& state);
   // The latest modification of this pass's settings and its sub-passes'.

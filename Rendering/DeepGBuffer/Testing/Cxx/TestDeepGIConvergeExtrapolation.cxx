@@ -14,9 +14,9 @@
 // 5. After interactive frames at the camera (the temporal filter on), as
 //    when Converge starts where a user's camera stopped, the radiosity is
 //    nearly converged: no frame starts extrapolating once the image's
-//    change c_k times c_k / c_k-1 is within the tolerance (the next frame
-//    is expected to meet it), and the tolerance is met in no more frames
-//    than without extrapolation.
+//    change c_k times the larger of c_k / c_k-1 and c_k-1 / c_k-2 is
+//    within the tolerance (the next frame is expected to meet it), and the
+//    tolerance is met in no more frames than without extrapolation.
 // 6. Afterwards ExtrapolateBounces is off again. A Render() at the same
 //    camera holds the converged image, extrapolating as Converge's frames
 //    do; once the camera has moved a Render() (the temporal filter on)
@@ -208,8 +208,8 @@ void CheckAfterInteraction()
   for (size_t k = 0; k < c.size(); ++k)
   {
     sequence += Format(" %.3f (%.2f)", 255.0 * c[k], with->Factors[k]);
-    if (k >= 1 && k + 1 < c.size() && c[k - 1] > 0.0 && with->Factors[k] == 0.0 &&
-      c[k] * (c[k] / c[k - 1]) <= Tolerance)
+    if (k >= 2 && k + 1 < c.size() && c[k - 2] > 0.0 && c[k - 1] > 0.0 && with->Factors[k] == 0.0 &&
+      c[k] * std::max(c[k] / c[k - 1], c[k - 1] / c[k - 2]) <= Tolerance)
     {
       ++holds;
       held = held && with->Factors[k + 1] == 0.0;
