@@ -351,16 +351,29 @@ def converge_still(orbit, gi):
     return gi.Converge(orbit.renderer, CONVERGE_FRAMES, CONVERGE_TOLERANCE)
 
 
-def converge(renderer, orbit, m):
-    renderer.SetPass(m.pass_)
+def converge_scenarios(orbit, gi, measure):
+    """[(scenario, measure(scenario, run))] for each CONVERGE_SCENARIOS
+    scenario, where run() converges from its start camera and returns the
+    frames; after one unmeasured Converge (llvmpipe compiles the programs
+    and state variants that only Converge's frames use the first time)."""
     prepare_still(orbit, JUMP_SCENARIO)
-    converge_still(orbit, m.pass_)
+    converge_still(orbit, gi)
+    results = []
     for scenario in CONVERGE_SCENARIOS:
         prepare_still(orbit, scenario)
+        results.append((scenario, measure(scenario, lambda: converge_still(orbit, gi))))
+    return results
+
+
+def converge(renderer, orbit, m):
+    def timed(scenario, run):
         start = time.perf_counter()
-        frames = converge_still(orbit, m.pass_)
+        frames = run()
         renderer.GetRenderWindow().WaitForCompletion()
-        m.converge[scenario] = (frames, time.perf_counter() - start)
+        return frames, time.perf_counter() - start
+
+    renderer.SetPass(m.pass_)
+    m.converge = dict(converge_scenarios(orbit, m.pass_, timed))
 
 
 def measure_size(args, orbit, radius, size):

@@ -168,16 +168,13 @@ def count_frames(args, orbit):
 
 def count_converge(args, orbit, m):
     """[(scenario, frames, instructions)] of the frame benchmark's Converge
-    scenarios, each counted after one uncounted Converge (the programs and
-    state variants that only Converge's frames use are compiled in it)."""
-    frame.prepare_still(orbit, frame.JUMP_SCENARIO)
-    frame.converge_still(orbit, m.pass_)
-    results = []
-    for scenario in frame.CONVERGE_SCENARIOS:
-        frame.prepare_still(orbit, scenario)
-        frames, dumps = count_call(args, lambda: frame.converge_still(orbit, m.pass_), scenario)
-        results.append((scenario, frames, sum(count for _, count in dumps)))
-    return results
+    scenarios, each counted after one uncounted Converge."""
+    def counted(scenario, run):
+        frames, dumps = count_call(args, run, scenario)
+        return frames, sum(count for _, count in dumps)
+
+    return [(scenario, frames, count) for scenario, (frames, count)
+            in frame.converge_scenarios(orbit, m.pass_, counted)]
 
 
 def count_stages(args, orbit, m):
