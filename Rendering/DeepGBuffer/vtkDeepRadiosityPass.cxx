@@ -55,6 +55,30 @@ using vtkDeepScreenSpace::ReadyQuad;
 using vtkDeepScreenSpace::ReleaseTarget;
 constexpr int Layers = vtkDeepRadiosityPass::NUMBER_OF_LAYERS;
 
+// The program of a stage that reads a texel's last frame, variants[1] for
+// frames whose reprojection is the identity: its source with
+// DEEP_STILL_CAMERA defined, where the shader reads the texel itself
+// instead of reprojecting (same texels, less arithmetic: the reprojection
+// is about half of the temporal filter on a CPU renderer, which runs both
+// sides of a branch).
+bool ReadyVariant(vtkOpenGLQuadHelper* (&variants)[2], bool still, vtkOpenGLRenderWindow* window,
+  const char* source)
+{
+  vtkOpenGLQuadHelper*& quad = variants[still ? 1 : 0];
+  // ReadyQuad reads the source only to compile: compose it only then.
+  std::string fs;
+  if (!quad)
+  {
+    fs = source;
+    if (still)
+    {
+      vtkShaderProgram::Substitute(
+        fs, "//VTK::System::Dec", "//VTK::System::Dec\n#define DEEP_STILL_CAMERA");
+    }
+  }
+  return ReadyQuad(quad, window, fs.c_str());
+}
+
 // Per-layer targets, in the order of the frame's passes.
 enum Target
 {
@@ -313,12 +337,15 @@ class vtkDeepRadiosityPass::vtkInternals
 public:
   vtkDeepScreenSpace::RendererStates<vtkDeepRadiosityRendererState> States;
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
-  vtkOpenGLQuadHelper* BounceQuad = nullptr;
+  // The bounce input's and the temporal filter's programs, each also in a
+  // variant for frames whose reprojection is the identity (index 1,
+  // DEEP_STILL_CAMERA, see StillCameraSource).
+  vtkOpenGLQuadHelper* BounceQuads[2] = { nullptr, nullptr };
   vtkOpenGLQuadHelper* GatherQuad = nullptr;
   vtkOpenGLQuadHelper* KeyQuad = nullptr;
   vtkOpenGLQuadHelper* BlurQuad = nullptr;
   double BlurQuadNormalPower = 0.0; // the BlurNormalPower BlurQuad was compiled for
-  vtkOpenGLQuadHelper* TemporalQuad = nullptr;
+  vtkOpenGLQuadHelper* TemporalQuads[2] = { nullptr, nullptr };
   vtkOpenGLQuadHelper* IncrementQuad = nullptr; // ExtrapolateBounces
   vtkOpenGLQuadHelper* CompositeQuad = nullptr;
   vtkOpenGLQuadHelper* ReduceQuad = nullptr;
@@ -343,8 +370,9 @@ vtkDeepRadiosityPass::~vtkDeepRadiosityPass()
     vtkWarningMacro("Destroyed without ReleaseGraphicsResources(); OpenGL objects are leaked "
                     "unless the context was destroyed first.");
   }
-  for (vtkOpenGLQuadHelper* quad : { in.BounceQuad, in.GatherQuad, in.KeyQuad, in.BlurQuad,
-         in.TemporalQuad, in.IncrementQuad, in.CompositeQuad, in.ReduceQuad, in.UpsampleQuad })
+  for (vtkOpenGLQuadHelper* quad : { in.BounceQuads[0], in.BounceQuads[1], in.GatherQuad,
+         in.KeyQuad, in.BlurQuad, in.TemporalQuads[0], in.TemporalQuads[1], in.IncrementQuad,
+         in.CompositeQuad, in.ReduceQuad, in.UpsampleQuad })
   {
     delete quad;
   }
@@ -624,6 +652,12 @@ struct vtkDeepRadiosityPass::vtkGatherFrame : vtkDeepScreenSpacePass::EffectFram
   int Next = 1;
   float ToPrevious[16];
   float PreviousProjection[16];
+  // Whether the bounce input and the temporal filter find a texel's last
+  // frame at the texel itself (their DEEP_STILL_CAMERA variants): the
+  // history is of this camera (the bounce input also needs it on the
+  // layers' own grid, Divisor 1), or the temporal filter is off.
+  bool StillBounce = false;
+  bool StillTemporal = false;
   // The grid of the gather's output: with Divisor > 1, Size, Region,
   // Projection, ProjXY and ProjT are the reduced grid's and Units the
   // reduced G-buffer's (filters, temporal filter); the layers' own are kept
@@ -882,12 +916,18 @@ bool vtkDeepRadiosityPass::PrepareTargets(
     in.Framebuffer = vtkOpenGLFramebufferObject::New();
     in.Framebuffer->SetContext(window);
   }
-  const bool ready = ReadyQuad(in.BounceQuad, window, vtkDeepRadiosityBounceFS) &&
+  const bool stillCamera = state.HistoryValid &&
+    std::equal(frame.View, frame.View + 16, state.PreviousView) &&
+    std::equal(frame.Projection, frame.Projection + 16, state.PreviousProjection);
+  frame.StillBounce = stillCamera && frame.Divisor == 1;
+  frame.StillTemporal = stillCamera || !(this->TemporalAlpha > 0.0);
+  const bool ready =
+    ReadyVariant(in.BounceQuads, frame.StillBounce, window, vtkDeepRadiosityBounceFS) &&
     ReadyQuad(in.GatherQuad, window, vtkDeepRadiosityFS) &&
     ReadyQuad(in.KeyQuad, window, vtkDeepGeometryKeyFS) &&
     vtkDeepScreenSpace::ReadyBilateralQuad(
       in.BlurQuad, in.BlurQuadNormalPower, window, vtkDeepRadiosityBlurFS, this->BlurNormalPower) &&
-    ReadyQuad(in.TemporalQuad, window, vtkDeepRadiosityTemporalFS) &&
+    ReadyVariant(in.TemporalQuads, frame.StillTemporal, window, vtkDeepRadiosityTemporalFS) &&
     ReadyQuad(in.CompositeQuad, window, vtkDeepRadiosityCompositeFS) &&
     (frame.Divisor == 1 ||
       (ReadyQuad(in.ReduceQuad, window, vtkDeepRadiosityReduceFS) &&
@@ -1196,7 +1236,8 @@ void vtkDeepRadiosityPass::ComputeBounceInput(
   vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: bounce input");
   AttachLayerTextures(in.Framebuffer, state.Targets[BOUNCE]);
   frame.GL->vtkglViewport(0, 0, frame.BounceSize[0], frame.BounceSize[1]);
-  vtkShaderProgram* program = in.BounceQuad->Program;
+  vtkOpenGLQuadHelper* quad = in.BounceQuads[frame.StillBounce ? 1 : 0];
+  vtkShaderProgram* program = quad->Program;
   frame.Window->GetShaderCache()->ReadyShaderProgram(program);
   // The history's texels, on the gather's output grid, are the ones shaded.
   vtkDeepScreenSpace::SetShadedRegionUniforms(program, frame.Region);
@@ -1219,7 +1260,7 @@ void vtkDeepRadiosityPass::ComputeBounceInput(
   program->SetUniformi("deepHasLights", frame.HasLights ? 1 : 0);
   program->SetUniformi("deepSourceLevel", frame.MinimumMip);
   program->SetUniform2i("deepBounceSize", frame.BounceSize);
-  in.BounceQuad->Render();
+  quad->Render();
   UnbindLayerTextures(state.History[frame.Previous]);
   if (this->AverageFarTaps && frame.MaximumMip > frame.MinimumMip)
   {
@@ -1419,7 +1460,8 @@ void vtkDeepRadiosityPass::AccumulateIrradiance(
   vtkDeepScreenSpace::ScopedStageTime time(this->GetStageTimer(), "radiosity: temporal");
   AttachLayerTextures(in.Framebuffer, state.History[frame.Next],
     &state.Targets[frame.Divisor > 1 ? BLUR_TEMP : INDIRECT]);
-  vtkShaderProgram* program = in.TemporalQuad->Program;
+  vtkOpenGLQuadHelper* quad = in.TemporalQuads[frame.StillTemporal ? 1 : 0];
+  vtkShaderProgram* program = quad->Program;
   frame.Window->GetShaderCache()->ReadyShaderProgram(program);
   vtkDeepScreenSpace::SetShadedRegionUniforms(program, frame.Region);
   BindLayerTextures(program, "deepInput", state.Targets[FILTERED]);
@@ -1438,7 +1480,7 @@ void vtkDeepRadiosityPass::AccumulateIrradiance(
   program->SetUniformf("deepIrradianceLimit", static_cast<float>(IRRADIANCE_LIMIT));
   vtkDeepScreenSpace::ScopedBackgroundSkip skip(
     frame.GL, in.Framebuffer->GetFBOIndex(), state.GridCoverage());
-  skip.Draw(in.TemporalQuad, NoIrradiance);
+  skip.Draw(quad, NoIrradiance);
   key->Deactivate();
   UnbindLayerTextures(state.History[frame.Previous]);
   UnbindLayerTextures(state.Targets[FILTERED]);
@@ -1553,8 +1595,9 @@ void vtkDeepRadiosityPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkInternals& in = *this->Internals;
   in.States.Release(w);
-  for (vtkOpenGLQuadHelper** quad : { &in.BounceQuad, &in.GatherQuad, &in.KeyQuad, &in.BlurQuad,
-         &in.TemporalQuad, &in.IncrementQuad, &in.CompositeQuad, &in.ReduceQuad, &in.UpsampleQuad })
+  for (vtkOpenGLQuadHelper** quad : { &in.BounceQuads[0], &in.BounceQuads[1], &in.GatherQuad,
+         &in.KeyQuad, &in.BlurQuad, &in.TemporalQuads[0], &in.TemporalQuads[1], &in.IncrementQuad,
+         &in.CompositeQuad, &in.ReduceQuad, &in.UpsampleQuad })
   {
     vtkDeepScreenSpace::ReleaseQuad(*quad, w);
   }

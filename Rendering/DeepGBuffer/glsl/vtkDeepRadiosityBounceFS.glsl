@@ -54,6 +54,36 @@ uniform float deepIrradianceLimit; // the largest half float (RGBA16F output)
 
 //VTK::Output::Dec
 
+// The last frame's texel of the layer's surface at `pixel` (distance d),
+// and the distance that surface is expected at there; false where the
+// reprojection leaves the history. DEEP_STILL_CAMERA: the history is of
+// this camera and of the layers' own grid, and the reprojection is the
+// identity (vtkDeepRadiosityPass compiles this variant for such frames):
+// the same texel at the same distance, without the reprojection's
+// arithmetic and the geometric normal's fetches.
+bool lastFrameTexel(ivec2 pixel, vec2 size, int layer, float d, out ivec2 texel,
+  out float expected)
+{
+#ifdef DEEP_STILL_CAMERA
+  texel = pixel;
+  expected = d;
+  return true;
+#else
+  vec3 X = deepPositionFromDistance(vec2(pixel) + 0.5, size, d);
+  float dr;
+  expected = 0.0;
+  if (!deepReproject(X, deepToPrevious, deepPrevProjection, deepHistorySize, texel, dr))
+  {
+    return false;
+  }
+  vec3 n = deepGeometricNormal(deepDistance, pixel, layer, size, X, d,
+    deepDecodeOct16(texelFetch(deepNormal, ivec3(pixel, layer), 0).rg));
+  expected = deepExpectedPreviousDistance(
+    X, n, deepToPrevious, deepPrevProjection, texel, deepHistorySize);
+  return true;
+#endif
+}
+
 // B of the layer's surface at `pixel`, at distance d (0: no surface).
 vec3 bounceInput(ivec2 pixel, vec2 size, int layer, float d)
 {
@@ -71,17 +101,12 @@ vec3 bounceInput(ivec2 pixel, vec2 size, int layer, float d)
   {
     return direct;
   }
-  vec3 X = deepPositionFromDistance(vec2(pixel) + 0.5, size, d);
   ivec2 texel;
-  float dr;
-  if (!deepReproject(X, deepToPrevious, deepPrevProjection, deepHistorySize, texel, dr))
+  float expected;
+  if (!lastFrameTexel(pixel, size, layer, d, texel, expected))
   {
     return direct;
   }
-  vec3 n = deepGeometricNormal(deepDistance, pixel, layer, size, X, d,
-    deepDecodeOct16(texelFetch(deepNormal, ivec3(pixel, layer), 0).rg));
-  float expected = deepExpectedPreviousDistance(
-    X, n, deepToPrevious, deepPrevProjection, texel, deepHistorySize);
   vec4 h0 = texelFetch(deepHistory0, texel, 0);
   vec4 h1 = texelFetch(deepHistory1, texel, 0);
   float e0 = h0.a > 0.0 ? abs(h0.a - expected) : 1e30;
