@@ -1116,7 +1116,11 @@ void vtkDeepGIPass::RenderOpaque(const vtkRenderState* s)
   vtkOpenGLClearErrorMacro();
   const int effects = this->UpdateEffects(s, reused);
   gbuffer->ResolveToFramebuffer(s);
-  this->QueryLayerCoverage(renderer, layers);
+  if (!reused)
+  {
+    // Kept layers cover what they covered when they were rendered.
+    this->QueryLayerCoverage(renderer, layers);
+  }
   this->LastFrameEffects = effects | secondLayer;
   if (effects && gbuffer->GetDisplayQuantity() == vtkDeepGBufferPass::RADIANCE)
   {
