@@ -408,6 +408,9 @@ void vtkDeepRadiosityPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Damping: " << this->Damping << "\n";
   os << indent << "TemporalAlpha: " << this->TemporalAlpha << "\n";
   os << indent << "TemporalInterleave: " << this->TemporalInterleave << "\n";
+  os << indent
+     << "SkipStillCameraReprojection: " << (this->SkipStillCameraReprojection ? "On" : "Off")
+     << "\n";
   os << indent << "ReprojectionTolerance: " << this->ReprojectionTolerance << "\n";
   os << indent
      << "AutomaticReprojectionTolerance: " << (this->AutomaticReprojectionTolerance ? "On" : "Off")
@@ -916,11 +919,12 @@ bool vtkDeepRadiosityPass::PrepareTargets(
     in.Framebuffer = vtkOpenGLFramebufferObject::New();
     in.Framebuffer->SetContext(window);
   }
-  const bool stillCamera = state.HistoryValid &&
+  const bool stillCamera = this->SkipStillCameraReprojection && state.HistoryValid &&
     std::equal(frame.View, frame.View + 16, state.PreviousView) &&
     std::equal(frame.Projection, frame.Projection + 16, state.PreviousProjection);
   frame.StillBounce = stillCamera && frame.Divisor == 1;
-  frame.StillTemporal = stillCamera || !(this->TemporalAlpha > 0.0);
+  frame.StillTemporal =
+    this->SkipStillCameraReprojection && (stillCamera || !(this->TemporalAlpha > 0.0));
   const bool ready =
     ReadyVariant(in.BounceQuads, frame.StillBounce, window, vtkDeepRadiosityBounceFS) &&
     ReadyQuad(in.GatherQuad, window, vtkDeepRadiosityFS) &&

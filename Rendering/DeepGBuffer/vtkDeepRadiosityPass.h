@@ -577,6 +577,25 @@ public:
 
   ///@{
   /**
+   * When on, frames at a still camera (the view and projection of the
+   * history's frame, as in vtkDeepGIPass::Converge) read a texel's last
+   * frame at the texel itself: the bounce input (at ResolutionDivisor 1)
+   * and the temporal filter (on any grid, and whenever TemporalAlpha is 0)
+   * run variants of their shaders compiled without the reprojection, which
+   * there finds that texel: the same pixels as with it off, without the
+   * reprojection's arithmetic, which a CPU renderer (running both sides of
+   * a branch) otherwise executes at every texel. Off is for comparisons.
+   *
+   * @range on/off
+   * @default on
+   */
+  vtkSetMacro(SkipStillCameraReprojection, bool);
+  vtkGetMacro(SkipStillCameraReprojection, bool);
+  vtkBooleanMacro(SkipStillCameraReprojection, bool);
+  ///@}
+
+  ///@{
+  /**
    * Bounce extrapolation for still images (default off; vtkDeepGIPass::
    * Converge turns it on). While TemporalAlpha is 0 each frame adds one
    * bounce, E_k = E_k-1 + T^k E_1, and the increments fall geometrically,
@@ -816,6 +835,7 @@ protected:
   double Damping = 1.0;
   double TemporalAlpha = 0.85;
   int TemporalInterleave = 1;
+  bool SkipStillCameraReprojection = true;
   bool ExtrapolateBounces = false;
   double LastBounceExtrapolation = 0.0;
   double ReprojectionTolerance = 0.01;

@@ -1,0 +1,149 @@
+"""vtkDeepRadiosityPass::SkipStillCameraReprojection gives the same pixels
+as reprojecting at a still camera.
+
+A sphere on a floor before a wall (which layer 1 holds behind the sphere),
+actors with VTK's default properties, rendered by each
+GI preset and by the radiosity pass with the skip on and off. The camera
+turns for the first frames (the reprojecting variants run), then stays
+(frames rendered again with the temporal filter on: the bounce input and
+the temporal filter read each texel's own history), then `Converge`
+renders its still image (temporal filter off). HIGH_PERFORMANCE's reduced
+grid keeps the reprojecting bounce input and skips only in the temporal
+filter. A variant that read another texel, another layer or compared
+another distance would change the image or a capture.
+
+For each method the images after the still frames and after `Converge`,
+and every array of the irradiance captures, must be equal, bit for bit.
+Exits non-zero on failure.
+"""
+import sys
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonDataModel import vtkImageData
+from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
+
+import vtkdeepgi
+from deepgi_testing import grab, new_window
+
+WIDTH, HEIGHT = 160, 120
+MOVING_FRAMES = 3
+DEGREES_PER_FRAME = 5.0
+STILL_FRAMES = 3
+CONVERGE_FRAMES = 4
+
+
+def add_actor(renderer, source):
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(source.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    renderer.AddActor(actor)
+
+
+def scene():
+    window, renderer = new_window(WIDTH, HEIGHT)
+    sphere = vtkSphereSource()
+    sphere.SetThetaResolution(48)
+    sphere.SetPhiResolution(24)
+    add_actor(renderer, sphere)
+    floor = vtkPlaneSource()
+    floor.SetOrigin(-1.5, -0.5, 1.5)
+    floor.SetPoint1(1.5, -0.5, 1.5)
+    floor.SetPoint2(-1.5, -0.5, -1.5)
+    add_actor(renderer, floor)
+    wall = vtkPlaneSource()
+    wall.SetOrigin(-1.5, -0.5, -1.5)
+    wall.SetPoint1(1.5, -0.5, -1.5)
+    wall.SetPoint2(-1.5, 2.0, -1.5)
+    add_actor(renderer, wall)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(0.0, 0.4, 3.0)
+    camera.SetFocalPoint(0.0, 0.0, 0.0)
+    renderer.ResetCameraClippingRange()
+    return window, renderer
+
+
+def capture_irradiance(radiosity, renderer, prefix, out):
+    image = vtkImageData()
+    if not radiosity.CaptureIrradiance(image, renderer):
+        out[prefix] = None
+        return
+    data = image.GetPointData()
+    for i in range(data.GetNumberOfArrays()):
+        out[prefix + data.GetArrayName(i)] = vtk_to_numpy(data.GetArray(i)).copy()
+
+
+def render(make, skip):
+    """The images and irradiance captures after the still frames and after Converge."""
+    window, renderer = scene()
+    effect = make()
+    gi = effect if isinstance(effect, vtkdeepgi.vtkDeepGIPass) else None
+    radiosity = gi.GetRadiosityPass() if gi else effect
+    radiosity.SetSkipStillCameraReprojection(skip)
+    renderer.SetPass(effect)
+    camera = renderer.GetActiveCamera()
+    for _ in range(MOVING_FRAMES):
+        camera.Azimuth(DEGREES_PER_FRAME)
+        renderer.ResetCameraClippingRange()
+        window.Render()
+    for _ in range(STILL_FRAMES):
+        window.Render()
+    out = {"still image": grab(window)}
+    capture_irradiance(radiosity, renderer, "still irradiance ", out)
+    if gi:
+        gi.Converge(renderer, CONVERGE_FRAMES)
+        out["converged image"] = grab(window)
+        capture_irradiance(radiosity, renderer, "converged irradiance ", out)
+    renderer.SetPass(None)
+    effect.ReleaseGraphicsResources(window)
+    return out
+
+
+def preset(name):
+    def make():
+        gi = vtkdeepgi.vtkDeepGIPass()
+        gi.SetPreset(getattr(vtkdeepgi.vtkDeepGIPass, name))
+        return gi
+    return make
+
+
+METHODS = {
+    "HIGH_PERFORMANCE": preset("HIGH_PERFORMANCE"),
+    "BALANCED": preset("BALANCED"),
+    "HIGH_QUALITY": preset("HIGH_QUALITY"),
+    "vtkDeepRadiosityPass": vtkdeepgi.vtkDeepRadiosityPass,
+}
+
+
+def compare(name, skipped, reprojected, failures):
+    if set(skipped) != set(reprojected):
+        failures.append("%s: the captures differ in their arrays: %s"
+                        % (name, sorted(set(skipped) ^ set(reprojected))))
+        return
+    for key in sorted(reprojected):
+        a, b = skipped[key], reprojected[key]
+        if a is None or b is None:
+            failures.append("%s: %s could not be captured" % (name, key))
+        elif a.shape != b.shape or not np.array_equal(a, b):
+            differing = np.count_nonzero(a != b) if a.shape == b.shape else "all"
+            failures.append("%s: %s differs with the skip on (%s values)" % (name, key, differing))
+        elif not np.any(b):
+            failures.append("%s: %s is all zero" % (name, key))
+
+
+def main():
+    failures = []
+    for name, make in METHODS.items():
+        skipped = render(make, True)
+        reprojected = render(make, False)
+        print("%s: %d arrays compared" % (name, len(reprojected)))
+        compare(name, skipped, reprojected, failures)
+    for f in failures:
+        print("FAIL:", f)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
