@@ -54,36 +54,6 @@ uniform float deepIrradianceLimit; // the largest half float (RGBA16F output)
 
 //VTK::Output::Dec
 
-// The last frame's texel of the layer's surface at `pixel` (distance d),
-// and the distance that surface is expected at there; false where the
-// reprojection leaves the history. DEEP_STILL_CAMERA: the history is of
-// this camera and of the layers' own grid, and the reprojection is the
-// identity (vtkDeepRadiosityPass compiles this variant for such frames):
-// the same texel at the same distance, without the reprojection's
-// arithmetic and the geometric normal's fetches.
-bool lastFrameTexel(ivec2 pixel, vec2 size, int layer, float d, out ivec2 texel,
-  out float expected)
-{
-#ifdef DEEP_STILL_CAMERA
-  texel = pixel;
-  expected = d;
-  return true;
-#else
-  vec3 X = deepPositionFromDistance(vec2(pixel) + 0.5, size, d);
-  float dr;
-  expected = 0.0;
-  if (!deepReproject(X, deepToPrevious, deepPrevProjection, deepHistorySize, texel, dr))
-  {
-    return false;
-  }
-  vec3 n = deepGeometricNormal(deepDistance, pixel, layer, size, X, d,
-    deepDecodeOct16(texelFetch(deepNormal, ivec3(pixel, layer), 0).rg));
-  expected = deepExpectedPreviousDistance(
-    X, n, deepToPrevious, deepPrevProjection, texel, deepHistorySize);
-  return true;
-#endif
-}
-
 // B of the layer's surface at `pixel`, at distance d (0: no surface).
 vec3 bounceInput(ivec2 pixel, vec2 size, int layer, float d)
 {
@@ -101,9 +71,13 @@ vec3 bounceInput(ivec2 pixel, vec2 size, int layer, float d)
   {
     return direct;
   }
+  vec3 X = deepPositionFromDistance(vec2(pixel) + 0.5, size, d);
+  vec3 n = deepGeometricNormal(deepDistance, pixel, layer, size, X, d,
+    deepDecodeOct16(texelFetch(deepNormal, ivec3(pixel, layer), 0).rg));
   ivec2 texel;
   float expected;
-  if (!lastFrameTexel(pixel, size, layer, d, texel, expected))
+  if (!deepLastFrameTexel(
+        pixel, d, X, n, deepToPrevious, deepPrevProjection, deepHistorySize, texel, expected))
   {
     return direct;
   }

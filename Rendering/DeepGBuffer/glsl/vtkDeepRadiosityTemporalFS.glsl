@@ -41,33 +41,6 @@ uniform float deepIrradianceLimit;
 
 //VTK::Output::Dec
 
-// The last frame's texel of the surface at `pixel` (distance d, packed
-// normal `packedNormal`) and the distance that surface is expected at
-// there; false where the reprojection leaves the history.
-// DEEP_STILL_CAMERA: the history is of this camera, or the filter is off
-// (vtkDeepRadiosityPass compiles this variant for such frames): the same
-// texel at the same distance, without the reprojection's arithmetic.
-bool lastFrameTexel(ivec2 pixel, vec2 size, float d, float packedNormal, out ivec2 texel,
-  out float expected)
-{
-#ifdef DEEP_STILL_CAMERA
-  texel = pixel;
-  expected = d;
-  return true;
-#else
-  vec3 X = deepPositionFromDistance(vec2(pixel) + 0.5, size, d);
-  float dr;
-  expected = 0.0;
-  if (!deepReproject(X, deepToPrevious, deepPrevProjection, size, texel, dr))
-  {
-    return false;
-  }
-  expected = deepExpectedPreviousDistance(
-    X, deepUnpackOct16(packedNormal), deepToPrevious, deepPrevProjection, texel, size);
-  return true;
-#endif
-}
-
 // `geometry`: the layer's (distance, packed normal) from the key.
 void filterLayer(ivec2 pixel, vec2 size, int layer, vec2 geometry, out vec4 history,
   out vec4 indirect)
@@ -88,9 +61,11 @@ void filterLayer(ivec2 pixel, vec2 size, int layer, vec2 geometry, out vec4 hist
   }
   if (deepHasHistory != 0 && deepAlpha > 0.0)
   {
+    vec3 X = deepPositionFromDistance(vec2(pixel) + 0.5, size, d);
     ivec2 texel;
     float expected;
-    if (lastFrameTexel(pixel, size, d, geometry.y, texel, expected))
+    if (deepLastFrameTexel(pixel, d, X, deepUnpackOct16(geometry.y), deepToPrevious,
+          deepPrevProjection, size, texel, expected))
     {
       vec4 h0 = texelFetch(deepHistory0, texel, 0);
       vec4 h1 = texelFetch(deepHistory1, texel, 0);

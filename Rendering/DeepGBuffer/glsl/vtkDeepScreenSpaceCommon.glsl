@@ -307,3 +307,31 @@ float deepExpectedPreviousDistance(vec3 X, vec3 n, mat4 toPrevious, mat4 prevPro
   }
   return dot(np, P - A) / nb;
 }
+
+// The texel of the last frame's history (`size` texels) that holds the
+// surface at texel `pixel` (distance d, camera-space point X, normal n),
+// and the distance that surface is expected at there
+// (deepExpectedPreviousDistance); false where the reprojection leaves the
+// history. vtkDeepRadiosityPass compiles its bounce input and temporal
+// filter with DEEP_STILL_CAMERA for frames whose history is of this camera
+// and grid: that texel is then `pixel` itself at distance d (where it was
+// shaded), X and n are unused, and the compiler drops the arithmetic and
+// fetches that made them.
+bool deepLastFrameTexel(ivec2 pixel, float d, vec3 X, vec3 n, mat4 toPrevious,
+  mat4 prevProjection, vec2 size, out ivec2 texel, out float expected)
+{
+#ifdef DEEP_STILL_CAMERA
+  texel = pixel;
+  expected = d;
+  return deepShaded(texel);
+#else
+  float distance;
+  expected = 0.0;
+  if (!deepReproject(X, toPrevious, prevProjection, size, texel, distance))
+  {
+    return false;
+  }
+  expected = deepExpectedPreviousDistance(X, n, toPrevious, prevProjection, texel, size);
+  return true;
+#endif
+}
