@@ -19,11 +19,10 @@ import sys
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkImageData
-from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
 
 import vtkdeepgi
-from deepgi_testing import grab, new_window
+from deepgi_testing import (
+    add_sphere_on_floor, capture_arrays, compare_bitwise, gi_preset, grab, new_window)
 
 WIDTH, HEIGHT = 160, 120
 RESIZED = 200, 150  # the last frames' size: the coverage follows a resize
@@ -32,40 +31,14 @@ DEGREES_PER_FRAME = 12.0
 MINIMUM_BACKGROUND = 0.2  # of the layers' texels, so that skipping matters
 
 
-def add_actor(renderer, source):
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(source.GetOutputPort())
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    renderer.AddActor(actor)
-
-
 def scene():
     window, renderer = new_window(WIDTH, HEIGHT)
-    sphere = vtkSphereSource()
-    sphere.SetThetaResolution(48)
-    sphere.SetPhiResolution(24)
-    add_actor(renderer, sphere)
-    floor = vtkPlaneSource()
-    floor.SetOrigin(-1.5, -0.5, 1.5)
-    floor.SetPoint1(1.5, -0.5, 1.5)
-    floor.SetPoint2(-1.5, -0.5, -1.5)
-    add_actor(renderer, floor)
+    add_sphere_on_floor(renderer)
     camera = renderer.GetActiveCamera()
     camera.SetPosition(0.0, 1.2, 3.5)
     camera.SetFocalPoint(0.0, -0.2, 0.0)
     renderer.ResetCameraClippingRange()
     return window, renderer
-
-
-def capture_arrays(capture, renderer, prefix, out):
-    image = vtkImageData()
-    if not capture(image, renderer):
-        out[prefix] = None
-        return
-    data = image.GetPointData()
-    for i in range(data.GetNumberOfArrays()):
-        out[prefix + data.GetArrayName(i)] = vtk_to_numpy(data.GetArray(i)).copy()
 
 
 def background_fraction(gbuffer, renderer):
@@ -106,35 +79,13 @@ def render(make, skip):
     return out, fraction
 
 
-def preset(name):
-    def make():
-        gi = vtkdeepgi.vtkDeepGIPass()
-        gi.SetPreset(getattr(vtkdeepgi.vtkDeepGIPass, name))
-        return gi
-    return make
-
-
 METHODS = {
-    "HIGH_PERFORMANCE": preset("HIGH_PERFORMANCE"),
-    "BALANCED": preset("BALANCED"),
-    "HIGH_QUALITY": preset("HIGH_QUALITY"),
+    "HIGH_PERFORMANCE": gi_preset("HIGH_PERFORMANCE"),
+    "BALANCED": gi_preset("BALANCED"),
+    "HIGH_QUALITY": gi_preset("HIGH_QUALITY"),
     "vtkDeepRadiosityPass": vtkdeepgi.vtkDeepRadiosityPass,
     "vtkDeepAmbientObscurancePass": vtkdeepgi.vtkDeepAmbientObscurancePass,
 }
-
-
-def compare(name, skipped, shaded, failures):
-    if set(skipped) != set(shaded):
-        failures.append("%s: the captures differ in their arrays: %s"
-                        % (name, sorted(set(skipped) ^ set(shaded))))
-        return
-    for key in sorted(shaded):
-        a, b = skipped[key], shaded[key]
-        if a is None or b is None:
-            failures.append("%s: %s could not be captured" % (name, key))
-        elif a.shape != b.shape or not np.array_equal(a, b):
-            differing = np.count_nonzero(a != b) if a.shape == b.shape else "all"
-            failures.append("%s: %s differs with the skip on (%s values)" % (name, key, differing))
 
 
 def main():
@@ -146,7 +97,7 @@ def main():
               % (name, len(shaded), fraction))
         if fraction < MINIMUM_BACKGROUND:
             failures.append("%s: only %.2f of the layers is background" % (name, fraction))
-        compare(name, skipped, shaded, failures)
+        compare_bitwise(name, skipped, shaded, "with the skip on", failures)
     for f in failures:
         print("FAIL:", f)
     return 1 if failures else 0
