@@ -19,9 +19,11 @@
 #include "vtkLightCollection.h"
 #include "vtkLightsPass.h"
 #include "vtkMath.h"
+#include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLCamera.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFXAAFilter.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -120,6 +122,40 @@ Matrix ToArray(vtkMatrix4x4* m)
   Matrix a;
   std::copy(&m->Element[0][0], &m->Element[0][0] + 16, a.begin());
   return a;
+}
+
+// VTK's mappers rasterise with the matrices vtkOpenGLCamera::GetKeyMatrices
+// caches, recomputed only when the camera or the renderer was modified
+// since; a camera changed without Modified() (VTK 9.1's vtkCamera::DeepCopy
+// does not call it, and scripts restore saved views with it) would have its
+// layers rasterised with the last frame's view while the effects
+// reconstruct and reproject them with the camera's own. Modified() when
+// the cached view or projection is not the camera's makes them agree.
+void ModifyStaleCamera(vtkRenderer* renderer, vtkMatrix4x4* view, vtkMatrix4x4* projection)
+{
+  auto* camera = vtkOpenGLCamera::SafeDownCast(renderer->GetActiveCamera());
+  if (!camera)
+  {
+    return;
+  }
+  vtkMatrix4x4* cachedView = nullptr; // transposed, as GLSL reads it
+  vtkMatrix3x3* normals = nullptr;
+  vtkMatrix4x4* cachedProjection = nullptr; // transposed
+  vtkMatrix4x4* worldToClip = nullptr;
+  camera->GetKeyMatrices(renderer, cachedView, normals, cachedProjection, worldToClip);
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      const double p = projection->GetElement(r, c);
+      if (cachedView->GetElement(c, r) != view->GetElement(r, c) ||
+        std::abs(cachedProjection->GetElement(c, r) - p) > 1e-9 * std::max(1.0, std::abs(p)))
+      {
+        camera->Modified();
+        return;
+      }
+    }
+  }
 }
 
 Matrix Multiply(const Matrix& a, const Matrix& b)
@@ -1707,6 +1743,8 @@ void vtkDeepGBufferPass::UpdateCameras(vtkLayerFrame& frame)
   state.PreviousFrameProjection = state.FrameProjection;
   state.View = ToArray(camera->GetModelViewTransformMatrix());
   state.FrameProjection = ToArray(camera->GetProjectionTransformMatrix(aspect, -1, 1));
+  ModifyStaleCamera(frame.Renderer, camera->GetModelViewTransformMatrix(),
+    camera->GetProjectionTransformMatrix(aspect, -1, 1));
   // VTK's vertex shaders see the camera's projection; the layers' vertex
   // stage scales clip x and y by the same GuardBandScale (deepGuardBandScale).
   state.Projection = WithGuardBand(state.FrameProjection, in.GuardBandScale);
