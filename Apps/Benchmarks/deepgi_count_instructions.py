@@ -27,8 +27,8 @@ table gives the millions of instructions per frame of each stage
 and of the whole profiled frame.
 
 With --converge each vtkDeepGIPass preset's Converge is counted in the
-frame benchmark's two scenarios (after the camera stops, after a jump to
-the start camera; each after one uncounted Converge): the frames it
+frame benchmark's two scenarios (after the camera stops, after a jump from
+another view; each after one uncounted Converge): the frames it
 rendered, its instructions and those in the preset's counted frames ("GI
 frames").
 """
