@@ -58,9 +58,9 @@ constexpr int Layers = vtkDeepRadiosityPass::NUMBER_OF_LAYERS;
 // The program of a stage that reads a texel's last frame, variants[1] for
 // frames whose reprojection is the identity: its source with
 // DEEP_STILL_CAMERA defined, where the shader reads the texel itself
-// instead of reprojecting (same texels, less arithmetic: the reprojection
-// is about half of the temporal filter on a CPU renderer, which runs both
-// sides of a branch).
+// instead of reprojecting (deepLastFrameTexel): the same texels without
+// the reprojection's arithmetic, which a CPU renderer, running both sides
+// of a branch, would execute even where its result is not used.
 bool ReadyVariant(vtkOpenGLQuadHelper* (&variants)[2], bool still, vtkOpenGLRenderWindow* window,
   const char* source)
 {
@@ -339,7 +339,7 @@ public:
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
   // The bounce input's and the temporal filter's programs, each also in a
   // variant for frames whose reprojection is the identity (index 1,
-  // DEEP_STILL_CAMERA, see StillCameraSource).
+  // DEEP_STILL_CAMERA, see ReadyVariant).
   vtkOpenGLQuadHelper* BounceQuads[2] = { nullptr, nullptr };
   vtkOpenGLQuadHelper* GatherQuad = nullptr;
   vtkOpenGLQuadHelper* KeyQuad = nullptr;
