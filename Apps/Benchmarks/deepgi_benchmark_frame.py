@@ -54,8 +54,9 @@ each written to a temporary file and then renamed), per scene and size:
   Python);
 - converging a still image (vtkDeepGIPass presets): Converge(renderer, 16,
   0.07 / 255) after 3 orbit frames, once where the orbit stopped (a user
-  who stops moving the camera) and once back at the start camera (a view
-  set by a script, the temporal filter's history from another view), each
+  who stops moving the camera) and once at the start camera after orbit
+  frames a quarter turn away (a view set by a script, the temporal
+  filter's history from another view), each
   after one untimed Converge (llvmpipe compiles the programs and state
   variants that only Converge's frames use the first time): the frames it
   rendered, its seconds and those seconds in the preset's median frames

@@ -256,9 +256,10 @@ def markdown(args, results):
 def converge_table(converge_rows):
     """Converge's frames and instructions, also in frames of the method."""
     lines = ["Converging a still image: Converge(renderer, %d, %.2f / 255) after %d orbit "
-             "frames, where the orbit stopped and back at the start camera, each after one "
-             "uncounted Converge:" % (frame.CONVERGE_FRAMES, frame.CONVERGE_TOLERANCE * 255.0,
-                                      frame.WARM_UP_FRAMES), "",
+             "frames, where the orbit stopped, and at the start camera after orbit frames %g "
+             "degrees away, each after one uncounted Converge:"
+             % (frame.CONVERGE_FRAMES, frame.CONVERGE_TOLERANCE * 255.0, frame.WARM_UP_FRAMES,
+                frame.JUMP_DEGREES), "",
              "| method | scenario | frames | millions of instructions | GI frames |",
              "|---|---|---|---|---|"]
     for method, per_frame, scenarios in converge_rows:
