@@ -304,17 +304,16 @@ class Orbit:
         self.renderer.ResetCameraClippingRange()
 
     def turn(self, degrees):
-        """Turns the camera about the view up vector, without a frame."""
+        """Turns the camera about the view up vector, without a frame, and
+        resets the clipping range, as an interactor style does."""
         self.renderer.GetActiveCamera().Azimuth(degrees)
         self.renderer.ResetCameraClippingRange()
 
     def frames(self, count):
         """Renders `count` frames; returns the milliseconds of each."""
-        camera, times = self.renderer.GetActiveCamera(), []
+        times = []
         for _ in range(count):
-            camera.Azimuth(ORBIT_DEGREES)
-            # What an interactor style does after moving the camera.
-            self.renderer.ResetCameraClippingRange()
+            self.turn(ORBIT_DEGREES)
             start = time.perf_counter()
             self.window.Render()
             self.window.WaitForCompletion()

@@ -129,9 +129,11 @@ Matrix ToArray(vtkMatrix4x4* m)
 // since; a camera changed without Modified() (VTK 9.1's vtkCamera::DeepCopy
 // does not call it, and scripts restore saved views with it) would have its
 // layers rasterised with the last frame's view while the effects
-// reconstruct and reproject them with the camera's own. Modified() when
-// the cached view or projection is not the camera's makes them agree.
-void ModifyStaleCamera(vtkRenderer* renderer, vtkMatrix4x4* view, vtkMatrix4x4* projection)
+// reconstruct and reproject them with the camera's own (`view` and
+// `projection`, row-major). Modified() when the cached ones differ makes
+// them agree. The cached view is a copy of the camera's, so it is compared
+// exactly; the projection within round-off of its aspect ratio.
+void ModifyStaleCamera(vtkRenderer* renderer, const Matrix& view, const Matrix& projection)
 {
   auto* camera = vtkOpenGLCamera::SafeDownCast(renderer->GetActiveCamera());
   if (!camera)
@@ -147,8 +149,8 @@ void ModifyStaleCamera(vtkRenderer* renderer, vtkMatrix4x4* view, vtkMatrix4x4* 
   {
     for (int c = 0; c < 4; ++c)
     {
-      const double p = projection->GetElement(r, c);
-      if (cachedView->GetElement(c, r) != view->GetElement(r, c) ||
+      const double p = projection[r * 4 + c];
+      if (cachedView->GetElement(c, r) != view[r * 4 + c] ||
         std::abs(cachedProjection->GetElement(c, r) - p) > 1e-9 * std::max(1.0, std::abs(p)))
       {
         camera->Modified();
@@ -1743,8 +1745,7 @@ void vtkDeepGBufferPass::UpdateCameras(vtkLayerFrame& frame)
   state.PreviousFrameProjection = state.FrameProjection;
   state.View = ToArray(camera->GetModelViewTransformMatrix());
   state.FrameProjection = ToArray(camera->GetProjectionTransformMatrix(aspect, -1, 1));
-  ModifyStaleCamera(frame.Renderer, camera->GetModelViewTransformMatrix(),
-    camera->GetProjectionTransformMatrix(aspect, -1, 1));
+  ModifyStaleCamera(frame.Renderer, state.View, state.FrameProjection);
   // VTK's vertex shaders see the camera's projection; the layers' vertex
   // stage scales clip x and y by the same GuardBandScale (deepGuardBandScale).
   state.Projection = WithGuardBand(state.FrameProjection, in.GuardBandScale);
