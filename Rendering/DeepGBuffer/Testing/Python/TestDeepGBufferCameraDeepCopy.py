@@ -26,7 +26,7 @@ from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkRenderingCore import vtkCamera, vtkLight
 
 import vtkdeepgi
-from deepgi_testing import add_sphere_on_floor, new_window
+from deepgi_testing import add_sphere_on_floor, look_at, new_window
 
 WIDTH, HEIGHT = 160, 120
 DEGREES = 3.0
@@ -44,10 +44,7 @@ def scene():
     light.SetPosition(-1.0, 3.0, 2.0)
     light.SetFocalPoint(0.0, 0.0, 0.0)
     renderer.AddLight(light)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(0.0, 1.2, 3.5)
-    camera.SetFocalPoint(0.0, -0.2, 0.0)
-    renderer.ResetCameraClippingRange()
+    look_at(renderer, (0.0, 1.2, 3.5), (0.0, -0.2, 0.0))
     return window, renderer
 
 

@@ -22,7 +22,7 @@ from vtkmodules.vtkCommonDataModel import vtkImageData
 
 import vtkdeepgi
 from deepgi_testing import (
-    add_sphere_on_floor, capture_arrays, compare_bitwise, gi_preset, grab, new_window)
+    add_sphere_on_floor, capture_arrays, compare_bitwise, gi_preset, grab, look_at, new_window)
 
 WIDTH, HEIGHT = 160, 120
 RESIZED = 200, 150  # the last frames' size: the coverage follows a resize
@@ -34,10 +34,7 @@ MINIMUM_BACKGROUND = 0.2  # of the layers' texels, so that skipping matters
 def scene():
     window, renderer = new_window(WIDTH, HEIGHT)
     add_sphere_on_floor(renderer)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(0.0, 1.2, 3.5)
-    camera.SetFocalPoint(0.0, -0.2, 0.0)
-    renderer.ResetCameraClippingRange()
+    look_at(renderer, (0.0, 1.2, 3.5), (0.0, -0.2, 0.0))
     return window, renderer
 
 

@@ -23,7 +23,8 @@ from vtkmodules.vtkFiltersSources import vtkPlaneSource
 
 import vtkdeepgi
 from deepgi_testing import (
-    add_actor, add_sphere_on_floor, capture_arrays, compare_bitwise, gi_preset, grab, new_window)
+    add_actor, add_sphere_on_floor, capture_arrays, compare_bitwise, gi_preset, grab, look_at,
+    new_window)
 
 WIDTH, HEIGHT = 160, 120
 MOVING_FRAMES = 3
@@ -40,10 +41,7 @@ def scene():
     wall.SetPoint1(1.5, -0.5, -1.5)
     wall.SetPoint2(-1.5, 2.0, -1.5)
     add_actor(renderer, wall)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(0.0, 0.4, 3.0)
-    camera.SetFocalPoint(0.0, 0.0, 0.0)
-    renderer.ResetCameraClippingRange()
+    look_at(renderer, (0.0, 0.4, 3.0), (0.0, 0.0, 0.0))
     return window, renderer
 
 

@@ -56,6 +56,15 @@ def add_sphere_on_floor(renderer):
     add_actor(renderer, floor)
 
 
+def look_at(renderer, position, focal_point):
+    """Points the renderer's camera from `position` at `focal_point` and fits
+    the clipping range to its props."""
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(*position)
+    camera.SetFocalPoint(*focal_point)
+    renderer.ResetCameraClippingRange()
+
+
 def capture_arrays(capture, renderer, prefix, out):
     """Every array of a pass's capture (e.g. CaptureIrradiance) into `out`,
     keyed prefix + array name; out[prefix] = None when it fails."""
